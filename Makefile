@@ -1,0 +1,115 @@
+# springsim: a terminal simulator of a driven spring-mass-damper chain.
+# make            build ./springsim
+# make run        build and start it on the default configuration
+# make check      build and run every test
+# make sanitize   the tests under AddressSanitizer + UndefinedBehaviorSanitizer
+# make install    PREFIX=/usr/local DESTDIR=: binary, man page, presets
+# Missing Debian packages are installed by mk/deps.sh (as root) or named (otherwise).
+
+VERSION = 0.1.0
+PREFIX ?= /usr/local
+BINDIR ?= $(PREFIX)/bin
+DATADIR ?= $(PREFIX)/share/springsim
+MANDIR ?= $(PREFIX)/share/man/man1
+PKG_CONFIG ?= pkg-config
+CC ?= cc
+BUILD ?= build
+BIN ?= springsim
+
+CFLAGS ?= -O2 -g
+WARN = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 \
+       -Wwrite-strings -Wpointer-arith
+DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"'
+
+# Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
+CORE_PKGS = inih lapacke
+CORE_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(CORE_PKGS))
+CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
+UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
+UI_LIBS = $(shell $(PKG_CONFIG) --libs ncursesw)
+TEST_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka)
+TEST_LIBS = $(shell $(PKG_CONFIG) --libs cmocka)
+
+CORE_SRC = $(wildcard src/core/*.c)
+CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
+CORE_LIB = $(BUILD)/libspringsim-core.a
+UI_SRC = $(wildcard src/ui/*.c)
+UI_OBJ = $(UI_SRC:src/%.c=$(BUILD)/%.o)
+MAIN_OBJ = $(BUILD)/main.o
+TEST_SRC = $(wildcard tests/test_*.c)
+TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+
+.PHONY: all run check sanitize install uninstall clean deps deps-test
+
+all: $(BIN)
+
+run: $(BIN)
+	./$(BIN)
+
+$(BUILD)/.deps-build:
+	@mkdir -p $(@D)
+	@sh mk/deps.sh build
+	@touch $@
+
+$(BUILD)/.deps-test: | $(BUILD)/.deps-build
+	@sh mk/deps.sh test
+	@touch $@
+
+deps: $(BUILD)/.deps-build
+deps-test: $(BUILD)/.deps-test
+
+# The core never sees curses: this fails the build if a core file includes it, and the
+# core is compiled without the ncurses flags and its tests linked without -lncursesw.
+$(BUILD)/.core-pure: $(wildcard src/core/*.[ch]) | $(BUILD)/.deps-build
+	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h)' \
+	    src/core/*.[ch]; then echo "error: src/core must not include curses" >&2; exit 1; fi
+	@touch $@
+
+$(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/ui/%.o: src/ui/%.c | $(BUILD)/.deps-build
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+
+$(BUILD)/main.o: src/main.c | $(BUILD)/.deps-build
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP \
+	    -c -o $@ $<
+
+$(CORE_LIB): $(CORE_OBJ)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+$(BIN): $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB) $(UI_LIBS) $(CORE_LIBS)
+
+$(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc -o $@ $< \
+	    $(CORE_LIB) $(TEST_LIBS) $(CORE_LIBS)
+
+check: $(BIN) $(TEST_BIN) | $(BUILD)/.deps-test
+	@SPRINGSIM=./$(BIN) sh tests/run.sh $(TEST_BIN)
+
+# Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
+SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+sanitize:
+	$(MAKE) BUILD=$(BUILD)/san BIN=$(BUILD)/san/springsim CFLAGS="$(SAN_FLAGS)" \
+	    LDFLAGS="$(SAN_FLAGS)" check
+
+install: $(BIN)
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/presets
+	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/springsim
+	install -m 644 man/springsim.1 $(DESTDIR)$(MANDIR)/springsim.1
+	install -m 644 presets/*.ini $(DESTDIR)$(DATADIR)/presets/
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/springsim $(DESTDIR)$(MANDIR)/springsim.1
+	rm -rf $(DESTDIR)$(DATADIR)
+
+clean:
+	rm -rf $(BUILD) springsim
+
+-include $(CORE_OBJ:.o=.d) $(UI_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)

@@ -1,0 +1,50 @@
+#!/bin/sh
+# mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
+# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE), test (cmocka, tmux),
+# bench (GSL), fuzz (clang with libFuzzer). As root the missing ones are installed with
+# apt-get; otherwise the one apt-get line to run is printed and the step stops.
+need=""
+has_pc() { pkg-config --exists "$1" 2>/dev/null; }
+want_pc() { has_pc "$1" || need="$need $2"; }
+want_bin() { command -v "$1" >/dev/null 2>&1 || need="$need $2"; }
+
+for group in "$@"; do
+    case $group in
+    build)
+        want_bin cc gcc
+        want_bin pkg-config pkgconf
+        want_pc ncursesw libncurses-dev
+        want_pc inih libinih-dev
+        want_pc lapacke liblapacke-dev
+        ;;
+    test)
+        want_pc cmocka libcmocka-dev
+        want_bin tmux tmux
+        ;;
+    bench)
+        want_pc gsl libgsl-dev
+        ;;
+    fuzz)
+        want_bin clang clang
+        [ -n "$(find /usr/lib/llvm-*/lib/clang -name 'libclang_rt.fuzzer*.a' 2>/dev/null | head -n 1)" ] ||
+            need="$need libclang-rt-14-dev"
+        ;;
+    *)
+        echo "mk/deps.sh: unknown group '$group'" >&2
+        exit 2
+        ;;
+    esac
+done
+
+[ -z "$need" ] && exit 0
+need=$(printf '%s\n' $need | sort -u | tr '\n' ' ' | sed 's/ $//')
+if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "springsim: installing Debian packages: $need"
+    apt-get update -qq >/dev/null &&
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $need >/dev/null ||
+        { echo "springsim: apt-get could not install: $need" >&2; exit 1; }
+else
+    echo "springsim: missing Debian packages; install them with:" >&2
+    echo "    apt-get install $need" >&2
+    exit 1
+fi

@@ -1,0 +1,94 @@
+/* collision.c: contacts as the page describes them, made precise.
+ *
+ * Mass centres live at X_i = x_eq,i + d_i. Walls: X_i >= w/2 on the left, and for a
+ * motor or wall end X_i <= L + u - w/2; on contact the centre is put on the limit and,
+ * if it moved into the wall, the velocity relative to the wall is reversed and scaled
+ * by e. Neighbours: X_{i+1} - X_i >= w; overlap is removed by moving both equally and,
+ * if they approach, they take the 1-D restitution result
+ *   v1' = (m1 v1 + m2 v2 + m2 e (v2 - v1)) / (m1 + m2),
+ *   v2' = (m1 v1 + m2 v2 + m1 e (v1 - v2)) / (m1 + m2),
+ * which keeps momentum and makes v2' - v1' = e (v1 - v2). */
+#include "collision.h"
+
+/* Separating one pair can push a mass into its other neighbour or a wall; a few
+ * sweeps settle any real configuration (the chain's blocks fill at most half of L). */
+#define MAX_SWEEPS 64
+/* Contacts closer than this to their limit count as resolved (rounding of x_eq + d). */
+#define SLACK 1e-12
+
+static int pair_contact(const struct model *m, double *x, double *v, int i, double w)
+{
+    double gap = (model_equilibrium(m, i + 1) + x[i + 1]) - (model_equilibrium(m, i) + x[i]);
+    if (gap >= w - SLACK)
+        return 0;
+    double half = 0.5 * (w - gap);
+    x[i] -= half;
+    x[i + 1] += half;
+    double v1 = v[i], v2 = v[i + 1];
+    if (v1 > v2) {
+        double m1 = m->m[i], m2 = m->m[i + 1];
+        double p = m1 * v1 + m2 * v2, mt = m1 + m2;
+        v[i] = (p + m2 * MODEL_RESTITUTION * (v2 - v1)) / mt;
+        v[i + 1] = (p + m1 * MODEL_RESTITUTION * (v1 - v2)) / mt;
+    }
+    return 1;
+}
+
+static int left_wall(const struct model *m, double *x, double *v, double w)
+{
+    double lim = 0.5 * w - model_equilibrium(m, 0);
+    if (x[0] >= lim - SLACK)
+        return 0;
+    x[0] = lim;
+    if (v[0] < 0.0)
+        v[0] = -MODEL_RESTITUTION * v[0];
+    return 1;
+}
+
+static int right_wall(const struct model *m, double *x, double *v, double u, double du, double w)
+{
+    int i = m->n - 1;
+    double lim = MODEL_LENGTH + u - 0.5 * w - model_equilibrium(m, i);
+    if (x[i] <= lim + SLACK)
+        return 0;
+    x[i] = lim;
+    double rel = v[i] - du;
+    if (rel > 0.0)
+        v[i] = du - MODEL_RESTITUTION * rel;
+    return 1;
+}
+
+int collision_apply(const struct model *m, double *x, double *v, double u, double du)
+{
+    if (!m->collisions)
+        return 0;
+    double w = model_block_width(m);
+    int total = 0;
+    for (int sweep = 0; sweep < MAX_SWEEPS; sweep++) {
+        int found = 0;
+        for (int i = 0; i + 1 < m->n; i++)
+            found += pair_contact(m, x, v, i, w);
+        found += left_wall(m, x, v, w);
+        if (m->boundary != BOUNDARY_FREE)
+            found += right_wall(m, x, v, u, du, w);
+        total += found;
+        if (!found)
+            break;
+    }
+    return total;
+}
+
+int collision_cap(int n, double *v)
+{
+    int capped = 0;
+    for (int i = 0; i < n; i++) {
+        if (v[i] > MODEL_VMAX) {
+            v[i] = MODEL_VMAX;
+            capped++;
+        } else if (v[i] < -MODEL_VMAX) {
+            v[i] = -MODEL_VMAX;
+            capped++;
+        }
+    }
+    return capped;
+}

@@ -1,0 +1,410 @@
+/* config.c: the option table shared by the command line and presets, and the checks
+ * every value goes through, whichever way it came in. */
+#include "config.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const struct config_option config_options[CFG_KEY_COUNT] = {
+    [CFG_PRESET] = {"preset", 'p', NULL, "NAME|FILE",
+                    "load a preset by name or file path (applied before other options)"},
+    [CFG_MASSES] = {"masses", 'n', "system", "N", "number of masses (1 to 1000; default 2)"},
+    [CFG_MASS] = {"mass", 0, "system", "LIST", "kg: one value for all, or N values (default 1)"},
+    [CFG_SPRING] = {"spring", 0, "system", "LIST", "N/m: one value, or N+1 values (default 10)"},
+    [CFG_DAMPING] = {"damping", 0, "system", "LIST",
+                     "N s/m: one value, or N values (default 0.1)"},
+    [CFG_DT] = {"dt", 0, "system", "SECONDS", "RK4 step, 0 < dt <= 0.05 (default 0.01)"},
+    [CFG_BOUNDARY] = {"boundary", 0, "motor", "motor|wall|free", "right end (default motor)"},
+    [CFG_WAVE] = {"wave", 0, "motor", "sine|square|triangle|sawtooth",
+                  "motor waveform (default sine)"},
+    [CFG_AMPLITUDE] = {"amplitude", 0, "motor", "METRES", "motor amplitude >= 0 (default 1)"},
+    [CFG_FREQUENCY] = {"frequency", 0, "motor", "HZ", "motor frequency > 0 (default 1)"},
+    [CFG_X0] = {"x0", 0, "initial", "LIST", "initial displacements (m): one value or N values"},
+    [CFG_V0] = {"v0", 0, "initial", "LIST", "initial velocities (m/s): one value or N values"},
+    [CFG_RANDOM] = {"random", 0, "initial", NULL,
+                    "random initial positions (minimum separation kept)"},
+    [CFG_SEED] = {"seed", 0, "initial", "N", "seed for --random (same seed, same positions)"},
+    [CFG_NO_COLLISIONS] = {"no-collisions", 0, "system", NULL,
+                           "turn collisions off (the velocity cap stays)"},
+    [CFG_DURATION] = {"duration", 0, "run", "SECONDS", "headless run length >= 0 (default 10)"},
+    [CFG_SAMPLE] = {"sample", 0, "run", "SECONDS",
+                    "headless output interval, rounded to whole steps (default every step)"},
+    [CFG_OUTPUT] = {"output", 'o', NULL, "FILE",
+                    "headless/modes/sweep output to FILE instead of standard output"},
+    [CFG_ENERGY] = {"energy", 0, "run", NULL,
+                    "headless CSV gains kinetic,potential,dissipated,motor_work"},
+};
+
+/* What each key allows, quoted in every error about it. */
+static const char *const expected[CFG_KEY_COUNT] = {
+    [CFG_PRESET] = "a preset name or file",
+    [CFG_MASSES] = "1 <= N <= 1000",
+    [CFG_MASS] = "masses > 0 kg: one value, or one per mass",
+    [CFG_SPRING] = "springs > 0 N/m: one value, or N+1",
+    [CFG_DAMPING] = "damping >= 0 N s/m: one value, or one per mass",
+    [CFG_DT] = "0 < dt <= 0.05",
+    [CFG_BOUNDARY] = "motor, wall or free",
+    [CFG_WAVE] = "sine, square, triangle or sawtooth",
+    [CFG_AMPLITUDE] = "amplitude >= 0 m",
+    [CFG_FREQUENCY] = "frequency > 0 Hz",
+    [CFG_X0] = "displacements in m: one value, or one per mass",
+    [CFG_V0] = "velocities in m/s: one value, or one per mass",
+    [CFG_RANDOM] = "true or false",
+    [CFG_SEED] = "a whole number 0 <= seed < 2^64",
+    [CFG_NO_COLLISIONS] = "true or false",
+    [CFG_DURATION] = "duration >= 0 s",
+    [CFG_SAMPLE] = "sample > 0 s",
+    [CFG_OUTPUT] = "a file name",
+    [CFG_ENERGY] = "true or false",
+};
+
+/* Lower bounds of numeric keys: value > lo (open) or value >= lo (closed). */
+enum bound { ANY, GT0, GE0 };
+
+void config_init(struct config *c)
+{
+    memset(c, 0, sizeof *c);
+    c->masses = 2;
+    c->dt = 0.01;
+    c->boundary = BOUNDARY_MOTOR;
+    c->wave = WAVE_SINE;
+    c->amplitude = 1.0;
+    c->frequency = 1.0;
+    c->duration = 10.0;
+}
+
+int config_find(const char *name)
+{
+    for (int k = 0; k < CFG_KEY_COUNT; k++)
+        if (strcmp(name, config_options[k].name) == 0)
+            return k;
+    return -1;
+}
+
+/* The value as quoted in a message: cut short if long, so the message stays one line. */
+static void quote(const char *value, char *buf, size_t len)
+{
+    size_t n = strlen(value);
+    if (n <= 40) {
+        snprintf(buf, len, "'%s'", value);
+        return;
+    }
+    snprintf(buf, len, "'%.36s...' (%zu characters)", value, n);
+    for (char *p = buf; *p; p++)
+        if (*p == '\n' || *p == '\r' || *p == '\t')
+            *p = ' ';
+}
+
+static int fail(int key, const char *value, const char *why, char *err, size_t errlen)
+{
+    char q[96];
+    quote(value, q, sizeof q);
+    snprintf(err, errlen, "%s %s (expected %s)", q, why, expected[key]);
+    return -1;
+}
+
+/* Parses a whole finite number; returns a reason on failure. */
+static const char *parse_number(const char *s, double *out)
+{
+    char *end;
+    if (*s == '\0')
+        return "is empty";
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || s[0] == ' ' || s[0] == '\t')
+        return "is not a number";
+    if (!isfinite(v) || errno == ERANGE)
+        return "is not a finite number";
+    *out = v;
+    return NULL;
+}
+
+static int in_bound(double v, enum bound b)
+{
+    return b == ANY || (b == GT0 && v > 0.0) || (b == GE0 && v >= 0.0);
+}
+
+static int set_number(int key, const char *value, double *out, enum bound b, double hi,
+                      char *err, size_t errlen)
+{
+    double v;
+    const char *why = parse_number(value, &v);
+    if (why)
+        return fail(key, value, why, err, errlen);
+    if (!in_bound(v, b) || v > hi)
+        return fail(key, value, "is out of range", err, errlen);
+    *out = v;
+    return 0;
+}
+
+/* Parses a comma-separated list; blanks around items are allowed. */
+static int set_list(int key, const char *value, struct config_list *out, enum bound b,
+                    char *err, size_t errlen)
+{
+    static struct config_list tmp; /* large; the parser is not reentrant anyway */
+    char item[64], msg[160];
+    const char *p = value;
+
+    tmp.count = 0;
+    for (;;) {
+        while (*p == ' ' || *p == '\t')
+            p++;
+        const char *end = p;
+        while (*end && *end != ',')
+            end++;
+        const char *stop = end;
+        while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
+            stop--;
+        size_t len = (size_t)(stop - p);
+        if (tmp.count > MODEL_MAX_MASSES)
+            return fail(key, value, "has more than 1001 values", err, errlen);
+        if (len == 0) {
+            snprintf(msg, sizeof msg, "has an empty item (item %d)", tmp.count + 1);
+            return fail(key, value, msg, err, errlen);
+        }
+        if (len >= sizeof item) {
+            snprintf(msg, sizeof msg, "has an item that is not a number (item %d)",
+                     tmp.count + 1);
+            return fail(key, value, msg, err, errlen);
+        }
+        memcpy(item, p, len);
+        item[len] = '\0';
+        double v;
+        const char *why = parse_number(item, &v);
+        if (!why && !in_bound(v, b))
+            why = "is out of range";
+        if (why) {
+            if (strcmp(item, value) == 0)
+                return fail(key, value, why, err, errlen);
+            snprintf(msg, sizeof msg, "item %d '%s' %s", tmp.count + 1, item, why);
+            return fail(key, value, msg, err, errlen);
+        }
+        tmp.v[tmp.count++] = v;
+        if (*end == '\0')
+            break;
+        p = end + 1;
+    }
+    *out = tmp;
+    return 0;
+}
+
+static int set_bool(int key, const char *value, bool *out, char *err, size_t errlen)
+{
+    static const char *const yes[] = {"true", "yes", "on", "1"};
+    static const char *const no[] = {"false", "no", "off", "0"};
+    if (!value) {
+        *out = true;
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof yes / sizeof *yes; i++) {
+        if (strcmp(value, yes[i]) == 0) {
+            *out = true;
+            return 0;
+        }
+        if (strcmp(value, no[i]) == 0) {
+            *out = false;
+            return 0;
+        }
+    }
+    return fail(key, value, "is not true or false", err, errlen);
+}
+
+/* Whole numbers: digits only, optional sign where negatives are meaningful. */
+static const char *parse_whole(const char *s, unsigned long long *out)
+{
+    char *end;
+    if (*s == '\0')
+        return "is empty";
+    if (strspn(s, "0123456789") != strlen(s)) {
+        double d;
+        return parse_number(s, &d) ? "is not a number" : "is not a whole number";
+    }
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno == ERANGE || *end != '\0')
+        return "is out of range";
+    *out = v;
+    return NULL;
+}
+
+int config_set(struct config *c, int key, const char *value, char *err, size_t errlen)
+{
+    const char *why;
+    unsigned long long whole;
+    int e;
+
+    if (!value && config_options[key].arg)
+        return fail(key, "", "is missing", err, errlen);
+    switch ((enum config_key)key) {
+    case CFG_PRESET:
+        return 0; /* applied by the caller, before everything else */
+    case CFG_MASSES:
+        if ((why = parse_whole(value, &whole)))
+            return fail(key, value, why, err, errlen);
+        if (whole < 1 || whole > MODEL_MAX_MASSES)
+            return fail(key, value, "is out of range", err, errlen);
+        c->masses = (int)whole;
+        return 0;
+    case CFG_MASS:
+        return set_list(key, value, &c->mass, GT0, err, errlen);
+    case CFG_SPRING:
+        return set_list(key, value, &c->spring, GT0, err, errlen);
+    case CFG_DAMPING:
+        return set_list(key, value, &c->damping, GE0, err, errlen);
+    case CFG_DT:
+        return set_number(key, value, &c->dt, GT0, 0.05, err, errlen);
+    case CFG_BOUNDARY:
+        if ((e = model_boundary_parse(value)) < 0)
+            return fail(key, value, "is not a right end", err, errlen);
+        c->boundary = (enum boundary)e;
+        return 0;
+    case CFG_WAVE:
+        if ((e = motor_wave_parse(value)) < 0)
+            return fail(key, value, "is not a waveform", err, errlen);
+        c->wave = (enum wave)e;
+        return 0;
+    case CFG_AMPLITUDE:
+        return set_number(key, value, &c->amplitude, GE0, INFINITY, err, errlen);
+    case CFG_FREQUENCY:
+        return set_number(key, value, &c->frequency, GT0, INFINITY, err, errlen);
+    case CFG_X0:
+        if (set_list(key, value, &c->x0, ANY, err, errlen))
+            return -1;
+        c->random = false; /* the later of x0 and random wins */
+        return 0;
+    case CFG_V0:
+        return set_list(key, value, &c->v0, ANY, err, errlen);
+    case CFG_RANDOM:
+        if (set_bool(key, value, &c->random, err, errlen))
+            return -1;
+        if (c->random)
+            c->x0.count = 0;
+        return 0;
+    case CFG_SEED:
+        if ((why = parse_whole(value, &whole)))
+            return fail(key, value, why, err, errlen);
+        c->seed = whole;
+        c->seed_set = true;
+        return 0;
+    case CFG_NO_COLLISIONS:
+        return set_bool(key, value, &c->no_collisions, err, errlen);
+    case CFG_DURATION:
+        return set_number(key, value, &c->duration, GE0, INFINITY, err, errlen);
+    case CFG_SAMPLE:
+        return set_number(key, value, &c->sample, GT0, INFINITY, err, errlen);
+    case CFG_OUTPUT:
+        if (*value == '\0')
+            return fail(key, value, "is empty", err, errlen);
+        c->output = value;
+        return 0;
+    case CFG_ENERGY:
+        return set_bool(key, value, &c->energy, err, errlen);
+    case CFG_KEY_COUNT:
+        break;
+    }
+    return fail(key, value ? value : "", "is not a setting", err, errlen);
+}
+
+/* Checks a list's length against the element count and expands it into dst. */
+static int expand(const struct config_list *l, int elements, double fallback, double *dst,
+                  const char *what, char *err, size_t errlen)
+{
+    if (l->count == 0) {
+        for (int i = 0; i < elements; i++)
+            dst[i] = fallback;
+        return 0;
+    }
+    if (l->count != 1 && l->count != elements) {
+        snprintf(err, errlen, "%d values given for %d %s (expected 1 or %d)", l->count,
+                 elements, what, elements);
+        return -1;
+    }
+    for (int i = 0; i < elements; i++)
+        dst[i] = l->v[l->count == 1 ? 0 : i];
+    return 0;
+}
+
+struct model *config_model(const struct config *c, int *bad_key, char *err, size_t errlen)
+{
+    int n = c->masses;
+    struct model *m = model_new(n);
+    *bad_key = -1;
+    if (!m) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    const char *per_mass = n == 1 ? "mass" : "masses";
+    const char *springs = "springs";
+    if (expand(&c->mass, n, 1.0, m->m, per_mass, err, errlen))
+        *bad_key = CFG_MASS;
+    else if (expand(&c->spring, n + 1, 10.0, m->k, springs, err, errlen))
+        *bad_key = CFG_SPRING;
+    else if (expand(&c->damping, n, 0.1, m->c, per_mass, err, errlen))
+        *bad_key = CFG_DAMPING;
+    else if (c->x0.count > 1 && c->x0.count != n)
+        *bad_key = CFG_X0;
+    else if (c->v0.count > 1 && c->v0.count != n)
+        *bad_key = CFG_V0;
+    if (*bad_key == CFG_X0 || *bad_key == CFG_V0) {
+        const struct config_list *l = *bad_key == CFG_X0 ? &c->x0 : &c->v0;
+        snprintf(err, errlen, "%d values given for %d %s (expected 1 or %d)", l->count, n,
+                 per_mass, n);
+    }
+    if (*bad_key >= 0) {
+        model_free(m);
+        return NULL;
+    }
+    m->boundary = c->boundary;
+    m->motor = (struct motor){c->wave, c->amplitude, c->frequency};
+    m->collisions = !c->no_collisions;
+    return m;
+}
+
+/* splitmix64 (Steele, Lea and Flood 2014): small, fast, and fixed across platforms. */
+static uint64_t splitmix64(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+void config_random_positions(const struct model *m, uint64_t seed, double *x)
+{
+    int n = m->n;
+    double w = model_block_width(m);
+    double sep = 1.5 * w;
+    double lo = 0.5 * w;
+    double hi = MODEL_LENGTH - 0.5 * w;
+    if (m->boundary == BOUNDARY_MOTOR && hi - m->motor.amplitude - lo > (n - 1) * sep)
+        hi -= m->motor.amplitude; /* clear of the piston at its furthest in */
+    /* n sorted uniforms on [0, room], spread by sep: uniform over the allowed set. */
+    double room = (hi - lo) - (n - 1) * sep;
+    uint64_t state = seed;
+    for (int i = 0; i < n; i++)
+        x[i] = room * (double)(splitmix64(&state) >> 11) * 0x1.0p-53;
+    qsort(x, (size_t)n, sizeof *x, compare_double);
+    for (int i = 0; i < n; i++)
+        x[i] = lo + x[i] + i * sep - model_equilibrium(m, i);
+}
+
+void config_initial(const struct config *c, const struct model *m, double *x, double *v)
+{
+    int n = m->n;
+    if (c->random)
+        config_random_positions(m, c->seed, x);
+    else
+        for (int i = 0; i < n; i++)
+            x[i] = c->x0.count ? c->x0.v[c->x0.count == 1 ? 0 : i] : 0.0;
+    for (int i = 0; i < n; i++)
+        v[i] = c->v0.count ? c->v0.v[c->v0.count == 1 ? 0 : i] : 0.0;
+}

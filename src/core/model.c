@@ -1,0 +1,125 @@
+/* model.c: parameters, equilibrium geometry and the equation of motion
+ *
+ *   m_i a_i = -k_i (d_i - d_{i-1}) - k_{i+1} (d_i - d_{i+1}) - c_i v_i,
+ *
+ * with d_{-1} = 0 (left wall) and d_N = u(t) (right end); for a free end the
+ * k_N term of the last mass is dropped. */
+#include "model.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const boundary_names[BOUNDARY_COUNT] = {"motor", "wall", "free"};
+
+const char *model_boundary_name(enum boundary b)
+{
+    return (unsigned)b < BOUNDARY_COUNT ? boundary_names[b] : NULL;
+}
+
+int model_boundary_parse(const char *s)
+{
+    for (int i = 0; i < BOUNDARY_COUNT; i++)
+        if (strcmp(s, boundary_names[i]) == 0)
+            return i;
+    return -1;
+}
+
+struct model *model_new(int n)
+{
+    if (n < 1 || n > MODEL_MAX_MASSES)
+        return NULL;
+    struct model *m = calloc(1, sizeof *m);
+    double *buf = malloc((size_t)(3 * n + 1) * sizeof *buf);
+    if (!m || !buf) {
+        free(m);
+        free(buf);
+        return NULL;
+    }
+    m->n = n;
+    m->m = buf;
+    m->k = buf + n;
+    m->c = buf + 2 * n + 1;
+    for (int i = 0; i < n; i++) {
+        m->m[i] = 1.0;
+        m->c[i] = 0.1;
+    }
+    for (int j = 0; j <= n; j++)
+        m->k[j] = 10.0;
+    m->boundary = BOUNDARY_MOTOR;
+    m->motor = (struct motor){WAVE_SINE, 1.0, 1.0};
+    m->collisions = true;
+    return m;
+}
+
+void model_free(struct model *m)
+{
+    if (m)
+        free(m->m);
+    free(m);
+}
+
+void model_copy(struct model *dst, const struct model *src)
+{
+    int n = src->n;
+    memcpy(dst->m, src->m, (size_t)n * sizeof *dst->m);
+    memcpy(dst->k, src->k, (size_t)(n + 1) * sizeof *dst->k);
+    memcpy(dst->c, src->c, (size_t)n * sizeof *dst->c);
+    dst->boundary = src->boundary;
+    dst->motor = src->motor;
+    dst->collisions = src->collisions;
+}
+
+double model_equilibrium(const struct model *m, int i)
+{
+    return (i + 1) * MODEL_LENGTH / (m->n + 1);
+}
+
+double model_block_width(const struct model *m)
+{
+    double half = 0.5 * MODEL_LENGTH / (m->n + 1);
+    return half < MODEL_BLOCK ? half : MODEL_BLOCK;
+}
+
+double model_end_position(const struct model *m, double t)
+{
+    return m->boundary == BOUNDARY_MOTOR ? motor_position(&m->motor, t) : 0.0;
+}
+
+void model_accel(const struct model *m, const double *x, const double *v, double u, double *a)
+{
+    int n = m->n;
+    /* Force of spring j is k_j * stretch_j, stretch_j = (right end) - (left end). */
+    double left = m->k[0] * x[0];
+    for (int i = 0; i < n; i++) {
+        double right;
+        if (i < n - 1)
+            right = m->k[i + 1] * (x[i + 1] - x[i]);
+        else
+            right = m->boundary == BOUNDARY_FREE ? 0.0 : m->k[n] * (u - x[i]);
+        a[i] = (right - left - m->c[i] * v[i]) / m->m[i];
+        left = right;
+    }
+}
+
+double model_potential(const struct model *m, const double *x, double u)
+{
+    int n = m->n;
+    double e = m->k[0] * x[0] * x[0];
+    for (int j = 1; j < n; j++) {
+        double s = x[j] - x[j - 1];
+        e += m->k[j] * s * s;
+    }
+    if (m->boundary != BOUNDARY_FREE) {
+        double s = u - x[n - 1];
+        e += m->k[n] * s * s;
+    }
+    return 0.5 * e;
+}
+
+double model_kinetic(const struct model *m, const double *v)
+{
+    double e = 0.0;
+    for (int i = 0; i < m->n; i++)
+        e += m->m[i] * v[i] * v[i];
+    return 0.5 * e;
+}

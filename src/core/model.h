@@ -1,0 +1,62 @@
+/* model.h: the chain's parameters and its equations of motion (SPEC section 1). */
+#ifndef SPRINGSIM_MODEL_H
+#define SPRINGSIM_MODEL_H
+
+#include <stdbool.h>
+
+#include "motor.h"
+
+#define MODEL_MAX_MASSES 1000 /* the core takes 1..1000 masses */
+#define MODEL_LENGTH 10.0     /* L: left wall at 0, right end's base at L (m) */
+#define MODEL_BLOCK 0.4       /* block width w unless half the spacing is smaller (m) */
+#define MODEL_RESTITUTION 0.8 /* e for walls, piston and mass-mass contacts */
+#define MODEL_VMAX 50.0       /* velocity cap (m/s) */
+
+enum boundary { BOUNDARY_MOTOR, BOUNDARY_WALL, BOUNDARY_FREE, BOUNDARY_COUNT };
+
+struct model {
+    int n;                   /* number of masses N */
+    double *m;               /* N masses (kg) */
+    double *k;               /* N+1 spring constants (N/m); k[N] joins mass N to the right end */
+    double *c;               /* N damping coefficients (N s/m) */
+    enum boundary boundary;  /* right end */
+    struct motor motor;      /* drive, used when boundary is BOUNDARY_MOTOR */
+    bool collisions;         /* walls, piston and mass-mass contacts on */
+};
+
+/* A model of n masses with the page's defaults (1 kg, 10 N/m, 0.1 N s/m, motor,
+ * sine 1 m 1 Hz), or NULL when n is out of range or memory runs out. */
+struct model *model_new(int n);
+
+/* Frees a model from model_new. */
+void model_free(struct model *m);
+
+/* Copies every parameter of src into dst; both must have the same n. */
+void model_copy(struct model *dst, const struct model *src);
+
+/* Equilibrium position of mass i (0-based), metres from the left wall. */
+double model_equilibrium(const struct model *m, int i);
+
+/* Block width w: 0.4 m, or half the equilibrium spacing if that is smaller. */
+double model_block_width(const struct model *m);
+
+/* Right-end position u(t): the motor's for BOUNDARY_MOTOR, 0 otherwise. */
+double model_end_position(const struct model *m, double t);
+
+/* Accelerations a[i] from the equation of motion at displacements x, velocities v and
+ * right-end position u (ignored for BOUNDARY_FREE). */
+void model_accel(const struct model *m, const double *x, const double *v, double u, double *a);
+
+/* Spring potential energy sum 1/2 k_j stretch_j^2 at displacements x, end position u. */
+double model_potential(const struct model *m, const double *x, double u);
+
+/* Kinetic energy sum 1/2 m_i v_i^2. */
+double model_kinetic(const struct model *m, const double *v);
+
+/* The boundary's name ("motor", ...), or NULL. */
+const char *model_boundary_name(enum boundary b);
+
+/* The boundary named by s, or -1. */
+int model_boundary_parse(const char *s);
+
+#endif

@@ -1,0 +1,122 @@
+/* modes.c: eigen-analysis and frequency response through LAPACK.
+ *
+ * K phi = w^2 M phi with K tridiagonal (K_ii = k_i + k_{i+1}, K_{i,i+1} = -k_{i+1}; a free
+ * end drops k_N from the last diagonal entry) becomes, with z = M^(1/2) phi, the
+ * symmetric tridiagonal problem M^(-1/2) K M^(-1/2) z = w^2 z: LAPACK dstev. The
+ * steady state under u = A sin(w t) solves the complex tridiagonal system
+ * (K - w^2 M + i w C) X = k_N A e_N: LAPACK zgtsv. */
+#include "modes.h"
+
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <lapacke.h>
+
+/* Diagonal of K. */
+static double k_diag(const struct model *m, int i)
+{
+    double d = m->k[i];
+    if (i < m->n - 1 || m->boundary != BOUNDARY_FREE)
+        d += m->k[i + 1];
+    return d;
+}
+
+/* Symmetric tridiagonal M^(-1/2) K M^(-1/2): diagonal d[n], off-diagonal e[n-1]. */
+static void scaled_k(const struct model *m, double *d, double *e)
+{
+    int n = m->n;
+    for (int i = 0; i < n; i++)
+        d[i] = k_diag(m, i) / m->m[i];
+    for (int i = 0; i + 1 < n; i++)
+        e[i] = -m->k[i + 1] / sqrt(m->m[i] * m->m[i + 1]);
+}
+
+int modes_compute(const struct model *m, double *freq, double *shapes)
+{
+    int n = m->n;
+    double *e = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof *e);
+    double *z = shapes ? malloc((size_t)n * (size_t)n * sizeof *z) : NULL;
+    if (!e || (shapes && !z)) {
+        free(e);
+        free(z);
+        return -1;
+    }
+    scaled_k(m, freq, e);
+    lapack_int info = LAPACKE_dstev(LAPACK_COL_MAJOR, shapes ? 'V' : 'N', n, freq, e, z, n);
+    free(e);
+    if (info != 0) {
+        free(z);
+        return (int)info;
+    }
+    for (int j = 0; j < n; j++)
+        freq[j] = sqrt(freq[j] > 0.0 ? freq[j] : 0.0) / (2.0 * M_PI);
+    if (shapes) {
+        /* Column j of z is eigenvector j; phi = M^(-1/2) z. */
+        for (int j = 0; j < n; j++) {
+            double *phi = shapes + (size_t)j * n;
+            double top = 0.0;
+            for (int i = 0; i < n; i++) {
+                phi[i] = z[(size_t)j * n + i] / sqrt(m->m[i]);
+                top = fmax(top, fabs(phi[i]));
+            }
+            /* Among components equal in size up to rounding, the first decides the sign,
+             * so symmetric shapes come out the same on every machine. */
+            int big = 0;
+            while (fabs(phi[big]) < top * (1.0 - 1e-9))
+                big++;
+            double scale = 1.0 / phi[big];
+            for (int i = 0; i < n; i++)
+                phi[i] *= scale;
+            phi[big] = 1.0;
+        }
+        free(z);
+    }
+    return 0;
+}
+
+double modes_omega_max(const struct model *m)
+{
+    double *f = malloc((size_t)m->n * sizeof *f);
+    if (!f)
+        return -1.0;
+    double w = -1.0;
+    if (modes_compute(m, f, NULL) == 0)
+        w = 2.0 * M_PI * f[m->n - 1];
+    free(f);
+    return w;
+}
+
+double modes_stable_dt(const struct model *m)
+{
+    double w = modes_omega_max(m);
+    return w > 0.0 ? MODES_RK4_LIMIT / w : INFINITY;
+}
+
+int modes_response(const struct model *m, double freq_hz, double *amp)
+{
+    int n = m->n;
+    if (m->boundary != BOUNDARY_MOTOR) {
+        for (int i = 0; i < n; i++)
+            amp[i] = 0.0;
+        return 0;
+    }
+    lapack_complex_double *buf = malloc((size_t)(4 * n) * sizeof *buf);
+    if (!buf)
+        return -1;
+    lapack_complex_double *dl = buf, *d = buf + n, *du = buf + 2 * n, *b = buf + 3 * n;
+    double w = 2.0 * M_PI * freq_hz;
+    for (int i = 0; i < n; i++) {
+        d[i] = k_diag(m, i) - w * w * m->m[i] + I * w * m->c[i];
+        b[i] = 0.0;
+        if (i + 1 < n)
+            dl[i] = du[i] = -m->k[i + 1];
+    }
+    b[n - 1] = m->k[n] * m->motor.amplitude;
+    lapack_int info = LAPACKE_zgtsv(LAPACK_COL_MAJOR, n, 1, dl, d, du, b, n);
+    if (info == 0)
+        for (int i = 0; i < n; i++)
+            amp[i] = cabs(b[i]);
+    free(buf);
+    return (int)info;
+}

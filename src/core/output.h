@@ -1,0 +1,33 @@
+/* output.h: files written whole or not at all (a temporary file in the same
+ * directory, renamed into place), and the CSV rows of --headless. */
+#ifndef SPRINGSIM_OUTPUT_H
+#define SPRINGSIM_OUTPUT_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "sim.h"
+
+struct output {
+    FILE *fp;    /* where to write */
+    char *tmp;   /* temporary file to rename, or NULL when writing in place */
+    char *path;  /* final path, or NULL for standard output */
+};
+
+/* Opens path for writing (NULL or "-": standard output). A regular file or a new one is
+ * written through a temporary file; anything else (a device, a pipe) in place.
+ * Returns 0, or an errno value. */
+int output_open(struct output *o, const char *path);
+
+/* Finishes: flushes, and with commit renames the temporary file into place; without
+ * commit (or on any error) the temporary file is removed and the old file stays.
+ * Returns 0, or an errno value. */
+int output_close(struct output *o, bool commit);
+
+/* The --headless CSV header for n masses. */
+void output_csv_header(FILE *fp, int n, bool energy);
+
+/* One --headless CSV row for the current state of s. scratch holds n doubles. */
+void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch);
+
+#endif

@@ -1,0 +1,504 @@
+/* preset.c: INI presets. libinih does the parsing; a first pass over the text checks
+ * what inih cannot report well (long lines, NUL bytes, unknown sections, keys given
+ * twice) and tells which line each handler call comes from, so every error names its
+ * file and line. A key's value may go on over indented continuation lines, which is
+ * how long lists are written back. */
+#include "preset.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <ini.h>
+
+#ifndef PRESETDIR
+#define PRESETDIR "/usr/local/share/springsim/presets"
+#endif
+
+const char preset_installed_dir[] = PRESETDIR;
+
+static const char *const sections[] = {"preset", "system", "motor", "initial", "run"};
+
+struct parse {
+    const char *path;     /* for messages and origins */
+    struct config *c;     /* what the preset sets */
+    int *lines;           /* line of each handler call, in order */
+    int nlines;           /* handler calls expected */
+    int call;             /* handler calls so far */
+    char prev_key[64];    /* key of the previous call, for continuation lines */
+    char *joined;         /* value of the current key so far, continuations appended */
+    size_t joined_cap;    /* bytes in joined */
+    int err_line;         /* line of the first error the handler found, 0 if none */
+    char msg[512];        /* that error */
+};
+
+static const char *skip_blank(const char *p, const char *end)
+{
+    while (p < end && (*p == ' ' || *p == '\t' || *p == '\r'))
+        p++;
+    return p;
+}
+
+static int known_section(const char *s, size_t len)
+{
+    for (size_t i = 0; i < sizeof sections / sizeof *sections; i++)
+        if (strlen(sections[i]) == len && strncmp(s, sections[i], len) == 0)
+            return 1;
+    return 0;
+}
+
+/* Copies a trimmed name [p, q) into buf; returns its length. */
+static size_t copy_name(const char *p, const char *q, char *buf, size_t len)
+{
+    while (q > p && (q[-1] == ' ' || q[-1] == '\t'))
+        q--;
+    size_t n = (size_t)(q - p);
+    if (n >= len)
+        n = len - 1;
+    memcpy(buf, p, n);
+    buf[n] = '\0';
+    return n;
+}
+
+/* The first pass: mirrors how inih classifies lines (comment, section, continuation,
+ * key) and checks what it cannot. Returns the bad line, or 0 with p->lines filled. */
+static int prescan(struct parse *p, const char *text, size_t size)
+{
+    char seen[64][64];
+    int seen_line[64], nseen = 0;
+    char key[64];
+    int have_key = 0, line = 0;
+    const char *s = text, *end = text + size;
+
+    if (size >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0)
+        s += 3;
+    while (s < end) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        const char *eol = nl ? nl : end;
+        line++;
+        if (memchr(s, '\0', (size_t)(eol - s))) {
+            snprintf(p->msg, sizeof p->msg, "contains a NUL byte (a preset is text)");
+            return line;
+        }
+        if (eol - s > PRESET_MAX_LINE) {
+            snprintf(p->msg, sizeof p->msg, "line is longer than %d characters "
+                     "(continue a long list on indented lines)", PRESET_MAX_LINE);
+            return line;
+        }
+        const char *start = skip_blank(s, eol);
+        if (start == eol || *start == ';' || *start == '#') {
+            /* blank or comment */
+        } else if (*start == '[') {
+            const char *close = memchr(start, ']', (size_t)(eol - start));
+            if (!close) {
+                snprintf(p->msg, sizeof p->msg, "section has no closing ']'");
+                return line;
+            }
+            if (!known_section(start + 1, (size_t)(close - start - 1))) {
+                char name[64];
+                copy_name(start + 1, close, name, sizeof name);
+                snprintf(p->msg, sizeof p->msg, "unknown section [%s] (expected [preset], "
+                         "[system], [motor], [initial] or [run])", name);
+                return line;
+            }
+            have_key = 0;
+            nseen = 0;
+        } else if (have_key && start > s) {
+            p->lines[p->nlines++] = line; /* continuation of the previous key */
+        } else {
+            const char *sep = start;
+            while (sep < eol && *sep != '=' && *sep != ':')
+                sep++;
+            if (sep == eol) {
+                snprintf(p->msg, sizeof p->msg, "expected 'key = value', '[section]' or a "
+                         "comment");
+                return line;
+            }
+            copy_name(start, sep, key, sizeof key);
+            for (int i = 0; i < nseen; i++) {
+                if (strcmp(seen[i], key) == 0) {
+                    snprintf(p->msg, sizeof p->msg, "'%s' is given twice (first on line %d)",
+                             key, seen_line[i]);
+                    return line;
+                }
+            }
+            if (nseen < 64) {
+                strcpy(seen[nseen], key);
+                seen_line[nseen++] = line;
+            }
+            have_key = 1;
+            p->lines[p->nlines++] = line;
+        }
+        s = nl ? nl + 1 : end;
+    }
+    return 0;
+}
+
+/* Cuts a '#' comment that follows blanks (inih cuts ';' ones itself). */
+static void cut_hash_comment(char *v)
+{
+    for (char *q = v; *q; q++) {
+        if (*q == '#' && (q == v || q[-1] == ' ' || q[-1] == '\t')) {
+            *q = '\0';
+            break;
+        }
+    }
+    size_t n = strlen(v);
+    while (n > 0 && (v[n - 1] == ' ' || v[n - 1] == '\t'))
+        v[--n] = '\0';
+}
+
+/* Keeps the first error the handler finds; returns 0, inih's "error" answer. */
+static int handler_fail(struct parse *p, int line, const char *msg)
+{
+    if (!p->err_line) {
+        p->err_line = line;
+        snprintf(p->msg, sizeof p->msg, "%s", msg);
+    }
+    return 0;
+}
+
+static int handler(void *user, const char *section, const char *name, const char *value)
+{
+    struct parse *p = user;
+    int line = p->call < p->nlines ? p->lines[p->call] : 0;
+    p->call++;
+    if (p->err_line)
+        return 1; /* report the first error only */
+
+    int continued = strcmp(name, p->prev_key) == 0;
+    snprintf(p->prev_key, sizeof p->prev_key, "%s", name);
+    size_t have = continued ? strlen(p->joined) : 0;
+    size_t add = strlen(value);
+    char msg[512];
+    if (have + add + 2 > p->joined_cap) {
+        snprintf(msg, sizeof msg, "value of '%s' is too long", name);
+        return handler_fail(p, line, msg);
+    }
+    if (continued && have > 0 && p->joined[have - 1] != ',' && add > 0 && value[0] != ',')
+        p->joined[have++] = ',';
+    memcpy(p->joined + have, value, add + 1);
+    cut_hash_comment(p->joined + have);
+
+    if (*section == '\0') {
+        snprintf(msg, sizeof msg, "'%s' is outside any section", name);
+        return handler_fail(p, line, msg);
+    }
+    if (strcmp(section, "preset") == 0) {
+        if (strcmp(name, "name") == 0)
+            snprintf(p->c->name, sizeof p->c->name, "%s", p->joined);
+        else if (strcmp(name, "description") == 0)
+            snprintf(p->c->description, sizeof p->c->description, "%s", p->joined);
+        else {
+            snprintf(msg, sizeof msg, "unknown key '%s' in [preset] (expected name or "
+                     "description)", name);
+            return handler_fail(p, line, msg);
+        }
+        return 1;
+    }
+    int key = config_find(name);
+    if (key < 0 || !config_options[key].section) {
+        snprintf(msg, sizeof msg, "unknown key '%.64s' in [%s]", name, section);
+        return handler_fail(p, line, msg);
+    }
+    if (strcmp(config_options[key].section, section) != 0) {
+        snprintf(msg, sizeof msg, "'%s' belongs in [%s], not [%s]", name,
+                 config_options[key].section, section);
+        return handler_fail(p, line, msg);
+    }
+    char why[400];
+    if (config_set(p->c, key, p->joined, why, sizeof why) != 0) {
+        snprintf(msg, sizeof msg, "%s: %s", name, why);
+        return handler_fail(p, line, msg);
+    }
+    if (!continued)
+        p->c->origin[key] = (struct config_origin){p->path, line};
+    return 1;
+}
+
+/* Reads a whole file of at most PRESET_MAX_BYTES into a NUL-terminated buffer. */
+static enum preset_status slurp(const char *path, char **text, size_t *size, char *err,
+                                size_t errlen)
+{
+    struct stat st;
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return PRESET_IO;
+    }
+    if (fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: %s", path, S_ISDIR(st.st_mode) ? strerror(EISDIR)
+                                                                   : strerror(errno));
+        close(fd);
+        return PRESET_IO;
+    }
+    char *buf = malloc(PRESET_MAX_BYTES + 2);
+    size_t n = 0;
+    if (!buf) {
+        snprintf(err, errlen, "%s: %s", path, strerror(ENOMEM));
+        close(fd);
+        return PRESET_IO;
+    }
+    for (;;) {
+        ssize_t r = read(fd, buf + n, PRESET_MAX_BYTES + 1 - n);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r < 0) {
+            snprintf(err, errlen, "%s: %s", path, strerror(errno));
+            free(buf);
+            close(fd);
+            return PRESET_IO;
+        }
+        if (r == 0)
+            break;
+        n += (size_t)r;
+        if (n > PRESET_MAX_BYTES) {
+            snprintf(err, errlen, "%s: too large for a preset (more than %d bytes)", path,
+                     PRESET_MAX_BYTES);
+            free(buf);
+            close(fd);
+            return PRESET_BAD;
+        }
+    }
+    close(fd);
+    buf[n] = '\0';
+    *text = buf;
+    *size = n;
+    return PRESET_OK;
+}
+
+enum preset_status preset_load(const char *path, struct config *c, char *err, size_t errlen)
+{
+    char *text;
+    size_t size;
+    enum preset_status st = slurp(path, &text, &size, err, errlen);
+    if (st != PRESET_OK)
+        return st;
+
+    struct parse p = {.path = path, .c = c};
+    p.lines = malloc((size / 2 + 2) * sizeof *p.lines); /* a value line has 2+ bytes */
+    p.joined_cap = 2 * size + 64;
+    p.joined = malloc(p.joined_cap);
+    if (!p.lines || !p.joined) {
+        snprintf(err, errlen, "%s: %s", path, strerror(ENOMEM));
+        st = PRESET_IO;
+        goto out;
+    }
+    int bad = prescan(&p, text, size);
+    if (!bad) {
+        int line = ini_parse_string(text, handler, &p);
+        if (line != 0 && line != p.err_line) {
+            bad = line;
+            snprintf(p.msg, sizeof p.msg, "expected 'key = value', '[section]' or a comment");
+        } else {
+            bad = p.err_line;
+        }
+    }
+    if (bad) {
+        snprintf(err, errlen, "%s:%d: %s", path, bad, p.msg);
+        st = PRESET_BAD;
+    }
+out:
+    free(p.lines);
+    free(p.joined);
+    free(text);
+    return st;
+}
+
+int preset_user_dir(char *out, size_t len)
+{
+    const char *xdg = getenv("XDG_CONFIG_HOME");
+    const char *home = getenv("HOME");
+    int n;
+    if (xdg && *xdg == '/')
+        n = snprintf(out, len, "%s/springsim/presets", xdg);
+    else if (home && *home)
+        n = snprintf(out, len, "%s/.config/springsim/presets", home);
+    else
+        return -1;
+    return n > 0 && (size_t)n < len ? 0 : -1;
+}
+
+/* The directories searched, in order; returns how many were written to dirs. */
+static int search_path(const char *exe_dir, char dirs[4][4096])
+{
+    int count = 0;
+    const char *env = getenv("SPRINGSIM_PRESETS");
+    if (preset_user_dir(dirs[count], sizeof dirs[count]) == 0)
+        count++;
+    if (env && *env)
+        snprintf(dirs[count++], sizeof dirs[0], "%s", env);
+    snprintf(dirs[count++], sizeof dirs[0], "%s", preset_installed_dir);
+    if (exe_dir && *exe_dir)
+        snprintf(dirs[count++], sizeof dirs[0], "%s/presets", exe_dir);
+    return count;
+}
+
+enum preset_status preset_find(const char *name, const char *exe_dir, char *out, size_t len)
+{
+    size_t n = strlen(name);
+    if (strchr(name, '/') || (n > 4 && strcmp(name + n - 4, ".ini") == 0)) {
+        snprintf(out, len, "%s", name);
+        return PRESET_OK;
+    }
+    if (n > 0 && n < 200) {
+        char dirs[4][4096];
+        int count = search_path(exe_dir, dirs);
+        for (int i = 0; i < count; i++) {
+            int w = snprintf(out, len, "%s/%s.ini", dirs[i], name);
+            if (w > 0 && (size_t)w < len && access(out, F_OK) == 0)
+                return PRESET_OK;
+        }
+    }
+    char q[64];
+    snprintf(q, sizeof q, n > 40 ? "'%.36s...'" : "'%s'", name);
+    snprintf(out, len, "%s is not a preset (expected a name from --list-presets, or a file)",
+             q);
+    return PRESET_NONE;
+}
+
+struct listed {
+    char name[256];
+    char description[256];
+};
+
+static int describe(void *user, const char *section, const char *name, const char *value)
+{
+    struct listed *l = user;
+    if (strcmp(section, "preset") == 0 && strcmp(name, "description") == 0)
+        snprintf(l->description, sizeof l->description, "%s", value);
+    return 1;
+}
+
+static int compare_listed(const void *a, const void *b)
+{
+    return strcmp(((const struct listed *)a)->name, ((const struct listed *)b)->name);
+}
+
+int preset_list(FILE *out, const char *exe_dir)
+{
+    char dirs[4][4096];
+    int count = search_path(exe_dir, dirs), have = 0, cap = 0, width = 0;
+    struct listed *all = NULL;
+
+    for (int d = 0; d < count; d++) {
+        DIR *dir = opendir(dirs[d]);
+        if (!dir)
+            continue;
+        struct dirent *ent;
+        while ((ent = readdir(dir))) {
+            size_t n = strlen(ent->d_name);
+            if (n <= 4 || n - 4 >= sizeof all->name || strcmp(ent->d_name + n - 4, ".ini"))
+                continue;
+            int dup = 0;
+            for (int i = 0; i < have && !dup; i++)
+                dup = strncmp(all[i].name, ent->d_name, n - 4) == 0 && !all[i].name[n - 4];
+            if (dup)
+                continue;
+            if (have == cap) {
+                cap = cap ? 2 * cap : 16;
+                struct listed *more = realloc(all, (size_t)cap * sizeof *all);
+                if (!more)
+                    break;
+                all = more;
+            }
+            struct listed *l = &all[have++];
+            memcpy(l->name, ent->d_name, n - 4);
+            l->name[n - 4] = '\0';
+            l->description[0] = '\0';
+            char path[4096 + 300];
+            int w = snprintf(path, sizeof path, "%s/%s", dirs[d], ent->d_name);
+            if (w > 0 && (size_t)w < sizeof path)
+                ini_parse(path, describe, l);
+            if ((int)(n - 4) > width)
+                width = (int)(n - 4);
+        }
+        closedir(dir);
+    }
+    if (have)
+        qsort(all, (size_t)have, sizeof *all, compare_listed);
+    for (int i = 0; i < have; i++)
+        fprintf(out, "%-*s  %s\n", width, all[i].name,
+                all[i].description[0] ? all[i].description : "(no description)");
+    free(all);
+    return have;
+}
+
+/* Shortest text that reads back as exactly v. */
+static void format_exact(double v, char *buf, size_t len)
+{
+    for (int digits = 6; digits <= 17; digits++) {
+        snprintf(buf, len, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v)
+            return;
+    }
+}
+
+/* key = list, one value if all are equal, long lists wrapped onto indented lines. */
+static void write_list(FILE *out, const char *key, const double *v, int n)
+{
+    int same = 1;
+    for (int i = 1; i < n; i++)
+        same &= v[i] == v[0];
+    int col = fprintf(out, "%s =", key);
+    for (int i = 0; i < (same ? 1 : n); i++) {
+        char num[32];
+        format_exact(v[i], num, sizeof num);
+        if (col + (int)strlen(num) + 2 > 78) {
+            fputs(i ? ",\n   " : "\n   ", out);
+            col = 3;
+        } else if (i) {
+            fputc(',', out);
+            col++;
+        }
+        col += fprintf(out, " %s", num);
+    }
+    fputc('\n', out);
+}
+
+static void write_number(FILE *out, const char *key, double v)
+{
+    char num[32];
+    format_exact(v, num, sizeof num);
+    fprintf(out, "%s = %s\n", key, num);
+}
+
+int preset_write(FILE *out, const struct config *c, const struct model *m)
+{
+    int n = m->n;
+    fprintf(out, "; springsim preset\n[preset]\n");
+    if (c->name[0])
+        fprintf(out, "name = %s\n", c->name);
+    if (c->description[0])
+        fprintf(out, "description = %s\n", c->description);
+    fprintf(out, "\n[system]\nmasses = %d\n", n);
+    write_list(out, "mass", m->m, n);
+    write_list(out, "spring", m->k, n + 1);
+    write_list(out, "damping", m->c, n);
+    write_number(out, "dt", c->dt);
+    fprintf(out, "no-collisions = %s\n", m->collisions ? "false" : "true");
+    fprintf(out, "\n[motor]\nboundary = %s\nwave = %s\n", model_boundary_name(m->boundary),
+            motor_wave_name(m->motor.wave));
+    write_number(out, "amplitude", m->motor.amplitude);
+    write_number(out, "frequency", m->motor.frequency);
+    fprintf(out, "\n[initial]\n");
+    if (c->random) {
+        fprintf(out, "random = true\nseed = %llu\n", (unsigned long long)c->seed);
+    } else {
+        double *x = calloc((size_t)n, sizeof *x);
+        if (!x)
+            return -1;
+        for (int i = 0; i < n; i++)
+            x[i] = c->x0.count ? c->x0.v[c->x0.count == 1 ? 0 : i] : 0.0;
+        write_list(out, "x0", x, n);
+        for (int i = 0; i < n; i++)
+            x[i] = c->v0.count ? c->v0.v[c->v0.count == 1 ? 0 : i] : 0.0;
+        write_list(out, "v0", x, n);
+        free(x);
+    }
+    return ferror(out) ? -1 : 0;
+}

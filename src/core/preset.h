@@ -1,0 +1,45 @@
+/* preset.h: presets as INI files (read with libinih): loading into a config, the
+ * search path, listing, and writing a config back in the same format (SPEC 3). */
+#ifndef SPRINGSIM_PRESET_H
+#define SPRINGSIM_PRESET_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "config.h"
+
+#define PRESET_MAX_BYTES (256 * 1024) /* larger files are refused */
+#define PRESET_MAX_LINE 198           /* longest line libinih reads whole */
+
+enum preset_status {
+    PRESET_OK = 0,
+    PRESET_IO = 1,   /* the file could not be read: err is "PATH: reason" */
+    PRESET_BAD = 2,  /* the file is not a valid preset: err is "PATH:LINE: what" */
+    PRESET_NONE = 3  /* no preset of that name: err says so */
+};
+
+/* Applies the preset file at path to c; its keys record path (which must outlive c)
+ * and line as their origin. On failure c may be partly set and err says why. */
+enum preset_status preset_load(const char *path, struct config *c, char *err, size_t errlen);
+
+/* The file a preset name or path stands for. A value with a '/' or ending in ".ini" is
+ * a path; otherwise the search order is the user's directory, $SPRINGSIM_PRESETS, the
+ * installed directory and exe_dir/presets. Writes the path into out and returns
+ * PRESET_OK, or PRESET_NONE with a message in out. */
+enum preset_status preset_find(const char *name, const char *exe_dir, char *out, size_t len);
+
+/* The user's preset directory: $XDG_CONFIG_HOME/springsim/presets, or
+ * $HOME/.config/springsim/presets; 0, or -1 when neither variable is set. */
+int preset_user_dir(char *out, size_t len);
+
+/* One line per preset found on the search path, sorted by name, each name once (the
+ * first found shadows later ones): "NAME  DESCRIPTION". Returns the count. */
+int preset_list(FILE *out, const char *exe_dir);
+
+/* Writes c (with its per-element values from model m) as a preset file. */
+int preset_write(FILE *out, const struct config *c, const struct model *m);
+
+/* The installed preset directory, set at build time. */
+extern const char preset_installed_dir[];
+
+#endif

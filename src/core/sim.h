@@ -1,0 +1,82 @@
+/* sim.h: the running simulation: state, fixed-step RK4 split at the motor's
+ * breakpoints, collisions and the velocity cap after each step, energy accounting. */
+#ifndef SPRINGSIM_SIM_H
+#define SPRINGSIM_SIM_H
+
+#include "model.h"
+
+enum sim_status {
+    SIM_OK = 0,       /* the step was taken */
+    SIM_NONFINITE = 1 /* the step produced a non-finite number; the state is unchanged */
+};
+
+/* Energy accounting, joules. Without collisions or the velocity cap,
+ * kinetic + potential + dissipated - motor_work is constant. */
+struct energy {
+    double kinetic;    /* sum 1/2 m v^2 */
+    double potential;  /* sum 1/2 k stretch^2 */
+    double dissipated; /* integral of sum c v^2 dt */
+    double motor_work; /* integral of k_N (u - d_N) u' dt, jumps included */
+    double contact;    /* energy removed by collisions and the velocity cap */
+    double balance;    /* kinetic + potential + dissipated + contact - motor_work */
+};
+
+struct sim;
+
+/* A simulation of a copy of model with step dt, at rest in equilibrium at t = 0;
+ * NULL when memory runs out. */
+struct sim *sim_new(const struct model *model, double dt);
+
+/* Frees a simulation. */
+void sim_free(struct sim *s);
+
+/* The simulation's own model (read only: change it with sim_set_model). */
+const struct model *sim_model(const struct sim *s);
+
+/* Replaces every parameter with those of model (same n); takes effect at the next step. */
+void sim_set_model(struct sim *s, const struct model *model);
+
+/* Changes the step; the time so far is kept and later steps lie on t + n*dt. */
+void sim_set_dt(struct sim *s, double dt);
+
+/* The step dt (s). */
+double sim_dt(const struct sim *s);
+
+/* Restarts at t = 0 from displacements x and velocities v (NULL for zeros), with the
+ * energy integrals cleared. */
+void sim_reset(struct sim *s, const double *x, const double *v);
+
+/* Advances one step dt. On SIM_NONFINITE the state is left as it was. */
+enum sim_status sim_step(struct sim *s);
+
+/* Simulation time t (s). */
+double sim_time(const struct sim *s);
+
+/* Displacements d_i (N values). */
+const double *sim_x(const struct sim *s);
+
+/* Velocities v_i (N values). */
+const double *sim_v(const struct sim *s);
+
+/* Accelerations from the equation of motion at the current state into a (N values). */
+void sim_accel(const struct sim *s, double *a);
+
+/* Right-end position u(t) now (0 for wall and free ends). */
+double sim_end_position(const struct sim *s);
+
+/* Energy accounting at the current state. */
+void sim_energy(const struct sim *s, struct energy *e);
+
+/* Contacts resolved and velocities capped by the last step. */
+int sim_last_contacts(const struct sim *s);
+
+/* Number of doubles a snapshot of the state takes. */
+int sim_snapshot_size(const struct sim *s);
+
+/* Saves the whole state (time included) into buf. */
+void sim_save(const struct sim *s, double *buf);
+
+/* Restores a state saved by sim_save on a simulation with the same n. */
+void sim_restore(struct sim *s, const double *buf);
+
+#endif
