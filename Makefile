@@ -87,7 +87,8 @@ $(BIN): $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB)
 
 $(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc -o $@ $< \
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc \
+	    -DSRCDIR='"$(CURDIR)"' -o $@ $< \
 	    $(CORE_LIB) $(TEST_LIBS) $(CORE_LIBS)
 
 check: $(BIN) $(TEST_BIN) | $(BUILD)/.deps-test

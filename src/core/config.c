@@ -236,6 +236,10 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
     unsigned long long whole;
     int e;
 
+    if (key < 0 || key >= CFG_KEY_COUNT) {
+        snprintf(err, errlen, "is not a setting");
+        return -1;
+    }
     if (!value && config_options[key].arg)
         return fail(key, "", "is missing", err, errlen);
     switch ((enum config_key)key) {
@@ -305,7 +309,26 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
     case CFG_KEY_COUNT:
         break;
     }
-    return fail(key, value ? value : "", "is not a setting", err, errlen);
+    snprintf(err, errlen, "is not a setting");
+    return -1;
+}
+
+/* Says that list l has the wrong length for this many elements, quoting its values. */
+static void wrong_length(const struct config_list *l, int elements, const char *what,
+                         char *err, size_t errlen)
+{
+    char text[160], q[96];
+    size_t used = 0;
+    text[0] = '\0';
+    for (int i = 0; i < l->count && used < sizeof text - 1; i++) {
+        int w = snprintf(text + used, sizeof text - used, i ? ",%g" : "%g", l->v[i]);
+        if (w < 0)
+            break;
+        used += (size_t)w;
+    }
+    quote(text, q, sizeof q);
+    snprintf(err, errlen, "%s has %d values for %d %s (expected 1 or %d)", q, l->count,
+             elements, what, elements);
 }
 
 /* Checks a list's length against the element count and expands it into dst. */
@@ -318,8 +341,7 @@ static int expand(const struct config_list *l, int elements, double fallback, do
         return 0;
     }
     if (l->count != 1 && l->count != elements) {
-        snprintf(err, errlen, "%d values given for %d %s (expected 1 or %d)", l->count,
-                 elements, what, elements);
+        wrong_length(l, elements, what, err, errlen);
         return -1;
     }
     for (int i = 0; i < elements; i++)
@@ -348,11 +370,8 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
         *bad_key = CFG_X0;
     else if (c->v0.count > 1 && c->v0.count != n)
         *bad_key = CFG_V0;
-    if (*bad_key == CFG_X0 || *bad_key == CFG_V0) {
-        const struct config_list *l = *bad_key == CFG_X0 ? &c->x0 : &c->v0;
-        snprintf(err, errlen, "%d values given for %d %s (expected 1 or %d)", l->count, n,
-                 per_mass, n);
-    }
+    if (*bad_key == CFG_X0 || *bad_key == CFG_V0)
+        wrong_length(*bad_key == CFG_X0 ? &c->x0 : &c->v0, n, per_mass, err, errlen);
     if (*bad_key >= 0) {
         model_free(m);
         return NULL;

@@ -32,6 +32,8 @@ struct parse {
     char prev_key[64];    /* key of the previous call, for continuation lines */
     char *joined;         /* value of the current key so far, continuations appended */
     size_t joined_cap;    /* bytes in joined */
+    int pending;          /* line of a value that ended in ',' and awaits its rest, or 0 */
+    int pending_key;      /* its key */
     int err_line;         /* line of the first error the handler found, 0 if none */
     char msg[512];        /* that error */
 };
@@ -162,6 +164,18 @@ static int handler_fail(struct parse *p, int line, const char *msg)
     return 0;
 }
 
+/* A value left ending in ',' with no continuation after it: report it as it stands. */
+static int check_pending(struct parse *p)
+{
+    char why[400], msg[512];
+    int key = p->pending_key, line = p->pending;
+    p->pending = 0;
+    if (config_set(p->c, key, p->joined, why, sizeof why) == 0)
+        return 1;
+    snprintf(msg, sizeof msg, "%s: %s", config_options[key].name, why);
+    return handler_fail(p, line, msg);
+}
+
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
     struct parse *p = user;
@@ -171,6 +185,8 @@ static int handler(void *user, const char *section, const char *name, const char
         return 1; /* report the first error only */
 
     int continued = strcmp(name, p->prev_key) == 0;
+    if (p->pending && !continued && !check_pending(p))
+        return 0;
     snprintf(p->prev_key, sizeof p->prev_key, "%s", name);
     size_t have = continued ? strlen(p->joined) : 0;
     size_t add = strlen(value);
@@ -210,6 +226,16 @@ static int handler(void *user, const char *section, const char *name, const char
                  config_options[key].section, section);
         return handler_fail(p, line, msg);
     }
+    size_t len = strlen(p->joined);
+    if (len > 0 && p->joined[len - 1] == ',') {
+        /* A list that goes on over the next, indented line: checked when it is whole. */
+        if (!continued)
+            p->c->origin[key] = (struct config_origin){p->path, line};
+        p->pending = line;
+        p->pending_key = key;
+        return 1;
+    }
+    p->pending = 0;
     char why[400];
     if (config_set(p->c, key, p->joined, why, sizeof why) != 0) {
         snprintf(msg, sizeof msg, "%s: %s", name, why);
@@ -291,6 +317,8 @@ enum preset_status preset_load(const char *path, struct config *c, char *err, si
     int bad = prescan(&p, text, size);
     if (!bad) {
         int line = ini_parse_string(text, handler, &p);
+        if (p.pending && !p.err_line)
+            check_pending(&p);
         if (line != 0 && line != p.err_line) {
             bad = line;
             snprintf(p.msg, sizeof p.msg, "expected 'key = value', '[section]' or a comment");

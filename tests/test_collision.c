@@ -1,0 +1,168 @@
+/* test_collision.c: contacts against the 1-D restitution laws: a wall bounce keeps
+ * 0.8 of the speed, a moving piston reverses the relative speed, mass-mass contacts
+ * keep momentum and reverse the relative speed times 0.8, and the velocity cap. */
+#include "testutil.h"
+
+#include <string.h>
+
+#include "core/collision.h"
+#include "core/sim.h"
+
+static void left_wall_bounce(void **state)
+{
+    (void)state;
+    struct model *md = model_new(2);
+    double w = model_block_width(md);
+    /* Mass 1's centre at 0.1 m, inside the wall's limit w/2, moving left at 3 m/s. */
+    double x[2] = {0.1 - model_equilibrium(md, 0), 0.0}, v[2] = {-3.0, 0.0};
+    assert_int_equal(collision_apply(md, x, v, 0.0, 0.0), 1);
+    assert_close(model_equilibrium(md, 0) + x[0], 0.5 * w, 1e-12);
+    assert_close(v[0], 0.8 * 3.0, 1e-12);
+    /* Already moving away: placed on the limit, velocity untouched. */
+    x[0] = 0.1 - model_equilibrium(md, 0), v[0] = 1.0;
+    collision_apply(md, x, v, 0.0, 0.0);
+    assert_close(v[0], 1.0, 0.0);
+    model_free(md);
+}
+
+/* A real run: a mass flung at the wall leaves it with 0.8 of its arrival speed. */
+static void wall_bounce_in_simulation(void **state)
+{
+    (void)state;
+    struct model *md = model_new(1);
+    md->k[0] = md->k[1] = 1e-6; /* nearly free flight */
+    md->c[0] = 0.0;
+    md->boundary = BOUNDARY_WALL;
+    struct sim *s = sim_new(md, 0.001);
+    double x0 = 0.0, v0 = -4.0;
+    sim_reset(s, &x0, &v0);
+    double before = 0.0;
+    int bounced = 0;
+    for (int n = 0; n < 3000 && !bounced; n++) {
+        before = sim_v(s)[0];
+        sim_step(s);
+        bounced = sim_v(s)[0] > 0.0;
+    }
+    assert_true(bounced);
+    assert_close(sim_v(s)[0], -0.8 * before, 1e-6);
+    struct energy e;
+    sim_energy(s, &e);
+    /* The contact took 1 - 0.8^2 of the kinetic energy, and the books show it. */
+    assert_close(e.contact, 0.5 * before * before * (1 - 0.64), 1e-6);
+    assert_close(e.balance, 0.5 * 16.0, 1e-6);
+    sim_free(s);
+    model_free(md);
+}
+
+static void piston_reverses_relative_speed(void **state)
+{
+    (void)state;
+    struct model *md = model_new(1);
+    double w = model_block_width(md), u = -0.5, du = -2.0; /* piston coming in */
+    double lim = 10.0 + u - 0.5 * w;
+    double x[1] = {lim + 0.05 - model_equilibrium(md, 0)}, v[1] = {1.0};
+    assert_int_equal(collision_apply(md, x, v, u, du), 1);
+    assert_close(model_equilibrium(md, 0) + x[0], lim, 1e-12);
+    /* Relative speed 3 m/s in, 2.4 m/s out: v = du - 0.8 (v - du) = -4.4. */
+    assert_close(v[0], -4.4, 1e-12);
+    /* Free end: no right limit at all. */
+    md->boundary = BOUNDARY_FREE;
+    x[0] = 20.0, v[0] = 1.0;
+    assert_int_equal(collision_apply(md, x, v, 0.0, 0.0), 0);
+    model_free(md);
+}
+
+static void mass_mass_momentum(void **state)
+{
+    (void)state;
+    struct model *md = model_new(2);
+    md->m[0] = 1.0, md->m[1] = 3.0;
+    double w = model_block_width(md);
+    /* Centres 0.3 apart (< w = 0.4), closing at 5 m/s. */
+    double c1 = 4.0, c2 = 4.3;
+    double x[2] = {c1 - model_equilibrium(md, 0), c2 - model_equilibrium(md, 1)};
+    double v[2] = {3.0, -2.0};
+    double p0 = 1.0 * v[0] + 3.0 * v[1];
+    assert_true(collision_apply(md, x, v, 0.0, 0.0) >= 1);
+    double X1 = model_equilibrium(md, 0) + x[0], X2 = model_equilibrium(md, 1) + x[1];
+    assert_close(X2 - X1, w, 1e-12);               /* overlap removed */
+    assert_close(X1 + X2, c1 + c2, 1e-12);         /* pushed apart equally */
+    assert_close(1.0 * v[0] + 3.0 * v[1], p0, 1e-12); /* momentum kept */
+    assert_close(v[1] - v[0], 0.8 * 5.0, 1e-12);   /* relative speed reversed times e */
+    /* Separating already: only the overlap is removed. */
+    x[0] = c1 - model_equilibrium(md, 0), x[1] = c2 - model_equilibrium(md, 1);
+    v[0] = -1.0, v[1] = 1.0;
+    collision_apply(md, x, v, 0.0, 0.0);
+    assert_close(v[0], -1.0, 0.0);
+    assert_close(v[1], 1.0, 0.0);
+    model_free(md);
+}
+
+/* Equal masses: the page's "averaged with restitution". */
+static void equal_masses_average(void **state)
+{
+    (void)state;
+    struct model *md = model_new(2);
+    double x[2] = {4.0 - model_equilibrium(md, 0), 4.2 - model_equilibrium(md, 1)};
+    double v[2] = {2.0, 0.0};
+    collision_apply(md, x, v, 0.0, 0.0);
+    assert_close(v[0], 1.0 - 0.8 * 1.0, 1e-12);
+    assert_close(v[1], 1.0 + 0.8 * 1.0, 1e-12);
+    model_free(md);
+}
+
+static void collisions_off(void **state)
+{
+    (void)state;
+    struct model *md = model_new(2);
+    md->collisions = false;
+    double x[2] = {-3.0, 0.0}, v[2] = {-3.0, 0.0};
+    assert_int_equal(collision_apply(md, x, v, 0.0, 0.0), 0);
+    assert_close(x[0], -3.0, 0.0);
+    model_free(md);
+}
+
+static void velocity_cap(void **state)
+{
+    (void)state;
+    double v[4] = {60.0, -70.0, 49.0, -50.0};
+    assert_int_equal(collision_cap(4, v), 2);
+    assert_close(v[0], 50.0, 0.0);
+    assert_close(v[1], -50.0, 0.0);
+    assert_close(v[2], 49.0, 0.0);
+    assert_close(v[3], -50.0, 0.0);
+}
+
+/* Long chains: the blocks shrink to half the spacing, and even 1000 masses piled on one
+ * spot come out separated by at least a block width. */
+static void long_chain_blocks(void **state)
+{
+    (void)state;
+    struct model *md = model_new(1000);
+    double w = model_block_width(md);
+    assert_close(w, 0.5 * 10.0 / 1001, 1e-15);
+    static double x[1000], v[1000];
+    for (int i = 0; i < 1000; i++)
+        x[i] = -model_equilibrium(md, i) + 5.0 + 1e-4 * i, v[i] = (i % 2) ? 1.0 : -1.0;
+    collision_apply(md, x, v, 0.0, 0.0);
+    for (int i = 0; i + 1 < 1000; i++) {
+        double gap = (model_equilibrium(md, i + 1) + x[i + 1]) - (model_equilibrium(md, i) + x[i]);
+        assert_true(gap >= w - 1e-9);
+    }
+    model_free(md);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(left_wall_bounce),
+        cmocka_unit_test(wall_bounce_in_simulation),
+        cmocka_unit_test(piston_reverses_relative_speed),
+        cmocka_unit_test(mass_mass_momentum),
+        cmocka_unit_test(equal_masses_average),
+        cmocka_unit_test(collisions_off),
+        cmocka_unit_test(velocity_cap),
+        cmocka_unit_test(long_chain_blocks),
+    };
+    return cmocka_run_group_tests_name("collision", tests, NULL, NULL);
+}
