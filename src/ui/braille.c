@@ -1,0 +1,118 @@
+/* braille.c: the dot canvas. A dot at (x, y) is bit map[y % 4][x % 2] of cell
+ * (x / 2, y / 4) and the glyph is U+2800 + bits (the drawille scheme). */
+#include "braille.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Unicode braille dot numbering: 1 4 / 2 5 / 3 6 / 7 8, as bits 0..7. */
+static const uint8_t dot_bit[4][2] = {{0x01, 0x08}, {0x02, 0x10}, {0x04, 0x20}, {0x40, 0x80}};
+
+struct canvas *canvas_new(int cols, int rows)
+{
+    if (cols < 1 || rows < 1)
+        return NULL;
+    struct canvas *c = malloc(sizeof *c);
+    if (!c)
+        return NULL;
+    size_t cells = (size_t)cols * (size_t)rows;
+    c->cols = cols;
+    c->rows = rows;
+    c->bits = calloc(2 * cells, 1);
+    if (!c->bits) {
+        free(c);
+        return NULL;
+    }
+    c->color = c->bits + cells;
+    return c;
+}
+
+void canvas_free(struct canvas *c)
+{
+    if (c)
+        free(c->bits);
+    free(c);
+}
+
+void canvas_clear(struct canvas *c)
+{
+    memset(c->bits, 0, 2 * (size_t)c->cols * (size_t)c->rows);
+}
+
+void canvas_set(struct canvas *c, int x, int y, uint8_t color)
+{
+    if (x < 0 || y < 0 || x >= 2 * c->cols || y >= 4 * c->rows)
+        return;
+    size_t cell = (size_t)(y / 4) * (size_t)c->cols + (size_t)(x / 2);
+    c->bits[cell] |= dot_bit[y % 4][x % 2];
+    c->color[cell] = color;
+}
+
+void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color)
+{
+    int dx = abs(x1 - x0), sx = x0 < x1 ? 1 : -1;
+    int dy = -abs(y1 - y0), sy = y0 < y1 ? 1 : -1;
+    int err = dx + dy;
+    for (;;) {
+        canvas_set(c, x0, y0, color);
+        if (x0 == x1 && y0 == y1)
+            break;
+        int e2 = 2 * err;
+        if (e2 >= dy) {
+            err += dy;
+            x0 += sx;
+        }
+        if (e2 <= dx) {
+            err += dx;
+            y0 += sy;
+        }
+    }
+}
+
+void canvas_vspan(struct canvas *c, int x, int y0, int y1, uint8_t color)
+{
+    if (y0 > y1) {
+        int t = y0;
+        y0 = y1;
+        y1 = t;
+    }
+    if (y0 < 0)
+        y0 = 0;
+    if (y1 >= 4 * c->rows)
+        y1 = 4 * c->rows - 1;
+    for (int y = y0; y <= y1; y++)
+        canvas_set(c, x, y, color);
+}
+
+uint8_t canvas_bits(const struct canvas *c, int cx, int cy)
+{
+    if (cx < 0 || cy < 0 || cx >= c->cols || cy >= c->rows)
+        return 0;
+    return c->bits[(size_t)cy * (size_t)c->cols + (size_t)cx];
+}
+
+void braille_utf8(uint8_t bits, char out[5])
+{
+    unsigned cp = 0x2800u + bits; /* three bytes: 1110xxxx 10xxxxxx 10xxxxxx */
+    out[0] = (char)(0xE0 | (cp >> 12));
+    out[1] = (char)(0x80 | ((cp >> 6) & 0x3F));
+    out[2] = (char)(0x80 | (cp & 0x3F));
+    out[3] = '\0';
+    out[4] = '\0';
+}
+
+char braille_ascii(uint8_t bits)
+{
+    int top = (bits & 0x09) != 0;    /* row 0 */
+    int upper = (bits & 0x12) != 0;  /* row 1 */
+    int lower = (bits & 0x24) != 0;  /* row 2 */
+    int bottom = (bits & 0xC0) != 0; /* row 3 */
+    int high = top || upper, low = lower || bottom;
+    if (!bits)
+        return ' ';
+    if (high && low)
+        return (top && bottom) ? '|' : ':';
+    if (high)
+        return top ? '\'' : '-';
+    return bottom ? '.' : '-';
+}

@@ -1,0 +1,41 @@
+/* braille.h: a dot canvas drawn with Unicode braille (2x4 dots a cell), with an ASCII
+ * fallback; pure, no curses, so it is unit-tested on its own. */
+#ifndef SPRINGSIM_BRAILLE_H
+#define SPRINGSIM_BRAILLE_H
+
+#include <stdint.h>
+
+struct canvas {
+    int cols, rows;  /* size in cells; dots are 2*cols by 4*rows */
+    uint8_t *bits;   /* braille dot bits per cell (U+2800 + bits) */
+    uint8_t *color;  /* colour index per cell: the last dot set wins */
+};
+
+/* A blank canvas of cols x rows cells, or NULL on no memory. */
+struct canvas *canvas_new(int cols, int rows);
+
+/* Frees a canvas. */
+void canvas_free(struct canvas *c);
+
+/* Clears every dot. */
+void canvas_clear(struct canvas *c);
+
+/* Sets the dot at (x, y), y = 0 at the top; dots off the canvas are ignored. */
+void canvas_set(struct canvas *c, int x, int y, uint8_t color);
+
+/* Sets the dots of a straight line from (x0, y0) to (x1, y1) (Bresenham). */
+void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color);
+
+/* Sets every dot of column x from y0 to y1 inclusive, in either order. */
+void canvas_vspan(struct canvas *c, int x, int y0, int y1, uint8_t color);
+
+/* Dot bits of cell (cx, cy). */
+uint8_t canvas_bits(const struct canvas *c, int cx, int cy);
+
+/* UTF-8 of the braille glyph for bits into out (4 bytes and a NUL). */
+void braille_utf8(uint8_t bits, char out[5]);
+
+/* An ASCII character that reads like the dots: '.', ':', '\'', '|' and so on. */
+char braille_ascii(uint8_t bits);
+
+#endif

@@ -1,0 +1,72 @@
+/* trail.c: the plots' ring of samples. Each record is stored twice, capacity apart, so
+ * records head .. head + count - 1 are always one contiguous run. */
+#include "trail.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+struct trail *trail_new(int n, int capacity)
+{
+    struct trail *tr = calloc(1, sizeof *tr);
+    if (!tr)
+        return NULL;
+    tr->n = n;
+    tr->width = 2 + 3 * n;
+    tr->capacity = capacity;
+    tr->buf = malloc(2 * (size_t)capacity * (size_t)tr->width * sizeof *tr->buf);
+    tr->accel = malloc((size_t)n * sizeof *tr->accel);
+    if (!tr->buf || !tr->accel) {
+        trail_free(tr);
+        return NULL;
+    }
+    return tr;
+}
+
+void trail_free(struct trail *tr)
+{
+    if (!tr)
+        return;
+    free(tr->buf);
+    free(tr->accel);
+    free(tr);
+}
+
+void trail_push(struct trail *tr, const struct sim *s)
+{
+    int slot = (tr->head + tr->count) % tr->capacity;
+    if (tr->count == tr->capacity) {
+        tr->head = (tr->head + 1) % tr->capacity;
+        tr->count--;
+    }
+    double *a = tr->buf + (size_t)slot * tr->width;
+    double *b = tr->buf + (size_t)(slot + tr->capacity) * tr->width;
+    const double *x = sim_x(s), *v = sim_v(s);
+    sim_accel(s, tr->accel);
+    a[TRAIL_T] = sim_time(s);
+    a[TRAIL_U] = sim_end_position(s);
+    for (int i = 0; i < tr->n; i++) {
+        a[TRAIL_X(tr, i)] = x[i];
+        a[TRAIL_V(tr, i)] = v[i];
+        a[TRAIL_A(tr, i)] = tr->accel[i];
+    }
+    memcpy(b, a, (size_t)tr->width * sizeof *a);
+    tr->count++;
+}
+
+void trail_drop_after(struct trail *tr, double t)
+{
+    const double *first = trail_first(tr);
+    while (tr->count > 0 && first[(size_t)(tr->count - 1) * tr->width + TRAIL_T] > t + 1e-6)
+        tr->count--;
+}
+
+void trail_clear(struct trail *tr)
+{
+    tr->head = 0;
+    tr->count = 0;
+}
+
+const double *trail_first(const struct trail *tr)
+{
+    return tr->buf + (size_t)tr->head * tr->width;
+}
