@@ -39,7 +39,7 @@ MAIN_OBJ = $(BUILD)/main.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all run check sanitize install uninstall clean deps deps-test
+.PHONY: all run check sanitize install uninstall clean deps deps-test FORCE
 
 all: $(BIN)
 
@@ -77,6 +77,13 @@ $(BUILD)/main.o: src/main.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP \
 	    -c -o $@ $<
+
+# The preset directory is compiled in: rebuild what uses it when PREFIX or DATADIR change.
+$(BUILD)/.datadir: FORCE
+	@mkdir -p $(@D)
+	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' >$@
+$(BUILD)/core/preset.o $(BUILD)/main.o: $(BUILD)/.datadir
+FORCE:
 
 $(CORE_LIB): $(CORE_OBJ)
 	rm -f $@

@@ -343,7 +343,7 @@ static int run_headless(const struct config *c, const struct model *m)
     double limit = modes_stable_dt(m);
     if (c->dt >= limit)
         say("warning: dt = %g s is above the RK4 stability limit of this chain, dt < %.4g s "
-            "(omega_max*dt < %.2f); expect nonsense", c->dt, limit, MODES_RK4_LIMIT);
+            "(omega_max*dt < %.2f)", c->dt, limit, MODES_RK4_LIMIT);
     config_initial(c, m, x, x + n);
     sim_reset(s, x, x + n);
     if (open_output(&o, c)) {
@@ -360,7 +360,9 @@ static int run_headless(const struct config *c, const struct model *m)
     output_csv_header(o.fp, n, c->energy);
     output_csv_row(o.fp, s, c->energy, x + 2 * n);
     for (double step = 1; step <= total; step++) {
-        if (sim_step(s) != SIM_OK) {
+        /* Past the stability limit a capped velocity means the numbers are running away:
+         * stop rather than write nonsense. */
+        if (sim_step(s) != SIM_OK || (c->dt >= limit && sim_last_capped(s))) {
             report_blowup(s);
             status = EXIT_FAILURE;
             break;

@@ -66,8 +66,11 @@ int modes_compute(const struct model *m, double *freq, double *shapes)
             while (fabs(phi[big]) < top * (1.0 - 1e-9))
                 big++;
             double scale = 1.0 / phi[big];
-            for (int i = 0; i < n; i++)
+            for (int i = 0; i < n; i++) {
                 phi[i] *= scale;
+                if (fabs(phi[i]) < 1e-12)
+                    phi[i] = 0.0; /* a node, not rounding noise */
+            }
             phi[big] = 1.0;
         }
         free(z);

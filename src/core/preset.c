@@ -32,7 +32,7 @@ struct parse {
     char prev_key[64];    /* key of the previous call, for continuation lines */
     char *joined;         /* value of the current key so far, continuations appended */
     size_t joined_cap;    /* bytes in joined */
-    int pending;          /* line of a value that ended in ',' and awaits its rest, or 0 */
+    int pending;          /* line of a value, empty or ending in ',', awaiting its rest, or 0 */
     int pending_key;      /* its key */
     int err_line;         /* line of the first error the handler found, 0 if none */
     char msg[512];        /* that error */
@@ -164,7 +164,7 @@ static int handler_fail(struct parse *p, int line, const char *msg)
     return 0;
 }
 
-/* A value left ending in ',' with no continuation after it: report it as it stands. */
+/* A value left empty or ending in ',' with no continuation: check it as it stands. */
 static int check_pending(struct parse *p)
 {
     char why[400], msg[512];
@@ -227,8 +227,9 @@ static int handler(void *user, const char *section, const char *name, const char
         return handler_fail(p, line, msg);
     }
     size_t len = strlen(p->joined);
-    if (len > 0 && p->joined[len - 1] == ',') {
-        /* A list that goes on over the next, indented line: checked when it is whole. */
+    if (len == 0 || p->joined[len - 1] == ',') {
+        /* Empty, or ending in ',': the value may go on over the next, indented line, so it
+         * is checked when it is whole. */
         if (!continued)
             p->c->origin[key] = (struct config_origin){p->path, line};
         p->pending = line;

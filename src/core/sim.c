@@ -27,6 +27,7 @@ struct sim {
     double steps;        /* whole steps since t_base (exact in a double to 2^53) */
     double contact;      /* energy removed by contacts and the cap */
     int last_contacts;   /* contacts and caps in the last step */
+    int last_capped;     /* caps in the last step */
     double *y;           /* 2N+2: d, v, D, W */
     double *y0;          /* state at the start of the step, for restoring */
     double *k1, *k2, *k3, *k4, *tmp; /* RK4 stages */
@@ -109,6 +110,7 @@ void sim_reset(struct sim *s, const double *x, const double *v)
     s->steps = 0.0;
     s->contact = 0.0;
     s->last_contacts = 0;
+    s->last_capped = 0;
 }
 
 /* dy/dt at state y with the right end at u moving at du. */
@@ -261,7 +263,8 @@ enum sim_status sim_step(struct sim *s)
     /* Keep the state before contacts so their energy can be booked; cheap next to RK4. */
     memcpy(s->tmp, s->y, (size_t)(2 * n) * sizeof *s->y);
     int contacts = collision_apply(m, s->y, s->y + n, u, du);
-    contacts += collision_cap(n, s->y + n);
+    s->last_capped = collision_cap(n, s->y + n);
+    contacts += s->last_capped;
     if (contacts)
         s->contact += mechanical(s, s->tmp, u) - mechanical(s, s->y, u);
     s->last_contacts = contacts;
@@ -302,6 +305,11 @@ void sim_energy(const struct sim *s, struct energy *e)
 int sim_last_contacts(const struct sim *s)
 {
     return s->last_contacts;
+}
+
+int sim_last_capped(const struct sim *s)
+{
+    return s->last_capped;
 }
 
 int sim_snapshot_size(const struct sim *s)

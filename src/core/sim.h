@@ -70,6 +70,9 @@ void sim_energy(const struct sim *s, struct energy *e);
 /* Contacts resolved and velocities capped by the last step. */
 int sim_last_contacts(const struct sim *s);
 
+/* Velocities capped by the last step (the usual sign of a blow-up). */
+int sim_last_capped(const struct sim *s);
+
 /* Number of doubles a snapshot of the state takes. */
 int sim_snapshot_size(const struct sim *s);
 
