@@ -390,29 +390,25 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
     return PRESET_NONE;
 }
 
-struct listed {
-    char name[256];
-    char description[256];
-};
-
 static int describe(void *user, const char *section, const char *name, const char *value)
 {
-    struct listed *l = user;
+    struct preset_entry *e = user;
     if (strcmp(section, "preset") == 0 && strcmp(name, "description") == 0)
-        snprintf(l->description, sizeof l->description, "%s", value);
+        snprintf(e->description, sizeof e->description, "%s", value);
     return 1;
 }
 
-static int compare_listed(const void *a, const void *b)
+static int compare_entries(const void *a, const void *b)
 {
-    return strcmp(((const struct listed *)a)->name, ((const struct listed *)b)->name);
+    return strcmp(((const struct preset_entry *)a)->name,
+                  ((const struct preset_entry *)b)->name);
 }
 
-int preset_list(FILE *out, const char *exe_dir)
+int preset_scan(const char *exe_dir, struct preset_entry **out)
 {
     char dirs[4][4096];
-    int count = search_path(exe_dir, dirs), have = 0, cap = 0, width = 0;
-    struct listed *all = NULL;
+    int count = search_path(exe_dir, dirs), have = 0, cap = 0;
+    struct preset_entry *all = NULL;
 
     for (int d = 0; d < count; d++) {
         DIR *dir = opendir(dirs[d]);
@@ -430,26 +426,36 @@ int preset_list(FILE *out, const char *exe_dir)
                 continue;
             if (have == cap) {
                 cap = cap ? 2 * cap : 16;
-                struct listed *more = realloc(all, (size_t)cap * sizeof *all);
+                struct preset_entry *more = realloc(all, (size_t)cap * sizeof *all);
                 if (!more)
                     break;
                 all = more;
             }
-            struct listed *l = &all[have++];
-            memcpy(l->name, ent->d_name, n - 4);
-            l->name[n - 4] = '\0';
-            l->description[0] = '\0';
-            char path[4096 + 300];
-            int w = snprintf(path, sizeof path, "%s/%s", dirs[d], ent->d_name);
-            if (w > 0 && (size_t)w < sizeof path)
-                ini_parse(path, describe, l);
-            if ((int)(n - 4) > width)
-                width = (int)(n - 4);
+            struct preset_entry *e = &all[have];
+            int w = snprintf(e->path, sizeof e->path, "%s/%s", dirs[d], ent->d_name);
+            if (w < 0 || (size_t)w >= sizeof e->path)
+                continue;
+            memcpy(e->name, ent->d_name, n - 4);
+            e->name[n - 4] = '\0';
+            e->description[0] = '\0';
+            ini_parse(e->path, describe, e);
+            have++;
         }
         closedir(dir);
     }
     if (have)
-        qsort(all, (size_t)have, sizeof *all, compare_listed);
+        qsort(all, (size_t)have, sizeof *all, compare_entries);
+    *out = all;
+    return have;
+}
+
+int preset_list(FILE *out, const char *exe_dir)
+{
+    struct preset_entry *all;
+    int have = preset_scan(exe_dir, &all), width = 0;
+    for (int i = 0; i < have; i++)
+        if ((int)strlen(all[i].name) > width)
+            width = (int)strlen(all[i].name);
     for (int i = 0; i < have; i++)
         fprintf(out, "%-*s  %s\n", width, all[i].name,
                 all[i].description[0] ? all[i].description : "(no description)");

@@ -32,8 +32,19 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
  * $HOME/.config/springsim/presets; 0, or -1 when neither variable is set. */
 int preset_user_dir(char *out, size_t len);
 
-/* One line per preset found on the search path, sorted by name, each name once (the
- * first found shadows later ones): "NAME  DESCRIPTION". Returns the count. */
+/* A preset found on the search path. */
+struct preset_entry {
+    char name[256];        /* the word --preset takes: the file name without .ini */
+    char path[4400];       /* its file */
+    char description[256]; /* [preset] description, or "" */
+};
+
+/* Every preset on the search path, sorted by name, each name once (the first found
+ * shadows later ones), into a malloc'ed array *out (free it); returns the count. */
+int preset_scan(const char *exe_dir, struct preset_entry **out);
+
+/* One line per preset found on the search path, as preset_scan orders them:
+ * "NAME  DESCRIPTION". Returns the count. */
 int preset_list(FILE *out, const char *exe_dir);
 
 /* Writes c (with its per-element values from model m) as a preset file. */
