@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <getopt.h>
 #include <limits.h>
+#include <locale.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -17,6 +18,8 @@
 #include "core/output.h"
 #include "core/preset.h"
 #include "core/sim.h"
+#include "ui/input.h"
+#include "ui/tui.h"
 
 #ifndef VERSION
 #define VERSION "0.1.0"
@@ -499,6 +502,10 @@ int main(int argc, char **argv)
     static struct cli cli;
     char exe_dir[PATH_MAX], err[512];
 
+    /* The user's locale for the terminal (UTF-8 or not), but numbers always read and
+     * print with a decimal point. */
+    setlocale(LC_ALL, "");
+    setlocale(LC_NUMERIC, "C");
     find_exe_dir(argv[0], exe_dir, sizeof exe_dir);
     config_init(&c);
     int status = parse_args(argc, argv, &c, &cli, exe_dir);
@@ -533,9 +540,15 @@ int main(int argc, char **argv)
         status = run_sweep(&c, m, cli.sweep);
         break;
     default:
-        say("the interactive program is not built yet; use --headless, --modes or --sweep "
-            "(see springsim --help)");
-        status = EXIT_FAILURE;
+        if (c.masses > 10) {
+            char why[160];
+            snprintf(why, sizeof why, "'%d' is out of range for the interactive program "
+                     "(expected 1 <= N <= 10; --headless takes up to 1000)", c.masses);
+            report_key(&c, CFG_MASSES, why);
+            status = EXIT_USAGE;
+            break;
+        }
+        status = tui_run(&c, exe_dir);
         break;
     }
     model_free(m);

@@ -36,7 +36,7 @@ static void nice_range(double dmin, double dmax, int max_ticks, double *lo, doub
                        double *step)
 {
     double span = dmax - dmin;
-    double pad = span > 0.0 ? 0.05 * span : fmax(0.1 * fabs(dmax), 1e-3);
+    double pad = span > 1e-12 ? 0.05 * span : fmax(0.1 * fabs(dmax), 1.0);
     *lo = dmin - pad;
     *hi = dmax + pad;
     *step = plot_tick_step(*lo, *hi, max_ticks);
@@ -47,6 +47,10 @@ void plot_scale_update(struct scale *s, double dmin, double dmax, int max_ticks,
                        int shrink_after)
 {
     if (!isfinite(dmin) || !isfinite(dmax) || dmax < dmin)
+        return;
+    /* Flat data (a chain at rest) says nothing about the scale: keep the one there is. */
+    if (s->set && dmax - dmin <= 1e-12 * fmax(1.0, fabs(dmax)) && dmin >= s->lo &&
+        dmax <= s->hi)
         return;
     double lo, hi, step;
     nice_range(dmin, dmax, max_ticks, &lo, &hi, &step);

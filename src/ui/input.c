@@ -1,0 +1,64 @@
+/* input.c: the key table (nnn's bindings[] idea): keys to actions in one place. */
+#include "input.h"
+
+#include <string.h>
+
+#include <curses.h>
+
+#define CTRL(c) ((c) & 0x1f)
+
+const struct binding input_bindings[] = {
+    {' ', ACT_RUN, "space", "space", "start / pause"},
+    {'.', ACT_STEP, ".", ".", "step forward one dt (pauses)"},
+    {',', ACT_BACK, ",", ",", "step back one dt (paused; up to 500 states)"},
+    {'r', ACT_RESET, "r", "r", "reset to the initial conditions (t = 0, plots cleared)"},
+    {'R', ACT_RANDOM, "R", "R", "random initial positions"},
+    {'p', ACT_PRESETS, "p", "p", "preset menu"},
+    {KEY_UP, ACT_UP, "↑", "Up", "select the control above (the mass to the left in the chain)"},
+    {'k', ACT_UP, "k", "k", NULL},
+    {KEY_DOWN, ACT_DOWN, "↓", "Down", "select the control below (the mass to the right)"},
+    {'j', ACT_DOWN, "j", "j", NULL},
+    {KEY_LEFT, ACT_LEFT, "←", "Left", "decrease the value, fine (move the mass left)"},
+    {'h', ACT_LEFT, "h", "h", NULL},
+    {KEY_RIGHT, ACT_RIGHT, "→", "Right", "increase the value, fine (move the mass right)"},
+    {'l', ACT_RIGHT, "l", "l", NULL},
+    {KEY_NPAGE, ACT_LEFT_BIG, "PgDn", "PgDn", "decrease, coarse"},
+    {KEY_SLEFT, ACT_LEFT_BIG, "Shift+←", "Shift+Left", NULL},
+    {'H', ACT_LEFT_BIG, "H", "H", NULL},
+    {KEY_PPAGE, ACT_RIGHT_BIG, "PgUp", "PgUp", "increase, coarse"},
+    {KEY_SRIGHT, ACT_RIGHT_BIG, "Shift+→", "Shift+Right", NULL},
+    {'L', ACT_RIGHT_BIG, "L", "L", NULL},
+    {'\n', ACT_ENTER, "Enter", "Enter", "type a value (Masses: apply; Preset: open the menu)"},
+    {KEY_ENTER, ACT_ENTER, "Enter", "Enter", NULL},
+    {'\r', ACT_ENTER, "Enter", "Enter", NULL},
+    {'\t', ACT_FOCUS, "Tab", "Tab", "switch between the controls and the chain (move masses)"},
+    {'[', ACT_SLOWER, "[", "[", "playback slower"},
+    {']', ACT_FASTER, "]", "]", "playback faster"},
+    {27, ACT_ESCAPE, "Esc", "Esc", "close the overlay, cancel typing, leave the chain"},
+    {CTRL('l'), ACT_REDRAW, "Ctrl+L", "Ctrl+L", "redraw the screen"},
+    {'?', ACT_HELP, "?", "?", "this help (? or Esc closes it)"},
+    {'q', ACT_QUIT, "q", "q", "quit"},
+    {0, ACT_NONE, NULL, NULL, NULL},
+};
+
+enum action input_action(int key)
+{
+    for (const struct binding *b = input_bindings; b->name; b++)
+        if (b->key == key)
+            return b->action;
+    return ACT_NONE;
+}
+
+void input_print_keys(FILE *out)
+{
+    for (const struct binding *b = input_bindings; b->name; b++) {
+        if (!b->help)
+            continue;
+        fprintf(out, "%s", b->name);
+        /* The other keys for the same action. */
+        for (const struct binding *o = b + 1; o->name && !o->help; o++)
+            if (o->action == b->action && strcmp(o->name, b->name) != 0)
+                fprintf(out, ", %s", o->name);
+        fprintf(out, "\t%s\n", b->help);
+    }
+}

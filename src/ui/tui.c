@@ -1,0 +1,1180 @@
+/* tui.c: the terminal front end: set-up and restore, colours, layout, drawing of the
+ * scene, plots, controls and overlays, input, and the paced main loop.
+ * Drawing goes to stdscr with erase() (never clear()) and one doupdate() per frame;
+ * ncurses sends only what changed. */
+#include "tui.h"
+
+#include <locale.h>
+#include <langinfo.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <curses.h>
+
+#include "../core/modes.h"
+#include "../core/preset.h"
+#include "app.h"
+#include "braille.h"
+#include "input.h"
+#include "plot.h"
+
+#define MIN_COLS 60
+#define MIN_ROWS 20
+#define FRAME_HZ 30.0   /* scene and status */
+#define PLOT_HZ 10.0    /* plots, while running */
+#define SCENE_SPAN 13.0 /* metres shown: 0 .. L + the motor's largest stroke */
+
+/* Colour pairs. */
+enum { PAIR_MASS = 1, PAIR_MOTOR = 11, PAIR_SPRING, PAIR_DIM, PAIR_TITLE, PAIR_WARN,
+       PAIR_WALL, PAIR_SELECT, PAIR_COUNT };
+
+struct rect {
+    int y, x, h, w;
+};
+
+enum focus { FOCUS_CONTROLS, FOCUS_CHAIN };
+enum overlay { OVERLAY_NONE, OVERLAY_HELP, OVERLAY_PRESETS, OVERLAY_EDIT };
+
+struct plotview {
+    const char *title;  /* centred on the top border */
+    int xq, yq;         /* quantities: 0 time, 1 x, 2 v, 3 a */
+    struct scale xs, ys; /* axis scales (xs unused for time plots) */
+    struct canvas *canvas;
+    struct rect r;       /* frame */
+};
+
+struct tui {
+    struct app app;
+    bool utf8;              /* braille and box drawing allowed */
+    bool color;             /* colours in use */
+    int rows, cols;         /* terminal size */
+    bool too_small;         /* below MIN_COLS x MIN_ROWS */
+    struct rect status, scene, controls, hints;
+    struct plotview plots[6];
+    struct canvas *scene_canvas;
+    enum focus focus;
+    int control;            /* selected control */
+    int mass;               /* selected mass, in the chain */
+    enum overlay overlay;
+    struct preset_entry *presets; /* the menu's entries */
+    int npresets, preset_sel;
+    char edit[64];          /* text being typed */
+    int edit_len;
+    double plot_due;        /* wall time of the next plot refresh */
+    bool plots_dirty;       /* redraw the plots at the next frame */
+    bool behind;            /* the core could not keep up */
+    bool dragging;          /* a mass is being dragged with the mouse */
+    int scene_x0;           /* first column of the chain's metres */
+    double scene_cpm;       /* columns per metre */
+};
+
+static volatile sig_atomic_t quit_signal; /* SIGINT, SIGTERM, SIGHUP received */
+static bool curses_on;
+
+static const char *const plot_titles[6] = {"Displacement (m)", "Velocity (m/s)",
+                                           "Acceleration (m/s²)", "x–v", "x–a", "v–a"};
+static const char *const plot_titles_ascii[6] = {"Displacement (m)", "Velocity (m/s)",
+                                                 "Acceleration (m/s^2)", "x-v", "x-a", "v-a"};
+static const char *const plot_short[6] = {"x (m)", "v (m/s)", "a (m/s²)", "x–v", "x–a", "v–a"};
+static const char *const plot_short_ascii[6] = {"x (m)", "v (m/s)", "a (m/s^2)", "x-v", "x-a",
+                                                "v-a"};
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- terminal set-up and restore ---- */
+
+static void restore_terminal(void)
+{
+    if (curses_on) {
+        curses_on = false;
+        endwin();
+    }
+}
+
+static void on_quit_signal(int sig)
+{
+    quit_signal = sig;
+}
+
+/* A crash: give the terminal back, then die of the same signal. */
+static void on_fatal_signal(int sig)
+{
+    restore_terminal();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void install_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_quit_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+    sa.sa_handler = on_fatal_signal;
+    sa.sa_flags = SA_RESETHAND;
+    sigaction(SIGSEGV, &sa, NULL);
+    sigaction(SIGBUS, &sa, NULL);
+    sigaction(SIGFPE, &sa, NULL);
+    sigaction(SIGILL, &sa, NULL);
+    sigaction(SIGABRT, &sa, NULL);
+}
+
+/* 256-colour, 8-colour and mono palettes for the masses (blue, green, orange, red,
+ * purple, then cyan, yellow, pink, brown, grey), the motor's pink and the rest. */
+static void init_colors(struct tui *t)
+{
+    const char *no_color = getenv("NO_COLOR");
+    t->color = has_colors() && !(no_color && *no_color);
+    if (!t->color)
+        return;
+    start_color();
+    use_default_colors();
+    static const short c256[10] = {33, 40, 208, 196, 129, 44, 220, 205, 130, 250};
+    static const short c8[10] = {COLOR_BLUE,    COLOR_GREEN, COLOR_YELLOW, COLOR_RED,
+                                 COLOR_MAGENTA, COLOR_CYAN,  COLOR_YELLOW, COLOR_MAGENTA,
+                                 COLOR_RED,     COLOR_WHITE};
+    bool rich = COLORS >= 256;
+    for (int i = 0; i < 10; i++)
+        init_pair((short)(PAIR_MASS + i), rich ? c256[i] : c8[i], -1);
+    init_pair(PAIR_MOTOR, rich ? 205 : COLOR_MAGENTA, -1);
+    init_pair(PAIR_SPRING, rich ? 34 : COLOR_GREEN, -1);
+    init_pair(PAIR_DIM, rich ? 240 : COLOR_WHITE, -1);
+    init_pair(PAIR_TITLE, rich ? 45 : COLOR_CYAN, -1);
+    init_pair(PAIR_WARN, rich ? 214 : COLOR_YELLOW, -1);
+    init_pair(PAIR_WALL, rich ? 244 : COLOR_WHITE, -1);
+    init_pair(PAIR_SELECT, COLOR_BLACK, rich ? 45 : COLOR_CYAN);
+}
+
+/* Attribute for colour pair p (or a mono stand-in). */
+static attr_t pair_attr(const struct tui *t, int p)
+{
+    if (t->color)
+        return COLOR_PAIR(p);
+    if (p == PAIR_DIM || p == PAIR_WALL)
+        return A_DIM;
+    if (p == PAIR_WARN || p == PAIR_TITLE)
+        return A_BOLD;
+    if (p == PAIR_SELECT)
+        return A_REVERSE;
+    return A_NORMAL;
+}
+
+static attr_t mass_attr(const struct tui *t, int i)
+{
+    return pair_attr(t, PAIR_MASS + i % 10);
+}
+
+/* ---- small drawing helpers ---- */
+
+/* Writes UTF-8 or ASCII text s at (y, x), at most w columns. */
+static void put(int y, int x, int w, const char *s)
+{
+    if (w <= 0 || y < 0 || x < 0)
+        return;
+    mvaddnstr(y, x, s, -1);
+    (void)w;
+}
+
+/* Columns text s takes (UTF-8 characters, each one column here). */
+static int text_width(const char *s)
+{
+    int n = 0;
+    for (; *s; s++)
+        n += (*s & 0xC0) != 0x80;
+    return n;
+}
+
+/* Writes at most w columns of text s (counting UTF-8 characters as one column). */
+static void putn(int y, int x, int w, const char *s)
+{
+    if (w <= 0)
+        return;
+    int cols = 0;
+    const char *p = s;
+    while (*p && cols < w) {
+        p++;
+        while ((*p & 0xC0) == 0x80)
+            p++;
+        cols++;
+    }
+    mvaddnstr(y, x, s, (int)(p - s));
+}
+
+static void printfn(int y, int x, int w, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+static void printfn(int y, int x, int w, const char *fmt, ...)
+{
+    char buf[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    putn(y, x, w, buf);
+}
+
+/* A box with an optional title near the left (centre = false) or centred. */
+static void frame(const struct tui *t, struct rect r, const char *title, bool centre)
+{
+    if (r.h < 2 || r.w < 2)
+        return;
+    mvaddch(r.y, r.x, ACS_ULCORNER);
+    mvhline(r.y, r.x + 1, ACS_HLINE, r.w - 2);
+    mvaddch(r.y, r.x + r.w - 1, ACS_URCORNER);
+    mvvline(r.y + 1, r.x, ACS_VLINE, r.h - 2);
+    mvvline(r.y + 1, r.x + r.w - 1, ACS_VLINE, r.h - 2);
+    mvaddch(r.y + r.h - 1, r.x, ACS_LLCORNER);
+    mvhline(r.y + r.h - 1, r.x + 1, ACS_HLINE, r.w - 2);
+    mvaddch(r.y + r.h - 1, r.x + r.w - 1, ACS_LRCORNER);
+    if (title && r.w > 6) {
+        int len = (int)strlen(title);
+        int max = r.w - 4;
+        int shown = len;
+        /* Count UTF-8 characters, not bytes, for centring. */
+        int chars = 0;
+        for (const char *p = title; *p; p++)
+            chars += (*p & 0xC0) != 0x80;
+        shown = chars < max ? chars : max;
+        int x = centre ? r.x + (r.w - shown - 2) / 2 : r.x + 1;
+        attron(pair_attr(t, PAIR_TITLE) | A_BOLD);
+        mvaddch(r.y, x, ' ');
+        putn(r.y, x + 1, shown, title);
+        addch(' ');
+        attroff(pair_attr(t, PAIR_TITLE) | A_BOLD);
+        (void)len;
+    }
+}
+
+/* Draws a braille canvas at (y, x): each cell with dots in its colour. */
+static void draw_canvas(const struct tui *t, const struct canvas *c, int y, int x)
+{
+    for (int cy = 0; cy < c->rows; cy++) {
+        for (int cx = 0; cx < c->cols; cx++) {
+            uint8_t bits = canvas_bits(c, cx, cy);
+            if (!bits)
+                continue;
+            int col = c->color[(size_t)cy * c->cols + cx];
+            attr_t a = col >= PAIR_MASS && col < PAIR_MASS + 10 ? mass_attr(t, col - PAIR_MASS)
+                                                                 : pair_attr(t, col);
+            attron(a);
+            if (t->utf8) {
+                char g[5];
+                braille_utf8(bits, g);
+                mvaddstr(y + cy, x + cx, g);
+            } else {
+                mvaddch(y + cy, x + cx, (chtype)braille_ascii(bits));
+            }
+            attroff(a);
+        }
+    }
+}
+
+/* ---- layout ---- */
+
+static void layout(struct tui *t)
+{
+    getmaxyx(stdscr, t->rows, t->cols);
+    t->too_small = t->cols < MIN_COLS || t->rows < MIN_ROWS;
+    if (t->too_small)
+        return;
+    int ctrl_w = t->cols >= 110 ? 32 : 28;
+    t->status = (struct rect){0, 0, 1, t->cols};
+    t->hints = (struct rect){t->rows - 1, 0, 1, t->cols};
+    t->scene = (struct rect){1, 0, 5, t->cols};
+    int top = 6, h = t->rows - 7, w = t->cols - ctrl_w;
+    t->controls = (struct rect){top, w, h, ctrl_w};
+    int pw = w / 3, ph = h / 2;
+    for (int i = 0; i < 6; i++) {
+        struct plotview *p = &t->plots[i];
+        int col = i % 3, row = i / 3;
+        p->r = (struct rect){top + row * ph, col * pw, row ? h - ph : ph,
+                             col == 2 ? w - 2 * pw : pw};
+        canvas_free(p->canvas);
+        /* Inside the frame: y labels take 6 columns, the x axis and its labels 2 rows. */
+        int cw = p->r.w - 2 - 6, chh = p->r.h - 2 - 2;
+        p->canvas = canvas_new(cw < 1 ? 1 : cw, chh < 1 ? 1 : chh);
+    }
+    canvas_free(t->scene_canvas);
+    t->scene_canvas = canvas_new(t->scene.w - 2, 3);
+    t->plots_dirty = true;
+}
+
+/* ---- the scene ---- */
+
+/* Column (fractional) of physical position X (m). */
+static double scene_col(const struct tui *t, double X)
+{
+    return t->scene_x0 + X * t->scene_cpm;
+}
+
+/* A zig-zag spring between physical positions a and b on the scene canvas. */
+static void draw_spring(struct tui *t, double a, double b)
+{
+    struct canvas *c = t->scene_canvas;
+    int x0 = (int)lround(2.0 * (scene_col(t, a) - t->scene.x - 1));
+    int x1 = (int)lround(2.0 * (scene_col(t, b) - t->scene.x - 1));
+    int mid = 5, amp = 3; /* dot rows 2..8 of 12 */
+    if (x1 - x0 < 6) {
+        canvas_line(c, x0, mid, x1, mid, PAIR_SPRING);
+        return;
+    }
+    const int zigs = 8;
+    int px = x0, py = mid;
+    for (int k = 1; k <= 2 * zigs + 1; k++) {
+        int x = x0 + (int)lround((double)(x1 - x0) * k / (2 * zigs + 2));
+        int y = mid + ((k % 2) ? -amp : amp);
+        canvas_line(c, px, py, x, y, PAIR_SPRING);
+        px = x, py = y;
+    }
+    canvas_line(c, px, py, x1, mid, PAIR_SPRING);
+}
+
+/* A block from physical a to b, 3 rows tall, with sub-cell edges (eighth blocks). */
+static void draw_block(struct tui *t, double a, double b, attr_t attr, const char *label,
+                       bool selected)
+{
+    static const char *const left_eighths[9] = {" ", "▏", "▎", "▍", "▌", "▋", "▊", "▉", "█"};
+    double c0 = scene_col(t, a), c1 = scene_col(t, b);
+    int first = (int)floor(c0), last = (int)ceil(c1) - 1;
+    int xmin = t->scene.x + 1, xmax = t->scene.x + t->scene.w - 2;
+    for (int row = 0; row < 3; row++) {
+        int y = t->scene.y + 1 + row;
+        for (int x = first; x <= last; x++) {
+            if (x < xmin || x > xmax)
+                continue;
+            double lo = fmax(c0, x), hi = fmin(c1, x + 1.0);
+            if (hi <= lo)
+                continue;
+            attron(attr);
+            if (!t->utf8) {
+                mvaddch(y, x, selected ? '#' : (row == 1 ? '=' : '#'));
+            } else if (hi - lo > 0.94) {
+                mvaddstr(y, x, "█");
+            } else if (lo - x < 0.06) {
+                /* Covers the cell's left part: a left block of that many eighths. */
+                mvaddstr(y, x, left_eighths[(int)lround((hi - lo) * 8)]);
+            } else {
+                /* Covers the right part: the uncovered left part, reversed. */
+                int e = (int)lround((lo - x) * 8);
+                attron(A_REVERSE);
+                mvaddstr(y, x, e <= 0 ? " " : left_eighths[e > 8 ? 8 : e]);
+                attroff(A_REVERSE);
+            }
+            attroff(attr);
+        }
+    }
+    if (label) {
+        int x = (int)floor(0.5 * (c0 + c1));
+        if (x >= xmin && x <= xmax) {
+            attron(attr | A_REVERSE | A_BOLD);
+            if (selected)
+                attron(A_UNDERLINE);
+            mvaddstr(t->scene.y + 2, x, label);
+            attroff(attr | A_REVERSE | A_BOLD | A_UNDERLINE);
+        }
+    }
+}
+
+static void draw_scene(struct tui *t)
+{
+    const struct app *app = &t->app;
+    const struct model *m = app->model;
+    const double *x = sim_x(app->sim);
+    double w = model_block_width(m);
+    struct rect r = t->scene;
+    int inner = r.w - 2;
+    int wall_w = 2, house_w = 9;
+    t->scene_x0 = r.x + 1 + wall_w;
+    t->scene_cpm = (double)(inner - wall_w - house_w) / SCENE_SPAN;
+    char title[64];
+    snprintf(title, sizeof title, "Chain  t = %.2f s", sim_time(app->sim));
+    frame(t, r, title, false);
+
+    /* Left wall. */
+    attron(pair_attr(t, PAIR_WALL));
+    for (int row = 1; row <= 3; row++)
+        put(r.y + row, r.x + 1, wall_w, t->utf8 ? "▓▓" : "##");
+    attroff(pair_attr(t, PAIR_WALL));
+
+    /* Springs on a braille canvas (ASCII: a row of / and \). */
+    double u = sim_end_position(app->sim);
+    double end = MODEL_LENGTH + (m->boundary == BOUNDARY_MOTOR ? u : 0.0);
+    canvas_clear(t->scene_canvas);
+    for (int j = 0; j <= m->n; j++) {
+        if (j == m->n && m->boundary == BOUNDARY_FREE)
+            break;
+        double a = j == 0 ? 0.0 : model_equilibrium(m, j - 1) + x[j - 1] + 0.5 * w;
+        double b = j == m->n ? end : model_equilibrium(m, j) + x[j] - 0.5 * w;
+        if (b <= a)
+            continue;
+        if (t->utf8) {
+            draw_spring(t, a, b);
+        } else {
+            int c0 = (int)lround(scene_col(t, a)), c1 = (int)lround(scene_col(t, b));
+            attron(pair_attr(t, PAIR_SPRING));
+            for (int c = c0; c < c1; c++)
+                if (c > r.x && c < r.x + r.w - 1)
+                    mvaddch(r.y + 2, c, ((c - c0) % 2) ? '\\' : '/');
+            attroff(pair_attr(t, PAIR_SPRING));
+        }
+    }
+    if (t->utf8)
+        draw_canvas(t, t->scene_canvas, r.y + 1, r.x + 1);
+
+    /* Right end: piston and motor housing, or a wall. */
+    int hx = r.x + r.w - 1 - house_w;
+    if (m->boundary == BOUNDARY_MOTOR) {
+        double face = scene_col(t, end);
+        attron(pair_attr(t, PAIR_WALL));
+        for (int c = (int)ceil(face); c < hx; c++)
+            mvaddstr(r.y + 2, c, t->utf8 ? "═" : "=");
+        attroff(pair_attr(t, PAIR_WALL));
+        draw_block(t, end, end + 0.12, pair_attr(t, PAIR_WALL), NULL, false);
+        attron(pair_attr(t, PAIR_WALL));
+        put(r.y + 1, hx, house_w, t->utf8 ? "┌───────┐" : "+-------+");
+        put(r.y + 2, hx, house_w, t->utf8 ? "┤MOTOR  │" : "|MOTOR  |");
+        put(r.y + 3, hx, house_w, t->utf8 ? "└───────┘" : "+-------+");
+        attroff(pair_attr(t, PAIR_WALL));
+        attron(pair_attr(t, PAIR_MOTOR) | A_BOLD);
+        put(r.y + 2, hx + 7, 1, t->utf8 ? "●" : "*");
+        attroff(pair_attr(t, PAIR_MOTOR) | A_BOLD);
+    } else if (m->boundary == BOUNDARY_WALL) {
+        int c = (int)lround(scene_col(t, MODEL_LENGTH));
+        attron(pair_attr(t, PAIR_WALL));
+        for (int row = 1; row <= 3; row++)
+            put(r.y + row, c, 2, t->utf8 ? "▓▓" : "##");
+        attroff(pair_attr(t, PAIR_WALL));
+    }
+
+    /* Masses, drawn to scale, each with its number. */
+    for (int i = 0; i < m->n; i++) {
+        double X = model_equilibrium(m, i) + x[i];
+        char label[4];
+        snprintf(label, sizeof label, "%d", (i + 1) % 10);
+        bool sel = t->focus == FOCUS_CHAIN && t->mass == i;
+        draw_block(t, X - 0.5 * w, X + 0.5 * w, mass_attr(t, i), label, sel);
+    }
+    if (t->focus == FOCUS_CHAIN) {
+        attron(pair_attr(t, PAIR_TITLE));
+        printfn(r.y + r.h - 1, r.x + 2, r.w - 4, " mass %d selected: ←→ move it, ↑↓ another, "
+                "Tab back ", t->mass + 1);
+        attroff(pair_attr(t, PAIR_TITLE));
+    }
+}
+
+/* ---- plots ---- */
+
+/* Value of quantity q (1 x, 2 v, 3 a) of mass i in record rec. */
+static double quantity(const struct trail *tr, const double *rec, int q, int i)
+{
+    switch (q) {
+    case 1:
+        return rec[TRAIL_X(tr, i)];
+    case 2:
+        return rec[TRAIL_V(tr, i)];
+    default:
+        return rec[TRAIL_A(tr, i)];
+    }
+}
+
+static void draw_plot(struct tui *t, struct plotview *p, double t_now)
+{
+    const struct trail *tr = t->app.trail;
+    const struct model *m = t->app.model;
+    struct rect r = p->r;
+    struct canvas *c = p->canvas;
+    int idx = (int)(p - t->plots);
+    bool narrow = r.w - 4 < (int)strlen(plot_titles_ascii[idx]) + 2;
+    frame(t, r, narrow ? (t->utf8 ? plot_short[idx] : plot_short_ascii[idx])
+                       : (t->utf8 ? plot_titles[idx] : plot_titles_ascii[idx]), true);
+    if (r.w < 12 || r.h < 6)
+        return;
+    const double *first = trail_first(tr);
+    int count = tr->count;
+    double t0 = t_now - APP_WINDOW;
+    /* The samples inside the window. */
+    int start = 0;
+    while (start < count && first[(size_t)start * tr->width + TRAIL_T] < t0)
+        start++;
+    const double *rec = first + (size_t)start * tr->width;
+    int k = count - start;
+    bool motor = idx == 0 && m->boundary == BOUNDARY_MOTOR;
+
+    /* Autoscale over what is shown. */
+    double ymin = INFINITY, ymax = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
+    for (int s = 0; s < k; s++) {
+        const double *q = rec + (size_t)s * tr->width;
+        for (int i = 0; i < m->n; i++) {
+            double yv = quantity(tr, q, p->yq, i);
+            ymin = fmin(ymin, yv), ymax = fmax(ymax, yv);
+            if (p->xq) {
+                double xv = quantity(tr, q, p->xq, i);
+                xmin = fmin(xmin, xv), xmax = fmax(xmax, xv);
+            }
+        }
+        if (motor)
+            ymin = fmin(ymin, q[TRAIL_U]), ymax = fmax(ymax, q[TRAIL_U]);
+    }
+    int yticks = c->rows >= 8 ? 4 : 2, xticks = c->cols >= 30 ? 4 : 2;
+    if (k > 0) {
+        plot_scale_update(&p->ys, ymin, ymax, yticks, 30);
+        if (p->xq)
+            plot_scale_update(&p->xs, xmin, xmax, xticks, 30);
+    }
+    if (!p->ys.set)
+        plot_scale_update(&p->ys, -1.0, 1.0, yticks, 30);
+    if (p->xq && !p->xs.set)
+        plot_scale_update(&p->xs, -1.0, 1.0, xticks, 30);
+
+    int cx = r.x + 1 + 6, cy = r.y + 1; /* canvas origin */
+    /* Grid: dim dots on the tick rows, and the y labels. */
+    attron(pair_attr(t, PAIR_DIM));
+    for (double v = p->ys.lo; v <= p->ys.hi + 1e-9 * p->ys.step; v += p->ys.step) {
+        double f = (v - p->ys.lo) / (p->ys.hi - p->ys.lo);
+        int row = (int)lround((1.0 - f) * (c->rows * 4 - 1)) / 4;
+        for (int col = 0; col < c->cols; col += 2)
+            mvaddstr(cy + row, cx + col, t->utf8 ? "·" : ".");
+    }
+    attroff(pair_attr(t, PAIR_DIM));
+    for (double v = p->ys.lo; v <= p->ys.hi + 1e-9 * p->ys.step; v += p->ys.step) {
+        double f = (v - p->ys.lo) / (p->ys.hi - p->ys.lo);
+        int row = (int)lround((1.0 - f) * (c->rows * 4 - 1)) / 4;
+        char lab[16];
+        plot_tick_label(v, p->ys.step, lab, sizeof lab);
+        printfn(cy + row, r.x + 1, 6, "%5.5s", lab);
+        mvaddch(cy + row, r.x + 6, ACS_RTEE);
+    }
+    mvvline(cy, r.x + 6, ACS_VLINE, 0);
+    for (int row = 0; row < c->rows; row++)
+        if (mvinch(cy + row, r.x + 6) == ' ')
+            mvaddch(cy + row, r.x + 6, ACS_VLINE);
+    /* x axis and its labels. */
+    int ay = cy + c->rows;
+    mvaddch(ay, r.x + 6, ACS_LLCORNER);
+    mvhline(ay, cx, ACS_HLINE, c->cols);
+    double xlo = p->xq ? p->xs.lo : -APP_WINDOW, xhi = p->xq ? p->xs.hi : 0.0;
+    double xstep = p->xq ? p->xs.step : plot_tick_step(-APP_WINDOW, 0.0, xticks);
+    int free_from = r.x + 1; /* first column a label may use: labels never touch */
+    if (!p->xq) {
+        put(ay + 1, r.x + 2, 1, "s");
+        free_from = r.x + 4;
+    }
+    for (double v = xlo; v <= xhi + 1e-9 * xstep; v += xstep) {
+        int col = (int)lround((v - xlo) / (xhi - xlo) * (c->cols - 1));
+        char lab[16];
+        plot_tick_label(v, xstep, lab, sizeof lab);
+        mvaddch(ay, cx + col, ACS_TTEE);
+        int len = (int)strlen(lab);
+        int lx = cx + col - len / 2;
+        if (lx + len > r.x + r.w - 1)
+            lx = r.x + r.w - 1 - len;
+        if (lx < free_from)
+            continue;
+        put(ay + 1, lx, len, lab);
+        free_from = lx + len + 1;
+    }
+
+    /* The data. */
+    canvas_clear(c);
+    for (int i = m->n - 1; i >= 0; i--) {
+        unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
+        if (p->xq == 0) {
+            int off = p->yq == 1 ? TRAIL_X(tr, i) : p->yq == 2 ? TRAIL_V(tr, i) : TRAIL_A(tr, i);
+            plot_series(c, rec + TRAIL_T, rec + off, k, (size_t)tr->width, t0, t_now, &p->ys,
+                        false, col);
+        } else {
+            int xo = p->xq == 1 ? TRAIL_X(tr, i) : TRAIL_V(tr, i);
+            int yo = p->yq == 2 ? TRAIL_V(tr, i) : TRAIL_A(tr, i);
+            plot_curve(c, rec + xo, rec + yo, k, (size_t)tr->width, &p->xs, &p->ys, col);
+        }
+    }
+    if (motor)
+        plot_series(c, rec + TRAIL_T, rec + TRAIL_U, k, (size_t)tr->width, t0, t_now, &p->ys,
+                    true, PAIR_MOTOR);
+    draw_canvas(t, c, cy, cx);
+
+    /* Legend on the bottom border: mass numbers in their colours, and the motor. */
+    int lx = r.x + 2, ly = r.y + r.h - 1;
+    for (int i = 0; i < m->n && lx < r.x + r.w - 4; i++) {
+        attron(mass_attr(t, i) | A_BOLD);
+        printfn(ly, lx, 3, t->utf8 ? "━%d" : "-%d", i + 1);
+        attroff(mass_attr(t, i) | A_BOLD);
+        lx += (i + 1 >= 10) ? 4 : 3;
+    }
+    if (motor && lx + 7 < r.x + r.w - 1) {
+        attron(pair_attr(t, PAIR_MOTOR));
+        putn(ly, lx, 7, t->utf8 ? "┅motor" : ":motor");
+        attroff(pair_attr(t, PAIR_MOTOR));
+    }
+}
+
+/* ---- controls, status, hints, overlays ---- */
+
+static void draw_controls(struct tui *t)
+{
+    struct rect r = t->controls;
+    frame(t, r, "Controls", false);
+    for (int i = 0; i < CTL_COUNT && i < r.h - 2; i++) {
+        char value[96];
+        app_control_value(&t->app, (enum control)i, value, sizeof value);
+        bool sel = t->focus == FOCUS_CONTROLS && t->control == i;
+        if (sel)
+            attron(pair_attr(t, PAIR_SELECT));
+        char line[160];
+        snprintf(line, sizeof line, "%s%-10s %s", sel ? (t->utf8 ? "▸" : ">") : " ",
+                 app_control_label((enum control)i), value);
+        mvhline(r.y + 1 + i, r.x + 1, ' ', r.w - 2);
+        putn(r.y + 1 + i, r.x + 1, r.w - 2, line);
+        if (sel)
+            attroff(pair_attr(t, PAIR_SELECT));
+    }
+    /* Natural frequencies under the controls, so resonance is checked, not guessed. */
+    int y = r.y + 1 + CTL_COUNT + 1;
+    if (y < r.y + r.h - 1) {
+        const struct model *m = t->app.model;
+        double f[APP_MAX_MASSES];
+        if (modes_compute(m, f, NULL) == 0) {
+            attron(pair_attr(t, PAIR_DIM));
+            putn(y, r.x + 1, r.w - 2, " natural frequencies (Hz)");
+            int x = r.x + 2;
+            y++;
+            for (int j = 0; j < m->n && y < r.y + r.h - 1; j++) {
+                char num[16];
+                snprintf(num, sizeof num, "%.3f", f[j]);
+                if (x + (int)strlen(num) > r.x + r.w - 2)
+                    x = r.x + 2, y++;
+                if (y >= r.y + r.h - 1)
+                    break;
+                put(y, x, (int)strlen(num), num);
+                x += (int)strlen(num) + 1;
+            }
+            attroff(pair_attr(t, PAIR_DIM));
+        }
+    }
+}
+
+static void draw_status(struct tui *t)
+{
+    const struct app *app = &t->app;
+    const struct model *m = app->model;
+    char motor[64];
+    if (m->boundary == BOUNDARY_MOTOR)
+        snprintf(motor, sizeof motor, "motor %s %.2f Hz %.2f m", motor_wave_name(m->motor.wave),
+                 m->motor.frequency, m->motor.amplitude);
+    else
+        snprintf(motor, sizeof motor, "%s end", model_boundary_name(m->boundary));
+    const char *bar = t->utf8 ? "│" : "|";
+    char line[400], speed[32] = "";
+    if (app->speed != 1.0 || t->behind)
+        snprintf(speed, sizeof speed, " %s %gx%s", bar, app->speed, t->behind ? " behind" : "");
+    /* The full line where it fits; the SPEC's essentials where it does not. */
+    snprintf(line, sizeof line, " springsim %s %-7s t = %.2f s %s %s %s N %d %s dt %.3f s %s "
+             "history %d%s", t->utf8 ? "▸" : ">", app->running ? "Running" : "Paused",
+             sim_time(app->sim), bar, motor, bar, m->n, bar, app->cfg.dt, bar,
+             history_count(app->hist), speed);
+    if (text_width(line) > t->cols) {
+        if (m->boundary == BOUNDARY_MOTOR)
+            snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
+                     m->motor.frequency);
+        snprintf(line, sizeof line, " %s  t = %.2f s %s %s %s history %d%s",
+                 app->running ? "Running" : "Paused", sim_time(app->sim), bar, motor, bar,
+                 history_count(app->hist), speed);
+    }
+    attron(A_REVERSE);
+    mvhline(0, 0, ' ', t->cols);
+    putn(0, 0, t->cols, line);
+    const char *right = "? help  q quit ";
+    if (text_width(line) + 17 < t->cols)
+        put(0, t->cols - (int)strlen(right), (int)strlen(right), right);
+    attroff(A_REVERSE);
+}
+
+static void draw_hints(struct tui *t)
+{
+    int y = t->hints.y;
+    if (t->overlay == OVERLAY_EDIT) {
+        attron(A_BOLD);
+        printfn(y, 0, t->cols, " %s = %s", app_control_label((enum control)t->control), t->edit);
+        attroff(A_BOLD);
+        printw("_   (Enter sets it, Esc cancels)");
+        return;
+    }
+    if (t->app.message[0]) {
+        attron(t->app.message_is_error ? pair_attr(t, PAIR_WARN) | A_BOLD : A_BOLD);
+        printfn(y, 0, t->cols, " %s", t->app.message);
+        attroff(pair_attr(t, PAIR_WARN) | A_BOLD);
+        return;
+    }
+    attron(pair_attr(t, PAIR_DIM));
+    putn(y, 0, t->cols, t->utf8 ? " space start  . step  , back  r reset  R random  p presets  "
+                                  "←→ adjust  ↑↓ select  Enter type  Tab masses  ? help"
+                                : " space start  . step  , back  r reset  R random  p presets  "
+                                  "<> adjust  ^v select  Enter type  Tab masses  ? help");
+    attroff(pair_attr(t, PAIR_DIM));
+}
+
+/* A centred box of h x w, cleared, with a title; returns its rectangle. */
+static struct rect overlay_box(struct tui *t, int h, int w, const char *title)
+{
+    if (h > t->rows - 2)
+        h = t->rows - 2;
+    if (w > t->cols - 2)
+        w = t->cols - 2;
+    struct rect r = {(t->rows - h) / 2, (t->cols - w) / 2, h, w};
+    for (int y = r.y; y < r.y + r.h; y++)
+        mvhline(y, r.x, ' ', r.w);
+    frame(t, r, title, true);
+    return r;
+}
+
+static void draw_help(struct tui *t)
+{
+    int lines = 0;
+    for (const struct binding *b = input_bindings; b->name; b++)
+        lines += b->help != NULL;
+    struct rect r = overlay_box(t, lines + 7, 78, "Keys");
+    int y = r.y + 1;
+    for (const struct binding *b = input_bindings; b->name && y < r.y + r.h - 5; b++) {
+        if (!b->help)
+            continue;
+        char keys[64];
+        snprintf(keys, sizeof keys, "%s", t->utf8 ? b->name : b->ascii);
+        for (const struct binding *o = b + 1; o->name && !o->help; o++) {
+            const char *nm = t->utf8 ? o->name : o->ascii;
+            if (o->action == b->action && strcmp(nm, t->utf8 ? b->name : b->ascii) != 0 &&
+                !strstr(keys, nm))
+                snprintf(keys + strlen(keys), sizeof keys - strlen(keys), " %s", nm);
+        }
+        attron(A_BOLD);
+        putn(y, r.x + 2, 24, keys);
+        attroff(A_BOLD);
+        putn(y, r.x + 27, r.w - 29, b->help);
+        y++;
+    }
+    y++;
+    putn(y++, r.x + 2, r.w - 4, "Mouse: click a control to select it, wheel to adjust it;");
+    putn(y++, r.x + 2, r.w - 4, "drag a mass (paused) to set its initial position.");
+    putn(y, r.x + 2, r.w - 4, "Values can be typed: select a control and press Enter.");
+}
+
+static void draw_presets(struct tui *t)
+{
+    int n = t->npresets;
+    struct rect r = overlay_box(t, (n ? n : 1) + 4, 76, "Presets");
+    if (n == 0) {
+        putn(r.y + 1, r.x + 2, r.w - 4, "No presets found on the search path.");
+        return;
+    }
+    int rows = r.h - 4, first = t->preset_sel >= rows ? t->preset_sel - rows + 1 : 0;
+    for (int i = first; i < n && i - first < rows; i++) {
+        bool sel = i == t->preset_sel;
+        if (sel)
+            attron(pair_attr(t, PAIR_SELECT));
+        mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
+        printfn(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-15s %s", t->presets[i].name,
+                t->presets[i].description);
+        if (sel)
+            attroff(pair_attr(t, PAIR_SELECT));
+    }
+    attron(pair_attr(t, PAIR_DIM));
+    putn(r.y + r.h - 2, r.x + 2, r.w - 4, "↑↓ choose   Enter load   Esc close");
+    attroff(pair_attr(t, PAIR_DIM));
+}
+
+static void draw(struct tui *t, bool plots)
+{
+    erase();
+    if (t->too_small) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "springsim needs at least %dx%d (this is %dx%d)", MIN_COLS,
+                 MIN_ROWS, t->cols, t->rows);
+        int len = (int)strlen(msg);
+        if (len > t->cols)
+            len = t->cols;
+        mvaddnstr(t->rows / 2, (t->cols - len) / 2 > 0 ? (t->cols - len) / 2 : 0, msg, len);
+        wnoutrefresh(stdscr);
+        doupdate();
+        return;
+    }
+    draw_status(t);
+    draw_scene(t);
+    double t_now = sim_time(t->app.sim);
+    (void)plots;
+    for (int i = 0; i < 6; i++)
+        draw_plot(t, &t->plots[i], t_now);
+    draw_controls(t);
+    draw_hints(t);
+    if (t->overlay == OVERLAY_HELP)
+        draw_help(t);
+    else if (t->overlay == OVERLAY_PRESETS)
+        draw_presets(t);
+    wnoutrefresh(stdscr);
+    doupdate();
+}
+
+/* ---- input ---- */
+
+static void open_presets(struct tui *t)
+{
+    free(t->presets);
+    t->npresets = preset_scan(t->app.exe_dir, &t->presets);
+    t->preset_sel = 0;
+    for (int i = 0; i < t->npresets; i++)
+        if (strcmp(t->presets[i].name, t->app.preset) == 0)
+            t->preset_sel = i;
+    t->overlay = OVERLAY_PRESETS;
+}
+
+static void start_edit(struct tui *t)
+{
+    t->overlay = OVERLAY_EDIT;
+    t->edit[0] = '\0';
+    t->edit_len = 0;
+}
+
+static void on_edit_key(struct tui *t, int ch)
+{
+    if (ch == 27) {
+        t->overlay = OVERLAY_NONE;
+    } else if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
+        t->overlay = OVERLAY_NONE;
+        if (t->edit_len && app_set_text(&t->app, (enum control)t->control, t->edit))
+            app_say(&t->app, false, "%s set", app_control_label((enum control)t->control));
+    } else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
+        if (t->edit_len)
+            t->edit[--t->edit_len] = '\0';
+    } else if (ch >= 32 && ch < 127 && t->edit_len < (int)sizeof t->edit - 1) {
+        t->edit[t->edit_len++] = (char)ch;
+        t->edit[t->edit_len] = '\0';
+    }
+}
+
+static void on_preset_key(struct tui *t, enum action a)
+{
+    switch (a) {
+    case ACT_UP:
+        if (t->preset_sel > 0)
+            t->preset_sel--;
+        break;
+    case ACT_DOWN:
+        if (t->preset_sel < t->npresets - 1)
+            t->preset_sel++;
+        break;
+    case ACT_ENTER:
+        if (t->npresets)
+            app_load_preset(&t->app, t->presets[t->preset_sel].path,
+                            t->presets[t->preset_sel].name);
+        t->overlay = OVERLAY_NONE;
+        break;
+    case ACT_ESCAPE:
+    case ACT_PRESETS:
+    case ACT_QUIT:
+        t->overlay = OVERLAY_NONE;
+        break;
+    default:
+        break;
+    }
+}
+
+/* Steps of an adjustment: +-1, fine or coarse. */
+static void adjust(struct tui *t, int dir, bool coarse)
+{
+    if (t->focus == FOCUS_CHAIN)
+        app_move_mass(&t->app, t->mass, dir * (coarse ? 0.5 : 0.05));
+    else
+        app_adjust(&t->app, (enum control)t->control, dir, coarse);
+}
+
+static bool on_action(struct tui *t, enum action a)
+{
+    struct app *app = &t->app;
+    if (a != ACT_NONE && a != ACT_REDRAW)
+        app->message[0] = '\0';
+    switch (a) {
+    case ACT_QUIT:
+        return false;
+    case ACT_RUN:
+        app->running = !app->running;
+        break;
+    case ACT_STEP:
+        app->running = false;
+        app_step(app);
+        break;
+    case ACT_BACK:
+        app_back(app);
+        break;
+    case ACT_RESET:
+        app_reset(app);
+        app_say(app, false, "reset to t = 0");
+        break;
+    case ACT_RANDOM:
+        app_random(app);
+        break;
+    case ACT_PRESETS:
+        open_presets(t);
+        break;
+    case ACT_HELP:
+        t->overlay = OVERLAY_HELP;
+        break;
+    case ACT_UP:
+        if (t->focus == FOCUS_CHAIN)
+            t->mass = t->mass > 0 ? t->mass - 1 : app->model->n - 1;
+        else
+            t->control = (t->control + CTL_COUNT - 1) % CTL_COUNT;
+        break;
+    case ACT_DOWN:
+        if (t->focus == FOCUS_CHAIN)
+            t->mass = (t->mass + 1) % app->model->n;
+        else
+            t->control = (t->control + 1) % CTL_COUNT;
+        break;
+    case ACT_LEFT:
+        adjust(t, -1, false);
+        break;
+    case ACT_RIGHT:
+        adjust(t, 1, false);
+        break;
+    case ACT_LEFT_BIG:
+        adjust(t, -1, true);
+        break;
+    case ACT_RIGHT_BIG:
+        adjust(t, 1, true);
+        break;
+    case ACT_ENTER:
+        if (t->focus == FOCUS_CHAIN)
+            break;
+        if (t->control == CTL_PRESET)
+            open_presets(t);
+        else if (t->control == CTL_MASSES && app->masses_pending != app->model->n)
+            app_apply_masses(app);
+        else
+            start_edit(t);
+        break;
+    case ACT_FOCUS:
+        t->focus = t->focus == FOCUS_CHAIN ? FOCUS_CONTROLS : FOCUS_CHAIN;
+        if (t->mass >= app->model->n)
+            t->mass = 0;
+        if (t->focus == FOCUS_CHAIN && app->running)
+            app_say(app, false, "pause (space) to move the masses");
+        break;
+    case ACT_SLOWER:
+        app_adjust(app, CTL_SPEED, -1, false);
+        break;
+    case ACT_FASTER:
+        app_adjust(app, CTL_SPEED, 1, false);
+        break;
+    case ACT_ESCAPE:
+        t->focus = FOCUS_CONTROLS;
+        break;
+    case ACT_REDRAW:
+        clearok(curscr, TRUE);
+        break;
+    case ACT_NONE:
+        break;
+    }
+    t->plots_dirty = true;
+    return true;
+}
+
+/* Mouse: click a control, wheel on it, drag a mass while paused. */
+static void on_mouse(struct tui *t)
+{
+    MEVENT ev;
+    if (getmouse(&ev) != OK)
+        return;
+    struct rect c = t->controls;
+    bool in_controls = ev.x > c.x && ev.x < c.x + c.w - 1 && ev.y > c.y &&
+                       ev.y <= c.y + CTL_COUNT;
+    if (in_controls) {
+        t->focus = FOCUS_CONTROLS;
+        t->control = ev.y - c.y - 1;
+        if (ev.bstate & BUTTON4_PRESSED)
+            app_adjust(&t->app, (enum control)t->control, 1, false);
+#ifdef BUTTON5_PRESSED
+        else if (ev.bstate & BUTTON5_PRESSED)
+            app_adjust(&t->app, (enum control)t->control, -1, false);
+#endif
+        t->plots_dirty = true;
+        return;
+    }
+    struct rect s = t->scene;
+    bool in_scene = ev.y > s.y && ev.y < s.y + s.h - 1;
+    double X = (ev.x + 0.5 - t->scene_x0) / t->scene_cpm;
+    if (in_scene && (ev.bstate & BUTTON1_PRESSED)) {
+        const struct model *m = t->app.model;
+        double w = model_block_width(m), best = 1e9;
+        int pick = -1;
+        for (int i = 0; i < m->n; i++) {
+            double d = fabs(model_equilibrium(m, i) + sim_x(t->app.sim)[i] - X);
+            if (d < best)
+                best = d, pick = i;
+        }
+        if (pick >= 0 && best < w + 1.0 / t->scene_cpm) {
+            t->mass = pick;
+            t->focus = FOCUS_CHAIN;
+            t->dragging = !t->app.running;
+            if (t->app.running)
+                app_say(&t->app, false, "pause (space) to drag a mass");
+        }
+        return;
+    }
+    if (t->dragging && (ev.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED))) {
+        app_place_mass(&t->app, t->mass, X);
+        if (ev.bstate & BUTTON1_RELEASED)
+            t->dragging = false;
+        t->plots_dirty = true;
+    }
+}
+
+static bool on_key(struct tui *t, int ch)
+{
+    if (ch == KEY_RESIZE) {
+        layout(t);
+        return true;
+    }
+    if (ch == KEY_MOUSE) {
+        if (t->overlay == OVERLAY_NONE)
+            on_mouse(t);
+        return true;
+    }
+    if (t->overlay == OVERLAY_EDIT) {
+        on_edit_key(t, ch);
+        t->plots_dirty = true;
+        return true;
+    }
+    enum action a = input_action(ch);
+    if (t->overlay == OVERLAY_HELP) {
+        if (a == ACT_HELP || a == ACT_ESCAPE || a == ACT_QUIT)
+            t->overlay = OVERLAY_NONE;
+        return true;
+    }
+    if (t->overlay == OVERLAY_PRESETS) {
+        on_preset_key(t, a);
+        t->plots_dirty = true;
+        return true;
+    }
+    return on_action(t, a);
+}
+
+/* ---- main loop ---- */
+
+/* Advances the simulation to follow the wall clock times the playback speed. */
+static void advance(struct tui *t, double *debt, double elapsed)
+{
+    struct app *app = &t->app;
+    if (!app->running) {
+        *debt = 0.0;
+        t->behind = false;
+        return;
+    }
+    *debt += elapsed * app->speed;
+    double dt = app->cfg.dt;
+    double start = now_s();
+    while (*debt >= dt && app->running) {
+        if (!app_step(app))
+            break;
+        *debt -= dt;
+        /* Never spend more than half a frame computing: fall behind and say so. */
+        if (now_s() - start > 0.5 / FRAME_HZ) {
+            t->behind = *debt > 2.0 * dt;
+            if (*debt > 0.25 * app->speed)
+                *debt = 0.0;
+            return;
+        }
+    }
+    t->behind = false;
+}
+
+int tui_run(const struct config *cfg, const char *exe_dir)
+{
+    static struct tui t;
+    memset(&t, 0, sizeof t);
+    if (app_init(&t.app, cfg, exe_dir) != 0) {
+        fprintf(stderr, "springsim: out of memory\n");
+        return EXIT_FAILURE;
+    }
+    t.utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+        fprintf(stderr, "springsim: the interactive program needs a terminal; use --headless, "
+                        "--modes or --sweep for scripts\n");
+        app_free(&t.app);
+        return EXIT_FAILURE;
+    }
+    if (!newterm(NULL, stdout, stdin)) {
+        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n",
+                getenv("TERM") ? getenv("TERM") : "unset");
+        app_free(&t.app);
+        return EXIT_FAILURE;
+    }
+    curses_on = true;
+    atexit(restore_terminal);
+    install_signals();
+    cbreak();
+    noecho();
+    nonl();
+    keypad(stdscr, TRUE);
+    curs_set(0);
+    set_escdelay(25);
+    mousemask(BUTTON1_PRESSED | BUTTON1_RELEASED | BUTTON4_PRESSED | REPORT_MOUSE_POSITION
+#ifdef BUTTON5_PRESSED
+                  | BUTTON5_PRESSED
+#endif
+              ,
+              NULL);
+    mouseinterval(0);
+    init_colors(&t);
+    for (int i = 0; i < 6; i++) {
+        t.plots[i].xq = i < 3 ? 0 : (i == 5 ? 2 : 1);
+        t.plots[i].yq = i < 3 ? i + 1 : (i == 3 ? 2 : 3);
+        t.plots[i].title = plot_titles[i];
+    }
+    layout(&t);
+    if (t.app.message[0] == '\0')
+        app_say(&t.app, false, "space starts; ? lists every key");
+
+    double last = now_s(), debt = 0.0, next_frame = last;
+    bool go = true;
+    while (go && !quit_signal) {
+        double now = now_s();
+        advance(&t, &debt, now - last);
+        last = now;
+        draw(&t, true);
+        next_frame += 1.0 / FRAME_HZ;
+        if (next_frame < now)
+            next_frame = now + 1.0 / FRAME_HZ;
+        /* Wait for input until the next frame; take every key that is there. */
+        for (;;) {
+            int ms = (int)((next_frame - now_s()) * 1000.0);
+            timeout(ms > 0 ? ms : 0);
+            int ch = getch();
+            if (ch == ERR)
+                break;
+            if (!on_key(&t, ch)) {
+                go = false;
+                break;
+            }
+            if (quit_signal)
+                break;
+        }
+    }
+    restore_terminal();
+    for (int i = 0; i < 6; i++)
+        canvas_free(t.plots[i].canvas);
+    canvas_free(t.scene_canvas);
+    free(t.presets);
+    app_free(&t.app);
+    return EXIT_SUCCESS;
+}
