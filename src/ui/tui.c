@@ -75,6 +75,7 @@ struct tui {
 
 static volatile sig_atomic_t quit_signal; /* SIGINT, SIGTERM, SIGHUP received */
 static bool curses_on;
+static bool ascii_only; /* not a UTF-8 locale: plain ASCII text and lines */
 
 static const char *const plot_titles[6] = {"Displacement (m)", "Velocity (m/s)",
                                            "Acceleration (m/s²)", "x–v", "x–a", "v–a"};
@@ -200,8 +201,30 @@ static int text_width(const char *s)
 /* Writes at most w columns of text s (counting UTF-8 characters as one column). */
 static void putn(int y, int x, int w, const char *s)
 {
+    char plain[512];
     if (w <= 0)
         return;
+    if (ascii_only) {
+        /* The few non-ASCII characters in our own text, spelled in ASCII. */
+        size_t o = 0;
+        for (const char *p = s; *p && o < sizeof plain - 3; p++) {
+            if (strncmp(p, "·", 2) == 0) {
+                plain[o++] = ' ';
+                p++;
+            } else if (strncmp(p, "²", 2) == 0) {
+                plain[o++] = '^';
+                plain[o++] = '2';
+                p++;
+            } else if ((unsigned char)*p >= 0x80) {
+                if ((*p & 0xC0) != 0x80)
+                    plain[o++] = '?';
+            } else {
+                plain[o++] = *p;
+            }
+        }
+        plain[o] = '\0';
+        s = plain;
+    }
     int cols = 0;
     const char *p = s;
     while (*p && cols < w) {
@@ -226,19 +249,48 @@ static void printfn(int y, int x, int w, const char *fmt, ...)
     putn(y, x, w, buf);
 }
 
+/* Line-drawing characters: the terminal's own where the locale is UTF-8, plain ASCII
+ * otherwise. */
+enum line { L_H, L_V, L_UL, L_UR, L_LL, L_LR, L_RTEE, L_TTEE };
+
+static chtype line_ch(enum line l)
+{
+    if (ascii_only)
+        return (chtype)"-|+++++" "+"[l];
+    switch (l) {
+    case L_H:
+        return ACS_HLINE;
+    case L_V:
+        return ACS_VLINE;
+    case L_UL:
+        return ACS_ULCORNER;
+    case L_UR:
+        return ACS_URCORNER;
+    case L_LL:
+        return ACS_LLCORNER;
+    case L_LR:
+        return ACS_LRCORNER;
+    case L_RTEE:
+        return ACS_RTEE;
+    case L_TTEE:
+        return ACS_TTEE;
+    }
+    return '+';
+}
+
 /* A box with an optional title near the left (centre = false) or centred. */
 static void frame(const struct tui *t, struct rect r, const char *title, bool centre)
 {
     if (r.h < 2 || r.w < 2)
         return;
-    mvaddch(r.y, r.x, ACS_ULCORNER);
-    mvhline(r.y, r.x + 1, ACS_HLINE, r.w - 2);
-    mvaddch(r.y, r.x + r.w - 1, ACS_URCORNER);
-    mvvline(r.y + 1, r.x, ACS_VLINE, r.h - 2);
-    mvvline(r.y + 1, r.x + r.w - 1, ACS_VLINE, r.h - 2);
-    mvaddch(r.y + r.h - 1, r.x, ACS_LLCORNER);
-    mvhline(r.y + r.h - 1, r.x + 1, ACS_HLINE, r.w - 2);
-    mvaddch(r.y + r.h - 1, r.x + r.w - 1, ACS_LRCORNER);
+    mvaddch(r.y, r.x, line_ch(L_UL));
+    mvhline(r.y, r.x + 1, line_ch(L_H), r.w - 2);
+    mvaddch(r.y, r.x + r.w - 1, line_ch(L_UR));
+    mvvline(r.y + 1, r.x, line_ch(L_V), r.h - 2);
+    mvvline(r.y + 1, r.x + r.w - 1, line_ch(L_V), r.h - 2);
+    mvaddch(r.y + r.h - 1, r.x, line_ch(L_LL));
+    mvhline(r.y + r.h - 1, r.x + 1, line_ch(L_H), r.w - 2);
+    mvaddch(r.y + r.h - 1, r.x + r.w - 1, line_ch(L_LR));
     if (title && r.w > 6) {
         int len = (int)strlen(title);
         int max = r.w - 4;
@@ -555,16 +607,15 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now)
         char lab[16];
         plot_tick_label(v, p->ys.step, lab, sizeof lab);
         printfn(cy + row, r.x + 1, 6, "%5.5s", lab);
-        mvaddch(cy + row, r.x + 6, ACS_RTEE);
+        mvaddch(cy + row, r.x + 6, line_ch(L_RTEE));
     }
-    mvvline(cy, r.x + 6, ACS_VLINE, 0);
     for (int row = 0; row < c->rows; row++)
         if (mvinch(cy + row, r.x + 6) == ' ')
-            mvaddch(cy + row, r.x + 6, ACS_VLINE);
+            mvaddch(cy + row, r.x + 6, line_ch(L_V));
     /* x axis and its labels. */
     int ay = cy + c->rows;
-    mvaddch(ay, r.x + 6, ACS_LLCORNER);
-    mvhline(ay, cx, ACS_HLINE, c->cols);
+    mvaddch(ay, r.x + 6, line_ch(L_LL));
+    mvhline(ay, cx, line_ch(L_H), c->cols);
     double xlo = p->xq ? p->xs.lo : -APP_WINDOW, xhi = p->xq ? p->xs.hi : 0.0;
     double xstep = p->xq ? p->xs.step : plot_tick_step(-APP_WINDOW, 0.0, xticks);
     int free_from = r.x + 1; /* first column a label may use: labels never touch */
@@ -576,7 +627,7 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now)
         int col = (int)lround((v - xlo) / (xhi - xlo) * (c->cols - 1));
         char lab[16];
         plot_tick_label(v, xstep, lab, sizeof lab);
-        mvaddch(ay, cx + col, ACS_TTEE);
+        mvaddch(ay, cx + col, line_ch(L_TTEE));
         int len = (int)strlen(lab);
         int lx = cx + col - len / 2;
         if (lx + len > r.x + r.w - 1)
@@ -745,9 +796,10 @@ static void draw_help(struct tui *t)
     int lines = 0;
     for (const struct binding *b = input_bindings; b->name; b++)
         lines += b->help != NULL;
-    struct rect r = overlay_box(t, lines + 7, 78, "Keys");
+    /* Keys first; the notes on the mouse and typing only where there is room. */
+    struct rect r = overlay_box(t, lines + 6, 78, "Keys");
     int y = r.y + 1;
-    for (const struct binding *b = input_bindings; b->name && y < r.y + r.h - 5; b++) {
+    for (const struct binding *b = input_bindings; b->name && y < r.y + r.h - 1; b++) {
         if (!b->help)
             continue;
         char keys[64];
@@ -759,15 +811,18 @@ static void draw_help(struct tui *t)
                 snprintf(keys + strlen(keys), sizeof keys - strlen(keys), " %s", nm);
         }
         attron(A_BOLD);
-        putn(y, r.x + 2, 24, keys);
+        putn(y, r.x + 2, 17, keys);
         attroff(A_BOLD);
-        putn(y, r.x + 27, r.w - 29, b->help);
+        putn(y, r.x + 19, r.w - 21, b->help);
         y++;
     }
-    y++;
-    putn(y++, r.x + 2, r.w - 4, "Mouse: click a control to select it, wheel to adjust it;");
-    putn(y++, r.x + 2, r.w - 4, "drag a mass (paused) to set its initial position.");
-    putn(y, r.x + 2, r.w - 4, "Values can be typed: select a control and press Enter.");
+    static const char *const notes[] = {
+        "Mouse: click a control to select it, wheel to adjust it;",
+        "drag a mass (paused) to set its initial position.",
+        "Values can be typed: select a control and press Enter.",
+    };
+    for (int i = 0; i < 3 && y + 1 < r.y + r.h - 1; i++)
+        putn(++y, r.x + 2, r.w - 4, notes[i]);
 }
 
 static void draw_presets(struct tui *t)
@@ -798,13 +853,18 @@ static void draw(struct tui *t, bool plots)
 {
     erase();
     if (t->too_small) {
-        char msg[128];
-        snprintf(msg, sizeof msg, "springsim needs at least %dx%d (this is %dx%d)", MIN_COLS,
-                 MIN_ROWS, t->cols, t->rows);
-        int len = (int)strlen(msg);
-        if (len > t->cols)
-            len = t->cols;
-        mvaddnstr(t->rows / 2, (t->cols - len) / 2 > 0 ? (t->cols - len) / 2 : 0, msg, len);
+        char msg[2][64];
+        snprintf(msg[0], sizeof msg[0], "Terminal too small");
+        snprintf(msg[1], sizeof msg[1], "need %dx%d, have %dx%d", MIN_COLS, MIN_ROWS, t->cols,
+                 t->rows);
+        for (int i = 0; i < 2; i++) {
+            int len = (int)strlen(msg[i]);
+            if (len > t->cols)
+                len = t->cols;
+            int y = t->rows / 2 - 1 + i;
+            if (y >= 0 && y < t->rows)
+                mvaddnstr(y, (t->cols - len) / 2, msg[i], len);
+        }
         wnoutrefresh(stdscr);
         doupdate();
         return;
@@ -1107,6 +1167,7 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         return EXIT_FAILURE;
     }
     t.utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    ascii_only = !t.utf8;
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
         fprintf(stderr, "springsim: the interactive program needs a terminal; use --headless, "
                         "--modes or --sweep for scripts\n");
