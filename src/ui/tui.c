@@ -46,6 +46,7 @@ struct plotview {
     struct scale xs, ys; /* axis scales (xs unused for time plots) */
     struct canvas *canvas;
     struct rect r;       /* frame */
+    double t_now;        /* time of the samples last taken */
 };
 
 struct tui {
@@ -542,7 +543,10 @@ static double quantity(const struct trail *tr, const double *rec, int q, int i)
     }
 }
 
-static void draw_plot(struct tui *t, struct plotview *p, double t_now)
+/* Draws plot p; with refresh, first takes the newest samples (scales and dots),
+ * otherwise draws what the last refresh took, so a frame between refreshes sends
+ * nothing new to the terminal. */
+static void draw_plot(struct tui *t, struct plotview *p, double t_now, bool refresh)
 {
     const struct trail *tr = t->app.trail;
     const struct model *m = t->app.model;
@@ -565,6 +569,10 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now)
     int k = count - start;
     bool motor = idx == 0 && m->boundary == BOUNDARY_MOTOR;
 
+    if (refresh)
+        p->t_now = t_now;
+    t_now = p->t_now;
+    t0 = t_now - APP_WINDOW;
     /* Autoscale over what is shown. */
     double ymin = INFINITY, ymax = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
     for (int s = 0; s < k; s++) {
@@ -581,7 +589,7 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now)
             ymin = fmin(ymin, q[TRAIL_U]), ymax = fmax(ymax, q[TRAIL_U]);
     }
     int yticks = c->rows >= 8 ? 4 : 2, xticks = c->cols >= 30 ? 4 : 2;
-    if (k > 0) {
+    if (k > 0 && refresh) {
         plot_scale_update(&p->ys, ymin, ymax, yticks, 30);
         if (p->xq)
             plot_scale_update(&p->xs, xmin, xmax, xticks, 30);
@@ -639,8 +647,9 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now)
     }
 
     /* The data. */
-    canvas_clear(c);
-    for (int i = m->n - 1; i >= 0; i--) {
+    if (refresh)
+        canvas_clear(c);
+    for (int i = refresh ? m->n - 1 : -1; i >= 0; i--) {
         unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
         if (p->xq == 0) {
             int off = p->yq == 1 ? TRAIL_X(tr, i) : p->yq == 2 ? TRAIL_V(tr, i) : TRAIL_A(tr, i);
@@ -652,7 +661,7 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now)
             plot_curve(c, rec + xo, rec + yo, k, (size_t)tr->width, &p->xs, &p->ys, col);
         }
     }
-    if (motor)
+    if (motor && refresh)
         plot_series(c, rec + TRAIL_T, rec + TRAIL_U, k, (size_t)tr->width, t0, t_now, &p->ys,
                     true, PAIR_MOTOR);
     draw_canvas(t, c, cy, cx);
@@ -872,9 +881,8 @@ static void draw(struct tui *t, bool plots)
     draw_status(t);
     draw_scene(t);
     double t_now = sim_time(t->app.sim);
-    (void)plots;
     for (int i = 0; i < 6; i++)
-        draw_plot(t, &t->plots[i], t_now);
+        draw_plot(t, &t->plots[i], t_now, plots);
     draw_controls(t);
     draw_hints(t);
     if (t->overlay == OVERLAY_HELP)
@@ -1212,7 +1220,13 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         double now = now_s();
         advance(&t, &debt, now - last);
         last = now;
-        draw(&t, true);
+        /* Plots refresh at PLOT_HZ while running, at once after anything else. */
+        bool plots = t.plots_dirty || (t.app.running && now >= t.plot_due);
+        if (plots) {
+            t.plot_due = now + 1.0 / PLOT_HZ;
+            t.plots_dirty = false;
+        }
+        draw(&t, plots);
         next_frame += 1.0 / FRAME_HZ;
         if (next_frame < now)
             next_frame = now + 1.0 / FRAME_HZ;
