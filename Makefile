@@ -92,11 +92,16 @@ $(CORE_LIB): $(CORE_OBJ)
 $(BIN): $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB) $(UI_LIBS) $(CORE_LIBS)
 
+# The pure UI parts (no curses) are unit-tested like the core.
+UI_PURE_OBJ = $(BUILD)/ui/braille.o $(BUILD)/ui/plot.o
+$(BUILD)/tests/test_braille $(BUILD)/tests/test_plot: $(UI_PURE_OBJ)
+$(BUILD)/tests/test_braille $(BUILD)/tests/test_plot: TEST_EXTRA = $(UI_PURE_OBJ)
+
 $(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc \
 	    -DSRCDIR='"$(CURDIR)"' -o $@ $< \
-	    $(CORE_LIB) $(TEST_LIBS) $(CORE_LIBS)
+	    $(TEST_EXTRA) $(CORE_LIB) $(TEST_LIBS) $(CORE_LIBS)
 
 check: $(BIN) $(TEST_BIN) | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) sh tests/run.sh $(TEST_BIN)

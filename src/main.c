@@ -31,8 +31,8 @@
 enum mode { MODE_INTERACTIVE, MODE_HEADLESS, MODE_MODES, MODE_SWEEP, MODE_LIST };
 
 /* Options that choose what to do rather than set something; after the config keys. */
-enum { OPT_HEADLESS = CFG_KEY_COUNT, OPT_MODES, OPT_SWEEP, OPT_LIST, OPT_HELP, OPT_VERSION,
-       OPT_COUNT };
+enum { OPT_HEADLESS = CFG_KEY_COUNT, OPT_MODES, OPT_SWEEP, OPT_LIST, OPT_KEYS, OPT_HELP,
+       OPT_VERSION, OPT_COUNT };
 
 static const struct {
     const char *name, *arg, *help;
@@ -44,6 +44,7 @@ static const struct {
                                    "against motor frequency, CSV"},
     [OPT_LIST - CFG_KEY_COUNT] = {"list-presets", NULL, "one line per preset: its name, "
                                   "then its description"},
+    [OPT_KEYS - CFG_KEY_COUNT] = {"keys", NULL, "list the interactive program's keys"},
     [OPT_HELP - CFG_KEY_COUNT] = {"help", NULL, "show this help and exit"},
     [OPT_VERSION - CFG_KEY_COUNT] = {"version", NULL, "show the version and exit"},
 };
@@ -72,7 +73,7 @@ static void usage(FILE *out)
             "       springsim --sweep FMIN:FMAX:COUNT [OPTIONS]\n"
             "                                               steady-state amplitude against "
             "frequency, CSV\n"
-            "       springsim --list-presets | --help | --version\n\n"
+            "       springsim --list-presets | --keys | --help | --version\n\n"
             "A chain of masses joined by springs, with damping, driven at its right end by "
             "a\nlinear motor. A preset is applied first; every other option overrides it.\n\n"
             "Options:\n");
@@ -205,6 +206,10 @@ static int parse_args(int argc, char **argv, struct config *c, struct cli *cli,
         if (k == OPT_VERSION) {
             printf("springsim %s\n", VERSION);
             return EXIT_SUCCESS;
+        }
+        if (k == OPT_KEYS) {
+            input_print_keys(stdout);
+            return fflush(stdout) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
         }
         if (k == CFG_PRESET)
             preset = optarg;

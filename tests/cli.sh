@@ -499,7 +499,7 @@ done
 if expect_ok --help; then
     for o in preset masses mass spring damping dt boundary wave amplitude frequency x0 v0 \
         random seed no-collisions duration sample output energy headless modes sweep \
-        list-presets help version; do
+        list-presets keys help version; do
         if grep -Eq -e "--$o([^a-z0-9-]|\$)" "$out"; then pass; else fail "$cmd: does not mention --$o"; fi
     done
     for o in -p -n -o; do
@@ -509,6 +509,19 @@ fi
 if expect_ok --version; then
     if grep -q '^springsim [0-9][^ ]*$' "$out" && [ "$(lines "$out")" -eq 1 ]; then pass; else
         fail "$cmd: expected one line 'springsim VERSION', got: $(show "$out")"
+    fi
+fi
+
+# 10. The man page's KEYS section lists exactly the key table the program uses (the
+# help overlay is drawn from the same table): each `--keys` line, spelled in roff.
+man=$(dirname "$0")/../man/springsim.1
+if expect_ok --keys; then
+    [ "$(lines "$out")" -ge 8 ] && pass || fail "$cmd: expected the key table, got: $(show "$out")"
+    keys_in_man=$(sed -n '/^\.SH KEYS/,/^\.SH /p' "$man" | awk '/^\.TP/ { getline k; getline h;
+        sub(/^\.B /, "", k); print k "\t" h }' | sed 's/\\-/-/g; s/\\e/\\/g')
+    want=$(sed 's/↑/\\(ua/g; s/↓/\\(da/g; s/←/\\(<-/g; s/→/\\(->/g' "$out")
+    if [ "$keys_in_man" = "$want" ]; then pass; else
+        fail "man page KEYS differ from --keys: $(printf '%s\n' "$keys_in_man" | head -c 200 | tr '\n' '|') vs $(printf '%s\n' "$want" | head -c 200 | tr '\n' '|')"
     fi
 fi
 
