@@ -356,6 +356,7 @@ static void layout(struct tui *t)
         p->r = (struct rect){top + row * ph, col * pw, row ? h - ph : ph,
                              col == 2 ? w - 2 * pw : pw};
         canvas_free(p->canvas);
+        p->xs.set = p->ys.set = false; /* tick counts depend on the size: scale afresh */
         /* Inside the frame: y labels take 6 columns, the x axis and its labels 2 rows. */
         int cw = p->r.w - 2 - 6, chh = p->r.h - 2 - 2;
         p->canvas = canvas_new(cw < 1 ? 1 : cw, chh < 1 ? 1 : chh);
@@ -1246,6 +1247,12 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         }
     }
     restore_terminal();
+    if (quit_signal) {
+        /* Stopped by a signal: die of it, so a shell sees 128 + signal (and a loop
+         * around springsim stops on Ctrl-C). */
+        signal(quit_signal, SIG_DFL);
+        raise(quit_signal);
+    }
     for (int i = 0; i < 6; i++)
         canvas_free(t.plots[i].canvas);
     canvas_free(t.scene_canvas);
