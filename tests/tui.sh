@@ -682,6 +682,12 @@ for sig in $sent; do
     if wait_for 'TERMINAL ' 5; then
         if [ "$sig" = q ] && ! has 'EXITED 0'; then
             fail "quit by q: expected 'EXITED 0'; screen: $(brief "$scr" 'EXITED|TERMINAL')"
+        elif [ "$sig" = INT ] && ! has 'EXITED 130'; then
+            fail "quit by Ctrl-C: expected it to die of SIGINT (status 130); screen: $(brief "$scr" 'EXITED|TERMINAL')"
+        elif [ "$sig" = TERM ] && ! has 'EXITED 143'; then
+            fail "quit by SIGTERM: expected status 143; screen: $(brief "$scr" 'EXITED|TERMINAL')"
+        elif [ "$sig" = HUP ] && ! has 'EXITED 129'; then
+            fail "quit by SIGHUP: expected status 129; screen: $(brief "$scr" 'EXITED|TERMINAL')"
         elif [ "$sig" = SEGV ] && ! has_re 'EXITED [1-9]'; then
             fail "a crash (SIGSEGV): expected it to die with a non-zero status; screen: $(brief "$scr" 'EXITED|TERMINAL')"
         elif ! has 'TERMINAL SAME'; then
