@@ -113,6 +113,31 @@ static void pieces_extend_smoothly(void **state)
     assert_close(u, -1.0, 0.0);
 }
 
+/* Retuning keeps u continuous and then runs at the new frequency. */
+static void retune_is_continuous(void **state)
+{
+    (void)state;
+    for (int w = 0; w < WAVE_COUNT; w++) {
+        struct motor m = {(enum wave)w, 0.8, 1.3, 0.0};
+        double t = 37.123;
+        double before = motor_position(&m, t);
+        motor_retune(&m, 0.77, t);
+        assert_close(motor_position(&m, t), before, 1e-9);
+        /* One new period later the drive repeats. */
+        assert_close(motor_position(&m, t + 1.0 / 0.77 + 0.05),
+                     motor_position(&m, t + 0.05), 1e-9);
+        /* Breakpoints follow the shifted phase. */
+        double out[4];
+        int nb = motor_breakpoints(&m, t, t + 2.0, out, 4);
+        for (int i = 0; i < nb && i < 4; i++) {
+            struct motor_piece a, b;
+            motor_piece_at(&m, out[i] - 1e-6, &a);
+            motor_piece_at(&m, out[i] + 1e-6, &b);
+            assert_true(a.cref != b.cref || a.w0 != b.w0 || a.slope != b.slope);
+        }
+    }
+}
+
 static void names_round_trip(void **state)
 {
     (void)state;
@@ -131,6 +156,7 @@ int main(void)
         cmocka_unit_test(values_at_special_phases),
         cmocka_unit_test(breakpoints_listed),
         cmocka_unit_test(pieces_extend_smoothly),
+        cmocka_unit_test(retune_is_continuous),
         cmocka_unit_test(names_round_trip),
     };
     return cmocka_run_group_tests_name("motor", tests, NULL, NULL);

@@ -21,7 +21,7 @@ static struct model *chain3(enum wave wave)
     memcpy(md->m, m, sizeof m);
     memcpy(md->k, k, sizeof k);
     memcpy(md->c, c, sizeof c);
-    md->motor = (struct motor){wave, 0.3, 0.9};
+    md->motor = (struct motor){wave, 0.3, 0.9, 0.0};
     md->collisions = false;
     return md;
 }

@@ -377,7 +377,7 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
         return NULL;
     }
     m->boundary = c->boundary;
-    m->motor = (struct motor){c->wave, c->amplitude, c->frequency};
+    m->motor = (struct motor){c->wave, c->amplitude, c->frequency, 0.0};
     m->collisions = !c->no_collisions;
     return m;
 }

@@ -46,7 +46,7 @@ struct model *model_new(int n)
     for (int j = 0; j <= n; j++)
         m->k[j] = 10.0;
     m->boundary = BOUNDARY_MOTOR;
-    m->motor = (struct motor){WAVE_SINE, 1.0, 1.0};
+    m->motor = (struct motor){WAVE_SINE, 1.0, 1.0, 0.0};
     m->collisions = true;
     return m;
 }

@@ -70,12 +70,12 @@ double motor_wave(enum wave wave, double cycles)
 
 double motor_position(const struct motor *m, double t)
 {
-    return m->amplitude * motor_wave(m->wave, m->frequency * t);
+    return m->amplitude * motor_wave(m->wave, m->frequency * t + m->phase);
 }
 
 void motor_piece_at(const struct motor *m, double t, struct motor_piece *p)
 {
-    double c = m->frequency * t;
+    double c = m->frequency * t + m->phase;
     double k = floor(c);
     double ph = c - k;
 
@@ -114,12 +114,12 @@ void motor_piece_eval(const struct motor_piece *p, double t, double *u, double *
     if (m->wave == WAVE_SINE) {
         double w = 2.0 * M_PI * f;
         double s, c;
-        sincos(w * t, &s, &c);
+        sincos(w * t + 2.0 * M_PI * m->phase, &s, &c);
         *u = a * s;
         *du = a * w * c;
         return;
     }
-    *u = a * (p->w0 + p->slope * (f * t - p->cref));
+    *u = a * (p->w0 + p->slope * (f * t + m->phase - p->cref));
     *du = a * p->slope * f;
 }
 
@@ -141,7 +141,7 @@ int motor_breakpoints(const struct motor *m, double t0, double t1, double *out, 
         return 0;
     }
     double f = m->frequency;
-    double c0 = f * t0, c1 = f * t1;
+    double c0 = f * t0 + m->phase, c1 = f * t1 + m->phase;
     /* Index of the first breakpoint at or after c0 + eps. */
     double j = ceil((c0 + PHASE_EPS - first) / period);
     int count = 0;
@@ -151,9 +151,17 @@ int motor_breakpoints(const struct motor *m, double t0, double t1, double *out, 
             break;
         if (b > c0 + PHASE_EPS) {
             if (count < max)
-                out[count] = b / f;
+                out[count] = (b - m->phase) / f;
             count++;
         }
     }
     return count;
+}
+
+void motor_retune(struct motor *m, double frequency, double t)
+{
+    /* f_old t + p_old = f_new t + p_new, kept in [0, 1) cycles. */
+    double p = (m->frequency - frequency) * t + m->phase;
+    m->phase = p - floor(p);
+    m->frequency = frequency;
 }

@@ -9,7 +9,11 @@ struct motor {
     enum wave wave;   /* waveform w */
     double amplitude; /* A, metres */
     double frequency; /* f, hertz */
+    double phase;     /* cycles added to f t, so f can change without a jump in u */
 };
+
+/* Changes the frequency at time t keeping the phase, and so u, continuous. */
+void motor_retune(struct motor *m, double frequency, double t);
 
 /* One smooth piece of the waveform, extended past its ends: between two
  * breakpoints the drive is sin, a constant or a straight line. */
@@ -24,7 +28,7 @@ struct motor_piece {
  * the jumps themselves (square 0, sawtooth -1). */
 double motor_wave(enum wave wave, double cycles);
 
-/* The motor position u(t) in metres. */
+/* The motor position u(t) = A w(2 pi (f t + phase)) in metres. */
 double motor_position(const struct motor *m, double t);
 
 /* The piece of the waveform that contains time t (t should lie inside the piece,

@@ -134,6 +134,8 @@ void app_free(struct app *app)
 
 void app_reset(struct app *app)
 {
+    app->model->motor.phase = 0.0; /* t = 0 again: the drive starts from its start */
+    sim_set_model(app->sim, app->model);
     sim_set_dt(app->sim, app->cfg.dt);
     sim_reset(app->sim, app->cfg.x0.v, app->cfg.v0.v);
     sim_set_dt(app->sim, app->cfg.dt);
@@ -269,6 +271,10 @@ static void apply_params(struct app *app)
         app_say(app, true, "%s", err);
         return;
     }
+    /* The drive keeps its phase through a change of frequency: no jump in u. */
+    struct motor keep = app->model->motor;
+    motor_retune(&keep, m->motor.frequency, sim_time(app->sim));
+    m->motor.phase = keep.phase;
     model_copy(app->model, m);
     model_free(m);
     sim_set_model(app->sim, app->model);

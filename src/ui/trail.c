@@ -11,7 +11,7 @@ struct trail *trail_new(int n, int capacity)
     if (!tr)
         return NULL;
     tr->n = n;
-    tr->width = 2 + 3 * n;
+    tr->width = 2 + 3 * n + TRAIL_ENERGIES;
     tr->capacity = capacity;
     tr->buf = malloc(2 * (size_t)capacity * (size_t)tr->width * sizeof *tr->buf);
     tr->accel = malloc((size_t)n * sizeof *tr->accel);
@@ -49,6 +49,13 @@ void trail_push(struct trail *tr, const struct sim *s)
         a[TRAIL_V(tr, i)] = v[i];
         a[TRAIL_A(tr, i)] = tr->accel[i];
     }
+    struct energy e;
+    sim_energy(s, &e);
+    a[TRAIL_E(tr, TRAIL_KE)] = e.kinetic;
+    a[TRAIL_E(tr, TRAIL_PE)] = e.potential;
+    a[TRAIL_E(tr, TRAIL_DISS)] = e.dissipated;
+    a[TRAIL_E(tr, TRAIL_WORK)] = e.motor_work;
+    a[TRAIL_E(tr, TRAIL_CONTACT)] = e.contact;
     memcpy(b, a, (size_t)tr->width * sizeof *a);
     tr->count++;
 }

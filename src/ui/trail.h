@@ -7,7 +7,7 @@
 
 struct trail {
     int n;          /* masses */
-    int width;      /* doubles per record: t, u, x[n], v[n], a[n] */
+    int width;      /* doubles per record: t, u, x[n], v[n], a[n], 5 energies */
     int capacity;   /* records kept */
     int head;       /* index of the oldest record */
     int count;      /* records kept now */
@@ -21,6 +21,9 @@ struct trail {
 #define TRAIL_X(tr, i) (2 + (i))
 #define TRAIL_V(tr, i) (2 + (tr)->n + (i))
 #define TRAIL_A(tr, i) (2 + 2 * (tr)->n + (i))
+/* Energies: kinetic, potential, dissipated, motor work, taken by contacts. */
+enum { TRAIL_KE, TRAIL_PE, TRAIL_DISS, TRAIL_WORK, TRAIL_CONTACT, TRAIL_ENERGIES };
+#define TRAIL_E(tr, k) (2 + 3 * (tr)->n + (k))
 
 /* A trail of capacity records for n masses, or NULL on no memory. */
 struct trail *trail_new(int n, int capacity);
