@@ -123,3 +123,12 @@ int modes_response(const struct model *m, double freq_hz, double *amp)
     free(buf);
     return (int)info;
 }
+
+int modes_nearest(const double *f, int n, double freq)
+{
+    int best = 0;
+    for (int j = 1; j < n; j++)
+        if (fabs(f[j] - freq) < fabs(f[best] - freq))
+            best = j;
+    return best;
+}

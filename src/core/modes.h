@@ -13,6 +13,9 @@
  * is 1 and that component is positive. Returns 0, -1 on no memory, or LAPACK's info. */
 int modes_compute(const struct model *m, double *freq, double *shapes);
 
+/* Index of the frequency in f[0..n-1] closest to freq. */
+int modes_nearest(const double *f, int n, double freq);
+
 /* The highest natural angular frequency (rad/s), or a negative value on failure. */
 double modes_omega_max(const struct model *m);
 

@@ -1,0 +1,101 @@
+/* sweep.c: stepped-sine bookkeeping. At each point the drive runs for a settling time
+ * (transients decay), then the largest |x_i| over a whole number of periods is the
+ * measured amplitude of mass i; the next point follows at once. */
+#include "sweep.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+struct sweep *sweep_new(int n, int points)
+{
+    struct sweep *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    s->n = n;
+    s->points = points;
+    s->freq = malloc((size_t)points * sizeof *s->freq);
+    s->peak = malloc((size_t)points * (size_t)n * sizeof *s->peak);
+    if (!s->freq || !s->peak) {
+        sweep_free(s);
+        return NULL;
+    }
+    for (int i = 0; i < points * n; i++)
+        s->peak[i] = NAN;
+    return s;
+}
+
+void sweep_free(struct sweep *s)
+{
+    if (!s)
+        return;
+    free(s->freq);
+    free(s->peak);
+    free(s);
+}
+
+/* Times for the current point: settling and measuring, whole periods. */
+static void plan_point(struct sweep *s)
+{
+    double period = 1.0 / s->freq[s->index];
+    s->settle = fmax(s->settle_min, 8.0 * period);
+    s->measure = ceil(fmax(3.0, 4.0 * period) / period - 1e-9) * period;
+}
+
+void sweep_start(struct sweep *s, double fmin, double fmax, double settle, double t)
+{
+    for (int p = 0; p < s->points; p++) {
+        s->freq[p] = s->points > 1 ? fmin + (fmax - fmin) * p / (s->points - 1) : fmin;
+        for (int i = 0; i < s->n; i++)
+            s->peak[p * s->n + i] = NAN;
+    }
+    s->index = 0;
+    s->active = true;
+    s->measuring = false;
+    s->t_point = t;
+    s->settle_min = settle;
+    plan_point(s);
+}
+
+void sweep_stop(struct sweep *s)
+{
+    s->active = false;
+}
+
+double sweep_frequency(const struct sweep *s)
+{
+    return s->freq[s->index < s->points ? s->index : s->points - 1];
+}
+
+enum sweep_event sweep_update(struct sweep *s, double t, const double *x)
+{
+    if (!s->active)
+        return SWEEP_IDLE;
+    double since = t - s->t_point;
+    if (since < s->settle)
+        return SWEEP_SAME;
+    double *peak = s->peak + (size_t)s->index * s->n;
+    if (!s->measuring) {
+        s->measuring = true;
+        for (int i = 0; i < s->n; i++)
+            peak[i] = 0.0;
+    }
+    for (int i = 0; i < s->n; i++)
+        peak[i] = fmax(peak[i], fabs(x[i]));
+    if (since < s->settle + s->measure)
+        return SWEEP_SAME;
+    /* This point is done. */
+    s->index++;
+    s->measuring = false;
+    s->t_point = t;
+    if (s->index >= s->points) {
+        s->active = false;
+        return SWEEP_DONE;
+    }
+    plan_point(s);
+    return SWEEP_RETUNE;
+}
+
+int sweep_measured(const struct sweep *s)
+{
+    return s->index < s->points ? s->index : s->points;
+}

@@ -1,0 +1,90 @@
+/* test_sweep.c: the stepped-sine experiment's bookkeeping, and that on a linear chain
+ * without collisions its measured peaks land on the steady-state theory. */
+#include "testutil.h"
+
+#include <stdlib.h>
+
+#include "core/modes.h"
+#include "core/sim.h"
+#include "core/sweep.h"
+
+static void bookkeeping(void **state)
+{
+    (void)state;
+    struct sweep *s = sweep_new(2, 3);
+    assert_int_equal(sweep_update(s, 0.0, (double[]){0, 0}), SWEEP_IDLE);
+    sweep_start(s, 1.0, 2.0, 5.0, 10.0);
+    assert_close(sweep_frequency(s), 1.0, 0.0);
+    assert_close(s->freq[1], 1.5, 1e-15);
+    /* Settling: max(5 s, 8 periods = 8 s) at 1 Hz; nothing recorded yet. */
+    assert_int_equal(sweep_update(s, 17.9, (double[]){3, 3}), SWEEP_SAME);
+    assert_true(isnan(s->peak[0]));
+    /* Measuring: 4 periods = 4 s; the largest |x| is kept. */
+    assert_int_equal(sweep_update(s, 18.5, (double[]){0.2, -0.7}), SWEEP_SAME);
+    assert_int_equal(sweep_update(s, 20.0, (double[]){-0.4, 0.1}), SWEEP_SAME);
+    assert_int_equal(sweep_update(s, 22.0, (double[]){0.1, 0.1}), SWEEP_RETUNE);
+    assert_close(s->peak[0], 0.4, 0.0);
+    assert_close(s->peak[1], 0.7, 0.0);
+    assert_int_equal(sweep_measured(s), 1);
+    assert_close(sweep_frequency(s), 1.5, 1e-15);
+    sweep_stop(s);
+    assert_int_equal(sweep_update(s, 99.0, (double[]){0, 0}), SWEEP_IDLE);
+    assert_close(s->peak[0], 0.4, 0.0); /* kept */
+    sweep_free(s);
+}
+
+/* A 2-mass chain with c = 1 (transients die within a few seconds): the sweep's peaks
+ * are the theory's steady-state amplitudes. */
+static void matches_theory(void **state)
+{
+    (void)state;
+    struct model *md = model_new(2);
+    md->c[0] = md->c[1] = 1.0;
+    md->motor.amplitude = 0.05;
+    md->collisions = false;
+    struct sim *sm = sim_new(md, 0.005);
+    struct sweep *sw = sweep_new(2, 5);
+    sweep_start(sw, 0.3, 1.1, 12.0, 0.0);
+    md->motor.frequency = sweep_frequency(sw);
+    sim_set_model(sm, md);
+    enum sweep_event ev = SWEEP_SAME;
+    for (int n = 0; n < 400000 && ev != SWEEP_DONE; n++) {
+        sim_step(sm);
+        ev = sweep_update(sw, sim_time(sm), sim_x(sm));
+        if (ev == SWEEP_RETUNE) {
+            motor_retune(&md->motor, sweep_frequency(sw), sim_time(sm));
+            sim_set_model(sm, md);
+        }
+    }
+    assert_int_equal(ev, SWEEP_DONE);
+    assert_int_equal(sweep_measured(sw), 5);
+    for (int p = 0; p < 5; p++) {
+        double amp[2];
+        modes_response(md, sw->freq[p], amp);
+        for (int i = 0; i < 2; i++)
+            assert_close(sw->peak[p * 2 + i], amp[i], 0.02 * amp[i]);
+    }
+    sweep_free(sw);
+    sim_free(sm);
+    model_free(md);
+}
+
+static void nearest_mode(void **state)
+{
+    (void)state;
+    const double f[3] = {0.385, 0.712, 0.930};
+    assert_int_equal(modes_nearest(f, 3, 0.1), 0);
+    assert_int_equal(modes_nearest(f, 3, 0.6), 1);
+    assert_int_equal(modes_nearest(f, 3, 0.83), 2);
+    assert_int_equal(modes_nearest(f, 3, 9.0), 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(bookkeeping),
+        cmocka_unit_test(matches_theory),
+        cmocka_unit_test(nearest_mode),
+    };
+    return cmocka_run_group_tests_name("sweep", tests, NULL, NULL);
+}
