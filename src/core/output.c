@@ -99,24 +99,32 @@ void output_csv_header(FILE *fp, int n, bool energy)
     fputc('\n', fp);
 }
 
-void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
+void output_csv_values(FILE *fp, int n, double t, const double *x, const double *v,
+                       const double *a, double u, const double *energy)
 {
-    int n = sim_model(s)->n;
-    const double *x = sim_x(s), *v = sim_v(s);
-    fprintf(fp, "%.12g", sim_time(s));
+    fprintf(fp, "%.12g", t);
     for (int i = 0; i < n; i++)
         fprintf(fp, ",%.12g", x[i]);
     for (int i = 0; i < n; i++)
         fprintf(fp, ",%.12g", v[i]);
-    sim_accel(s, scratch);
     for (int i = 0; i < n; i++)
-        fprintf(fp, ",%.12g", scratch[i]);
-    fprintf(fp, ",%.12g", sim_end_position(s));
-    if (energy) {
-        struct energy e;
-        sim_energy(s, &e);
-        fprintf(fp, ",%.12g,%.12g,%.12g,%.12g", e.kinetic, e.potential, e.dissipated,
-                e.motor_work);
-    }
+        fprintf(fp, ",%.12g", a[i]);
+    fprintf(fp, ",%.12g", u);
+    if (energy)
+        fprintf(fp, ",%.12g,%.12g,%.12g,%.12g", energy[0], energy[1], energy[2], energy[3]);
     fputc('\n', fp);
+}
+
+void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
+{
+    struct energy e;
+    double four[4];
+    sim_accel(s, scratch);
+    if (energy) {
+        sim_energy(s, &e);
+        four[0] = e.kinetic, four[1] = e.potential, four[2] = e.dissipated;
+        four[3] = e.motor_work;
+    }
+    output_csv_values(fp, sim_model(s)->n, sim_time(s), sim_x(s), sim_v(s), scratch,
+                      sim_end_position(s), energy ? four : NULL);
 }

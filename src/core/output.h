@@ -27,6 +27,11 @@ int output_close(struct output *o, bool commit);
 /* The --headless CSV header for n masses. */
 void output_csv_header(FILE *fp, int n, bool energy);
 
+/* One --headless CSV row from values: t, x[n], v[n], a[n], u and, if energy is not
+ * NULL, its four values (kinetic, potential, dissipated, motor work). */
+void output_csv_values(FILE *fp, int n, double t, const double *x, const double *v,
+                       const double *a, double u, const double *energy);
+
 /* One --headless CSV row for the current state of s. scratch holds n doubles. */
 void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch);
 

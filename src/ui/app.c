@@ -7,8 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
+
+#include <errno.h>
+#include <sys/stat.h>
 
 #include "../core/modes.h"
+#include "../core/output.h"
 #include "../core/preset.h"
 
 /* Plots keep a sample at least this often (s), at most TRAIL_RECORDS in the window. */
@@ -59,12 +64,21 @@ static void drop_chain(struct app *app)
 {
     history_free(app->hist);
     trail_free(app->trail);
+    sweep_free(app->sweep);
+    app->sweep = NULL;
     sim_free(app->sim);
     model_free(app->model);
     app->hist = NULL;
     app->trail = NULL;
     app->sim = NULL;
     app->model = NULL;
+}
+
+/* Natural frequencies, shapes and the stability limit of the model as it is now. */
+static void update_modes(struct app *app)
+{
+    app->modes_ok = modes_compute(app->model, app->modes, app->shapes) == 0;
+    app->stable_dt = modes_stable_dt(app->model);
 }
 
 /* Builds model, sim, history and trail from app->cfg; 0, or -1 on no memory. */
@@ -81,10 +95,11 @@ static int build_chain(struct app *app)
     if (!app->sim || !app->trail)
         return -1;
     app->hist = history_new(app->sim, HISTORY_DEPTH);
-    if (!app->hist)
+    app->sweep = sweep_new(app->model->n, APP_SWEEP_POINTS);
+    if (!app->hist || !app->sweep)
         return -1;
     app->masses_pending = app->model->n;
-    app->stable_dt = modes_stable_dt(app->model);
+    update_modes(app);
     return 0;
 }
 
@@ -143,7 +158,23 @@ void app_reset(struct app *app)
     trail_clear(app->trail);
     set_sampling(app);
     trail_push(app->trail, app->sim);
+    struct energy e;
+    sim_energy(app->sim, &e);
+    app->energy0 = e.balance;
+    if (app->sweep->active) {
+        sweep_stop(app->sweep);
+        app_say(app, false, "sweep stopped by the reset");
+    }
 }
+
+double app_energy_drift(const struct app *app)
+{
+    struct energy e;
+    sim_energy(app->sim, &e);
+    return e.balance - app->energy0;
+}
+
+static void retune(struct app *app, double f);
 
 /* Puts the chain back on its last finite state after a blow-up and says why. */
 static void recover(struct app *app)
@@ -171,6 +202,17 @@ bool app_step(struct app *app)
     if (++app->since_sample >= app->sample_every) {
         app->since_sample = 0;
         trail_push(app->trail, app->sim);
+    }
+    switch (sweep_update(app->sweep, sim_time(app->sim), sim_x(app->sim))) {
+    case SWEEP_RETUNE:
+        retune(app, sweep_frequency(app->sweep));
+        break;
+    case SWEEP_DONE:
+        app_say(app, false, "sweep done: %d frequencies measured (f shows them)",
+                app->sweep->points);
+        break;
+    default:
+        break;
     }
     return true;
 }
@@ -282,7 +324,7 @@ static void apply_params(struct app *app)
         sim_set_dt(app->sim, app->cfg.dt);
         set_sampling(app);
     }
-    app->stable_dt = modes_stable_dt(app->model);
+    update_modes(app);
     if (app->cfg.dt >= app->stable_dt)
         app_say(app, true, "warning: dt = %.3f s is above the stability limit %.3g s",
                 app->cfg.dt, app->stable_dt);
@@ -535,4 +577,187 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         return;
     }
     snprintf(buf, len, "%.*f %s", ranges[ctl].decimals, v, ranges[ctl].unit);
+    if (ctl == CTL_FREQUENCY && app->modes_ok) {
+        /* On a natural frequency (within 0.5 %): say which. */
+        int j = modes_nearest(app->modes, m->n, v);
+        if (fabs(v - app->modes[j]) <= 0.005 * app->modes[j])
+            snprintf(buf + strlen(buf), len - strlen(buf), " ◆ f%d", j + 1);
+    }
+}
+
+/* Drives at frequency f from now on, phase continuous. */
+static void retune(struct app *app, double f)
+{
+    app->cfg.frequency = f;
+    motor_retune(&app->model->motor, f, sim_time(app->sim));
+    sim_set_model(app->sim, app->model);
+}
+
+void app_nearest_mode(struct app *app)
+{
+    if (!app->modes_ok)
+        return;
+    int j = modes_nearest(app->modes, app->model->n, app->model->motor.frequency);
+    retune(app, app->modes[j]);
+    app_say(app, false, "driving at mode %d, %.3f Hz", j + 1, app->modes[j]);
+}
+
+void app_toggle_sweep(struct app *app)
+{
+    if (app->sweep->active) {
+        sweep_stop(app->sweep);
+        app_say(app, false, "sweep stopped after %d of %d frequencies",
+                sweep_measured(app->sweep), app->sweep->points);
+        return;
+    }
+    if (app->model->boundary != BOUNDARY_MOTOR || !app->modes_ok) {
+        app_say(app, true, "a sweep needs the motor at the right end");
+        return;
+    }
+    int n = app->model->n;
+    double lo = fmax(APP_FMIN, 0.5 * app->modes[0]);
+    double hi = fmin(APP_FMAX, 1.5 * app->modes[n - 1]);
+    /* Settle for a few damping times of the slowest-decaying mode, within reason. */
+    double cmin = app->model->c[0], mmax = app->model->m[0];
+    for (int i = 1; i < n; i++)
+        cmin = fmin(cmin, app->model->c[i]), mmax = fmax(mmax, app->model->m[i]);
+    double settle = cmin > 0 ? fmin(30.0, fmax(4.0, 3.0 * 2.0 * mmax / cmin)) : 30.0;
+    sweep_start(app->sweep, lo, hi, settle, sim_time(app->sim));
+    retune(app, sweep_frequency(app->sweep));
+    app->running = true;
+    app_say(app, false, "sweeping %.2f..%.2f Hz, %d steps of %.0f s or more; ] runs faster, "
+            "w stops", lo, hi, app->sweep->points, settle);
+}
+
+bool app_set_element(struct app *app, char what, int index, const char *text)
+{
+    const struct model *m = app->model;
+    int n = m->n, count = what == 'k' ? n + 1 : n;
+    enum config_key key = what == 'm' ? CFG_MASS : what == 'c' ? CFG_DAMPING : CFG_SPRING;
+    if (index < 0 || index >= count)
+        return false;
+    /* Check the one value with the key's own rules, on a scratch config. */
+    static struct config trial;
+    char err[300];
+    config_init(&trial);
+    if (config_set(&trial, key, text, err, sizeof err) != 0 ||
+        (trial.mass.count + trial.spring.count + trial.damping.count) != 1) {
+        if (trial.mass.count + trial.spring.count + trial.damping.count > 1)
+            snprintf(err, sizeof err, "'%.40s' is more than one value", text);
+        app_say(app, true, "%s %d: %s", what == 'k' ? "spring" : "mass", index + (what != 'k'),
+                err);
+        return false;
+    }
+    double v = (what == 'm' ? trial.mass : what == 'c' ? trial.damping : trial.spring).v[0];
+    struct config_list *l = what == 'm' ? &app->cfg.mass
+                          : what == 'c' ? &app->cfg.damping : &app->cfg.spring;
+    const double *cur = what == 'm' ? m->m : what == 'c' ? m->c : m->k;
+    l->count = count;
+    for (int i = 0; i < count; i++)
+        l->v[i] = cur[i];
+    l->v[index] = v;
+    apply_params(app);
+    return true;
+}
+
+/* A preset name: letters, digits, '-', '_' and '.', not starting with '.', at most 64. */
+static const char *bad_name(const char *name)
+{
+    size_t len = strlen(name);
+    if (len == 0)
+        return "a name is needed";
+    if (len > 64)
+        return "names are at most 64 characters";
+    if (name[0] == '.')
+        return "a name may not start with '.'";
+    for (const char *p = name; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+              *p == '-' || *p == '_' || *p == '.'))
+            return "use letters, digits, '-', '_' and '.' only";
+    return NULL;
+}
+
+/* mkdir -p. */
+static int make_dirs(const char *path)
+{
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return -1;
+        *p = '/';
+    }
+    return mkdir(buf, 0777) != 0 && errno != EEXIST ? -1 : 0;
+}
+
+enum app_save app_save(struct app *app, const char *name, bool overwrite)
+{
+    char dir[4096], path[4200];
+    const char *why = bad_name(name);
+    if (why) {
+        app_say(app, true, "save: '%.40s': %s", name, why);
+        return SAVE_BAD_NAME;
+    }
+    if (preset_user_dir(dir, sizeof dir) != 0) {
+        app_say(app, true, "save: neither XDG_CONFIG_HOME nor HOME is set");
+        return SAVE_FAILED;
+    }
+    snprintf(path, sizeof path, "%s/%s.ini", dir, name);
+    if (!overwrite && access(path, F_OK) == 0) {
+        app_say(app, false, "preset %s exists: replace it? (y/n)", name);
+        return SAVE_EXISTS;
+    }
+    if (make_dirs(dir) != 0) {
+        app_say(app, true, "save: %s: %s", dir, strerror(errno));
+        return SAVE_FAILED;
+    }
+    /* The set-up as it stands: every element's values, the initial conditions. */
+    static struct config c;
+    c = app->cfg;
+    snprintf(c.name, sizeof c.name, "%s", name);
+    snprintf(c.description, sizeof c.description, "Saved from springsim");
+    struct output o;
+    int e = output_open(&o, path);
+    if (e == 0) {
+        preset_write(o.fp, &c, app->model);
+        e = output_close(&o, true);
+    }
+    if (e) {
+        app_say(app, true, "save: %s: %s", path, strerror(e));
+        return SAVE_FAILED;
+    }
+    snprintf(app->preset, sizeof app->preset, "%s", name);
+    app_say(app, false, "saved %s (springsim -p %s loads it)", path, name);
+    return SAVE_OK;
+}
+
+bool app_export(struct app *app, const char *dir, char *path, size_t len)
+{
+    time_t now = time(NULL);
+    struct tm tm;
+    char stamp[32];
+    localtime_r(&now, &tm);
+    strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+    snprintf(path, len, "%s/springsim-%s.csv", dir ? dir : ".", stamp);
+    const struct trail *tr = app->trail;
+    int n = tr->n;
+    struct output o;
+    int e = output_open(&o, path);
+    if (e == 0) {
+        output_csv_header(o.fp, n, false);
+        const double *rec = trail_first(tr);
+        for (int k = 0; k < tr->count; k++, rec += tr->width)
+            output_csv_values(o.fp, n, rec[TRAIL_T], rec + TRAIL_X(tr, 0), rec + TRAIL_V(tr, 0),
+                              rec + TRAIL_A(tr, 0), rec[TRAIL_U], NULL);
+        e = output_close(&o, true);
+    }
+    if (e) {
+        app_say(app, true, "export: %s: %s", path, strerror(e));
+        return false;
+    }
+    app_say(app, false, "exported %d rows to %s", tr->count, path);
+    return true;
 }

@@ -9,10 +9,17 @@
 #include "../core/config.h"
 #include "../core/history.h"
 #include "../core/sim.h"
+#include "../core/sweep.h"
 #include "trail.h"
 
 #define APP_MAX_MASSES 10    /* the interactive program's limit */
 #define APP_WINDOW 10.0      /* seconds the time plots show */
+#define APP_FMIN 0.1         /* the frequency control's range (Hz) */
+#define APP_FMAX 5.0
+#define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */
+
+/* What a save of a preset came to. */
+enum app_save { SAVE_OK, SAVE_EXISTS, SAVE_BAD_NAME, SAVE_FAILED };
 
 /* The controls, top to bottom. */
 enum control {
@@ -46,6 +53,11 @@ struct app {
     char message[200];       /* one line for the status bar, "" for none */
     bool message_is_error;   /* shown as a warning */
     const char *exe_dir;     /* for the preset search path */
+    double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
+    double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
+    bool modes_ok;           /* modes[] and shapes[] are those of the model */
+    struct sweep *sweep;     /* the sine-sweep experiment */
+    double energy0;          /* the energy balance at t = 0 */
 };
 
 /* Sets up app from cfg (N already checked to be 1..APP_MAX_MASSES); 0, or -1 on no memory. */
@@ -86,6 +98,27 @@ void app_apply_masses(struct app *app);
 
 /* Loads the preset at path; false with the reason in the message. */
 bool app_load_preset(struct app *app, const char *path, const char *name);
+
+/* Sets mass i's own mass (what = 'm') or damping ('c'), or spring j's constant
+ * ('k'), from typed text; false with the reason in the message. */
+bool app_set_element(struct app *app, char what, int index, const char *text);
+
+/* Sets the motor frequency to the natural frequency nearest to it. */
+void app_nearest_mode(struct app *app);
+
+/* Starts (or stops, if running) the sine-sweep experiment across the modes. */
+void app_toggle_sweep(struct app *app);
+
+/* Saves the set-up as user preset name (overwrite an existing one only if asked);
+ * the message says what happened. */
+enum app_save app_save(struct app *app, const char *name, bool overwrite);
+
+/* Writes the recorded samples as --headless CSV to ./springsim-YYYYmmdd-HHMMSS.csv
+ * (or into dir if not NULL); the path goes into path. False with the reason. */
+bool app_export(struct app *app, const char *dir, char *path, size_t len);
+
+/* The energy balance now, minus its value at t = 0 (J). */
+double app_energy_drift(const struct app *app);
 
 /* The control's label and its value with units, for the panel. */
 const char *app_control_label(enum control ctl);

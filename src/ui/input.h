@@ -27,6 +27,14 @@ enum action {
     ACT_FASTER,    /* playback speed up */
     ACT_ESCAPE,    /* close / cancel */
     ACT_REDRAW,    /* repaint the whole screen */
+    ACT_MODES,     /* modes view */
+    ACT_RESPONSE,  /* frequency response view */
+    ACT_ENERGY,    /* energy view */
+    ACT_NEAREST,   /* drive at the nearest natural frequency */
+    ACT_SWEEP,     /* start / stop the sine-sweep experiment */
+    ACT_SAVE,      /* save the set-up as a preset */
+    ACT_EXPORT,    /* export the recorded samples as CSV */
+    ACT_DAMPING,   /* chain: the selected mass's own damping */
 };
 
 struct binding {

@@ -18,61 +18,14 @@
 
 #include "../core/modes.h"
 #include "../core/preset.h"
-#include "app.h"
-#include "braille.h"
 #include "input.h"
-#include "plot.h"
+#include "tui_internal.h"
 
 #define MIN_COLS 60
 #define MIN_ROWS 20
 #define FRAME_HZ 30.0   /* scene and status */
 #define PLOT_HZ 10.0    /* plots, while running */
 #define SCENE_SPAN 13.0 /* metres shown: 0 .. L + the motor's largest stroke */
-
-/* Colour pairs. */
-enum { PAIR_MASS = 1, PAIR_MOTOR = 11, PAIR_SPRING, PAIR_DIM, PAIR_TITLE, PAIR_WARN,
-       PAIR_WALL, PAIR_SELECT, PAIR_COUNT };
-
-struct rect {
-    int y, x, h, w;
-};
-
-enum focus { FOCUS_CONTROLS, FOCUS_CHAIN };
-enum overlay { OVERLAY_NONE, OVERLAY_HELP, OVERLAY_PRESETS, OVERLAY_EDIT };
-
-struct plotview {
-    const char *title;  /* centred on the top border */
-    int xq, yq;         /* quantities: 0 time, 1 x, 2 v, 3 a */
-    struct scale xs, ys; /* axis scales (xs unused for time plots) */
-    struct canvas *canvas;
-    struct rect r;       /* frame */
-    double t_now;        /* time of the samples last taken */
-};
-
-struct tui {
-    struct app app;
-    bool utf8;              /* braille and box drawing allowed */
-    bool color;             /* colours in use */
-    int rows, cols;         /* terminal size */
-    bool too_small;         /* below MIN_COLS x MIN_ROWS */
-    struct rect status, scene, controls, hints;
-    struct plotview plots[6];
-    struct canvas *scene_canvas;
-    enum focus focus;
-    int control;            /* selected control */
-    int mass;               /* selected mass, in the chain */
-    enum overlay overlay;
-    struct preset_entry *presets; /* the menu's entries */
-    int npresets, preset_sel;
-    char edit[64];          /* text being typed */
-    int edit_len;
-    double plot_due;        /* wall time of the next plot refresh */
-    bool plots_dirty;       /* redraw the plots at the next frame */
-    bool behind;            /* the core could not keep up */
-    bool dragging;          /* a mass is being dragged with the mouse */
-    int scene_x0;           /* first column of the chain's metres */
-    double scene_cpm;       /* columns per metre */
-};
 
 static volatile sig_atomic_t quit_signal; /* SIGINT, SIGTERM, SIGHUP received */
 static bool curses_on;
@@ -161,7 +114,7 @@ static void init_colors(struct tui *t)
 }
 
 /* Attribute for colour pair p (or a mono stand-in). */
-static attr_t pair_attr(const struct tui *t, int p)
+attr_t tui_pair_attr(const struct tui *t, int p)
 {
     if (t->color)
         return COLOR_PAIR(p);
@@ -174,15 +127,15 @@ static attr_t pair_attr(const struct tui *t, int p)
     return A_NORMAL;
 }
 
-static attr_t mass_attr(const struct tui *t, int i)
+attr_t tui_mass_attr(const struct tui *t, int i)
 {
-    return pair_attr(t, PAIR_MASS + i % 10);
+    return tui_pair_attr(t, PAIR_MASS + i % 10);
 }
 
 /* ---- small drawing helpers ---- */
 
 /* Writes UTF-8 or ASCII text s at (y, x), at most w columns. */
-static void put(int y, int x, int w, const char *s)
+void tui_put(int y, int x, int w, const char *s)
 {
     if (w <= 0 || y < 0 || x < 0)
         return;
@@ -191,7 +144,7 @@ static void put(int y, int x, int w, const char *s)
 }
 
 /* Columns text s takes (UTF-8 characters, each one column here). */
-static int text_width(const char *s)
+int tui_text_width(const char *s)
 {
     int n = 0;
     for (; *s; s++)
@@ -200,7 +153,7 @@ static int text_width(const char *s)
 }
 
 /* Writes at most w columns of text s (counting UTF-8 characters as one column). */
-static void putn(int y, int x, int w, const char *s)
+void tui_putn(int y, int x, int w, const char *s)
 {
     char plain[512];
     if (w <= 0)
@@ -209,7 +162,16 @@ static void putn(int y, int x, int w, const char *s)
         /* The few non-ASCII characters in our own text, spelled in ASCII. */
         size_t o = 0;
         for (const char *p = s; *p && o < sizeof plain - 3; p++) {
-            if (strncmp(p, "·", 2) == 0) {
+            static const char *const fancy[][2] = {{"◆", "*"}, {"■", "#"}, {"┃", "|"},
+                                                   {"┊", ":"}, {"━", "-"}, {"–", "-"},
+                                                   {"│", "|"}, {"▸", ">"}, {"×", "x"}};
+            size_t f = 0;
+            while (f < sizeof fancy / sizeof *fancy && strncmp(p, fancy[f][0], strlen(fancy[f][0])))
+                f++;
+            if (f < sizeof fancy / sizeof *fancy) {
+                plain[o++] = fancy[f][1][0];
+                p += strlen(fancy[f][0]) - 1;
+            } else if (strncmp(p, "·", 2) == 0) {
                 plain[o++] = ' ';
                 p++;
             } else if (strncmp(p, "²", 2) == 0) {
@@ -237,24 +199,17 @@ static void putn(int y, int x, int w, const char *s)
     mvaddnstr(y, x, s, (int)(p - s));
 }
 
-static void printfn(int y, int x, int w, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static void printfn(int y, int x, int w, const char *fmt, ...)
+void tui_printf(int y, int x, int w, const char *fmt, ...)
 {
     char buf[512];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(buf, sizeof buf, fmt, ap);
     va_end(ap);
-    putn(y, x, w, buf);
+    tui_putn(y, x, w, buf);
 }
 
-/* Line-drawing characters: the terminal's own where the locale is UTF-8, plain ASCII
- * otherwise. */
-enum line { L_H, L_V, L_UL, L_UR, L_LL, L_LR, L_RTEE, L_TTEE };
-
-static chtype line_ch(enum line l)
+chtype tui_line(enum line l)
 {
     if (ascii_only)
         return (chtype)"-|+++++" "+"[l];
@@ -280,18 +235,18 @@ static chtype line_ch(enum line l)
 }
 
 /* A box with an optional title near the left (centre = false) or centred. */
-static void frame(const struct tui *t, struct rect r, const char *title, bool centre)
+void tui_frame(const struct tui *t, struct rect r, const char *title, bool centre)
 {
     if (r.h < 2 || r.w < 2)
         return;
-    mvaddch(r.y, r.x, line_ch(L_UL));
-    mvhline(r.y, r.x + 1, line_ch(L_H), r.w - 2);
-    mvaddch(r.y, r.x + r.w - 1, line_ch(L_UR));
-    mvvline(r.y + 1, r.x, line_ch(L_V), r.h - 2);
-    mvvline(r.y + 1, r.x + r.w - 1, line_ch(L_V), r.h - 2);
-    mvaddch(r.y + r.h - 1, r.x, line_ch(L_LL));
-    mvhline(r.y + r.h - 1, r.x + 1, line_ch(L_H), r.w - 2);
-    mvaddch(r.y + r.h - 1, r.x + r.w - 1, line_ch(L_LR));
+    mvaddch(r.y, r.x, tui_line(L_UL));
+    mvhline(r.y, r.x + 1, tui_line(L_H), r.w - 2);
+    mvaddch(r.y, r.x + r.w - 1, tui_line(L_UR));
+    mvvline(r.y + 1, r.x, tui_line(L_V), r.h - 2);
+    mvvline(r.y + 1, r.x + r.w - 1, tui_line(L_V), r.h - 2);
+    mvaddch(r.y + r.h - 1, r.x, tui_line(L_LL));
+    mvhline(r.y + r.h - 1, r.x + 1, tui_line(L_H), r.w - 2);
+    mvaddch(r.y + r.h - 1, r.x + r.w - 1, tui_line(L_LR));
     if (title && r.w > 6) {
         int len = (int)strlen(title);
         int max = r.w - 4;
@@ -302,17 +257,17 @@ static void frame(const struct tui *t, struct rect r, const char *title, bool ce
             chars += (*p & 0xC0) != 0x80;
         shown = chars < max ? chars : max;
         int x = centre ? r.x + (r.w - shown - 2) / 2 : r.x + 1;
-        attron(pair_attr(t, PAIR_TITLE) | A_BOLD);
+        attron(tui_pair_attr(t, PAIR_TITLE) | A_BOLD);
         mvaddch(r.y, x, ' ');
-        putn(r.y, x + 1, shown, title);
+        tui_putn(r.y, x + 1, shown, title);
         addch(' ');
-        attroff(pair_attr(t, PAIR_TITLE) | A_BOLD);
+        attroff(tui_pair_attr(t, PAIR_TITLE) | A_BOLD);
         (void)len;
     }
 }
 
 /* Draws a braille canvas at (y, x): each cell with dots in its colour. */
-static void draw_canvas(const struct tui *t, const struct canvas *c, int y, int x)
+void tui_canvas(const struct tui *t, const struct canvas *c, int y, int x)
 {
     for (int cy = 0; cy < c->rows; cy++) {
         for (int cx = 0; cx < c->cols; cx++) {
@@ -320,8 +275,8 @@ static void draw_canvas(const struct tui *t, const struct canvas *c, int y, int 
             if (!bits)
                 continue;
             int col = c->color[(size_t)cy * c->cols + cx];
-            attr_t a = col >= PAIR_MASS && col < PAIR_MASS + 10 ? mass_attr(t, col - PAIR_MASS)
-                                                                 : pair_attr(t, col);
+            attr_t a = col >= PAIR_MASS && col < PAIR_MASS + 10 ? tui_mass_attr(t, col - PAIR_MASS)
+                                                                 : tui_pair_attr(t, col);
             attron(a);
             if (t->utf8) {
                 char g[5];
@@ -361,6 +316,10 @@ static void layout(struct tui *t)
         int cw = p->r.w - 2 - 6, chh = p->r.h - 2 - 2;
         p->canvas = canvas_new(cw < 1 ? 1 : cw, chh < 1 ? 1 : chh);
     }
+    t->area = (struct rect){top, 0, h, w};
+    canvas_free(t->view_canvas);
+    t->view_canvas = canvas_new(w - 2 - 7, h - 2 - 2);
+    t->view_ys.set = false;
     canvas_free(t->scene_canvas);
     t->scene_canvas = canvas_new(t->scene.w - 2, 3);
     t->plots_dirty = true;
@@ -374,15 +333,33 @@ static double scene_col(const struct tui *t, double X)
     return t->scene_x0 + X * t->scene_cpm;
 }
 
+int tui_selected_mass(const struct tui *t)
+{
+    return t->focus == FOCUS_CHAIN && t->elem % 2 == 1 ? t->elem / 2 : -1;
+}
+
+/* The selected spring, or -1. */
+static int selected_spring(const struct tui *t)
+{
+    return t->focus == FOCUS_CHAIN && t->elem % 2 == 0 ? t->elem / 2 : -1;
+}
+
+/* Elements the chain has: N+1 springs (N for a free end) and N masses. */
+static int elements(const struct tui *t)
+{
+    const struct model *m = t->app.model;
+    return 2 * m->n + (m->boundary == BOUNDARY_FREE ? 0 : 1);
+}
+
 /* A zig-zag spring between physical positions a and b on the scene canvas. */
-static void draw_spring(struct tui *t, double a, double b)
+static void draw_spring(struct tui *t, double a, double b, uint8_t color)
 {
     struct canvas *c = t->scene_canvas;
     int x0 = (int)lround(2.0 * (scene_col(t, a) - t->scene.x - 1));
     int x1 = (int)lround(2.0 * (scene_col(t, b) - t->scene.x - 1));
     int mid = 5, amp = 3; /* dot rows 2..8 of 12 */
     if (x1 - x0 < 6) {
-        canvas_line(c, x0, mid, x1, mid, PAIR_SPRING);
+        canvas_line(c, x0, mid, x1, mid, color);
         return;
     }
     const int zigs = 8;
@@ -390,22 +367,27 @@ static void draw_spring(struct tui *t, double a, double b)
     for (int k = 1; k <= 2 * zigs + 1; k++) {
         int x = x0 + (int)lround((double)(x1 - x0) * k / (2 * zigs + 2));
         int y = mid + ((k % 2) ? -amp : amp);
-        canvas_line(c, px, py, x, y, PAIR_SPRING);
+        canvas_line(c, px, py, x, y, color);
         px = x, py = y;
     }
-    canvas_line(c, px, py, x1, mid, PAIR_SPRING);
+    canvas_line(c, px, py, x1, mid, color);
 }
 
-/* A block from physical a to b, 3 rows tall, with sub-cell edges (eighth blocks). */
-static void draw_block(struct tui *t, double a, double b, attr_t attr, const char *label,
-                       bool selected)
+/* A block from physical a to b, height rows tall (up to 3, from the bottom), with
+ * sub-cell edges: eighth blocks across, and lower eighths on a part-filled top row. */
+static void draw_block(struct tui *t, double a, double b, double height, attr_t attr,
+                       const char *label, bool selected)
 {
     static const char *const left_eighths[9] = {" ", "▏", "▎", "▍", "▌", "▋", "▊", "▉", "█"};
+    static const char *const lower_eighths[9] = {" ", "▁", "▂", "▃", "▄", "▅", "▆", "▇", "█"};
     double c0 = scene_col(t, a), c1 = scene_col(t, b);
     int first = (int)floor(c0), last = (int)ceil(c1) - 1;
     int xmin = t->scene.x + 1, xmax = t->scene.x + t->scene.w - 2;
     for (int row = 0; row < 3; row++) {
         int y = t->scene.y + 1 + row;
+        double fill = height - (2 - row); /* of this row, from its bottom */
+        if (fill <= 0.06)
+            continue;
         for (int x = first; x <= last; x++) {
             if (x < xmin || x > xmax)
                 continue;
@@ -414,7 +396,9 @@ static void draw_block(struct tui *t, double a, double b, attr_t attr, const cha
                 continue;
             attron(attr);
             if (!t->utf8) {
-                mvaddch(y, x, selected ? '#' : (row == 1 ? '=' : '#'));
+                mvaddch(y, x, selected ? '@' : (row == 1 ? '=' : '#'));
+            } else if (fill < 0.94) {
+                mvaddstr(y, x, lower_eighths[(int)lround(fill * 8)]);
             } else if (hi - lo > 0.94) {
                 mvaddstr(y, x, "█");
             } else if (lo - x < 0.06) {
@@ -435,9 +419,9 @@ static void draw_block(struct tui *t, double a, double b, attr_t attr, const cha
         if (x >= xmin && x <= xmax) {
             attron(attr | A_REVERSE | A_BOLD);
             if (selected)
-                attron(A_UNDERLINE);
-            mvaddstr(t->scene.y + 2, x, label);
-            attroff(attr | A_REVERSE | A_BOLD | A_UNDERLINE);
+                attron(A_UNDERLINE | A_BLINK);
+            mvaddstr(t->scene.y + 3, x, label);
+            attroff(attr | A_REVERSE | A_BOLD | A_UNDERLINE | A_BLINK);
         }
     }
 }
@@ -455,13 +439,13 @@ static void draw_scene(struct tui *t)
     t->scene_cpm = (double)(inner - wall_w - house_w) / SCENE_SPAN;
     char title[64];
     snprintf(title, sizeof title, "Chain  t = %.2f s", sim_time(app->sim));
-    frame(t, r, title, false);
+    tui_frame(t, r, title, false);
 
     /* Left wall. */
-    attron(pair_attr(t, PAIR_WALL));
+    attron(tui_pair_attr(t, PAIR_WALL));
     for (int row = 1; row <= 3; row++)
-        put(r.y + row, r.x + 1, wall_w, t->utf8 ? "▓▓" : "##");
-    attroff(pair_attr(t, PAIR_WALL));
+        tui_put(r.y + row, r.x + 1, wall_w, t->utf8 ? "▓▓" : "##");
+    attroff(tui_pair_attr(t, PAIR_WALL));
 
     /* Springs on a braille canvas (ASCII: a row of / and \). */
     double u = sim_end_position(app->sim);
@@ -474,58 +458,70 @@ static void draw_scene(struct tui *t)
         double b = j == m->n ? end : model_equilibrium(m, j) + x[j] - 0.5 * w;
         if (b <= a)
             continue;
+        int sel = selected_spring(t) == j;
         if (t->utf8) {
-            draw_spring(t, a, b);
+            draw_spring(t, a, b, sel ? PAIR_TITLE : PAIR_SPRING);
         } else {
             int c0 = (int)lround(scene_col(t, a)), c1 = (int)lround(scene_col(t, b));
-            attron(pair_attr(t, PAIR_SPRING));
+            attron(tui_pair_attr(t, sel ? PAIR_TITLE : PAIR_SPRING) | (sel ? A_BOLD : 0));
             for (int c = c0; c < c1; c++)
                 if (c > r.x && c < r.x + r.w - 1)
                     mvaddch(r.y + 2, c, ((c - c0) % 2) ? '\\' : '/');
-            attroff(pair_attr(t, PAIR_SPRING));
+            attroff(tui_pair_attr(t, PAIR_TITLE) | tui_pair_attr(t, PAIR_SPRING) | A_BOLD);
         }
     }
     if (t->utf8)
-        draw_canvas(t, t->scene_canvas, r.y + 1, r.x + 1);
+        tui_canvas(t, t->scene_canvas, r.y + 1, r.x + 1);
 
     /* Right end: piston and motor housing, or a wall. */
     int hx = r.x + r.w - 1 - house_w;
     if (m->boundary == BOUNDARY_MOTOR) {
         double face = scene_col(t, end);
-        attron(pair_attr(t, PAIR_WALL));
+        attron(tui_pair_attr(t, PAIR_WALL));
         for (int c = (int)ceil(face); c < hx; c++)
             mvaddstr(r.y + 2, c, t->utf8 ? "═" : "=");
-        attroff(pair_attr(t, PAIR_WALL));
-        draw_block(t, end, end + 0.12, pair_attr(t, PAIR_WALL), NULL, false);
-        attron(pair_attr(t, PAIR_WALL));
-        put(r.y + 1, hx, house_w, t->utf8 ? "┌───────┐" : "+-------+");
-        put(r.y + 2, hx, house_w, t->utf8 ? "┤MOTOR  │" : "|MOTOR  |");
-        put(r.y + 3, hx, house_w, t->utf8 ? "└───────┘" : "+-------+");
-        attroff(pair_attr(t, PAIR_WALL));
-        attron(pair_attr(t, PAIR_MOTOR) | A_BOLD);
-        put(r.y + 2, hx + 7, 1, t->utf8 ? "●" : "*");
-        attroff(pair_attr(t, PAIR_MOTOR) | A_BOLD);
+        attroff(tui_pair_attr(t, PAIR_WALL));
+        draw_block(t, end, end + 0.12, 3.0, tui_pair_attr(t, PAIR_WALL), NULL, false);
+        attron(tui_pair_attr(t, PAIR_WALL));
+        tui_put(r.y + 1, hx, house_w, t->utf8 ? "┌───────┐" : "+-------+");
+        tui_put(r.y + 2, hx, house_w, t->utf8 ? "┤MOTOR  │" : "|MOTOR  |");
+        tui_put(r.y + 3, hx, house_w, t->utf8 ? "└───────┘" : "+-------+");
+        attroff(tui_pair_attr(t, PAIR_WALL));
+        attron(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
+        tui_put(r.y + 2, hx + 7, 1, t->utf8 ? "●" : "*");
+        attroff(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
     } else if (m->boundary == BOUNDARY_WALL) {
         int c = (int)lround(scene_col(t, MODEL_LENGTH));
-        attron(pair_attr(t, PAIR_WALL));
+        attron(tui_pair_attr(t, PAIR_WALL));
         for (int row = 1; row <= 3; row++)
-            put(r.y + row, c, 2, t->utf8 ? "▓▓" : "##");
-        attroff(pair_attr(t, PAIR_WALL));
+            tui_put(r.y + row, c, 2, t->utf8 ? "▓▓" : "##");
+        attroff(tui_pair_attr(t, PAIR_WALL));
     }
 
-    /* Masses, drawn to scale, each with its number. */
+    /* Masses, drawn to scale, each with its number; heavier ones stand taller. */
+    double mmax = 0.0;
+    for (int i = 0; i < m->n; i++)
+        mmax = fmax(mmax, m->m[i]);
     for (int i = 0; i < m->n; i++) {
         double X = model_equilibrium(m, i) + x[i];
         char label[4];
         snprintf(label, sizeof label, "%d", (i + 1) % 10);
-        bool sel = t->focus == FOCUS_CHAIN && t->mass == i;
-        draw_block(t, X - 0.5 * w, X + 0.5 * w, mass_attr(t, i), label, sel);
+        double height = fmax(1.0, 3.0 * sqrt(m->m[i] / mmax));
+        draw_block(t, X - 0.5 * w, X + 0.5 * w, height, tui_mass_attr(t, i), label,
+                   tui_selected_mass(t) == i);
     }
     if (t->focus == FOCUS_CHAIN) {
-        attron(pair_attr(t, PAIR_TITLE));
-        printfn(r.y + r.h - 1, r.x + 2, r.w - 4, " mass %d selected: ←→ move it, ↑↓ another, "
-                "Tab back ", t->mass + 1);
-        attroff(pair_attr(t, PAIR_TITLE));
+        char line[200];
+        int i = tui_selected_mass(t), j = selected_spring(t);
+        if (i >= 0)
+            snprintf(line, sizeof line, " mass %d: m %.3g kg, c %.3g N·s/m │ Enter m  c damping"
+                     "  ←→ move (paused)  ↑↓ next  Tab back ", i + 1, m->m[i], m->c[i]);
+        else
+            snprintf(line, sizeof line, " spring %d: k %.3g N/m │ Enter k  ↑↓ next  Tab back ",
+                     j, m->k[j]);
+        attron(tui_pair_attr(t, PAIR_TITLE));
+        tui_putn(r.y + r.h - 1, r.x + 2, r.w - 4, line);
+        attroff(tui_pair_attr(t, PAIR_TITLE));
     }
 }
 
@@ -555,7 +551,7 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now, bool refr
     struct canvas *c = p->canvas;
     int idx = (int)(p - t->plots);
     bool narrow = r.w - 4 < (int)strlen(plot_titles_ascii[idx]) + 2;
-    frame(t, r, narrow ? (t->utf8 ? plot_short[idx] : plot_short_ascii[idx])
+    tui_frame(t, r, narrow ? (t->utf8 ? plot_short[idx] : plot_short_ascii[idx])
                        : (t->utf8 ? plot_titles[idx] : plot_titles_ascii[idx]), true);
     if (r.w < 12 || r.h < 6)
         return;
@@ -602,48 +598,48 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now, bool refr
 
     int cx = r.x + 1 + 6, cy = r.y + 1; /* canvas origin */
     /* Grid: dim dots on the tick rows, and the y labels. */
-    attron(pair_attr(t, PAIR_DIM));
+    attron(tui_pair_attr(t, PAIR_DIM));
     for (double v = p->ys.lo; v <= p->ys.hi + 1e-9 * p->ys.step; v += p->ys.step) {
         double f = (v - p->ys.lo) / (p->ys.hi - p->ys.lo);
         int row = (int)lround((1.0 - f) * (c->rows * 4 - 1)) / 4;
         for (int col = 0; col < c->cols; col += 2)
             mvaddstr(cy + row, cx + col, t->utf8 ? "·" : ".");
     }
-    attroff(pair_attr(t, PAIR_DIM));
+    attroff(tui_pair_attr(t, PAIR_DIM));
     for (double v = p->ys.lo; v <= p->ys.hi + 1e-9 * p->ys.step; v += p->ys.step) {
         double f = (v - p->ys.lo) / (p->ys.hi - p->ys.lo);
         int row = (int)lround((1.0 - f) * (c->rows * 4 - 1)) / 4;
         char lab[16];
         plot_tick_label(v, p->ys.step, lab, sizeof lab);
-        printfn(cy + row, r.x + 1, 6, "%5.5s", lab);
-        mvaddch(cy + row, r.x + 6, line_ch(L_RTEE));
+        tui_printf(cy + row, r.x + 1, 6, "%5.5s", lab);
+        mvaddch(cy + row, r.x + 6, tui_line(L_RTEE));
     }
     for (int row = 0; row < c->rows; row++)
         if (mvinch(cy + row, r.x + 6) == ' ')
-            mvaddch(cy + row, r.x + 6, line_ch(L_V));
+            mvaddch(cy + row, r.x + 6, tui_line(L_V));
     /* x axis and its labels. */
     int ay = cy + c->rows;
-    mvaddch(ay, r.x + 6, line_ch(L_LL));
-    mvhline(ay, cx, line_ch(L_H), c->cols);
+    mvaddch(ay, r.x + 6, tui_line(L_LL));
+    mvhline(ay, cx, tui_line(L_H), c->cols);
     double xlo = p->xq ? p->xs.lo : -APP_WINDOW, xhi = p->xq ? p->xs.hi : 0.0;
     double xstep = p->xq ? p->xs.step : plot_tick_step(-APP_WINDOW, 0.0, xticks);
     int free_from = r.x + 1; /* first column a label may use: labels never touch */
     if (!p->xq) {
-        put(ay + 1, r.x + 2, 1, "s");
+        tui_put(ay + 1, r.x + 2, 1, "s");
         free_from = r.x + 4;
     }
     for (double v = xlo; v <= xhi + 1e-9 * xstep; v += xstep) {
         int col = (int)lround((v - xlo) / (xhi - xlo) * (c->cols - 1));
         char lab[16];
         plot_tick_label(v, xstep, lab, sizeof lab);
-        mvaddch(ay, cx + col, line_ch(L_TTEE));
+        mvaddch(ay, cx + col, tui_line(L_TTEE));
         int len = (int)strlen(lab);
         int lx = cx + col - len / 2;
         if (lx + len > r.x + r.w - 1)
             lx = r.x + r.w - 1 - len;
         if (lx < free_from)
             continue;
-        put(ay + 1, lx, len, lab);
+        tui_put(ay + 1, lx, len, lab);
         free_from = lx + len + 1;
     }
 
@@ -665,20 +661,20 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now, bool refr
     if (motor && refresh)
         plot_series(c, rec + TRAIL_T, rec + TRAIL_U, k, (size_t)tr->width, t0, t_now, &p->ys,
                     true, PAIR_MOTOR);
-    draw_canvas(t, c, cy, cx);
+    tui_canvas(t, c, cy, cx);
 
     /* Legend on the bottom border: mass numbers in their colours, and the motor. */
     int lx = r.x + 2, ly = r.y + r.h - 1;
     for (int i = 0; i < m->n && lx < r.x + r.w - 4; i++) {
-        attron(mass_attr(t, i) | A_BOLD);
-        printfn(ly, lx, 3, t->utf8 ? "━%d" : "-%d", i + 1);
-        attroff(mass_attr(t, i) | A_BOLD);
+        attron(tui_mass_attr(t, i) | A_BOLD);
+        tui_printf(ly, lx, 3, t->utf8 ? "━%d" : "-%d", i + 1);
+        attroff(tui_mass_attr(t, i) | A_BOLD);
         lx += (i + 1 >= 10) ? 4 : 3;
     }
     if (motor && lx + 7 < r.x + r.w - 1) {
-        attron(pair_attr(t, PAIR_MOTOR));
-        putn(ly, lx, 7, t->utf8 ? "┅motor" : ":motor");
-        attroff(pair_attr(t, PAIR_MOTOR));
+        attron(tui_pair_attr(t, PAIR_MOTOR));
+        tui_putn(ly, lx, 7, t->utf8 ? "┅motor" : ":motor");
+        attroff(tui_pair_attr(t, PAIR_MOTOR));
     }
 }
 
@@ -687,29 +683,52 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now, bool refr
 static void draw_controls(struct tui *t)
 {
     struct rect r = t->controls;
-    frame(t, r, "Controls", false);
+    tui_frame(t, r, "Controls", false);
     for (int i = 0; i < CTL_COUNT && i < r.h - 2; i++) {
         char value[96];
         app_control_value(&t->app, (enum control)i, value, sizeof value);
         bool sel = t->focus == FOCUS_CONTROLS && t->control == i;
         if (sel)
-            attron(pair_attr(t, PAIR_SELECT));
+            attron(tui_pair_attr(t, PAIR_SELECT));
         char line[160];
         snprintf(line, sizeof line, "%s%-10s %s", sel ? (t->utf8 ? "▸" : ">") : " ",
                  app_control_label((enum control)i), value);
         mvhline(r.y + 1 + i, r.x + 1, ' ', r.w - 2);
-        putn(r.y + 1 + i, r.x + 1, r.w - 2, line);
+        tui_putn(r.y + 1 + i, r.x + 1, r.w - 2, line);
         if (sel)
-            attroff(pair_attr(t, PAIR_SELECT));
+            attroff(tui_pair_attr(t, PAIR_SELECT));
+    }
+    /* The frequency range with the natural frequencies marked and the drive on it. */
+    int y = r.y + 1 + CTL_COUNT;
+    if (y < r.y + r.h - 1 && t->app.modes_ok) {
+        const struct model *m = t->app.model;
+        int x0 = r.x + 5, w = r.w - 11;
+        tui_put(y, r.x + 1, 3, "0.1");
+        mvhline(y, x0, tui_line(L_H), w);
+        tui_put(y, x0 + w + 1, 3, "5Hz");
+        attron(tui_pair_attr(t, PAIR_TITLE));
+        for (int j = 0; j < m->n; j++) {
+            double f = t->app.modes[j];
+            if (f >= APP_FMIN && f <= APP_FMAX)
+                mvaddch(y, x0 + (int)lround((f - APP_FMIN) / (APP_FMAX - APP_FMIN) * (w - 1)),
+                        ascii_only ? '|' : ACS_PLUS);
+        }
+        attroff(tui_pair_attr(t, PAIR_TITLE));
+        attron(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
+        double f = m->motor.frequency;
+        if (f >= APP_FMIN && f <= APP_FMAX)
+            tui_put(y, x0 + (int)lround((f - APP_FMIN) / (APP_FMAX - APP_FMIN) * (w - 1)), 1,
+                    ascii_only ? "o" : "●");
+        attroff(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
     }
     /* Natural frequencies under the controls, so resonance is checked, not guessed. */
-    int y = r.y + 1 + CTL_COUNT + 1;
+    y = r.y + 1 + CTL_COUNT + 1;
     if (y < r.y + r.h - 1) {
         const struct model *m = t->app.model;
         double f[APP_MAX_MASSES];
         if (modes_compute(m, f, NULL) == 0) {
-            attron(pair_attr(t, PAIR_DIM));
-            putn(y, r.x + 1, r.w - 2, " natural frequencies (Hz)");
+            attron(tui_pair_attr(t, PAIR_DIM));
+            tui_putn(y, r.x + 1, r.w - 2, " natural frequencies (Hz)");
             int x = r.x + 2;
             y++;
             for (int j = 0; j < m->n && y < r.y + r.h - 1; j++) {
@@ -719,10 +738,10 @@ static void draw_controls(struct tui *t)
                     x = r.x + 2, y++;
                 if (y >= r.y + r.h - 1)
                     break;
-                put(y, x, (int)strlen(num), num);
+                tui_put(y, x, (int)strlen(num), num);
                 x += (int)strlen(num) + 1;
             }
-            attroff(pair_attr(t, PAIR_DIM));
+            attroff(tui_pair_attr(t, PAIR_DIM));
         }
     }
 }
@@ -746,7 +765,7 @@ static void draw_status(struct tui *t)
              "history %d%s", t->utf8 ? "▸" : ">", app->running ? "Running" : "Paused",
              sim_time(app->sim), bar, motor, bar, m->n, bar, app->cfg.dt, bar,
              history_count(app->hist), speed);
-    if (text_width(line) > t->cols) {
+    if (tui_text_width(line) > t->cols) {
         if (m->boundary == BOUNDARY_MOTOR)
             snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
                      m->motor.frequency);
@@ -756,35 +775,45 @@ static void draw_status(struct tui *t)
     }
     attron(A_REVERSE);
     mvhline(0, 0, ' ', t->cols);
-    putn(0, 0, t->cols, line);
+    tui_putn(0, 0, t->cols, line);
     const char *right = "? help  q quit ";
-    if (text_width(line) + 17 < t->cols)
-        put(0, t->cols - (int)strlen(right), (int)strlen(right), right);
+    if (tui_text_width(line) + 17 < t->cols)
+        tui_put(0, t->cols - (int)strlen(right), (int)strlen(right), right);
     attroff(A_REVERSE);
 }
+
+static void edit_prompt(const struct tui *t, char *buf, size_t len);
 
 static void draw_hints(struct tui *t)
 {
     int y = t->hints.y;
     if (t->overlay == OVERLAY_EDIT) {
+        char prompt[80];
+        edit_prompt(t, prompt, sizeof prompt);
         attron(A_BOLD);
-        printfn(y, 0, t->cols, " %s = %s", app_control_label((enum control)t->control), t->edit);
+        tui_printf(y, 0, t->cols, " %s %s", prompt, t->edit);
         attroff(A_BOLD);
         printw("_   (Enter sets it, Esc cancels)");
         return;
     }
-    if (t->app.message[0]) {
-        attron(t->app.message_is_error ? pair_attr(t, PAIR_WARN) | A_BOLD : A_BOLD);
-        printfn(y, 0, t->cols, " %s", t->app.message);
-        attroff(pair_attr(t, PAIR_WARN) | A_BOLD);
+    if (t->overlay == OVERLAY_CONFIRM) {
+        attron(tui_pair_attr(t, PAIR_WARN) | A_BOLD);
+        tui_printf(y, 0, t->cols, " preset %s exists: replace it? (y/n)", t->save_name);
+        attroff(tui_pair_attr(t, PAIR_WARN) | A_BOLD);
         return;
     }
-    attron(pair_attr(t, PAIR_DIM));
-    putn(y, 0, t->cols, t->utf8 ? " space start  . step  , back  r reset  R random  p presets  "
+    if (t->app.message[0]) {
+        attron(t->app.message_is_error ? tui_pair_attr(t, PAIR_WARN) | A_BOLD : A_BOLD);
+        tui_printf(y, 0, t->cols, " %s", t->app.message);
+        attroff(tui_pair_attr(t, PAIR_WARN) | A_BOLD);
+        return;
+    }
+    attron(tui_pair_attr(t, PAIR_DIM));
+    tui_putn(y, 0, t->cols, t->utf8 ? " space start  . step  , back  r reset  R random  p presets  "
                                   "←→ adjust  ↑↓ select  Enter type  Tab masses  ? help"
                                 : " space start  . step  , back  r reset  R random  p presets  "
                                   "<> adjust  ^v select  Enter type  Tab masses  ? help");
-    attroff(pair_attr(t, PAIR_DIM));
+    attroff(tui_pair_attr(t, PAIR_DIM));
 }
 
 /* A centred box of h x w, cleared, with a title; returns its rectangle. */
@@ -797,7 +826,7 @@ static struct rect overlay_box(struct tui *t, int h, int w, const char *title)
     struct rect r = {(t->rows - h) / 2, (t->cols - w) / 2, h, w};
     for (int y = r.y; y < r.y + r.h; y++)
         mvhline(y, r.x, ' ', r.w);
-    frame(t, r, title, true);
+    tui_frame(t, r, title, true);
     return r;
 }
 
@@ -821,9 +850,9 @@ static void draw_help(struct tui *t)
                 snprintf(keys + strlen(keys), sizeof keys - strlen(keys), " %s", nm);
         }
         attron(A_BOLD);
-        putn(y, r.x + 2, 17, keys);
+        tui_putn(y, r.x + 2, 17, keys);
         attroff(A_BOLD);
-        putn(y, r.x + 19, r.w - 21, b->help);
+        tui_putn(y, r.x + 19, r.w - 21, b->help);
         y++;
     }
     static const char *const notes[] = {
@@ -832,7 +861,7 @@ static void draw_help(struct tui *t)
         "Values can be typed: select a control and press Enter.",
     };
     for (int i = 0; i < 3 && y + 1 < r.y + r.h - 1; i++)
-        putn(++y, r.x + 2, r.w - 4, notes[i]);
+        tui_putn(++y, r.x + 2, r.w - 4, notes[i]);
 }
 
 static void draw_presets(struct tui *t)
@@ -840,23 +869,23 @@ static void draw_presets(struct tui *t)
     int n = t->npresets;
     struct rect r = overlay_box(t, (n ? n : 1) + 4, 76, "Presets");
     if (n == 0) {
-        putn(r.y + 1, r.x + 2, r.w - 4, "No presets found on the search path.");
+        tui_putn(r.y + 1, r.x + 2, r.w - 4, "No presets found on the search path.");
         return;
     }
     int rows = r.h - 4, first = t->preset_sel >= rows ? t->preset_sel - rows + 1 : 0;
     for (int i = first; i < n && i - first < rows; i++) {
         bool sel = i == t->preset_sel;
         if (sel)
-            attron(pair_attr(t, PAIR_SELECT));
+            attron(tui_pair_attr(t, PAIR_SELECT));
         mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
-        printfn(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-15s %s", t->presets[i].name,
+        tui_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-15s %s", t->presets[i].name,
                 t->presets[i].description);
         if (sel)
-            attroff(pair_attr(t, PAIR_SELECT));
+            attroff(tui_pair_attr(t, PAIR_SELECT));
     }
-    attron(pair_attr(t, PAIR_DIM));
-    putn(r.y + r.h - 2, r.x + 2, r.w - 4, "↑↓ choose   Enter load   Esc close");
-    attroff(pair_attr(t, PAIR_DIM));
+    attron(tui_pair_attr(t, PAIR_DIM));
+    tui_putn(r.y + r.h - 2, r.x + 2, r.w - 4, "↑↓ choose   Enter load   Esc close");
+    attroff(tui_pair_attr(t, PAIR_DIM));
 }
 
 static void draw(struct tui *t, bool plots)
@@ -882,8 +911,11 @@ static void draw(struct tui *t, bool plots)
     draw_status(t);
     draw_scene(t);
     double t_now = sim_time(t->app.sim);
-    for (int i = 0; i < 6; i++)
-        draw_plot(t, &t->plots[i], t_now, plots);
+    if (t->view == VIEW_PLOTS)
+        for (int i = 0; i < 6; i++)
+            draw_plot(t, &t->plots[i], t_now, plots);
+    else
+        views_draw(t, plots);
     draw_controls(t);
     draw_hints(t);
     if (t->overlay == OVERLAY_HELP)
@@ -907,11 +939,66 @@ static void open_presets(struct tui *t)
     t->overlay = OVERLAY_PRESETS;
 }
 
-static void start_edit(struct tui *t)
+static void start_edit(struct tui *t, enum edit_target target)
 {
     t->overlay = OVERLAY_EDIT;
+    t->edit_target = target;
     t->edit[0] = '\0';
     t->edit_len = 0;
+}
+
+/* What the prompt says for the text being typed. */
+static void edit_prompt(const struct tui *t, char *buf, size_t len)
+{
+    int i = t->elem / 2;
+    switch (t->edit_target) {
+    case EDIT_CONTROL:
+        snprintf(buf, len, "%s =", app_control_label((enum control)t->control));
+        break;
+    case EDIT_MASS:
+        snprintf(buf, len, "mass %d: m (kg) =", i + 1);
+        break;
+    case EDIT_DAMPING:
+        snprintf(buf, len, "mass %d: c (N·s/m) =", i + 1);
+        break;
+    case EDIT_SPRING:
+        snprintf(buf, len, "spring %d: k (N/m) =", i);
+        break;
+    case EDIT_SAVE:
+        snprintf(buf, len, "save preset as:");
+        break;
+    }
+}
+
+/* Acts on the text typed, by what it was for. */
+static void finish_edit(struct tui *t)
+{
+    struct app *app = &t->app;
+    int i = t->elem / 2;
+    switch (t->edit_target) {
+    case EDIT_CONTROL:
+        if (t->edit_len && app_set_text(app, (enum control)t->control, t->edit))
+            app_say(app, false, "%s set", app_control_label((enum control)t->control));
+        break;
+    case EDIT_MASS:
+        if (app_set_element(app, 'm', i, t->edit))
+            app_say(app, false, "mass %d: m = %g kg", i + 1, app->model->m[i]);
+        break;
+    case EDIT_DAMPING:
+        if (app_set_element(app, 'c', i, t->edit))
+            app_say(app, false, "mass %d: c = %g N·s/m", i + 1, app->model->c[i]);
+        break;
+    case EDIT_SPRING:
+        if (app_set_element(app, 'k', i, t->edit))
+            app_say(app, false, "spring %d: k = %g N/m", i, app->model->k[i]);
+        break;
+    case EDIT_SAVE:
+        if (app_save(app, t->edit, false) == SAVE_EXISTS) {
+            snprintf(t->save_name, sizeof t->save_name, "%s", t->edit);
+            t->overlay = OVERLAY_CONFIRM;
+        }
+        break;
+    }
 }
 
 static void on_edit_key(struct tui *t, int ch)
@@ -920,8 +1007,7 @@ static void on_edit_key(struct tui *t, int ch)
         t->overlay = OVERLAY_NONE;
     } else if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
         t->overlay = OVERLAY_NONE;
-        if (t->edit_len && app_set_text(&t->app, (enum control)t->control, t->edit))
-            app_say(&t->app, false, "%s set", app_control_label((enum control)t->control));
+        finish_edit(t);
     } else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
         if (t->edit_len)
             t->edit[--t->edit_len] = '\0';
@@ -961,9 +1047,12 @@ static void on_preset_key(struct tui *t, enum action a)
 /* Steps of an adjustment: +-1, fine or coarse. */
 static void adjust(struct tui *t, int dir, bool coarse)
 {
-    if (t->focus == FOCUS_CHAIN)
-        app_move_mass(&t->app, t->mass, dir * (coarse ? 0.5 : 0.05));
-    else
+    if (t->focus == FOCUS_CHAIN) {
+        if (tui_selected_mass(t) >= 0)
+            app_move_mass(&t->app, tui_selected_mass(t), dir * (coarse ? 0.5 : 0.05));
+        else
+            app_say(&t->app, false, "a spring is selected: ↑↓ to a mass to move it");
+    } else
         app_adjust(&t->app, (enum control)t->control, dir, coarse);
 }
 
@@ -1000,13 +1089,13 @@ static bool on_action(struct tui *t, enum action a)
         break;
     case ACT_UP:
         if (t->focus == FOCUS_CHAIN)
-            t->mass = t->mass > 0 ? t->mass - 1 : app->model->n - 1;
+            t->elem = (t->elem + elements(t) - 1) % elements(t);
         else
             t->control = (t->control + CTL_COUNT - 1) % CTL_COUNT;
         break;
     case ACT_DOWN:
         if (t->focus == FOCUS_CHAIN)
-            t->mass = (t->mass + 1) % app->model->n;
+            t->elem = (t->elem + 1) % elements(t);
         else
             t->control = (t->control + 1) % CTL_COUNT;
         break;
@@ -1024,21 +1113,50 @@ static bool on_action(struct tui *t, enum action a)
         break;
     case ACT_ENTER:
         if (t->focus == FOCUS_CHAIN)
-            break;
-        if (t->control == CTL_PRESET)
+            start_edit(t, tui_selected_mass(t) >= 0 ? EDIT_MASS : EDIT_SPRING);
+        else if (t->control == CTL_PRESET)
             open_presets(t);
         else if (t->control == CTL_MASSES && app->masses_pending != app->model->n)
             app_apply_masses(app);
         else
-            start_edit(t);
+            start_edit(t, EDIT_CONTROL);
+        break;
+    case ACT_DAMPING:
+        if (tui_selected_mass(t) >= 0)
+            start_edit(t, EDIT_DAMPING);
+        else
+            app_say(app, false, "select a mass in the chain first (Tab, then ↑↓)");
         break;
     case ACT_FOCUS:
         t->focus = t->focus == FOCUS_CHAIN ? FOCUS_CONTROLS : FOCUS_CHAIN;
-        if (t->mass >= app->model->n)
-            t->mass = 0;
-        if (t->focus == FOCUS_CHAIN && app->running)
-            app_say(app, false, "pause (space) to move the masses");
+        if (t->elem >= elements(t) || t->elem % 2 == 0)
+            t->elem = 1; /* mass 1 */
         break;
+    case ACT_MODES:
+    case ACT_RESPONSE:
+    case ACT_ENERGY: {
+        enum view v = a == ACT_MODES ? VIEW_MODES : a == ACT_RESPONSE ? VIEW_RESPONSE
+                                                                      : VIEW_ENERGY;
+        t->view = t->view == v ? VIEW_PLOTS : v;
+        t->view_ys.set = false;
+        break;
+    }
+    case ACT_NEAREST:
+        app_nearest_mode(app);
+        break;
+    case ACT_SWEEP:
+        app_toggle_sweep(app);
+        if (app->sweep->active)
+            t->view = VIEW_RESPONSE, t->view_ys.set = false;
+        break;
+    case ACT_SAVE:
+        start_edit(t, EDIT_SAVE);
+        break;
+    case ACT_EXPORT: {
+        char path[4200];
+        app_export(app, NULL, path, sizeof path);
+        break;
+    }
     case ACT_SLOWER:
         app_adjust(app, CTL_SPEED, -1, false);
         break;
@@ -1091,17 +1209,24 @@ static void on_mouse(struct tui *t)
             if (d < best)
                 best = d, pick = i;
         }
+        t->focus = FOCUS_CHAIN;
         if (pick >= 0 && best < w + 1.0 / t->scene_cpm) {
-            t->mass = pick;
-            t->focus = FOCUS_CHAIN;
+            t->elem = 2 * pick + 1;
             t->dragging = !t->app.running;
             if (t->app.running)
                 app_say(&t->app, false, "pause (space) to drag a mass");
+        } else {
+            /* Between masses: the spring there (spring j lies left of mass j+1). */
+            int j = 0;
+            while (j < m->n && model_equilibrium(m, j) + sim_x(t->app.sim)[j] < X)
+                j++;
+            if (2 * j < elements(t))
+                t->elem = 2 * j;
         }
         return;
     }
     if (t->dragging && (ev.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED))) {
-        app_place_mass(&t->app, t->mass, X);
+        app_place_mass(&t->app, t->elem / 2, X);
         if (ev.bstate & BUTTON1_RELEASED)
             t->dragging = false;
         t->plots_dirty = true;
@@ -1122,6 +1247,14 @@ static bool on_key(struct tui *t, int ch)
     if (t->overlay == OVERLAY_EDIT) {
         on_edit_key(t, ch);
         t->plots_dirty = true;
+        return true;
+    }
+    if (t->overlay == OVERLAY_CONFIRM) {
+        t->overlay = OVERLAY_NONE;
+        if (ch == 'y' || ch == 'Y')
+            app_save(&t->app, t->save_name, true);
+        else
+            app_say(&t->app, false, "not saved: %s kept as it was", t->save_name);
         return true;
     }
     enum action a = input_action(ch);
@@ -1256,6 +1389,7 @@ int tui_run(const struct config *cfg, const char *exe_dir)
     for (int i = 0; i < 6; i++)
         canvas_free(t.plots[i].canvas);
     canvas_free(t.scene_canvas);
+    canvas_free(t.view_canvas);
     free(t.presets);
     app_free(&t.app);
     return EXIT_SUCCESS;
