@@ -93,9 +93,10 @@ $(BIN): $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB) $(UI_LIBS) $(CORE_LIBS)
 
 # The pure UI parts (no curses) are unit-tested like the core.
-UI_PURE_OBJ = $(BUILD)/ui/braille.o $(BUILD)/ui/plot.o
-$(BUILD)/tests/test_braille $(BUILD)/tests/test_plot: $(UI_PURE_OBJ)
-$(BUILD)/tests/test_braille $(BUILD)/tests/test_plot: TEST_EXTRA = $(UI_PURE_OBJ)
+UI_PURE_OBJ = $(BUILD)/ui/braille.o $(BUILD)/ui/plot.o $(BUILD)/ui/app.o $(BUILD)/ui/trail.o
+UI_PURE_TESTS = $(BUILD)/tests/test_braille $(BUILD)/tests/test_plot $(BUILD)/tests/test_app
+$(UI_PURE_TESTS): $(UI_PURE_OBJ)
+$(UI_PURE_TESTS): TEST_EXTRA = $(UI_PURE_OBJ)
 
 $(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
 	@mkdir -p $(@D)
