@@ -35,7 +35,7 @@ CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
 CORE_LIB = $(BUILD)/libspringsim-core.a
 UI_SRC = $(wildcard src/ui/*.c)
 UI_OBJ = $(UI_SRC:src/%.c=$(BUILD)/%.o)
-MAIN_OBJ = $(BUILD)/main.o
+MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
@@ -73,7 +73,7 @@ $(BUILD)/ui/%.o: src/ui/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
 
-$(BUILD)/main.o: src/main.c | $(BUILD)/.deps-build
+$(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP \
 	    -c -o $@ $<
@@ -82,7 +82,7 @@ $(BUILD)/main.o: src/main.c | $(BUILD)/.deps-build
 $(BUILD)/.datadir: FORCE
 	@mkdir -p $(@D)
 	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' >$@
-$(BUILD)/core/preset.o $(BUILD)/main.o: $(BUILD)/.datadir
+$(BUILD)/core/preset.o $(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/.datadir
 FORCE:
 
 $(CORE_LIB): $(CORE_OBJ)

@@ -1,0 +1,33 @@
+/* options.h: reading the command line (SPEC section 2). */
+#ifndef SPRINGSIM_OPTIONS_H
+#define SPRINGSIM_OPTIONS_H
+
+#include <limits.h>
+
+#include "core/config.h"
+
+#define EXIT_USAGE 2 /* a bad option, value or preset */
+
+/* What the command line asks for. */
+enum mode { MODE_INTERACTIVE, MODE_HEADLESS, MODE_MODES, MODE_SWEEP, MODE_LIST };
+
+struct cli {
+    enum mode mode;             /* what to do */
+    const char *sweep;          /* --sweep FMIN:FMAX:COUNT */
+    char preset_path[PATH_MAX]; /* the preset file applied, if any */
+};
+
+/* Reads argv into c (set up with config_init) and cli, loading a preset first.
+ * Returns -1 to go on, or an exit status: 0 after --help, --version or --keys, 1 for
+ * an unreadable preset, 2 for bad input (one line on standard error said why). */
+int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
+                  const char *exe_dir);
+
+/* One line on standard error, prefixed "springsim: ". */
+void options_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Reports a bad value of key, naming where it came from: "--dt: why" on the command
+ * line, "FILE:LINE: dt: why" from a preset. */
+void options_report_key(const struct config *c, int key, const char *why);
+
+#endif
