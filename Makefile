@@ -39,7 +39,7 @@ MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all run check sanitize install uninstall clean deps deps-test FORCE
+.PHONY: all run check sanitize fuzz install uninstall clean deps deps-test FORCE
 
 all: $(BIN)
 
@@ -113,6 +113,33 @@ sanitize:
 	@mkdir -p $(BUILD)/san && ln -sfn $(CURDIR)/presets $(BUILD)/san/presets
 	$(MAKE) BUILD=$(BUILD)/san BIN=$(BUILD)/san/springsim CFLAGS="$(SAN_FLAGS)" \
 	    LDFLAGS="$(SAN_FLAGS)" check
+
+# Fuzzing with clang's libFuzzer under ASan + UBSan: make fuzz FUZZ_SECONDS=N runs each
+# target N seconds from its seed corpus (a copy: what it finds stays in build/fuzz).
+FUZZ_SECONDS ?= 60
+FUZZ_CC = clang
+FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+FUZZ_SRC = $(CORE_SRC) src/options.c src/ui/input.c
+FUZZ_TARGETS = preset options
+
+fuzz: | $(BUILD)/.deps-build
+	@sh mk/deps.sh fuzz
+	@mkdir -p $(BUILD)/fuzz
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	    $(FUZZ_CC) $(FUZZ_FLAGS) $(DEFS) $(CORE_CFLAGS) $(UI_CFLAGS) -Isrc \
+	        -o $(BUILD)/fuzz/fuzz_$$t tests/fuzz/fuzz_$$t.c $(FUZZ_SRC) $(CORE_LIBS); \
+	    rm -rf $(BUILD)/fuzz/corpus-$$t; cp -r tests/fuzz/corpus-$$t $(BUILD)/fuzz/; \
+	    echo "== fuzz_$$t: $(FUZZ_SECONDS) s"; \
+	    if $(BUILD)/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	        -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
+	        -artifact_prefix=$(BUILD)/fuzz/$$t- $(BUILD)/fuzz/corpus-$$t tests/fuzz/regressions \
+	        >$(BUILD)/fuzz/$$t.log 2>&1; then \
+	        grep -E '^stat::(number_of_executed_units|average_exec_per_sec)' $(BUILD)/fuzz/$$t.log; \
+	    else \
+	        grep -E '==[0-9]+==ERROR|SUMMARY|Test unit written' $(BUILD)/fuzz/$$t.log; \
+	        echo "fuzz_$$t found a problem: see $(BUILD)/fuzz/$$t.log"; exit 1; \
+	    fi; \
+	done
 
 install: $(BIN)
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/presets

@@ -38,13 +38,21 @@ static const struct {
 
 static const char *progname = "springsim";
 
+static FILE *errors; /* where error lines go; NULL: standard error */
+
+void options_set_errors(FILE *f)
+{
+    errors = f;
+}
+
 void options_say(const char *fmt, ...)
 {
+    FILE *out = errors ? errors : stderr;
     va_list ap;
     va_start(ap, fmt);
-    fprintf(stderr, "%s: ", progname);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
+    fprintf(out, "%s: ", progname);
+    vfprintf(out, fmt, ap);
+    fputc('\n', out);
     va_end(ap);
 }
 

@@ -3,6 +3,7 @@
 #define SPRINGSIM_OPTIONS_H
 
 #include <limits.h>
+#include <stdio.h>
 
 #include "core/config.h"
 
@@ -22,6 +23,9 @@ struct cli {
  * an unreadable preset, 2 for bad input (one line on standard error said why). */
 int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                   const char *exe_dir);
+
+/* Sends the error lines to f instead of standard error (NULL: back to it). */
+void options_set_errors(FILE *f);
 
 /* One line on standard error, prefixed "springsim: ". */
 void options_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));

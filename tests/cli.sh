@@ -512,6 +512,13 @@ if expect_ok --version; then
     fi
 fi
 
+# 11. Inputs the fuzzers once crashed on (tests/fuzz/regressions/preset-*): each is now
+# a clean one-line error with exit 2.
+for f in "$(dirname "$0")"/fuzz/regressions/preset-*; do
+    [ -f "$f" ] || continue
+    expect_one_line_error 2 "$f:" -p "$f" --modes
+done
+
 # 10. The man page's KEYS section lists exactly the key table the program uses (the
 # help overlay is drawn from the same table): each `--keys` line, spelled in roff.
 man=$(dirname "$0")/../man/springsim.1

@@ -8,13 +8,15 @@
 #
 # Everything runs on a private tmux server (tmux -L springsim-test-PID -f /dev/null), killed
 # at exit; the user's own tmux server is never touched. Independent cases get a session
-# each and are started together, so the whole run takes about 15 seconds.
+# each and are started together, so the whole run takes about 20 seconds.
 #
 # Cases: the first screen; run and pause; step and step back; reset; help; the preset
 # menu; every preset for 1 s (no nan/inf); typing and adjusting a control; q, Ctrl-C,
 # SIGTERM, SIGHUP and a crash restore the terminal; resizing (down to 1x1, a storm of
 # sizes); all six plots at 80x24 and 160x48; LANG=C sends no byte >= 0x80; NO_COLOR;
-# moving a mass with the keys; Ctrl-Z and fg.
+# moving a mass with the keys; Ctrl-Z and fg; the analysis views (m modes, n nearest mode,
+# f response, w sweep, e energy), s save with its confirmation and bad names, per-element
+# editing saved and reloaded, x export, and branching from an earlier state.
 
 SPRINGSIM=${SPRINGSIM:-./springsim}
 case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
@@ -743,6 +745,498 @@ fi
 
 # ---- nothing died on the way ----
 for s in main ctl chain menu resize small mid big ascii mono; do
+    if alive "$s"; then pass; else
+        S=$s
+        cap
+        fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
+    fi
+done
+
+# ---- 16. analysis views, per-element editing, save, export, branching (issue 4) ----
+# Sessions of their own, started together; the ones that must run a while (energy, export,
+# branching) are started first and looked at after the quick checks.
+
+# start_in DIR NAME COLS ROWS [VAR=VALUE]... [-- ARG...]: start, with the program's working
+# directory DIR.
+start_in() {
+    si_dir=$1
+    shift
+    s_name=$1 s_cols=$2 s_rows=$3
+    shift 3
+    case " $* " in *" -- "*) ;; *) set -- "$@" -- ;; esac
+    tm new-session -d -s "$s_name" -c "$si_dir" -x "$s_cols" -y "$s_rows" sh "$tmp/pane.sh" \
+        "$tmp" "$SPRINGSIM" "$s_name" "LANG=$U8" "LC_ALL=$U8" TERM=xterm-256color \
+        "XDG_CONFIG_HOME=$tmp/xdg" "$@"
+}
+# wait_t SECONDS [TIMEOUT]: until the status line shows t >= SECONDS
+wait_t() {
+    w_n=$(awk -v s="${2:-6}" 'BEGIN { print int(s * 10 + 0.5) }')
+    while :; do
+        cap
+        awk -v t="$(status_t)" -v m="$1" 'BEGIN { exit !(t != "" && t + 0 >= m) }' && return 0
+        has 'EXITED ' && return 1
+        [ "$w_n" -le 0 ] && return 1
+        w_n=$((w_n - 1))
+        sleep 0.1
+    done
+}
+# the message line (the last non-blank line of the screen)
+last_line() { awk 'NF { l = $0 } END { print l }' "$scr"; }
+# history N of the status line
+status_hist() { sed -n '1s/.*history \([0-9][0-9]*\).*/\1/p' "$scr"; }
+# the status line's t after it has stayed put, i.e. once the program has paused
+settled_t() {
+    st_n=30
+    st_a=
+    while [ $st_n -gt 0 ]; do
+        cap
+        st_b=$(status_t)
+        [ -n "$st_b" ] && [ "$st_b" = "$st_a" ] && has Paused && break
+        st_a=$st_b
+        st_n=$((st_n - 1))
+        sleep 0.15
+    done
+    echo "$st_b"
+}
+# select_control NAME: from the first control (Preset), ↓ until NAME is selected
+select_control() {
+    sc_n=0
+    while [ $sc_n -lt 12 ]; do
+        cap
+        has_re "(▸|>) ?$1 " && return 0
+        keys Down
+        sc_n=$((sc_n + 1))
+        sleep 0.05
+    done
+    wait_re "(▸|>) ?$1 " 2
+}
+
+mkdir -p "$tmp/exp"
+start an-energy 120 40 -- -p 3-mass-chain
+start an-nodamp 120 40 -- -p no-damping
+start_in "$tmp/exp" an-export 120 40
+start an-branch 120 40
+start an-sweep 120 40 -- -p 3-mass-chain
+start an-modes 120 40 -- -p 3-mass-chain
+start an-near 120 40 -- -p 3-mass-chain --frequency 0.9
+start an-resp 120 40 -- -p 3-mass-chain
+start an-wall 120 40 -- -p 3-mass-chain --boundary wall
+start an-save 120 40 "XDG_CONFIG_HOME=$tmp/xdg-save" -- -p 3-mass-chain
+start an-edit 120 40 "XDG_CONFIG_HOME=$tmp/xdg-edit" -- -p 3-mass-chain
+an_sessions="an-energy an-nodamp an-export an-branch an-sweep an-modes an-near an-resp an-wall an-save an-edit"
+
+# the long runs first
+an_running=
+for s in an-energy an-nodamp an-export an-branch; do
+    S=$s
+    if wait_for Controls; then
+        case $s in an-energy | an-nodamp) keys e ;; esac
+        keys Space
+        an_running="$an_running $s "
+    else
+        fail "$s: the program did not start; screen: $(brief)"
+    fi
+done
+an_up() { # an_up SESSION: S=SESSION, true if it started
+    S=$1
+    wait_for Controls && return 0
+    fail "$1: the program did not start; screen: $(brief)"
+    return 1
+}
+
+# ---- 16a. m: the modes view ----
+if an_up an-modes; then
+    keys m
+    if wait_re '┌─+ Modes'; then
+        pass
+        missing=
+        for f in '0.385 Hz' '0.712 Hz' '0.930 Hz'; do has "$f" || missing="$missing '$f'"; done
+        if [ -z "$missing" ]; then pass; else
+            fail "modes (m, -p 3-mass-chain): expected the natural frequencies, missing$missing; screen: $(brief "$scr" 'Modes|Hz')"
+        fi
+        # the driven mark is on mode 2 only
+        if has_re '(^|[^0-9])1 +0\.385 Hz +2 +0\.712 Hz +◆ driven +3 +0\.930 Hz' &&
+            [ "$(grep -o '◆ driven' "$scr" | wc -l)" -eq 1 ]; then pass; else
+            fail "modes: expected '◆ driven' once, next to mode 2 (0.712 Hz); screen: $(brief "$scr" 'driven|0\.385')"
+        fi
+        if has_re 'Frequency +0\.712 Hz ◆ f2'; then pass; else
+            fail "modes: the Frequency control should show '0.712 Hz ◆ f2'; screen: $(brief "$scr" 'Frequency')"
+        fi
+        keys m
+        if wait_for 'Displacement (m)' 3 && ! has_re '┌─+ Modes'; then pass; else
+            fail "modes: m again should bring back the six plots; screen: $(brief "$scr" 'Modes|Displacement')"
+        fi
+    else
+        fail "modes: m should open a frame titled 'Modes'; screen: $(brief)"
+    fi
+fi
+
+# ---- 16b. n: drive at the nearest natural frequency ----
+if an_up an-near; then
+    if has_re 'Frequency +0\.900 Hz' && ! has_re 'Frequency +0\.900 Hz ◆'; then pass; else
+        fail "n: --frequency 0.9 should show 'Frequency 0.900 Hz' with no mode mark; screen: $(brief "$scr" 'Frequency')"
+    fi
+    keys n
+    if wait_re 'Frequency +0\.930 Hz ◆ f3' 3; then
+        if sed -n 1p "$scr" | grep -qF ' 0.93 Hz'; then pass; else
+            fail "n: the status line's motor should say 0.93 Hz; screen: $(brief)"
+        fi
+    else
+        fail "n (from 0.9 Hz, -p 3-mass-chain): expected 'Frequency 0.930 Hz ◆ f3'; screen: $(brief "$scr" 'Frequency')"
+    fi
+fi
+
+# ---- 16c. f: the frequency response view ----
+if an_up an-resp; then
+    keys f
+    if wait_re '┌─+ Frequency response'; then
+        pass
+        if has_re ' 1e-1┤' && has_re ' 1e-2┤'; then pass; else
+            fail "response (f): expected decade labels 1e-1, 1e-2 on the amplitude axis; screen: $(brief "$scr" '┤')"
+        fi
+        if has_re '^│ Hz .* 5 *│'; then pass; else
+            fail "response: the frequency axis should end at 5 (Hz); screen: $(brief "$scr" '^│ Hz')"
+        fi
+        if has_re '└.*drive 0\.712 Hz'; then pass; else
+            fail "response: the bottom border should mention 'drive 0.712 Hz'; screen: $(brief "$scr" 'drive')"
+        fi
+        if has_re '━1.*━2.*━3'; then pass; else
+            fail "response: expected a legend for masses 1-3; screen: $(brief "$scr" '━')"
+        fi
+        keys f
+        if wait_for 'Displacement (m)' 3 && ! has 'Frequency response'; then pass; else
+            fail "response: f again should bring back the six plots; screen: $(brief)"
+        fi
+    else
+        fail "response: f should open a frame titled 'Frequency response'; screen: $(brief)"
+    fi
+fi
+if an_up an-wall; then
+    keys f
+    if wait_for 'Frequency response' && wait_for 'does not drive the chain' 2; then pass; else
+        fail "response with --boundary wall: expected 'does not drive the chain'; screen: $(brief "$scr" 'drive|response')"
+    fi
+    keys w
+    sleep 0.4
+    cap
+    if has Paused && ! has 'sweep 1/'; then pass; else
+        fail "w with --boundary wall: no sweep should start (nothing drives the chain); screen: $(brief)"
+    fi
+fi
+
+# ---- 16d. w: the sine sweep ----
+if an_up an-sweep; then
+    keys w
+    if wait_re 'sweep 1/40 at [0-9.]+ Hz'; then
+        pass
+        if has 'Frequency response' && has Running; then pass; else
+            fail "sweep (w from the plots): expected the response view, running; screen: $(brief)"
+        fi
+        # the motor runs at the frequency the sweep says
+        f=$(sed -n 's/.*sweep 1\/40 at \([0-9.]*\) Hz.*/\1/p' "$scr" | head -n 1)
+        want=$(awk -v f="$f" 'BEGIN { printf "%.2f Hz", f }')
+        if sed -n 1p "$scr" | grep -qF " $want "; then pass; else
+            fail "sweep: the status line's motor should run at the sweep's $f Hz ($want); screen: $(brief)"
+        fi
+        keys w
+        if wait_for 'sweep stopped after' 3; then
+            if ! has 'sweep 1/40'; then pass; else
+                fail "sweep: after w the bottom border should no longer show the sweep; screen: $(brief "$scr" sweep)"
+            fi
+        else
+            fail "sweep: w again should stop it with 'sweep stopped after'; screen: $(brief)"
+        fi
+    else
+        fail "sweep: w should start a sweep ('sweep 1/40 at ... Hz'); screen: $(brief "$scr" sweep)"
+    fi
+fi
+
+# ---- 16e. e: the energy view (running since the start of this section) ----
+S=an-energy
+case $an_running in *" an-energy "*)
+    if wait_t 2; then
+        keys Space
+        t=$(settled_t)
+        if has_re '┌─+ Energy \(J\): balance'; then pass; else
+            fail "energy (e): expected a frame titled 'Energy (J): balance'; screen: $(brief)"
+        fi
+        drift=$(sed -n 's/.*Energy (J): balance .*drift \([-+0-9.e]*\) J.*/\1/p' "$scr" | head -n 1)
+        if awk -v d="$drift" 'BEGIN { exit !(d ~ /^[-+]?[0-9]/ && d + 0 < 1e-4 && d + 0 > -1e-4) }'; then pass; else
+            fail "energy: after $t s of -p 3-mass-chain the drift should be below 1e-4 J, title says '$drift'; screen: $(brief "$scr" 'Energy')"
+        fi
+        missing=
+        for w in kinetic potential dissipated 'motor work' collisions; do
+            grep -qE "^└.* $w [-0-9]" "$scr" || missing="$missing '$w'"
+        done
+        if [ -z "$missing" ]; then pass; else
+            fail "energy: after $t s at 120x40 the legend lacks$missing; legend: $(brief "$scr" '^└.*kinetic')"
+        fi
+        wk=$(sed -n 's/^└.* motor work \([-0-9][-0-9.e+]*\) .*/\1/p' "$scr")
+        if awk -v w="$wk" 'BEGIN { exit !(w != "" && w + 0 > 0) }'; then pass; else
+            fail "energy: the motor should have done work after $t s, legend says '$wk'; legend: $(brief "$scr" '^└.*kinetic')"
+        fi
+    else
+        fail "energy: expected it to run to t = 2 s; screen: $(brief)"
+    fi
+    ;;
+esac
+S=an-nodamp
+case $an_running in *" an-nodamp "*)
+    if wait_t 3; then
+        keys Space
+        t=$(settled_t)
+        kp=$(sed -n 's/^└.* kinetic \([-0-9][-0-9.e+]*\) .*potential \([-0-9][-0-9.e+]*\) .*/\1 \2/p' "$scr")
+        if awk -v kp="$kp" 'BEGIN { n = split(kp, a, " "); s = a[1] + a[2]
+                               exit !(n == 2 && s > 39.9 && s < 40.1) }'; then pass; else
+            fail "energy, -p no-damping: after $t s kinetic + potential should be 40 J, legend: '$kp'; screen: $(brief "$scr" '^└.*kinetic')"
+        fi
+    else
+        fail "energy, -p no-damping: expected it to run to t = 3 s; screen: $(brief)"
+    fi
+    ;;
+esac
+
+# ---- 16f. x: export CSV into the working directory ----
+S=an-export
+case $an_running in *" an-export "*)
+    if wait_t 1; then
+        keys Space
+        t=$(settled_t)
+        keys x
+        if wait_re 'exported [0-9]+ rows to \./springsim-[0-9]{8}-[0-9]{6}\.csv'; then
+            pass
+            n=$(sed -n 's/.*exported \([0-9][0-9]*\) rows to .*/\1/p' "$scr" | head -n 1)
+            f=$(sed -n 's/.*exported [0-9]* rows to \.\/\(springsim-[0-9]*-[0-9]*\.csv\).*/\1/p' "$scr" | head -n 1)
+            if [ -f "$tmp/exp/$f" ] && [ "$(ls -A "$tmp/exp" | wc -l)" -eq 1 ]; then
+                pass
+                if awk -F, -v n="$n" -v t="$t" '
+                    NR == 1 { ok = ($0 == "t,x1,x2,v1,v2,a1,a2,motor"); next }
+                    { rows++
+                      if (NF != 8 || tolower($0) ~ /nan|inf/) ok = 0
+                      for (i = 1; i <= NF; i++) if ($i !~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/) ok = 0
+                      if (rows > 1 && $1 + 0 <= last) ok = 0
+                      last = $1 + 0 }
+                    END { exit !(ok && rows == n && rows > 50 && last > t - 0.005 && last < t + 0.005) }' \
+                    "$tmp/exp/$f"; then pass; else
+                    fail "export: $f should have the header t,x1,x2,v1,v2,a1,a2,motor, $n rows of 8 numbers, t increasing to $t; it has $(($(wc -l <"$tmp/exp/$f") - 1)) rows: $(sed -n '1p;2p;$p' "$tmp/exp/$f" | tr '\n' '|')"
+                fi
+            else
+                fail "export: expected only $f in the working directory; found: $(ls -A "$tmp/exp" | tr '\n' ' ')"
+            fi
+        else
+            fail "export: x should say 'exported N rows to ./springsim-YYYYmmdd-HHMMSS.csv'; screen: $(brief)"
+        fi
+    else
+        fail "export: expected it to run to t = 1 s; screen: $(brief)"
+    fi
+    ;;
+esac
+
+# ---- 16g. branch from history: step back, change a parameter, go on ----
+S=an-branch
+case $an_running in *" an-branch "*)
+    if wait_t 2; then
+        keys Space
+        t0=$(settled_t)
+        h0=$(status_hist)
+        k=0
+        while [ $k -lt 50 ]; do
+            keys ,
+            k=$((k + 1))
+        done
+        tb=$(t_plus "$t0" -50)
+        if wait_for "t = $tb s" 3; then
+            hb=$(status_hist)
+            if [ -n "$h0" ] && [ "$hb" = "$((h0 - 50))" ]; then pass; else
+                fail "branch: 50 × ',' from history $h0 should leave history $((h0 - 50)); screen: $(brief)"
+            fi
+            if select_control Amplitude; then
+                keys Right
+                wait_re 'Amplitude +1\.05 m' 2
+                keys .
+                want=$(t_plus "$tb" 1)
+                if wait_for "t = $want s" 3 && [ "$(status_hist)" = "$((hb + 1))" ]; then pass; else
+                    fail "branch: after stepping back to t = $tb s (history $hb), → on Amplitude and '.', expected t = $want s and history $((hb + 1)); screen: $(brief)"
+                fi
+            else
+                fail "branch: cannot select Amplitude; screen: $(brief "$scr" Amplitude)"
+            fi
+        else
+            fail "branch: 50 × ',' from t = $t0 s should show t = $tb s; screen: $(brief)"
+        fi
+    else
+        fail "branch: expected it to run to t = 2 s; screen: $(brief)"
+    fi
+    ;;
+esac
+
+# ---- 16h. s: save a preset ----
+xs=$tmp/xdg-save
+pdir=$xs/springsim/presets
+save_as() { # save_as NAME: s, NAME, Enter; true once the prompt is gone
+    keys s
+    wait_for 'save preset as' 3 || return 1
+    [ -n "$1" ] && text "$1"
+    keys Enter
+    wait_gone 'save preset as' 3
+}
+if an_up an-save; then
+    if save_as mychain && wait_for 'saved ' 3 && has 'springsim/presets/mychain.ini'; then pass; else
+        fail "save: s, mychain, Enter should say 'saved' and the path; screen: $(brief)"
+    fi
+    if [ -f "$pdir/mychain.ini" ]; then
+        pass
+        cp "$pdir/mychain.ini" "$tmp/mychain.1"
+        XDG_CONFIG_HOME=$xs "$SPRINGSIM" -p mychain --modes >"$tmp/modes.saved" 2>&1
+        "$SPRINGSIM" -p 3-mass-chain --modes >"$tmp/modes.orig" 2>&1
+        if [ "$(awk -F, 'NR > 1 { printf "%.3f ", $2 }' "$tmp/modes.saved")" = "0.385 0.712 0.930 " ] &&
+            cmp -s "$tmp/modes.saved" "$tmp/modes.orig"; then pass; else
+            fail "save: -p mychain --modes should print what -p 3-mass-chain --modes does; got: $(head -n 4 "$tmp/modes.saved" | tr '\n' '|')"
+        fi
+    else
+        fail "save: expected the file \$XDG_CONFIG_HOME/springsim/presets/mychain.ini; found: $(find "$xs" 2>/dev/null | tr '\n' ' ')"
+    fi
+    # change a value, save under the same name: n keeps the file, y replaces it
+    if select_control Amplitude; then
+        keys Right
+        if wait_re 'Amplitude +0\.10 m' 2; then
+            keys s
+            wait_for 'save preset as' 3
+            text mychain
+            keys Enter
+            if wait_for 'replace it? (y/n)' 3; then
+                pass
+                keys n
+                if wait_gone 'replace it?' 3 && cmp -s "$tmp/mychain.1" "$pdir/mychain.ini"; then pass; else
+                    fail "save: n to 'replace it?' should keep the old file; screen: $(brief)"
+                fi
+                keys s
+                wait_for 'save preset as' 3
+                text mychain
+                keys Enter
+                wait_for 'replace it? (y/n)' 3
+                keys y
+                if wait_for 'saved ' 3 && ! cmp -s "$tmp/mychain.1" "$pdir/mychain.ini" &&
+                    grep -qE '^amplitude *= *0\.1$' "$pdir/mychain.ini"; then pass; else
+                    fail "save: y to 'replace it?' should write the new amplitude 0.1; file: $(grep amplitude "$pdir/mychain.ini"); screen: $(brief)"
+                fi
+            else
+                fail "save: saving mychain again should ask 'replace it? (y/n)'; screen: $(brief)"
+            fi
+        else
+            fail "save: → on Amplitude should make it 0.10 m; screen: $(brief "$scr" Amplitude)"
+        fi
+    else
+        fail "save: cannot select the Amplitude control; screen: $(brief "$scr" Amplitude)"
+    fi
+    # bad names: a message, nothing written
+    find "$xs" | sort >"$tmp/xs.before"
+    long=$(awk 'BEGIN { while (i++ < 65) printf "a" }')
+    for nm in ../x '' a/b "$long"; do
+        case $nm in '') what="an empty name" ;; "$long") what="a 65-character name" ;; *) what="'$nm'" ;; esac
+        if save_as "$nm"; then
+            l=$(last_line)
+            case $l in
+            *saved* | *"space start"* | '') fail "save with $what: expected a message saying why not; message line: '$l'" ;;
+            *) pass ;;
+            esac
+        else
+            fail "save with $what: the prompt did not come and go; screen: $(brief)"
+        fi
+        find "$xs" | sort >"$tmp/xs.after"
+        if cmp -s "$tmp/xs.before" "$tmp/xs.after"; then pass; else
+            fail "save with $what: nothing should be written, new: $(comm -13 "$tmp/xs.before" "$tmp/xs.after" | sed "s|^$xs/||" | tr '\n' ' ')"
+            cp "$tmp/xs.after" "$tmp/xs.before"
+        fi
+    done
+fi
+
+# ---- 16i. per-element editing ----
+xe=$tmp/xdg-edit
+if an_up an-edit; then
+    keys Tab
+    if wait_re '└─ mass 1: m 1 kg'; then
+        pass
+        sed -n '3,5p' "$scr" >"$tmp/edit.scene0"
+        keys Enter
+        text 2.5
+        keys Enter
+        if wait_for 'mass 1: m = 2.5 kg' 3; then
+            if has_re 'Mass +mixed kg'; then pass; else
+                fail "per-element: after mass 1 = 2.5 kg the Mass control should show 'mixed kg'; screen: $(brief "$scr" 'Mass ')"
+            fi
+            sed -n '3,5p' "$scr" >"$tmp/edit.scene1"
+            if cmp -s "$tmp/edit.scene0" "$tmp/edit.scene1"; then
+                fail "per-element: mass 1 at 2.5 kg should look different from the 1 kg ones; scene unchanged: $(brief "$tmp/edit.scene1")"
+            else
+                pass
+            fi
+        else
+            fail "per-element: Enter, 2.5, Enter on mass 1 should say 'mass 1: m = 2.5 kg'; screen: $(brief)"
+        fi
+        keys Down
+        if wait_re '└─ spring 1: k 10 N/m' 3; then
+            keys Enter
+            text 22
+            keys Enter
+            if wait_for 'spring 1: k = 22 N/m' 3 && has_re 'Spring k +mixed N/m'; then pass; else
+                fail "per-element: spring 1 Enter 22 Enter should say 'spring 1: k = 22 N/m' and Spring k 'mixed N/m'; screen: $(brief "$scr" 'Spring k')"
+            fi
+        else
+            fail "per-element: ↓ from mass 1 should select spring 1; screen: $(brief "$scr" '└─ (mass|spring)')"
+        fi
+        keys Up
+        if wait_re '└─ mass 1: m 2\.5 kg' 3; then
+            keys c
+            text 0.3
+            keys Enter
+            if wait_for 'mass 1: c = 0.3 N·s/m' 3 && has_re 'Damping +mixed'; then pass; else
+                fail "per-element: c, 0.3, Enter on mass 1 should set its damping ('mass 1: c = 0.3 N·s/m', Damping 'mixed'); screen: $(brief "$scr" 'Damping')"
+            fi
+        else
+            fail "per-element: ↑ from spring 1 should select mass 1 again; screen: $(brief "$scr" '└─ (mass|spring)')"
+        fi
+        # the modes view follows the edits
+        "$SPRINGSIM" -n 3 --mass 2.5,1,1 --spring 10,22,10,10 --modes >"$tmp/modes.cli" 2>&1
+        fl=$(awk -F, 'NR > 1 { printf "%.3f ", $2 }' "$tmp/modes.cli")
+        keys m
+        if wait_for Modes 3; then
+            missing=
+            for f in $fl; do has "$f Hz" || missing="$missing $f"; done
+            if [ -n "$fl" ] && [ -z "$missing" ]; then pass; else
+                fail "per-element: the modes view should show the edited chain's frequencies ($fl), missing$missing; screen: $(brief "$scr" 'Hz')"
+            fi
+            keys m
+            wait_for 'Displacement (m)' 3
+        else
+            fail "per-element: m should open the modes view; screen: $(brief)"
+        fi
+        keys s
+        wait_for 'save preset as' 3
+        text pe
+        keys Enter
+        f=$xe/springsim/presets/pe.ini
+        if wait_for 'saved ' 3 && [ -f "$f" ]; then
+            if grep -qE '^mass *= *2\.5, *1, *1$' "$f" &&
+                grep -qE '^damping *= *0\.3, *0\.1, *0\.1$' "$f" &&
+                awk -F'[=,]' '/^spring *=/ { n = NF - 1; k2 = $3 + 0 } END { exit !(n == 4 && k2 == 22) }' "$f"; then
+                pass
+            else
+                fail "per-element: pe.ini should have mass = 2.5, 1, 1, damping 0.3, 0.1, 0.1 and four springs with 22 second; it has: $(grep -E '^(mass|spring|damping) *=' "$f" | tr '\n' '|')"
+            fi
+            XDG_CONFIG_HOME=$xe "$SPRINGSIM" -p pe --modes >"$tmp/modes.pe" 2>&1
+            if cmp -s "$tmp/modes.pe" "$tmp/modes.cli" && ! cmp -s "$tmp/modes.pe" "$tmp/modes.orig"; then pass; else
+                fail "per-element: -p pe --modes should match --mass 2.5,1,1 --spring 10,22,10,10 --modes and differ from the uniform chain; got: $(head -n 2 "$tmp/modes.pe" | tr '\n' '|')"
+            fi
+        else
+            fail "per-element: s, pe, Enter should save \$XDG_CONFIG_HOME/springsim/presets/pe.ini; screen: $(brief)"
+        fi
+    else
+        fail "per-element: Tab should select mass 1 ('mass 1: m 1 kg' on the scene's border); screen: $(brief "$scr" 'mass 1')"
+    fi
+fi
+
+for s in $an_sessions; do
     if alive "$s"; then pass; else
         S=$s
         cap

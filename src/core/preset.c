@@ -184,13 +184,15 @@ static int handler(void *user, const char *section, const char *name, const char
     if (p->err_line)
         return 1; /* report the first error only */
 
-    int continued = strcmp(name, p->prev_key) == 0;
+    char msg[512];
+    if (*name == '\0')
+        return handler_fail(p, line, "a key name is missing before '='");
+    int continued = p->call > 1 && strcmp(name, p->prev_key) == 0;
     if (p->pending && !continued && !check_pending(p))
         return 0;
     snprintf(p->prev_key, sizeof p->prev_key, "%s", name);
     size_t have = continued ? strlen(p->joined) : 0;
     size_t add = strlen(value);
-    char msg[512];
     if (have + add + 2 > p->joined_cap) {
         snprintf(msg, sizeof msg, "value of '%s' is too long", name);
         return handler_fail(p, line, msg);
@@ -305,19 +307,41 @@ enum preset_status preset_load(const char *path, struct config *c, char *err, si
     enum preset_status st = slurp(path, &text, &size, err, errlen);
     if (st != PRESET_OK)
         return st;
+    st = preset_parse(path, text, size, c, err, errlen);
+    free(text);
+    return st;
+}
+
+enum preset_status preset_parse(const char *path, const char *text, size_t size,
+                                struct config *c, char *err, size_t errlen)
+{
+    enum preset_status st = PRESET_OK;
+    if (size > PRESET_MAX_BYTES) {
+        snprintf(err, errlen, "%s: too large for a preset (more than %d bytes)", path,
+                 PRESET_MAX_BYTES);
+        return PRESET_BAD;
+    }
+    /* inih reads a NUL-terminated string; a NUL inside is reported by the first pass. */
+    char *copy = malloc(size + 1);
+    if (!copy) {
+        snprintf(err, errlen, "%s: %s", path, strerror(ENOMEM));
+        return PRESET_IO;
+    }
+    memcpy(copy, text, size);
+    copy[size] = '\0';
 
     struct parse p = {.path = path, .c = c};
     p.lines = malloc((size / 2 + 2) * sizeof *p.lines); /* a value line has 2+ bytes */
     p.joined_cap = 2 * size + 64;
-    p.joined = malloc(p.joined_cap);
+    p.joined = calloc(p.joined_cap, 1);
     if (!p.lines || !p.joined) {
         snprintf(err, errlen, "%s: %s", path, strerror(ENOMEM));
         st = PRESET_IO;
         goto out;
     }
-    int bad = prescan(&p, text, size);
+    int bad = prescan(&p, copy, size);
     if (!bad) {
-        int line = ini_parse_string(text, handler, &p);
+        int line = ini_parse_string(copy, handler, &p);
         if (p.pending && !p.err_line)
             check_pending(&p);
         if (line != 0 && line != p.err_line) {
@@ -334,7 +358,7 @@ enum preset_status preset_load(const char *path, struct config *c, char *err, si
 out:
     free(p.lines);
     free(p.joined);
-    free(text);
+    free(copy);
     return st;
 }
 

@@ -22,6 +22,11 @@ enum preset_status {
  * and line as their origin. On failure c may be partly set and err says why. */
 enum preset_status preset_load(const char *path, struct config *c, char *err, size_t errlen);
 
+/* Applies preset text (size bytes, not necessarily NUL-terminated) to c, as if read
+ * from the file path (named in messages and origins; it must outlive c). */
+enum preset_status preset_parse(const char *path, const char *text, size_t size,
+                                struct config *c, char *err, size_t errlen);
+
 /* The file a preset name or path stands for. A value with a '/' or ending in ".ini" is
  * a path; otherwise the search order is the user's directory, $SPRINGSIM_PRESETS, the
  * installed directory and exe_dir/presets. Writes the path into out and returns
