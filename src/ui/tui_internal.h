@@ -54,10 +54,10 @@ struct tui {
     struct canvas *view_canvas; /* the analysis views' dots */
     struct scale view_ys;   /* the energy view's scale */
     enum edit_target edit_target;
-    char save_name[80];     /* name waiting for the replace confirmation */
+    char save_name[256];    /* name waiting for the replace confirmation */
     struct preset_entry *presets; /* the menu's entries */
     int npresets, preset_sel;
-    char edit[64];          /* text being typed */
+    char edit[256];         /* text being typed */
     int edit_len;
     double plot_due;        /* wall time of the next plot refresh */
     bool plots_dirty;       /* redraw the plots at the next frame */

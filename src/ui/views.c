@@ -296,7 +296,7 @@ static void draw_energy(struct tui *t, bool refresh)
                                         e.contact};
     for (int q = 0; q < TRAIL_ENERGIES; q++) {
         char item[64];
-        snprintf(item, sizeof item, " %s %.4g ", names[q], now[q]);
+        snprintf(item, sizeof item, " %s %.3g", names[q], now[q]);
         if (lx + (int)strlen(item) >= r.x + r.w - 1)
             break;
         attron(tui_pair_attr(t, colors[q]) | A_BOLD);
