@@ -2,10 +2,39 @@
 #include "output.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+/* Frees the names of o. */
+static void forget(struct output *o)
+{
+    free(o->path);
+    free(o->tmp);
+    o->path = o->tmp = NULL;
+}
+
+/* An unnamed file in path's directory (Linux O_TMPFILE), or -1. */
+static int open_unnamed(const char *path, mode_t mode)
+{
+#ifdef O_TMPFILE
+    char dir[4096];
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else if (slash == path)
+        snprintf(dir, sizeof dir, "/");
+    else
+        snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+    return open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
+#else
+    (void)path, (void)mode;
+    errno = EOPNOTSUPP;
+    return -1;
+#endif
+}
 
 int output_open(struct output *o, const char *path)
 {
@@ -21,41 +50,63 @@ int output_open(struct output *o, const char *path)
         o->fp = fopen(path, "w");
         return o->fp ? 0 : errno;
     }
+    /* The new file gets the old one's mode, or what a plain creat() would give. */
+    mode_t mask = umask(0);
+    umask(mask);
+    mode_t mode = stat(path, &st) == 0 ? st.st_mode & 07777 : 0666 & ~mask;
     size_t n = strlen(path);
     o->path = strdup(path);
     o->tmp = malloc(n + 16);
     if (!o->path || !o->tmp) {
-        free(o->path);
-        free(o->tmp);
-        o->path = o->tmp = NULL;
+        forget(o);
         return ENOMEM;
     }
     snprintf(o->tmp, n + 16, "%s.tmp-XXXXXX", path);
-    int fd = mkstemp(o->tmp);
-    if (fd < 0) {
+    int fd = open_unnamed(path, mode);
+    if (fd >= 0) {
+        o->unnamed = true;
+        fchmod(fd, mode);
+    } else if (errno == ENOENT || errno == ENOTDIR || errno == EACCES || errno == EROFS) {
         int e = errno;
-        free(o->path);
-        free(o->tmp);
-        o->path = o->tmp = NULL;
+        forget(o);
         return e;
+    } else {
+        fd = mkstemp(o->tmp);
+        if (fd < 0) {
+            int e = errno;
+            forget(o);
+            return e;
+        }
+        fchmod(fd, mode);
     }
-    /* mkstemp makes 0600; give the file the mode a plain creat() would. */
-    mode_t mask = umask(0);
-    umask(mask);
-    fchmod(fd, 0666 & ~mask);
-    if (stat(path, &st) == 0)
-        fchmod(fd, st.st_mode & 07777);
     o->fp = fdopen(fd, "w");
     if (!o->fp) {
         int e = errno;
         close(fd);
-        unlink(o->tmp);
-        free(o->path);
-        free(o->tmp);
-        o->path = o->tmp = NULL;
+        if (!o->unnamed)
+            unlink(o->tmp);
+        forget(o);
         return e;
     }
     return 0;
+}
+
+/* Gives the complete unnamed file a temporary name beside the target. */
+static int name_unnamed(struct output *o)
+{
+    char proc[64];
+    snprintf(proc, sizeof proc, "/proc/self/fd/%d", fileno(o->fp));
+    size_t n = strlen(o->tmp);
+    for (int attempt = 0; attempt < 100; attempt++) {
+        /* A fresh suffix each time: the XXXXXX of the template, made unique by hand. */
+        snprintf(o->tmp + n - 6, 7, "%06x", (unsigned)(getpid() * 7919 + attempt * 104729) &
+                                                0xffffffu);
+        if (linkat(AT_FDCWD, proc, AT_FDCWD, o->tmp, AT_SYMLINK_FOLLOW) == 0)
+            return 0;
+        if (errno != EEXIST)
+            return errno;
+    }
+    return EEXIST;
 }
 
 int output_close(struct output *o, bool commit)
@@ -69,19 +120,22 @@ int output_close(struct output *o, bool commit)
         o->fp = NULL;
         return err;
     }
+    bool named = !o->unnamed;
     if (o->tmp && !err && commit && fsync(fileno(o->fp)) != 0)
         err = errno;
+    if (o->tmp && !err && commit && o->unnamed) {
+        err = name_unnamed(o);
+        named = err == 0;
+    }
     if (fclose(o->fp) != 0 && !err)
         err = errno;
     o->fp = NULL;
     if (o->tmp) {
         if (!err && commit && rename(o->tmp, o->path) != 0)
             err = errno;
-        if (err || !commit)
+        if (named && (err || !commit))
             unlink(o->tmp);
-        free(o->tmp);
-        free(o->path);
-        o->tmp = o->path = NULL;
+        forget(o);
     }
     return err;
 }

@@ -9,13 +9,16 @@
 #include "sim.h"
 
 struct output {
-    FILE *fp;    /* where to write */
-    char *tmp;   /* temporary file to rename, or NULL when writing in place */
-    char *path;  /* final path, or NULL for standard output */
+    FILE *fp;      /* where to write */
+    char *tmp;     /* temporary name to rename from, or NULL when writing in place */
+    char *path;    /* final path, or NULL for standard output */
+    bool unnamed;  /* the file has no name until it is complete (O_TMPFILE) */
 };
 
 /* Opens path for writing (NULL or "-": standard output). A regular file or a new one is
- * written through a temporary file; anything else (a device, a pipe) in place.
+ * written through a temporary file in the same directory, unnamed where the system
+ * allows (so even kill -9 leaves nothing behind); anything else (a device, a pipe) in
+ * place.
  * Returns 0, or an errno value. */
 int output_open(struct output *o, const char *path);
 
