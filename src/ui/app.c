@@ -81,6 +81,14 @@ static void update_modes(struct app *app)
     app->stable_dt = modes_stable_dt(app->model);
 }
 
+/* Says so, before anything blows up, when dt is past the RK4 stability limit. */
+static void warn_unstable(struct app *app)
+{
+    if (app->cfg.dt >= app->stable_dt)
+        app_say(app, true, "warning: dt = %.3f s is above the stability limit: dt < %.3g s "
+                "is stable", app->cfg.dt, app->stable_dt);
+}
+
 /* Builds model, sim, history and trail from app->cfg; 0, or -1 on no memory. */
 static int build_chain(struct app *app)
 {
@@ -139,6 +147,7 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
     fix_initial(app);
     snprintf(app->preset, sizeof app->preset, "%s", cfg->name);
     app_reset(app);
+    warn_unstable(app);
     return 0;
 }
 
@@ -325,9 +334,7 @@ static void apply_params(struct app *app)
         set_sampling(app);
     }
     update_modes(app);
-    if (app->cfg.dt >= app->stable_dt)
-        app_say(app, true, "warning: dt = %.3f s is above the stability limit %.3g s",
-                app->cfg.dt, app->stable_dt);
+    warn_unstable(app);
 }
 
 /* Sets one value for every element of a list. */

@@ -1,0 +1,120 @@
+#!/bin/sh
+# tests/faults.sh: quick fault tests of the real binary ($SPRINGSIM): killed mid-write,
+# huge and malformed presets, no HOME, closed output, and the stability warning.
+# Ends with "faults: N passed, M failed". The long ones live in tests/long/.
+SPRINGSIM=${SPRINGSIM:-./springsim}
+case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
+passed=0
+failed=0
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); printf 'FAIL: %s\n' "$*"; }
+XDG_CONFIG_HOME=$tmp/xdg
+export XDG_CONFIG_HOME
+unset SPRINGSIM_PRESETS
+
+# 1. kill -9 in the middle of a long --headless -o FILE: FILE keeps its old content and
+# no temporary file is left beside it.
+printf 'old content\n' >"$tmp/out.csv"
+"$SPRINGSIM" --headless -n 200 --duration 100000 -o "$tmp/out.csv" 2>/dev/null &
+pid=$!
+sleep 0.5
+if kill -0 "$pid" 2>/dev/null; then
+    kill -9 "$pid"
+    wait "$pid" 2>/dev/null
+    if [ "$(cat "$tmp/out.csv")" = "old content" ]; then pass; else
+        fail "kill -9 during -o: the old file changed: $(head -c 80 "$tmp/out.csv")"
+    fi
+    left=$(ls "$tmp" | grep -c 'out.csv.tmp' || true)
+    if [ "$left" -eq 0 ]; then pass; else fail "kill -9 during -o left $left temporary files"; fi
+else
+    fail "the long run ended before it could be killed"
+fi
+# ...and a run that completes replaces it whole.
+"$SPRINGSIM" --headless --duration 1 -o "$tmp/out.csv" && [ "$(wc -l <"$tmp/out.csv")" -eq 102 ] &&
+    pass || fail "a complete run did not replace the file with 102 lines"
+
+# one_line STATUS NEEDLE ARGS...: exit STATUS, one stderr line containing NEEDLE.
+one_line() {
+    want=$1 needle=$2
+    shift 2
+    "$SPRINGSIM" "$@" >"$tmp/o" 2>"$tmp/e"
+    rc=$?
+    n=$(awk 'END { print NR }' "$tmp/e")
+    if [ "$rc" -eq "$want" ] && [ "$n" -eq 1 ] && grep -q -- "$needle" "$tmp/e"; then pass; else
+        fail "springsim $*: expected exit $want and one line with '$needle'; got exit $rc, $n lines: $(head -c 200 "$tmp/e")"
+    fi
+}
+
+# 2. A 1 MB preset, a 100,000-character line, binary junk.
+awk 'BEGIN { print "[system]"; for (i = 0; i < 40000; i++) print "; padding padding padding" }' \
+    >"$tmp/big.ini"
+one_line 2 "too large" -p "$tmp/big.ini" --modes
+awk 'BEGIN { printf "[system]\nmass = "; for (i = 0; i < 50000; i++) printf "1,"; print "1" }' \
+    >"$tmp/long.ini"
+one_line 2 "long.ini:2: line is longer than" -p "$tmp/long.ini" --modes
+head -c 4096 /dev/urandom >"$tmp/junk.ini"
+"$SPRINGSIM" -p "$tmp/junk.ini" --modes >/dev/null 2>"$tmp/e"
+rc=$?
+if [ "$rc" -eq 2 ] && [ "$(awk 'END { print NR }' "$tmp/e")" -eq 1 ]; then pass; else
+    fail "random bytes as a preset: expected exit 2 and one line, got exit $rc: $(head -c 200 "$tmp/e")"
+fi
+one_line 1 "No such file or directory" -p "$tmp/missing.ini" --modes
+one_line 1 "Is a directory" -p "$tmp/" --modes
+if [ "$(id -u)" -ne 0 ]; then
+    printf '[system]\nmasses = 2\n' >"$tmp/locked.ini"
+    chmod 000 "$tmp/locked.ini"
+    one_line 1 "Permission denied" -p "$tmp/locked.ini" --modes
+else
+    echo "note: running as root, so an unreadable preset cannot be made; not tested"
+fi
+
+# 3. No HOME and no XDG_CONFIG_HOME: presets beside the binary still work.
+out=$(env -u HOME -u XDG_CONFIG_HOME "$SPRINGSIM" -p resonance --modes 2>&1)
+case $out in *0.711762*) pass ;; *) fail "no HOME: -p resonance --modes gave: $out" ;; esac
+n=$(env -u HOME -u XDG_CONFIG_HOME "$SPRINGSIM" --list-presets 2>/dev/null | grep -c .)
+if [ "$n" -ge 11 ]; then pass; else fail "no HOME: --list-presets listed $n presets"; fi
+
+# 4. Output that cannot be written: a closed standard output, a full device.
+"$SPRINGSIM" --headless --duration 1 >&- 2>"$tmp/e"
+rc=$?
+if [ "$rc" -eq 1 ] && [ "$(awk 'END { print NR }' "$tmp/e")" -eq 1 ]; then pass; else
+    fail "closed stdout: expected exit 1 and one line, got $rc: $(head -c 200 "$tmp/e")"
+fi
+one_line 1 "No space left on device" --headless --duration 100 -o /dev/full
+
+# 5. A step past the stability limit is warned about before anything blows up, and a
+# run that blows up stops with the limit named, never printing nan.
+"$SPRINGSIM" --headless --spring 5000 --dt 0.05 --duration 5 >"$tmp/o" 2>"$tmp/e"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -q 'warning: dt = 0.05 s is above the RK4 stability limit' "$tmp/e" &&
+    grep -q 'dt < 0.0' "$tmp/e" && ! grep -qi nan "$tmp/o"; then pass; else
+    fail "unstable dt: expected a warning, a stop naming the limit and no nan; got $rc: $(head -c 300 "$tmp/e")"
+fi
+if command -v tmux >/dev/null 2>&1; then
+    sock=springsim-faults-$$
+    tmux -L "$sock" -f /dev/null new-session -d -x 100 -y 30 \
+        "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM --spring 5000 --dt 0.05; sleep 5"
+    seen=
+    for _ in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20; do
+        sleep 0.1
+        scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
+        case $scr in *"above the stability limit"*) seen=1; break ;; esac
+    done
+    if [ -n "$seen" ]; then pass; else
+        fail "interactive: no stability warning at start with dt 0.05 and k 5000; bottom line: $(printf '%s\n' "$scr" | tail -1)"
+    fi
+    tmux -L "$sock" send-keys ' ' 2>/dev/null
+    sleep 1
+    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
+    case $scr in
+    *"unstable: dt too large for these springs; dt < 0.0"*"s is stable"*) pass ;;
+    *) fail "interactive: running an unstable chain did not pause with the limit; bottom line: $(printf '%s\n' "$scr" | tail -1)" ;;
+    esac
+    case $scr in *nan* | *NaN* | *inf*) fail "interactive: nan or inf on screen" ;; *) pass ;; esac
+    tmux -L "$sock" kill-server 2>/dev/null
+fi
+
+echo "faults: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
