@@ -39,7 +39,7 @@ MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all run check sanitize fuzz install uninstall clean deps deps-test FORCE
+.PHONY: all run check check-long sanitize valgrind fuzz install uninstall clean deps deps-test FORCE
 
 all: $(BIN)
 
@@ -113,6 +113,24 @@ sanitize:
 	@mkdir -p $(BUILD)/san && ln -sfn $(CURDIR)/presets $(BUILD)/san/presets
 	$(MAKE) BUILD=$(BUILD)/san BIN=$(BUILD)/san/springsim CFLAGS="$(SAN_FLAGS)" \
 	    LDFLAGS="$(SAN_FLAGS)" check
+
+# The unit tests and a headless run with collisions under valgrind's memcheck: zero
+# errors and no definite leaks, or it fails.
+VALGRIND = valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite \
+           --quiet
+valgrind: $(BIN) $(TEST_BIN)
+	@command -v valgrind >/dev/null || sh mk/deps.sh valgrind
+	@set -e; for t in $(TEST_BIN); do echo "== valgrind $$t"; $(VALGRIND) $$t >/dev/null; done
+	@echo "== valgrind --headless, collisions at resonance"
+	@$(VALGRIND) ./$(BIN) --headless -p resonance --amplitude 0.6 --duration 60 --energy >/dev/null
+	@$(VALGRIND) ./$(BIN) -p 3-mass-chain --modes >/dev/null
+	@$(VALGRIND) ./$(BIN) -p 3-mass-chain --sweep 0.1:2:50 >/dev/null
+	@echo "valgrind: no errors, no definite leaks"
+
+# The long fault tests: a 1e8-step soak, a resize storm of hundreds of sizes.
+check-long: $(BIN) | $(BUILD)/.deps-test
+	@SPRINGSIM=./$(BIN) sh tests/long/soak.sh
+	@SPRINGSIM=./$(BIN) sh tests/long/storm.sh
 
 # Fuzzing with clang's libFuzzer under ASan + UBSan: make fuzz FUZZ_SECONDS=N runs each
 # target N seconds from its seed corpus (a copy: what it finds stays in build/fuzz).

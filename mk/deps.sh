@@ -1,7 +1,7 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE), test (cmocka, tmux),
-# bench (GSL), fuzz (clang with libFuzzer). As root the missing ones are installed with
+# bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed with
 # apt-get; otherwise the one apt-get line to run is printed and the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
@@ -23,6 +23,9 @@ for group in "$@"; do
         ;;
     bench)
         want_pc gsl libgsl-dev
+        ;;
+    valgrind)
+        want_bin valgrind valgrind
         ;;
     fuzz)
         want_bin clang clang
