@@ -64,6 +64,13 @@ static void autoscale(void **state)
     plot_scale_update(&s, -0.1, 0.1, 4, 5);
     assert_true(s.hi - s.lo < 0.5 * big);
     assert_true(s.lo <= -0.1 && s.hi >= 0.1);
+    /* A scale set from flat data only (a chain at rest) takes the first real data at
+     * once instead of waiting to shrink. */
+    struct scale f = {0};
+    plot_scale_update(&f, 0.0, 0.0, 4, 5);
+    assert_true(f.set && f.hi - f.lo >= 1.0);
+    plot_scale_update(&f, 0.0, 0.08, 4, 5);
+    assert_true(f.hi - f.lo < 0.2 && f.hi >= 0.08 && f.lo <= 0.0);
     /* Flat data keeps the scale. */
     double keep = s.hi - s.lo;
     plot_scale_update(&s, 0.0, 0.0, 4, 5);

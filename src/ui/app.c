@@ -172,6 +172,8 @@ void app_reset(struct app *app)
     app->energy0 = e.balance;
     if (app->sweep->active) {
         sweep_stop(app->sweep);
+        app->cfg.frequency = app->model->motor.frequency = app->sweep_from;
+        sim_set_model(app->sim, app->model);
         app_say(app, false, "sweep stopped by the reset");
     }
 }
@@ -217,8 +219,9 @@ bool app_step(struct app *app)
         retune(app, sweep_frequency(app->sweep));
         break;
     case SWEEP_DONE:
-        app_say(app, false, "sweep done: %d frequencies measured (f shows them)",
-                app->sweep->points);
+        retune(app, app->sweep_from);
+        app_say(app, false, "sweep done: %d frequencies measured (f shows them); back at "
+                "%.3f Hz", app->sweep->points, app->sweep_from);
         break;
     default:
         break;
@@ -613,8 +616,9 @@ void app_toggle_sweep(struct app *app)
 {
     if (app->sweep->active) {
         sweep_stop(app->sweep);
-        app_say(app, false, "sweep stopped after %d of %d frequencies",
-                sweep_measured(app->sweep), app->sweep->points);
+        retune(app, app->sweep_from);
+        app_say(app, false, "sweep stopped after %d of %d frequencies; back at %.3f Hz",
+                sweep_measured(app->sweep), app->sweep->points, app->sweep_from);
         return;
     }
     if (app->model->boundary != BOUNDARY_MOTOR || !app->modes_ok) {
@@ -629,6 +633,7 @@ void app_toggle_sweep(struct app *app)
     for (int i = 1; i < n; i++)
         cmin = fmin(cmin, app->model->c[i]), mmax = fmax(mmax, app->model->m[i]);
     double settle = cmin > 0 ? fmin(30.0, fmax(4.0, 3.0 * 2.0 * mmax / cmin)) : 30.0;
+    app->sweep_from = app->model->motor.frequency;
     sweep_start(app->sweep, lo, hi, settle, sim_time(app->sim));
     retune(app, sweep_frequency(app->sweep));
     app->running = true;

@@ -57,6 +57,7 @@ struct app {
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
     bool modes_ok;           /* modes[] and shapes[] are those of the model */
     struct sweep *sweep;     /* the sine-sweep experiment */
+    double sweep_from;       /* the drive's frequency before the sweep, given back after */
     double energy0;          /* the energy balance at t = 0 */
 };
 

@@ -49,11 +49,18 @@ void plot_scale_update(struct scale *s, double dmin, double dmax, int max_ticks,
     if (!isfinite(dmin) || !isfinite(dmax) || dmax < dmin)
         return;
     /* Flat data (a chain at rest) says nothing about the scale: keep the one there is. */
-    if (s->set && dmax - dmin <= 1e-12 * fmax(1.0, fabs(dmax)) && dmin >= s->lo &&
-        dmax <= s->hi)
+    bool flat = dmax - dmin <= 1e-12 * fmax(1.0, fabs(dmax));
+    if (s->set && flat && dmin >= s->lo && dmax <= s->hi)
         return;
     double lo, hi, step;
     nice_range(dmin, dmax, max_ticks, &lo, &hi, &step);
+    if (s->set && !s->fitted && !flat) {
+        /* The first real data replaces a range that was only a placeholder. */
+        s->lo = lo, s->hi = hi, s->step = step, s->fitted = true, s->quiet = 0;
+        return;
+    }
+    if (!flat)
+        s->fitted = true;
     if (!s->set || dmin < s->lo || dmax > s->hi) {
         /* Grow at once, to the union so nothing shown before falls off. */
         if (s->set) {

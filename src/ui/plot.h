@@ -14,7 +14,8 @@ struct scale {
     double lo, hi;   /* shown range */
     double step;     /* tick step */
     int quiet;       /* updates in a row that the data would fit a much smaller range */
-    bool set;        /* has seen data */
+    bool set;        /* has a range */
+    bool fitted;     /* the range came from data that was not flat */
 };
 
 /* The 1-2-5 x 10^k step that puts at most max_ticks intervals on [lo, hi]. */

@@ -95,8 +95,8 @@ static void draw_response(struct tui *t, bool refresh)
     if (!c)
         return;
     if (m->boundary != BOUNDARY_MOTOR) {
-        tui_putn(r.y + 2, r.x + 3, r.w - 6, "The right end does not drive the chain: choose "
-                 "Right end = motor to see its response.");
+        tui_putn(r.y + 2, r.x + 3, r.w - 6, "The right end does not drive the chain:");
+        tui_putn(r.y + 3, r.x + 3, r.w - 6, "choose Right end = motor to see its response.");
         return;
     }
     int W = 2 * c->cols, H = 4 * c->rows;
