@@ -773,3 +773,8 @@ bool app_export(struct app *app, const char *dir, char *path, size_t len)
     app_say(app, false, "exported %d rows to %s", tr->count, path);
     return true;
 }
+
+double app_freq_fraction(double f)
+{
+    return log(f / APP_FMIN) / log(APP_FMAX / APP_FMIN);
+}

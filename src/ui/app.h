@@ -18,6 +18,9 @@
 #define APP_FMAX 5.0
 #define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */
 
+/* Position of frequency f on the control's range drawn on a log scale, 0 to 1. */
+double app_freq_fraction(double f);
+
 /* What a save of a preset came to. */
 enum app_save { SAVE_OK, SAVE_EXISTS, SAVE_BAD_NAME, SAVE_FAILED };
 

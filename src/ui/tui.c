@@ -710,14 +710,14 @@ static void draw_controls(struct tui *t)
         for (int j = 0; j < m->n; j++) {
             double f = t->app.modes[j];
             if (f >= APP_FMIN && f <= APP_FMAX)
-                mvaddch(y, x0 + (int)lround((f - APP_FMIN) / (APP_FMAX - APP_FMIN) * (w - 1)),
+                mvaddch(y, x0 + (int)lround(app_freq_fraction(f) * (w - 1)),
                         ascii_only ? '|' : ACS_PLUS);
         }
         attroff(tui_pair_attr(t, PAIR_TITLE));
         attron(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
         double f = m->motor.frequency;
         if (f >= APP_FMIN && f <= APP_FMAX)
-            tui_put(y, x0 + (int)lround((f - APP_FMIN) / (APP_FMAX - APP_FMIN) * (w - 1)), 1,
+            tui_put(y, x0 + (int)lround(app_freq_fraction(f) * (w - 1)), 1,
                     ascii_only ? "o" : "●");
         attroff(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
     }

@@ -78,10 +78,11 @@ static void draw_modes(struct tui *t)
 
 /* ---- frequency response ---- */
 
-/* Column of frequency f on a canvas w dots wide over [APP_FMIN, APP_FMAX]. */
+/* Column of frequency f on a canvas w dots wide over [APP_FMIN, APP_FMAX], log scale
+ * (a Bode plot: the modes of a small chain spread out instead of crowding the left). */
 static int freq_dot(double f, int w)
 {
-    return (int)lround((f - APP_FMIN) / (APP_FMAX - APP_FMIN) * (w - 1));
+    return (int)lround(app_freq_fraction(f) * (w - 1));
 }
 
 static void draw_response(struct tui *t, bool refresh)
@@ -91,7 +92,7 @@ static void draw_response(struct tui *t, bool refresh)
     int n = m->n;
     struct rect r = t->area;
     struct canvas *c = t->view_canvas;
-    tui_frame(t, r, "Frequency response: steady-state amplitude (m), log scale", true);
+    tui_frame(t, r, "Frequency response: steady-state amplitude (m) against frequency, log-log", true);
     if (!c)
         return;
     if (m->boundary != BOUNDARY_MOTOR) {
@@ -107,7 +108,7 @@ static void draw_response(struct tui *t, bool refresh)
         /* Theory at every dot column, and the four decades below its top. */
         double top = 0.0;
         for (int x = 0; x < cw; x++) {
-            double f = APP_FMIN + (APP_FMAX - APP_FMIN) * x / (cw - 1);
+            double f = APP_FMIN * pow(APP_FMAX / APP_FMIN, (double)x / (cw - 1));
             if (modes_response(m, f, amp) != 0)
                 for (int i = 0; i < n; i++)
                     amp[i] = INFINITY;
@@ -146,9 +147,9 @@ static void draw_response(struct tui *t, bool refresh)
     int ay = cy + c->rows;
     mvaddch(ay, r.x + 6, tui_line(L_LL));
     mvhline(ay, cx, tui_line(L_H), c->cols);
-    for (double f = 0.0; f <= APP_FMAX + 1e-9; f += 0.5) {
-        if (f < APP_FMIN)
-            continue;
+    static const double ticks[] = {0.1, 0.2, 0.5, 1.0, 2.0, 5.0};
+    for (size_t k = 0; k < sizeof ticks / sizeof *ticks; k++) {
+        double f = ticks[k];
         int col = freq_dot(f, W) / 2;
         char lab[16];
         snprintf(lab, sizeof lab, "%g", f);
