@@ -280,8 +280,9 @@ static void draw_energy(struct tui *t, bool refresh)
         snprintf(lab, sizeof lab, "%g", v);
         mvaddch(ay, cx + col, tui_line(L_TTEE));
         int lx = cx + col - (int)strlen(lab) / 2;
-        if (lx + (int)strlen(lab) < r.x + r.w - 1)
-            tui_put(ay + 1, lx, (int)strlen(lab), lab);
+        if (lx + (int)strlen(lab) > r.x + r.w - 1)
+            lx = r.x + r.w - 1 - (int)strlen(lab);
+        tui_put(ay + 1, lx, (int)strlen(lab), lab);
     }
     tui_put(ay + 1, r.x + 2, 1, "s");
     if (refresh) {
