@@ -10,15 +10,19 @@
  * which keeps momentum and makes v2' - v1' = e (v1 - v2). */
 #include "collision.h"
 
+#include <math.h>
+
 /* Separating one pair can push a mass into its other neighbour or a wall; a few
  * sweeps settle any real configuration (the chain's blocks fill at most half of L). */
 #define MAX_SWEEPS 64
 /* Contacts closer than this to their limit count as resolved (rounding of x_eq + d). */
 #define SLACK 1e-12
 
-static int pair_contact(const struct model *m, double *x, double *v, int i, double w)
+static int pair_contact(const struct model *m, double *x, double *v, int i, double w,
+                        double spacing)
 {
-    double gap = (model_equilibrium(m, i + 1) + x[i + 1]) - (model_equilibrium(m, i) + x[i]);
+    /* Centres differ by the equilibrium spacing plus the displacements'. */
+    double gap = spacing + x[i + 1] - x[i];
     if (gap >= w - SLACK)
         return 0;
     double half = 0.5 * (w - gap);
@@ -87,11 +91,12 @@ int collision_apply(const struct model *m, double *x, double *v, double u, doubl
     if (!m->collisions)
         return 0;
     double w = model_block_width(m);
+    double spacing = MODEL_LENGTH / (m->n + 1);
     int total = 0, found = 0;
     for (int sweep = 0; sweep < MAX_SWEEPS; sweep++) {
         found = 0;
         for (int i = 0; i + 1 < m->n; i++)
-            found += pair_contact(m, x, v, i, w);
+            found += pair_contact(m, x, v, i, w, spacing);
         found += left_wall(m, x, v, w);
         if (m->boundary != BOUNDARY_FREE)
             found += right_wall(m, x, v, u, du, w);
@@ -117,4 +122,22 @@ int collision_cap(int n, double *v)
         }
     }
     return capped;
+}
+
+int collision_needed(const struct model *m, const double *x, const double *v, double u)
+{
+    int n = m->n;
+    for (int i = 0; i < n; i++)
+        if (fabs(v[i]) > MODEL_VMAX)
+            return 1;
+    if (!m->collisions)
+        return 0;
+    double w = model_block_width(m), spacing = MODEL_LENGTH / (n + 1);
+    if (spacing + x[0] < 0.5 * w - SLACK)
+        return 1;
+    for (int i = 0; i + 1 < n; i++)
+        if (spacing + x[i + 1] - x[i] < w - SLACK)
+            return 1;
+    return m->boundary != BOUNDARY_FREE &&
+           n * spacing + x[n - 1] > MODEL_LENGTH + u - 0.5 * w + SLACK;
 }

@@ -10,6 +10,10 @@
  * the model has collisions off). */
 int collision_apply(const struct model *m, double *x, double *v, double u, double du);
 
+/* Whether collision_apply or collision_cap would change anything: a read-only pass, so
+ * the common step with no contact pays for nothing else. */
+int collision_needed(const struct model *m, const double *x, const double *v, double u);
+
 /* Clamps every |v_i| to MODEL_VMAX; returns how many were clamped. */
 int collision_cap(int n, double *v);
 

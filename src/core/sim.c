@@ -30,8 +30,15 @@ struct sim {
     int last_capped;     /* caps in the last step */
     double *y;           /* 2N+2: d, v, D, W */
     double *y0;          /* state at the start of the step, for restoring */
-    double *k1, *k2, *k3, *k4, *tmp; /* RK4 stages */
+    double *k1, *k2, *tmp; /* RK4: the stages' running sum, one stage, its argument */
     double *inv_m;       /* 1/m_i */
+    double rot_w, rot_h; /* w and h the rotations below were made for */
+    double rot_s1, rot_c1, rot_s2, rot_c2; /* sin, cos of w h/2 and of w h */
+    double end_u, end_du; /* a sine drive's u and u' at the end of the last sub-step */
+    double rot_next_t;   /* where the last sine step ended (NAN: none) */
+    double rot_phase;    /* the drive's phase then */
+    double rot_sn, rot_cs; /* sin and cos of the drive's angle there */
+    int rot_carried;     /* steps since sin and cos were last taken afresh */
 };
 
 struct sim *sim_new(const struct model *model, double dt)
@@ -42,7 +49,7 @@ struct sim *sim_new(const struct model *model, double dt)
     if (!s)
         return NULL;
     s->model = model_new(n);
-    s->y = calloc(7 * len + (size_t)n, sizeof *s->y);
+    s->y = calloc(5 * len + (size_t)n, sizeof *s->y);
     if (!s->model || !s->y) {
         sim_free(s);
         return NULL;
@@ -51,9 +58,7 @@ struct sim *sim_new(const struct model *model, double dt)
     s->y0 = s->y + len;
     s->k1 = s->y0 + len;
     s->k2 = s->k1 + len;
-    s->k3 = s->k2 + len;
-    s->k4 = s->k3 + len;
-    s->tmp = s->k4 + len;
+    s->tmp = s->k2 + len;
     s->inv_m = s->tmp + len;
     s->dt = dt;
     sim_set_model(s, model);
@@ -144,32 +149,80 @@ static void deriv(const struct sim *s, const double *y, double u, double du, dou
     dy[2 * n + 1] = work;
 }
 
+/* The sine drive u = A sin(th), du = A w cos(th) at a, a + h/2 and a + h, with one
+ * sincos: sin and cos at the later times follow from the angle-addition formulas with
+ * sin, cos of w h/2 and w h, kept while w and h stay the same. Exact to a few ulp. */
+static void sine_drive(struct sim *s, double a, double b, double *u0, double *du0,
+                       double *um, double *dum, double *u1, double *du1)
+{
+    double h = b - a;
+    const struct motor *mot = &s->model->motor;
+    double w = 2.0 * M_PI * mot->frequency, amp = mot->amplitude;
+    if (w != s->rot_w || h != s->rot_h) {
+        sincos(0.5 * w * h, &s->rot_s1, &s->rot_c1);
+        sincos(w * h, &s->rot_s2, &s->rot_c2);
+        s->rot_w = w;
+        s->rot_h = h;
+        s->rot_next_t = NAN; /* nothing to carry over */
+    }
+    double sn, cs;
+    if (a == s->rot_next_t && mot->phase == s->rot_phase && s->rot_carried < 64) {
+        /* This step starts where the last ended: carry its sin and cos over, and only
+         * every 64 steps take them afresh, so rounding cannot build up. */
+        sn = s->rot_sn, cs = s->rot_cs;
+        s->rot_carried++;
+    } else {
+        sincos(w * a + 2.0 * M_PI * mot->phase, &sn, &cs);
+        s->rot_carried = 0;
+    }
+    double sm = sn * s->rot_c1 + cs * s->rot_s1, cm = cs * s->rot_c1 - sn * s->rot_s1;
+    double se = sn * s->rot_c2 + cs * s->rot_s2, ce = cs * s->rot_c2 - sn * s->rot_s2;
+    s->rot_next_t = b;
+    s->rot_phase = mot->phase;
+    s->rot_sn = se, s->rot_cs = ce;
+    *u0 = amp * sn, *du0 = amp * w * cs;
+    *um = amp * sm, *dum = amp * w * cm;
+    *u1 = amp * se, *du1 = amp * w * ce;
+}
+
 /* y += h/6 (k1 + 2 k2 + 2 k3 + k4) over [a, b] with the drive taken from one piece. */
 static void rk4(struct sim *s, double a, double b, const struct motor_piece *piece)
 {
     int len = 2 * s->n + 2;
     double h = b - a, h2 = 0.5 * h;
     double u0 = 0, du0 = 0, um = 0, dum = 0, u1 = 0, du1 = 0;
-    double *y = s->y, *tmp = s->tmp, *k1 = s->k1, *k2 = s->k2, *k3 = s->k3, *k4 = s->k4;
+    double *y = s->y, *tmp = s->tmp, *k1 = s->k1, *k2 = s->k2;
 
-    if (s->model->boundary == BOUNDARY_MOTOR) {
+    const struct model *m = s->model;
+    if (m->boundary == BOUNDARY_MOTOR && m->motor.wave == WAVE_SINE) {
+        sine_drive(s, a, b, &u0, &du0, &um, &dum, &u1, &du1);
+        s->end_u = u1;
+        s->end_du = du1;
+    } else if (m->boundary == BOUNDARY_MOTOR) {
         motor_piece_eval(piece, a, &u0, &du0);
         motor_piece_eval(piece, a + h2, &um, &dum);
         motor_piece_eval(piece, b, &u1, &du1);
     }
-    deriv(s, y, u0, du0, k1);
+    /* The sum k1 + 2 k2 + 2 k3 + k4 builds up in acc as the stages come, each loop also
+     * making the next stage's argument: four passes over the state instead of seven. */
+    double *acc = k1, *k = k2;
+    deriv(s, y, u0, du0, acc);
     for (int i = 0; i < len; i++)
-        tmp[i] = y[i] + h2 * k1[i];
-    deriv(s, tmp, um, dum, k2);
-    for (int i = 0; i < len; i++)
-        tmp[i] = y[i] + h2 * k2[i];
-    deriv(s, tmp, um, dum, k3);
-    for (int i = 0; i < len; i++)
-        tmp[i] = y[i] + h * k3[i];
-    deriv(s, tmp, u1, du1, k4);
+        tmp[i] = y[i] + h2 * acc[i];
+    deriv(s, tmp, um, dum, k);
+    for (int i = 0; i < len; i++) {
+        acc[i] += 2.0 * k[i];
+        tmp[i] = y[i] + h2 * k[i];
+    }
+    deriv(s, tmp, um, dum, k);
+    for (int i = 0; i < len; i++) {
+        acc[i] += 2.0 * k[i];
+        tmp[i] = y[i] + h * k[i];
+    }
+    deriv(s, tmp, u1, du1, k);
     double h6 = h / 6.0;
     for (int i = 0; i < len; i++)
-        y[i] += h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+        y[i] += h6 * (acc[i] + k[i]);
 }
 
 /* Work done by the motor when the end jumps from u_from to u_to with the last mass at
@@ -190,7 +243,9 @@ static void advance(struct sim *s, double t0, double t1)
     double cuts[MAX_SPLIT];
 
     if (m->boundary != BOUNDARY_MOTOR || mot->wave == WAVE_SINE || mot->amplitude == 0.0) {
-        motor_piece_at(mot, 0.5 * (t0 + t1), &piece);
+        /* One smooth piece: the sine needs no piece; the others a constant one. */
+        if (m->boundary == BOUNDARY_MOTOR && mot->wave != WAVE_SINE)
+            motor_piece_at(mot, 0.5 * (t0 + t1), &piece);
         rk4(s, t0, t1, &piece);
         return;
     }
@@ -252,7 +307,11 @@ enum sim_status sim_step(struct sim *s)
     s->steps += 1.0;
 
     double u = 0.0, du = 0.0;
-    if (m->boundary == BOUNDARY_MOTOR) {
+    if (m->boundary == BOUNDARY_MOTOR && m->motor.wave == WAVE_SINE) {
+        /* The last sub-step ended at t1 and left the piston's position and velocity. */
+        u = s->end_u;
+        du = s->end_du;
+    } else if (m->boundary == BOUNDARY_MOTOR) {
         struct motor_piece piece;
         double u_left;
         /* The piston's velocity just before t1, its position at t1. */
@@ -260,7 +319,10 @@ enum sim_status sim_step(struct sim *s)
         motor_piece_eval(&piece, t1, &u_left, &du);
         u = motor_position(&m->motor, t1);
     }
-    /* Keep the state before contacts so their energy can be booked; cheap next to RK4. */
+    s->last_contacts = s->last_capped = 0;
+    if (!collision_needed(m, s->y, s->y + n, u))
+        return SIM_OK;
+    /* Keep the state before contacts so their energy can be booked. */
     memcpy(s->tmp, s->y, (size_t)(2 * n) * sizeof *s->y);
     int contacts = collision_apply(m, s->y, s->y + n, u, du);
     s->last_capped = collision_cap(n, s->y + n);

@@ -1,0 +1,158 @@
+/* bench_core.c: speed of the core, printed as a table (make bench). Ratios come from
+ * runs side by side in one process, alternated, medians taken: absolute times on a
+ * shared machine are noise.
+ *  1. steps per second, N = 5, sine drive, dt = 0.001, collisions on: springsim's sim_step
+ *     against GSL's gsl_odeiv2_step_rk4 driven by gsl_odeiv2_driver_apply_fixed_step on
+ *     the same equations (the core's own model_accel), with the same contact handling
+ *     after each step;
+ *  2. time per step and mass for N = 10, 100, 1000;
+ *  3. --headless CSV rows per second against bare stepping. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include "core/collision.h"
+#include "core/model.h"
+#include "core/output.h"
+#include "core/sim.h"
+
+#define ROUNDS 5
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int compare(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, compare);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* A uniform chain driven at 1 Hz with an amplitude a tenth of the spacing (0.2 m at
+ * most): contacts are checked every step but do not pile up, so what is timed is the
+ * stepping, for every N alike. */
+static struct model *chain(int n)
+{
+    struct model *m = model_new(n);
+    double a = 0.1 * MODEL_LENGTH / (n + 1);
+    m->motor = (struct motor){WAVE_SINE, a < 0.2 ? a : 0.2, 1.0, 0.0};
+    return m;
+}
+
+/* Steps per second of the core. */
+static double ours(const struct model *m, double dt, long steps, double *check)
+{
+    struct sim *s = sim_new(m, dt);
+    double t0 = now_s();
+    for (long k = 0; k < steps; k++)
+        sim_step(s);
+    double rate = steps / (now_s() - t0);
+    *check = sim_x(s)[m->n - 1];
+    sim_free(s);
+    return rate;
+}
+
+/* The same system for GSL: y = (x, v), the core's equation of motion. */
+static int gsl_rhs(double t, const double y[], double dydt[], void *params)
+{
+    const struct model *m = params;
+    int n = m->n;
+    memcpy(dydt, y + n, (size_t)n * sizeof *y);
+    model_accel(m, y, y + n, model_end_position(m, t), dydt + n);
+    return GSL_SUCCESS;
+}
+
+static double theirs(const struct model *m, double dt, long steps, double *check)
+{
+    int n = m->n;
+    gsl_odeiv2_system sys = {gsl_rhs, NULL, (size_t)(2 * n), (void *)m};
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk4, dt, 1e-6,
+                                                         0.0);
+    double *y = calloc((size_t)(2 * n), sizeof *y), t = 0.0;
+    double t0 = now_s();
+    for (long k = 0; k < steps; k++) {
+        gsl_odeiv2_driver_apply_fixed_step(d, &t, dt, 1, y);
+        /* The same contacts and cap as the core applies after each step. */
+        double u = motor_position(&m->motor, t);
+        collision_apply(m, y, y + n, u, 0.0);
+        collision_cap(n, y + n);
+    }
+    double rate = steps / (now_s() - t0);
+    *check = y[n - 1];
+    free(y);
+    gsl_odeiv2_driver_free(d);
+    return rate;
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    printf("springsim core benchmark (medians of %d alternated rounds)\n\n", ROUNDS);
+
+    /* 1. Against GSL. */
+    struct model *m5 = chain(5);
+    double a[ROUNDS], b[ROUNDS], xa = 0, xb = 0;
+    long steps = 400000;
+    for (int r = 0; r < ROUNDS; r++) {
+        a[r] = ours(m5, 0.001, steps, &xa);
+        b[r] = theirs(m5, 0.001, steps, &xb);
+    }
+    double ma = median(a, ROUNDS), mb = median(b, ROUNDS);
+    printf("| physics, N = 5, sine, dt = 0.001, collisions on | steps/s |\n| --- | --- |\n");
+    printf("| springsim sim_step | %.3g |\n", ma);
+    printf("| GSL rk4 + driver_apply_fixed_step | %.3g |\n", mb);
+    printf("| ratio (goal >= 4) | **%.1fx** |\n", ma / mb);
+    printf("| same answer: x5 after %.0f s | %.9f vs %.9f |\n\n", steps * 0.001, xa, xb);
+    model_free(m5);
+
+    /* 2. Linear in N. */
+    printf("| N | ns per step | ns per step and mass |\n| --- | --- | --- |\n");
+    const int sizes[] = {10, 100, 1000};
+    for (int i = 0; i < 3; i++) {
+        struct model *m = chain(sizes[i]);
+        double r[ROUNDS], x;
+        long k = 20000000L / sizes[i];
+        for (int j = 0; j < ROUNDS; j++)
+            r[j] = ours(m, 0.001, k, &x);
+        double ns = 1e9 / median(r, ROUNDS);
+        printf("| %d | %.0f | %.1f |\n", sizes[i], ns, ns / sizes[i]);
+        model_free(m);
+    }
+
+    /* 3. CSV rows per second against bare stepping (N = 5, every step written). */
+    struct model *m = chain(5);
+    double bare[ROUNDS], csv[ROUNDS], x;
+    FILE *null = fopen("/dev/null", "w");
+    double scratch[5];
+    for (int j = 0; j < ROUNDS; j++) {
+        bare[j] = ours(m, 0.001, 200000, &x);
+        struct sim *s = sim_new(m, 0.001);
+        double t0 = now_s();
+        for (long k = 0; k < 200000; k++) {
+            sim_step(s);
+            output_csv_row(null, s, false, scratch);
+        }
+        csv[j] = 200000 / (now_s() - t0);
+        sim_free(s);
+    }
+    fclose(null);
+    printf("\n| --headless, N = 5 | per second |\n| --- | --- |\n");
+    printf("| bare steps | %.3g |\n| steps with a CSV row each | %.3g |\n",
+           median(bare, ROUNDS), median(csv, ROUNDS));
+    model_free(m);
+    return 0;
+}
