@@ -36,6 +36,9 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     "headless/modes/sweep output to FILE instead of standard output"},
     [CFG_ENERGY] = {"energy", 0, "run", NULL,
                     "headless CSV gains kinetic,potential,dissipated,motor_work"},
+    [CFG_FPS] = {"fps", 0, "run", "N", "interactive frames per second, 1 to 60 (default 30)"},
+    [CFG_LOW_BANDWIDTH] = {"low-bandwidth", 0, "run", NULL,
+                           "interactive: fewer frames and plot refreshes (slow links)"},
 };
 
 /* What each key allows, quoted in every error about it. */
@@ -59,6 +62,8 @@ static const char *const expected[CFG_KEY_COUNT] = {
     [CFG_SAMPLE] = "sample > 0 s",
     [CFG_OUTPUT] = "a file name",
     [CFG_ENERGY] = "true or false",
+    [CFG_FPS] = "1 <= fps <= 60",
+    [CFG_LOW_BANDWIDTH] = "true or false",
 };
 
 /* Lower bounds of numeric keys: value > lo (open) or value >= lo (closed). */
@@ -74,6 +79,7 @@ void config_init(struct config *c)
     c->amplitude = 1.0;
     c->frequency = 1.0;
     c->duration = 10.0;
+    c->fps = 30;
 }
 
 int config_find(const char *name)
@@ -306,6 +312,15 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
         return 0;
     case CFG_ENERGY:
         return set_bool(key, value, &c->energy, err, errlen);
+    case CFG_FPS:
+        if ((why = parse_whole(value, &whole)))
+            return fail(key, value, why, err, errlen);
+        if (whole < 1 || whole > 60)
+            return fail(key, value, "is out of range", err, errlen);
+        c->fps = (int)whole;
+        return 0;
+    case CFG_LOW_BANDWIDTH:
+        return set_bool(key, value, &c->low_bandwidth, err, errlen);
     case CFG_KEY_COUNT:
         break;
     }

@@ -29,6 +29,8 @@ enum config_key {
     CFG_SAMPLE,
     CFG_OUTPUT,
     CFG_ENERGY,
+    CFG_FPS,
+    CFG_LOW_BANDWIDTH,
     CFG_KEY_COUNT
 };
 
@@ -76,6 +78,8 @@ struct config {
     double sample;                      /* headless output interval (s), 0 = every step */
     const char *output;                 /* output file, NULL for standard output */
     bool energy;                        /* energy columns in the headless CSV */
+    int fps;                            /* interactive frames per second */
+    bool low_bandwidth;                 /* interactive: keep terminal output small */
     char name[64];                      /* preset's display name */
     char description[256];              /* preset's description */
     struct config_origin origin[CFG_KEY_COUNT]; /* where each key was set */

@@ -24,7 +24,7 @@ static const char *const labels[CTL_COUNT] = {
     [CTL_PRESET] = "Preset",      [CTL_MASSES] = "Masses",     [CTL_DT] = "dt",
     [CTL_DAMPING] = "Damping",    [CTL_SPRING] = "Spring k",   [CTL_MASS] = "Mass",
     [CTL_BOUNDARY] = "Right end", [CTL_WAVE] = "Waveform",     [CTL_AMPLITUDE] = "Amplitude",
-    [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",
+    [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Bandwidth",
 };
 
 /* Playback speeds offered by the Speed control. */
@@ -419,6 +419,9 @@ void app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
                                     WAVE_COUNT);
         apply_params(app);
         return;
+    case CTL_BANDWIDTH:
+        app->cfg.low_bandwidth = !app->cfg.low_bandwidth;
+        return;
     case CTL_SPEED: {
         int i = 0;
         while (i < NSPEEDS - 1 && speeds[i] < app->speed - 1e-9)
@@ -463,6 +466,14 @@ bool app_set_text(struct app *app, enum control ctl, const char *text)
     }
     if (ctl == CTL_PRESET)
         return false;
+    if (ctl == CTL_BANDWIDTH) {
+        if (strcmp(text, "low") == 0 || strcmp(text, "normal") == 0) {
+            app->cfg.low_bandwidth = text[0] == 'l';
+            return true;
+        }
+        app_say(app, true, "bandwidth: '%.40s' is not low or normal", text);
+        return false;
+    }
     /* Checked on a copy, so a bad value changes nothing. */
     static struct config trial;
     trial = app->cfg;
@@ -577,6 +588,9 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         return;
     case CTL_SPEED:
         snprintf(buf, len, "%gx", app->speed);
+        return;
+    case CTL_BANDWIDTH:
+        snprintf(buf, len, "%s", app->cfg.low_bandwidth ? "low" : "normal");
         return;
     default:
         break;

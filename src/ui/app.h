@@ -37,6 +37,7 @@ enum control {
     CTL_AMPLITUDE,
     CTL_FREQUENCY,
     CTL_SPEED,
+    CTL_BANDWIDTH,
     CTL_COUNT
 };
 

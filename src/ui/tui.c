@@ -8,6 +8,7 @@
 #include <langinfo.h>
 #include <math.h>
 #include <signal.h>
+#include <sys/ioctl.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,8 +24,10 @@
 
 #define MIN_COLS 60
 #define MIN_ROWS 20
-#define FRAME_HZ 30.0   /* scene and status */
 #define PLOT_HZ 10.0    /* plots, while running */
+#define LOW_FRAME_HZ 10.0 /* low bandwidth: scene and status */
+#define LOW_PLOT_HZ 0.5   /* low bandwidth: plots, every 2 s */
+#define BACKLOG 8192      /* bytes waiting for the terminal that mean it cannot keep up */
 #define SCENE_SPAN 13.0 /* metres shown: 0 .. L + the motor's largest stroke */
 
 static volatile sig_atomic_t quit_signal; /* SIGINT, SIGTERM, SIGHUP received */
@@ -470,8 +473,15 @@ static void draw_scene(struct tui *t)
             attroff(tui_pair_attr(t, PAIR_TITLE) | tui_pair_attr(t, PAIR_SPRING) | A_BOLD);
         }
     }
-    if (t->utf8)
+    if (t->utf8) {
+        /* The blank cells between the coils take the springs' colour too: a colour
+         * change costs more bytes than the character, and most frames change these rows. */
+        attron(tui_pair_attr(t, PAIR_SPRING));
+        for (int row = 1; row <= 3; row++)
+            mvhline(r.y + row, r.x + 3, ' ', r.w - 4);
+        attroff(tui_pair_attr(t, PAIR_SPRING));
         tui_canvas(t, t->scene_canvas, r.y + 1, r.x + 1);
+    }
 
     /* Right end: piston and motor housing, or a wall. */
     int hx = r.x + r.w - 1 - house_w;
@@ -757,9 +767,10 @@ static void draw_status(struct tui *t)
     else
         snprintf(motor, sizeof motor, "%s end", model_boundary_name(m->boundary));
     const char *bar = t->utf8 ? "│" : "|";
-    char line[400], speed[32] = "";
-    if (app->speed != 1.0 || t->behind)
-        snprintf(speed, sizeof speed, " %s %gx%s", bar, app->speed, t->behind ? " behind" : "");
+    char line[400], speed[64] = "";
+    if (app->speed != 1.0 || t->behind || app->cfg.low_bandwidth)
+        snprintf(speed, sizeof speed, " %s %gx%s%s", bar, app->speed, t->behind ? " behind" : "",
+                 app->cfg.low_bandwidth ? " low-bw" : "");
     /* The full line where it fits; the SPEC's essentials where it does not. */
     snprintf(line, sizeof line, " springsim %s %-7s t = %.2f s %s %s %s N %d %s dt %.3f s %s "
              "history %d%s", t->utf8 ? "▸" : ">", app->running ? "Running" : "Paused",
@@ -1273,6 +1284,29 @@ static bool on_key(struct tui *t, int ch)
 
 /* ---- main loop ---- */
 
+/* Frames a second for the scene and the status line. */
+static double frame_hz(const struct tui *t)
+{
+    double hz = t->app.cfg.fps;
+    return t->app.cfg.low_bandwidth && hz > LOW_FRAME_HZ ? LOW_FRAME_HZ : hz;
+}
+
+/* After a frame: if output keeps piling up unread (a slow link), step down to low
+ * bandwidth on its own and say so. */
+static void watch_backlog(struct tui *t)
+{
+    int queued = 0;
+    if (t->app.cfg.low_bandwidth || ioctl(STDOUT_FILENO, TIOCOUTQ, &queued) != 0)
+        return;
+    t->backlog_frames = queued > BACKLOG ? t->backlog_frames + 1 : 0;
+    if (t->backlog_frames >= 5) {
+        t->app.cfg.low_bandwidth = true;
+        t->backlog_frames = 0;
+        app_say(&t->app, true, "the terminal is not keeping up: low bandwidth on (Bandwidth "
+                "control turns it back)");
+    }
+}
+
 /* Advances the simulation to follow the wall clock times the playback speed. */
 static void advance(struct tui *t, double *debt, double elapsed)
 {
@@ -1290,7 +1324,7 @@ static void advance(struct tui *t, double *debt, double elapsed)
             break;
         *debt -= dt;
         /* Never spend more than half a frame computing: fall behind and say so. */
-        if (now_s() - start > 0.5 / FRAME_HZ) {
+        if (now_s() - start > 0.5 / frame_hz(t)) {
             t->behind = *debt > 2.0 * dt;
             if (*debt > 0.25 * app->speed)
                 *debt = 0.0;
@@ -1357,13 +1391,15 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         /* Plots refresh at PLOT_HZ while running, at once after anything else. */
         bool plots = t.plots_dirty || (t.app.running && now >= t.plot_due);
         if (plots) {
-            t.plot_due = now + 1.0 / PLOT_HZ;
+            t.plot_due = now + 1.0 / (t.app.cfg.low_bandwidth ? LOW_PLOT_HZ : PLOT_HZ);
             t.plots_dirty = false;
         }
         draw(&t, plots);
-        next_frame += 1.0 / FRAME_HZ;
+        watch_backlog(&t);
+        double hz = frame_hz(&t);
+        next_frame += 1.0 / hz;
         if (next_frame < now)
-            next_frame = now + 1.0 / FRAME_HZ;
+            next_frame = now + 1.0 / hz;
         /* Wait for input until the next frame; take every key that is there. */
         for (;;) {
             int ms = (int)((next_frame - now_s()) * 1000.0);

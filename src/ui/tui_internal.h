@@ -62,6 +62,7 @@ struct tui {
     double plot_due;        /* wall time of the next plot refresh */
     bool plots_dirty;       /* redraw the plots at the next frame */
     bool behind;            /* the core could not keep up */
+    int backlog_frames;     /* frames in a row with output piling up unread */
     bool dragging;          /* a mass is being dragged with the mouse */
     int scene_x0;           /* first column of the chain's metres */
     double scene_cpm;       /* columns per metre */
