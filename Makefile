@@ -39,7 +39,7 @@ MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all run check check-long sanitize valgrind fuzz install uninstall clean deps deps-test FORCE
+.PHONY: all run check check-long sanitize valgrind bench fuzz install uninstall clean deps deps-test FORCE
 
 all: $(BIN)
 
@@ -131,6 +131,28 @@ valgrind: $(BIN) $(TEST_BIN)
 check-long: $(BIN) | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) sh tests/long/soak.sh
 	@SPRINGSIM=./$(BIN) sh tests/long/storm.sh
+
+# Speed and cost, side by side in one run (GSL is needed only here): the core against
+# GSL's rk4, cost per mass, CSV rate, and the interactive program in a pseudo-terminal.
+BENCH_SECONDS ?= 10
+bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
+	@sh mk/deps.sh bench
+	@mkdir -p $(BUILD)/bench
+	@$(CC) -O2 -g $(DEFS) $(CORE_CFLAGS) -Isrc -o $(BUILD)/bench/bench_core \
+	    tests/bench/bench_core.c $(CORE_LIB) $$($(PKG_CONFIG) --cflags --libs gsl) $(CORE_LIBS)
+	@$(CC) -O2 -g -D_GNU_SOURCE -o $(BUILD)/bench/bench_tty tests/bench/bench_tty.c -lutil
+	@$(BUILD)/bench/bench_core
+	@echo
+	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"
+	@echo "CPU < 3 %, output < 100 KB/s, first frame < 50 ms, RSS < 10 MB; low bandwidth"
+	@echo "< 20 KB/s)"
+	@echo
+	@echo "| run | size | CPU | output | first frame | peak RSS |"
+	@echo "| --- | --- | --- | --- | --- | --- |"
+	@$(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) default ./$(BIN)
+	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) default ./$(BIN)
+	@$(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
+	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 
 # Fuzzing with clang's libFuzzer under ASan + UBSan: make fuzz FUZZ_SECONDS=N runs each
 # target N seconds from its seed corpus (a copy: what it finds stays in build/fuzz).

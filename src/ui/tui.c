@@ -280,15 +280,15 @@ void tui_canvas(const struct tui *t, const struct canvas *c, int y, int x)
             int col = c->color[(size_t)cy * c->cols + cx];
             attr_t a = col >= PAIR_MASS && col < PAIR_MASS + 10 ? tui_mass_attr(t, col - PAIR_MASS)
                                                                  : tui_pair_attr(t, col);
-            attron(a);
             if (t->utf8) {
-                char g[5];
-                braille_utf8(bits, g);
-                mvaddstr(y + cy, x + cx, g);
+                /* The wide character itself: no multibyte decoding per cell. */
+                wchar_t wc[2] = {(wchar_t)(0x2800 + bits), 0};
+                cchar_t cc;
+                setcchar(&cc, wc, a & ~A_COLOR, (short)PAIR_NUMBER(a), NULL);
+                mvadd_wch(y + cy, x + cx, &cc);
             } else {
-                mvaddch(y + cy, x + cx, (chtype)braille_ascii(bits));
+                mvaddch(y + cy, x + cx, (chtype)braille_ascii(bits) | a);
             }
-            attroff(a);
         }
     }
 }
