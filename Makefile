@@ -104,8 +104,13 @@ $(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
 	    -DSRCDIR='"$(CURDIR)"' -o $@ $< \
 	    $(TEST_EXTRA) $(CORE_LIB) $(TEST_LIBS) $(CORE_LIBS)
 
-check: $(BIN) $(TEST_BIN) | $(BUILD)/.deps-test
-	@SPRINGSIM=./$(BIN) sh tests/run.sh $(TEST_BIN)
+# A terminal that stops reading, for the fault tests: not a cmocka program.
+$(BUILD)/tests/slowterm: tests/slowterm.c | $(BUILD)/.deps-build
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) -D_GNU_SOURCE $(LDFLAGS) -o $@ $< -lutil
+
+check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm | $(BUILD)/.deps-test
+	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all

@@ -176,6 +176,9 @@ expect_usage_error --amplitude "'-1'" -- --headless --amplitude -1
 expect_usage_error --frequency "'0'" -- --headless --frequency 0
 expect_usage_error --duration "'-1'" -- --headless --duration -1
 expect_usage_error --sample "'0'" -- --headless --sample 0
+expect_usage_error --fps "'0'" "1 <= fps <= 60" -- --fps 0
+expect_usage_error --fps "'61'" -- --fps 61
+expect_usage_error --fps "'2.5'" "whole number" -- --fps 2.5
 expect_usage_error --seed "'x'" -- --headless --random --seed x
 expect_usage_error --boundary "'x'" -- --headless --boundary x
 expect_usage_error --wave "'x'" -- --headless --wave x
@@ -499,7 +502,7 @@ done
 if expect_ok --help; then
     for o in preset masses mass spring damping dt boundary wave amplitude frequency x0 v0 \
         random seed no-collisions duration sample output energy headless modes sweep \
-        list-presets keys help version; do
+        list-presets keys fps low-bandwidth help version; do
         if grep -Eq -e "--$o([^a-z0-9-]|\$)" "$out"; then pass; else fail "$cmd: does not mention --$o"; fi
     done
     for o in -p -n -o; do

@@ -114,6 +114,27 @@ if command -v tmux >/dev/null 2>&1; then
     esac
     case $scr in *nan* | *NaN* | *inf*) fail "interactive: nan or inf on screen" ;; *) pass ;; esac
     tmux -L "$sock" kill-server 2>/dev/null
+    # --low-bandwidth shows in the status line and on its control, which turns it off.
+    sock=$sock-lowbw
+    tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 \
+        "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM --low-bandwidth; sleep 5"
+    sleep 0.6
+    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
+    case $scr in *low-bw*"Bandwidth  low"*) pass ;; *) fail "--low-bandwidth: not shown in the status and the Bandwidth control" ;; esac
+    tmux -L "$sock" send-keys Up Right 2>/dev/null
+    sleep 0.4
+    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
+    case $scr in *"Bandwidth  normal"*) pass ;; *) fail "the Bandwidth control did not turn low bandwidth off" ;; esac
+    tmux -L "$sock" kill-server 2>/dev/null
+fi
+
+# 6. A terminal that stops reading (a stalled link): the program steps down to low
+# bandwidth on its own and says so (tests/slowterm.c, built by make check).
+if [ -x "${SLOWTERM:-}" ]; then
+    out=$("$SLOWTERM" "$SPRINGSIM")
+    case $out in *"slowterm: "*" 0 failed"*) pass ;; *) fail "slow terminal: $out" ;; esac
+else
+    echo "note: SLOWTERM not built; the stalled-terminal test did not run"
 fi
 
 echo "faults: $passed passed, $failed failed"

@@ -899,7 +899,8 @@ static void draw_presets(struct tui *t)
     attroff(tui_pair_attr(t, PAIR_DIM));
 }
 
-static void draw(struct tui *t, bool plots)
+/* Draws a frame; returns the seconds it took to hand it to the terminal. */
+static double draw(struct tui *t, bool plots)
 {
     erase();
     if (t->too_small) {
@@ -917,7 +918,7 @@ static void draw(struct tui *t, bool plots)
         }
         wnoutrefresh(stdscr);
         doupdate();
-        return;
+        return 0.0;
     }
     draw_status(t);
     draw_scene(t);
@@ -934,7 +935,9 @@ static void draw(struct tui *t, bool plots)
     else if (t->overlay == OVERLAY_PRESETS)
         draw_presets(t);
     wnoutrefresh(stdscr);
+    double start = now_s();
     doupdate();
+    return now_s() - start;
 }
 
 /* ---- input ---- */
@@ -1291,15 +1294,19 @@ static double frame_hz(const struct tui *t)
     return t->app.cfg.low_bandwidth && hz > LOW_FRAME_HZ ? LOW_FRAME_HZ : hz;
 }
 
-/* After a frame: if output keeps piling up unread (a slow link), step down to low
+/* After a frame that took `spent` seconds to hand to the terminal: if output keeps
+ * piling up unread (a slow link: bytes queued, or writing blocked), step down to low
  * bandwidth on its own and say so. */
-static void watch_backlog(struct tui *t)
+static void watch_backlog(struct tui *t, double spent)
 {
     int queued = 0;
-    if (t->app.cfg.low_bandwidth || ioctl(STDOUT_FILENO, TIOCOUTQ, &queued) != 0)
+    if (t->app.cfg.low_bandwidth)
         return;
-    t->backlog_frames = queued > BACKLOG ? t->backlog_frames + 1 : 0;
-    if (t->backlog_frames >= 5) {
+    if (ioctl(STDOUT_FILENO, TIOCOUTQ, &queued) != 0)
+        queued = 0;
+    bool slow = queued > BACKLOG || spent > 0.5 / frame_hz(t);
+    t->backlog_frames = slow ? t->backlog_frames + 1 : 0;
+    if (t->backlog_frames >= 3 || spent > 1.0) {
         t->app.cfg.low_bandwidth = true;
         t->backlog_frames = 0;
         app_say(&t->app, true, "the terminal is not keeping up: low bandwidth on (Bandwidth "
@@ -1394,8 +1401,7 @@ int tui_run(const struct config *cfg, const char *exe_dir)
             t.plot_due = now + 1.0 / (t.app.cfg.low_bandwidth ? LOW_PLOT_HZ : PLOT_HZ);
             t.plots_dirty = false;
         }
-        draw(&t, plots);
-        watch_backlog(&t);
+        watch_backlog(&t, draw(&t, plots));
         double hz = frame_hz(&t);
         next_frame += 1.0 / hz;
         if (next_frame < now)
