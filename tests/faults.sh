@@ -2,14 +2,8 @@
 # tests/faults.sh: quick fault tests of the real binary ($SPRINGSIM): killed mid-write,
 # huge and malformed presets, no HOME, closed output, and the stability warning.
 # Ends with "faults: N passed, M failed". The long ones live in tests/long/.
-SPRINGSIM=${SPRINGSIM:-./springsim}
-case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
-passed=0
-failed=0
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); printf 'FAIL: %s\n' "$*"; }
+NAME=faults
+. "$(dirname "$0")/lib/check.sh"
 XDG_CONFIG_HOME=$tmp/xdg
 export XDG_CONFIG_HOME
 unset SPRINGSIM_PRESETS
@@ -137,5 +131,4 @@ else
     echo "note: SLOWTERM not built; the stalled-terminal test did not run"
 fi
 
-echo "faults: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

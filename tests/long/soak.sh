@@ -2,13 +2,8 @@
 # tests/long/soak.sh: 1e8 steps of a one-mass chain at resonance with collisions, at
 # dt = 0.001 (1e5 s of simulated time): no non-finite value, and memory flat (the peak
 # resident size at the end is the one after the first second). Ends "soak: N passed, M failed".
-SPRINGSIM=${SPRINGSIM:-./springsim}
-passed=0
-failed=0
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); printf 'FAIL: %s\n' "$*"; }
+NAME=soak
+. "$(dirname "$0")/../lib/check.sh"
 
 # The run, with its peak resident size (VmHWM) read after one second and just before
 # it ends: flat memory means the two agree.
@@ -39,5 +34,4 @@ fi
 if [ "${short:-0}" -gt 0 ] && [ "$long" -le $((short + 64)) ]; then pass; else
     fail "memory grew: $short KB after 1 s, $long KB after 1e8 steps"
 fi
-echo "soak: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

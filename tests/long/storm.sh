@@ -2,15 +2,11 @@
 # tests/long/storm.sh: the interactive program, running, through 400 random window
 # sizes (1x1 and 250x70 among them) as fast as tmux can resize, then a normal size: it
 # must still be alive, drawing and answering keys. Ends "storm: N passed, M failed".
-SPRINGSIM=${SPRINGSIM:-./springsim}
-case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
-passed=0
-failed=0
+NAME=storm
+. "$(dirname "$0")/../lib/check.sh"
 sock=springsim-storm-$$
 T() { tmux -L "$sock" -f /dev/null "$@"; }
-trap 'T kill-server 2>/dev/null' EXIT
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); printf 'FAIL: %s\n' "$*"; }
+cleanup() { T kill-server 2>/dev/null; rm -rf "$tmp"; }
 
 T new-session -d -x 120 -y 40 -s s "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM -p 3-mass-chain; echo EXITED \$?; sleep 60"
 T set-option -g window-size manual
@@ -35,5 +31,4 @@ T send-keys -t s q
 sleep 0.5
 case $(T capture-pane -p -t s) in *"EXITED 0"*) pass ;; *) fail "q after the storm did not exit 0" ;; esac
 echo "storm: 400 sizes"
-echo "storm: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary
