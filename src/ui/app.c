@@ -77,6 +77,8 @@ static void drop_chain(struct app *app)
 /* Natural frequencies, shapes and the stability limit of the model as it is now. */
 static void update_modes(struct app *app)
 {
+    if (++app->version == 0)
+        app->version = 1;
     app->modes_ok = modes_compute(app->model, app->modes, app->shapes) == 0;
     app->stable_dt = modes_stable_dt(app->model);
 }

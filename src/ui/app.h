@@ -60,6 +60,7 @@ struct app {
     double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
     bool modes_ok;           /* modes[] and shapes[] are those of the model */
+    unsigned version;        /* counts changes of the chain's parameters (never 0) */
     struct sweep *sweep;     /* the sine-sweep experiment */
     double sweep_from;       /* the drive's frequency before the sweep, given back after */
     double energy0;          /* the energy balance at t = 0 */

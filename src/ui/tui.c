@@ -735,8 +735,8 @@ static void draw_controls(struct tui *t)
     y = r.y + 1 + CTL_COUNT + 1;
     if (y < r.y + r.h - 1) {
         const struct model *m = t->app.model;
-        double f[APP_MAX_MASSES];
-        if (modes_compute(m, f, NULL) == 0) {
+        const double *f = t->app.modes; /* kept up to date by the app on every change */
+        if (t->app.modes_ok) {
             attron(tui_pair_attr(t, PAIR_DIM));
             tui_putn(y, r.x + 1, r.w - 2, " natural frequencies (Hz)");
             int x = r.x + 2;

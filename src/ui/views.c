@@ -101,12 +101,15 @@ static void draw_response(struct tui *t, bool refresh)
         return;
     }
     int W = 2 * c->cols, H = 4 * c->rows;
-    static double amp[APP_MAX_MASSES], curve[1024][APP_MAX_MASSES];
+    /* The theory curve: a zgtsv solve per dot column, so only when the chain changed
+     * (app->version) or the view's width did, not on every refresh. */
+    static double amp[APP_MAX_MASSES], curve[1024][APP_MAX_MASSES], curve_top;
+    static unsigned curve_version;
+    static int curve_width;
     int cw = W < 1024 ? W : 1024;
     const struct sweep *sw = app->sweep;
-    if (refresh || !t->view_ys.set) {
-        /* Theory at every dot column, and the four decades below its top. */
-        double top = 0.0;
+    if (curve_version != app->version || curve_width != cw) {
+        curve_top = 0.0;
         for (int x = 0; x < cw; x++) {
             double f = APP_FMIN * pow(APP_FMAX / APP_FMIN, (double)x / (cw - 1));
             if (modes_response(m, f, amp) != 0)
@@ -115,9 +118,16 @@ static void draw_response(struct tui *t, bool refresh)
             for (int i = 0; i < n; i++) {
                 curve[x][i] = amp[i];
                 if (isfinite(amp[i]))
-                    top = fmax(top, amp[i]);
+                    curve_top = fmax(curve_top, amp[i]);
             }
         }
+        curve_version = app->version;
+        curve_width = cw;
+        refresh = true;
+    }
+    if (refresh || !t->view_ys.set) {
+        /* The four decades below the top of the theory and the measurements. */
+        double top = curve_top;
         for (int p = 0; p < sweep_measured(sw); p++)
             for (int i = 0; i < n; i++)
                 if (isfinite(sw->peak[p * n + i]))
