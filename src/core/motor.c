@@ -8,6 +8,7 @@
  * These are the SPEC's sign(sin), (2/pi)asin(sin) and 2 frac(c + 1/2) - 1. */
 #include "motor.h"
 
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -142,19 +143,16 @@ int motor_breakpoints(const struct motor *m, double t0, double t1, double *out, 
     }
     double f = m->frequency;
     double c0 = f * t0 + m->phase, c1 = f * t1 + m->phase;
-    /* Index of the first breakpoint at or after c0 + eps. */
-    double j = ceil((c0 + PHASE_EPS - first) / period);
-    int count = 0;
-    for (;; j += 1.0) {
-        double b = first + j * period;
-        if (b >= c1 - PHASE_EPS)
-            break;
-        if (b > c0 + PHASE_EPS) {
-            if (count < max)
-                out[count] = (b - m->phase) / f;
-            count++;
-        }
-    }
+    /* Indices of the first and last breakpoints strictly inside, counted, not walked:
+     * the count may be large, and only the first max are written. */
+    double j0 = floor((c0 + PHASE_EPS - first) / period) + 1.0;
+    double j1 = ceil((c1 - PHASE_EPS - first) / period) - 1.0;
+    if (j1 < j0)
+        return 0;
+    double total = j1 - j0 + 1.0;
+    int count = total > INT_MAX ? INT_MAX : (int)total;
+    for (int k = 0; k < count && k < max; k++)
+        out[k] = (first + (j0 + k) * period - m->phase) / f;
     return count;
 }
 

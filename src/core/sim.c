@@ -10,6 +10,7 @@
 #include "sim.h"
 
 #include <math.h>
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -254,10 +255,13 @@ static void advance(struct sim *s, double t0, double t1)
     double u_now = jumps ? motor_position(mot, t0) : 0.0; /* the end's position now */
     double a = t0;
     while (a < t1) {
+        /* Up to MAX_SPLIT breakpoints at a time; after the last of a full batch, the
+         * next batch is looked up from there. */
         int nb = motor_breakpoints(mot, a, t1, cuts, MAX_SPLIT);
-        if (nb > MAX_SPLIT)
+        bool more = nb > MAX_SPLIT;
+        if (more)
             nb = MAX_SPLIT;
-        for (int j = 0; j <= nb; j++) {
+        for (int j = 0; j < nb + !more; j++) {
             double b = j < nb ? cuts[j] : t1;
             motor_piece_at(mot, 0.5 * (a + b), &piece);
             if (jumps) {
