@@ -284,6 +284,14 @@ int main(int argc, char **argv)
         status = run_sweep(&c, m, cli.sweep);
         break;
     default:
+        if (c.dt < 0.001) {
+            char why[160];
+            snprintf(why, sizeof why, "'%g' is out of range for the interactive program "
+                     "(expected 0.001 <= dt <= 0.05)", c.dt);
+            options_report_key(&c, CFG_DT, why);
+            status = EXIT_USAGE;
+            break;
+        }
         if (c.masses > 10) {
             char why[160];
             snprintf(why, sizeof why, "'%d' is out of range for the interactive program "

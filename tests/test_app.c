@@ -170,6 +170,51 @@ static void branch_from_history(void **state)
     app.running = false;
 }
 
+/* Stepping back across a change of frequency: the piston is where it was then, and the
+ * drive goes on at the new frequency from there (no jump). */
+static void back_across_retune(void **state)
+{
+    (void)state;
+    app_reset(&app);
+    for (int i = 0; i < 100; i++)
+        app_step(&app);
+    double u_then = sim_end_position(app.sim);
+    for (int i = 0; i < 25; i++)
+        app_step(&app);
+    assert_true(app_set_text(&app, CTL_FREQUENCY, "2"));
+    for (int i = 0; i < 25; i++)
+        assert_true(app_back(&app));
+    assert_close(sim_time(app.sim), 1.0, 1e-9);
+    assert_close(sim_end_position(app.sim), u_then, 1e-9);
+    assert_close(app.model->motor.frequency, 2.0, 0.0);
+    /* And one step on, the piston has moved as a 2 Hz drive moves in 0.01 s, no more. */
+    app_step(&app);
+    assert_true(fabs(sim_end_position(app.sim) - u_then) <=
+                2 * M_PI * 2.0 * app.model->motor.amplitude * 0.01 + 1e-9);
+}
+
+/* Anything that rebuilds the chain ends a sweep and gives the drive back. */
+static void sweep_ends_with_the_chain(void **state)
+{
+    (void)state;
+    app_reset(&app);
+    double f = app.model->motor.frequency;
+    app_toggle_sweep(&app);
+    assert_true(app.sweep->active);
+    assert_true(app.model->motor.frequency != f);
+    app.masses_pending = 2;
+    app_apply_masses(&app);
+    assert_false(app.sweep->active);
+    assert_close(app.model->motor.frequency, f, 0.0);
+    assert_close(app.cfg.frequency, f, 0.0);
+    app_toggle_sweep(&app);
+    app_adjust(&app, CTL_BOUNDARY, 1, false); /* to wall: no drive to sweep */
+    assert_false(app.sweep->active);
+    assert_close(app.model->motor.frequency, f, 0.0);
+    app_adjust(&app, CTL_BOUNDARY, -1, false);
+    app.running = false;
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -178,6 +223,8 @@ int main(void)
         cmocka_unit_test(save_and_reload),
         cmocka_unit_test(export_csv),
         cmocka_unit_test(branch_from_history),
+        cmocka_unit_test(back_across_retune),
+        cmocka_unit_test(sweep_ends_with_the_chain),
     };
     return cmocka_run_group_tests_name("app", tests, setup, teardown);
 }

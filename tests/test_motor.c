@@ -76,8 +76,12 @@ static void breakpoints_listed(void **state)
     assert_close(out[1], 3.0, 1e-15);
     struct motor si = {WAVE_SINE, 1.0, 1.0};
     assert_int_equal(motor_breakpoints(&si, 0.0, 10.0, out, 8), 0);
-    /* More than fit: the count is still right. */
+    /* More than fit: the count is still right, and counting does not walk them. */
     assert_int_equal(motor_breakpoints(&sq, 0.0, 10.1, out, 8), 40);
+    assert_close(out[7], 2.0, 1e-15);
+    struct motor fast = {WAVE_SQUARE, 1.0, 1e6, 0.0};
+    assert_int_equal(motor_breakpoints(&fast, 0.0, 0.05, out, 8), 99999);
+    assert_close(out[0], 0.5e-6, 1e-18);
 }
 
 /* A piece gives the waveform's values and slope across its interval and extends the

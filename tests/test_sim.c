@@ -302,6 +302,28 @@ static void nonfinite_step_restores(void **state)
     model_free(md);
 }
 
+/* A drive so fast that a step holds more breakpoints than are split at once (16): every
+ * one still counts. A square wave at 200 Hz has 20 jumps in a 0.05 s step; the chain
+ * cannot follow it, so dt = 0.05 must agree with dt = 0.001. */
+static void many_breakpoints_per_step(void **state)
+{
+    (void)state;
+    double x[2];
+    const double dts[2] = {0.05, 0.001};
+    for (int k = 0; k < 2; k++) {
+        struct model *md = model_new(2);
+        md->motor = (struct motor){WAVE_SQUARE, 1.0, 200.0, 0.0};
+        md->collisions = false;
+        struct sim *s = sim_new(md, dts[k]);
+        while (sim_time(s) < 1.0 - 1e-9)
+            sim_step(s);
+        x[k] = sim_x(s)[0];
+        sim_free(s);
+        model_free(md);
+    }
+    assert_close(x[0], x[1], 1e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -311,6 +333,7 @@ int main(void)
         cmocka_unit_test(free_oscillation_conserves),
         cmocka_unit_test(dt_change_keeps_time),
         cmocka_unit_test(nonfinite_step_restores),
+        cmocka_unit_test(many_breakpoints_per_step),
     };
     return cmocka_run_group_tests_name("sim", tests, NULL, NULL);
 }

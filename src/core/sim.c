@@ -380,7 +380,14 @@ int sim_last_capped(const struct sim *s)
 
 int sim_snapshot_size(const struct sim *s)
 {
-    return 2 * s->n + 2 + 5;
+    return 2 * s->n + 2 + 6;
+}
+
+/* The drive's angle (cycles, in [0, 1)) at time t. */
+static double drive_cycles(const struct motor *m, double t)
+{
+    double c = m->frequency * t + m->phase;
+    return c - floor(c);
 }
 
 void sim_save(const struct sim *s, double *buf)
@@ -391,7 +398,8 @@ void sim_save(const struct sim *s, double *buf)
     buf[2] = s->dt;
     buf[3] = s->contact;
     buf[4] = s->last_contacts;
-    memcpy(buf + 5, s->y, (size_t)len * sizeof *buf);
+    buf[5] = drive_cycles(&s->model->motor, sim_time(s));
+    memcpy(buf + 6, s->y, (size_t)len * sizeof *buf);
 }
 
 void sim_restore(struct sim *s, const double *buf)
@@ -402,5 +410,10 @@ void sim_restore(struct sim *s, const double *buf)
     s->dt = buf[2];
     s->contact = buf[3];
     s->last_contacts = (int)buf[4];
-    memcpy(s->y, buf + 5, (size_t)len * sizeof *buf);
+    memcpy(s->y, buf + 6, (size_t)len * sizeof *buf);
+    /* The drive goes on from the angle it had then, at the frequency in force now: if the
+     * frequency changed since, the phase is re-anchored so the piston does not jump. */
+    struct motor *m = &s->model->motor;
+    double p = buf[5] - m->frequency * sim_time(s);
+    m->phase = p - floor(p);
 }

@@ -79,7 +79,8 @@ int sim_snapshot_size(const struct sim *s);
 /* Saves the whole state (time included) into buf. */
 void sim_save(const struct sim *s, double *buf);
 
-/* Restores a state saved by sim_save on a simulation with the same n. */
+/* Restores a state saved by sim_save on a simulation with the same n; the drive goes on
+ * from the angle it had then (at the frequency in force now). */
 void sim_restore(struct sim *s, const double *buf);
 
 #endif

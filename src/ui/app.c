@@ -158,8 +158,26 @@ void app_free(struct app *app)
     drop_chain(app);
 }
 
+/* Ends a running sweep and gives the drive its frequency back; says why (NULL: the
+ * user stopped it). */
+static void stop_sweep(struct app *app, const char *why)
+{
+    if (!app->sweep || !app->sweep->active)
+        return;
+    sweep_stop(app->sweep);
+    app->cfg.frequency = app->sweep_from;
+    motor_retune(&app->model->motor, app->sweep_from, sim_time(app->sim));
+    sim_set_model(app->sim, app->model);
+    if (why)
+        app_say(app, false, "sweep stopped by %s; back at %.3f Hz", why, app->sweep_from);
+    else
+        app_say(app, false, "sweep stopped after %d of %d frequencies; back at %.3f Hz",
+                sweep_measured(app->sweep), app->sweep->points, app->sweep_from);
+}
+
 void app_reset(struct app *app)
 {
+    stop_sweep(app, "the reset");
     app->model->motor.phase = 0.0; /* t = 0 again: the drive starts from its start */
     sim_set_model(app->sim, app->model);
     sim_set_dt(app->sim, app->cfg.dt);
@@ -172,12 +190,6 @@ void app_reset(struct app *app)
     struct energy e;
     sim_energy(app->sim, &e);
     app->energy0 = e.balance;
-    if (app->sweep->active) {
-        sweep_stop(app->sweep);
-        app->cfg.frequency = app->model->motor.frequency = app->sweep_from;
-        sim_set_model(app->sim, app->model);
-        app_say(app, false, "sweep stopped by the reset");
-    }
 }
 
 double app_energy_drift(const struct app *app)
@@ -243,6 +255,9 @@ bool app_back(struct app *app)
                 HISTORY_DEPTH);
         return false;
     }
+    /* The state carries the drive's angle it had; the sim re-anchored the phase for the
+     * frequency in force now, and the app's copy of the model follows. */
+    app->model->motor.phase = sim_model(app->sim)->motor.phase;
     if (sim_dt(app->sim) != app->cfg.dt) {
         /* Stepped back past a change of dt: the state carries the dt it was made with. */
         app->cfg.dt = sim_dt(app->sim);
@@ -412,6 +427,7 @@ void app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         return;
     }
     case CTL_BOUNDARY:
+        stop_sweep(app, "the change of right end");
         app->cfg.boundary = (enum boundary)(((int)app->cfg.boundary + steps % BOUNDARY_COUNT +
                                              BOUNDARY_COUNT) % BOUNDARY_COUNT);
         apply_params(app);
@@ -493,6 +509,11 @@ bool app_set_text(struct app *app, enum control ctl, const char *text)
         app_apply_masses(app);
         return true;
     }
+    if (ctl == CTL_DT && trial.dt < 0.001) {
+        app_say(app, true, "dt: '%.40s' is out of range (expected 0.001 <= dt <= 0.05 here)",
+                text);
+        return false;
+    }
     int bad;
     struct model *m = config_model(&trial, &bad, err, sizeof err);
     if (!m) {
@@ -500,6 +521,8 @@ bool app_set_text(struct app *app, enum control ctl, const char *text)
         return false;
     }
     model_free(m);
+    if (ctl == CTL_BOUNDARY || ctl == CTL_FREQUENCY)
+        stop_sweep(app, "the change");
     app->cfg = trial;
     apply_params(app);
     return true;
@@ -510,6 +533,7 @@ void app_apply_masses(struct app *app)
     int n = app->masses_pending;
     if (n == app->model->n)
         return;
+    stop_sweep(app, "the new number of masses");
     /* Every element takes the first element's values; the chain starts again at rest
      * in equilibrium, as the page's "Apply Config". */
     set_all(&app->cfg.mass, app->model->m[0]);
@@ -551,6 +575,7 @@ bool app_load_preset(struct app *app, const char *path, const char *name)
         return false;
     }
     model_free(m);
+    stop_sweep(app, "the preset");
     struct config keep = app->cfg;
     app->cfg = c;
     if (c.random && !c.seed_set)
@@ -631,10 +656,7 @@ void app_nearest_mode(struct app *app)
 void app_toggle_sweep(struct app *app)
 {
     if (app->sweep->active) {
-        sweep_stop(app->sweep);
-        retune(app, app->sweep_from);
-        app_say(app, false, "sweep stopped after %d of %d frequencies; back at %.3f Hz",
-                sweep_measured(app->sweep), app->sweep->points, app->sweep_from);
+        stop_sweep(app, NULL);
         return;
     }
     if (app->model->boundary != BOUNDARY_MOTOR || !app->modes_ok) {
@@ -745,6 +767,8 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
     /* The set-up as it stands: every element's values, the initial conditions. */
     static struct config c;
     c = app->cfg;
+    if (app->sweep->active)
+        c.frequency = app->sweep_from; /* the drive as the user set it, not the sweep's */
     snprintf(c.name, sizeof c.name, "%s", name);
     snprintf(c.description, sizeof c.description, "Saved from springsim");
     struct output o;

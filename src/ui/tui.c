@@ -336,6 +336,17 @@ static double scene_col(const struct tui *t, double X)
     return t->scene_x0 + X * t->scene_cpm;
 }
 
+/* Elements the chain has: N+1 springs (N for a free end) and N masses. */
+static int elements(const struct tui *t);
+
+/* Keeps the chain selection on an element that exists (a preset or a new N may have
+ * made the chain shorter). */
+static void clamp_elem(struct tui *t)
+{
+    if (t->elem >= elements(t) || t->elem < 0)
+        t->elem = 1;
+}
+
 int tui_selected_mass(const struct tui *t)
 {
     return t->focus == FOCUS_CHAIN && t->elem % 2 == 1 ? t->elem / 2 : -1;
@@ -347,7 +358,6 @@ static int selected_spring(const struct tui *t)
     return t->focus == FOCUS_CHAIN && t->elem % 2 == 0 ? t->elem / 2 : -1;
 }
 
-/* Elements the chain has: N+1 springs (N for a free end) and N masses. */
 static int elements(const struct tui *t)
 {
     const struct model *m = t->app.model;
@@ -902,6 +912,7 @@ static void draw_presets(struct tui *t)
 /* Draws a frame; returns the seconds it took to hand it to the terminal. */
 static double draw(struct tui *t, bool plots)
 {
+    clamp_elem(t);
     erase();
     if (t->too_small) {
         char msg[2][64];
