@@ -98,12 +98,12 @@ static int run_headless(const struct config *c, const struct model *m)
         sim_free(s);
         return EXIT_FAILURE;
     }
-    long long stride = 1;
-    if (c->sample > 0.0) {
-        double r = llround(c->sample / c->dt);
-        stride = r < 1 ? 1 : (long long)r;
-    }
+    /* Steps between rows and steps in all, kept in doubles: whole numbers up to 2^53,
+     * and huge values (--sample 1e300) stay huge instead of overflowing an integer. */
     double total = floor(c->duration / c->dt + 1e-9);
+    double stride = c->sample > 0.0 ? round(c->sample / c->dt) : 1.0;
+    if (stride < 1.0)
+        stride = 1.0;
     output_csv_header(o.fp, n, c->energy);
     output_csv_row(o.fp, s, c->energy, x + 2 * n);
     for (double step = 1; step <= total; step++) {
@@ -114,7 +114,7 @@ static int run_headless(const struct config *c, const struct model *m)
             status = EXIT_FAILURE;
             break;
         }
-        if (fmod(step, (double)stride) == 0.0) {
+        if (fmod(step, stride) == 0.0) {
             output_csv_row(o.fp, s, c->energy, x + 2 * n);
             if (ferror(o.fp))
                 break;
@@ -134,7 +134,9 @@ static int run_modes(const struct config *c, const struct model *m)
     struct output o;
     int status = EXIT_SUCCESS;
     if (!f || !shapes || modes_compute(m, f, shapes) != 0) {
-        options_say(!f || !shapes ? "out of memory" : "the eigenvalue solver (LAPACK dstev) failed");
+        options_say(!f || !shapes ? "out of memory"
+                                  : "the natural frequencies cannot be computed for these values "
+                                    "(LAPACK dstev failed, or the numbers overflow)");
         free(f);
         free(shapes);
         return EXIT_FAILURE;
@@ -162,8 +164,8 @@ static int run_modes(const struct config *c, const struct model *m)
 /* Parses FMIN:FMAX:COUNT; on error says why and returns -1. */
 static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count)
 {
-    const char *expect = "expected FMIN:FMAX:COUNT with 0 < FMIN < FMAX and 2 <= COUNT <= "
-                         "1000000";
+    const char *expect = "expected FMIN:FMAX:COUNT with 0 < FMIN < FMAX <= 1e6 and "
+                         "2 <= COUNT <= 1000000";
     char buf[128], *end;
     if (strlen(spec) >= sizeof buf) {
         options_say("--sweep: '%.40s...' is too long (%s)", spec, expect);
@@ -177,18 +179,18 @@ static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count
     }
     *b++ = '\0';
     *cnt++ = '\0';
-    errno = 0;
     *fmin = strtod(a, &end);
     int bad = end == a || *end || !isfinite(*fmin);
     *fmax = strtod(b, &end);
     bad |= end == b || *end || !isfinite(*fmax);
+    errno = 0;
     *count = strtol(cnt, &end, 10);
     bad |= end == cnt || *end || errno == ERANGE;
     if (bad) {
         options_say("--sweep: '%s' has a value that is not a number (%s)", spec, expect);
         return -1;
     }
-    if (!(*fmin > 0.0 && *fmin < *fmax && *count >= 2 && *count <= SWEEP_MAX)) {
+    if (!(*fmin > 0.0 && *fmin < *fmax && *fmax <= 1e6 && *count >= 2 && *count <= SWEEP_MAX)) {
         options_say("--sweep: '%s' is out of range (%s)", spec, expect);
         return -1;
     }
@@ -222,7 +224,7 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
         fprintf(o.fp, ",amp%d", i);
     fputc('\n', o.fp);
     for (long r = 0; r < count; r++) {
-        double f = r == count - 1 ? fmax : fmin + (fmax - fmin) * (double)r / (count - 1);
+        double f = r == count - 1 ? fmax : fmin + (fmax - fmin) * ((double)r / (count - 1));
         if (modes_response(m, f, amp) != 0) {
             /* An undamped chain exactly at a natural frequency has no steady state. */
             for (int i = 0; i < n; i++)

@@ -180,8 +180,15 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             input_print_keys(stdout);
             return fflush(stdout) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
         }
-        if (k == CFG_PRESET)
+        if (k == CFG_PRESET) {
+            /* The last one counts, but every one must exist. */
+            if (preset_find(optarg, exe_dir, cli->preset_path, sizeof cli->preset_path) ==
+                PRESET_NONE) {
+                options_say("--preset: %s", cli->preset_path);
+                return EXIT_USAGE;
+            }
             preset = optarg;
+        }
     }
     if (preset) {
         enum preset_status st = preset_find(preset, exe_dir, cli->preset_path,

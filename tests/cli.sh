@@ -515,6 +515,28 @@ if expect_ok --version; then
     fi
 fi
 
+# 12. Found in review: every --preset given must exist; a huge --sample means only the
+# first row; a sweep is bounded like the drive; a negative seed is out of range; a
+# key repeated in a repeated section is an error; -o through a symbolic link writes the
+# file it points to.
+expect_usage_error --preset "'nosuch'" -- -p nosuch -p resonance --modes
+if expect_ok --headless --duration 0.05 --sample 1e300; then
+    expect_equal "--sample 1e300: data rows" 1 "$(data_rows "$out")"
+fi
+expect_usage_error --sweep "'1:1e308:4'" "<= 1e6" -- --sweep 1:1e308:4
+expect_usage_error --frequency "'1e12'" "<= 1e6" -- --headless --frequency 1e12
+expect_usage_error --seed "'-1'" "out of range" -- --headless --seed -1
+printf '[system]\nmass = 1\n[system]\nmass = 2\n' >"$tmp/twice.ini"
+expect_one_line_error 2 "twice.ini:4:
+'mass' is given twice" -p "$tmp/twice.ini" --modes
+printf 'old\n' >"$tmp/target.csv"
+ln -s target.csv "$tmp/link.csv"
+if expect_ok --headless --duration 0.1 -o "$tmp/link.csv"; then
+    if [ -L "$tmp/link.csv" ] && [ "$(data_rows "$tmp/target.csv")" -eq 11 ]; then pass; else
+        fail "-o through a symlink: the link was replaced or the target not written"
+    fi
+fi
+
 # 11. Inputs the fuzzers once crashed on (tests/fuzz/regressions/preset-*): each is now
 # a clean one-line error with exit 2.
 for f in "$(dirname "$0")"/fuzz/regressions/preset-*; do

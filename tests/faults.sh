@@ -108,6 +108,26 @@ if command -v tmux >/dev/null 2>&1; then
     esac
     case $scr in *nan* | *NaN* | *inf*) fail "interactive: nan or inf on screen" ;; *) pass ;; esac
     tmux -L "$sock" kill-server 2>/dev/null
+    # Found in review: with spring 10 of a 10-mass chain selected, loading a one-mass
+    # preset kept the selection past the end of the chain (an out-of-bounds read).
+    sock=$sock-sel
+    tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 \
+        "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM -n 10; echo EXITED \$?; sleep 5"
+    sleep 0.6
+    tmux -L "$sock" send-keys Tab Up Up 2>/dev/null
+    sleep 0.2
+    tmux -L "$sock" send-keys p 2>/dev/null
+    sleep 0.3
+    tmux -L "$sock" send-keys Down Enter 2>/dev/null
+    sleep 0.5
+    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
+    case $scr in
+    *EXITED*) fail "loading a shorter preset with the chain focused killed the program" ;;
+    *"spring 10"*) fail "the selection stayed on spring 10 of a one-mass chain" ;;
+    *"mass 1: m"*) pass ;;
+    *) fail "after loading a shorter preset the chain selection is not on mass 1: $(printf '%s\n' "$scr" | sed -n 6p)" ;;
+    esac
+    tmux -L "$sock" kill-server 2>/dev/null
     # --low-bandwidth shows in the status line and on its control, which turns it off.
     sock=$sock-lowbw
     tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 \

@@ -122,7 +122,8 @@ static const char *parse_number(const char *s, double *out)
     double v = strtod(s, &end);
     if (end == s || *end != '\0' || s[0] == ' ' || s[0] == '\t')
         return "is not a number";
-    if (!isfinite(v) || errno == ERANGE)
+    /* ERANGE with a tiny result is an underflow: a valid, very small number. */
+    if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
         return "is not a finite number";
     *out = v;
     return NULL;
@@ -226,7 +227,9 @@ static const char *parse_whole(const char *s, unsigned long long *out)
         return "is empty";
     if (strspn(s, "0123456789") != strlen(s)) {
         double d;
-        return parse_number(s, &d) ? "is not a number" : "is not a whole number";
+        if (parse_number(s, &d))
+            return "is not a number";
+        return d < 0.0 && d == floor(d) ? "is out of range" : "is not a whole number";
     }
     errno = 0;
     unsigned long long v = strtoull(s, &end, 10);
@@ -334,18 +337,20 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
 static void wrong_length(const struct config_list *l, int elements, const char *what,
                          char *err, size_t errlen)
 {
-    char text[160], q[96];
+    /* The first values as given (well, as read), then "..." if there are more. */
+    char text[48];
     size_t used = 0;
-    text[0] = '\0';
-    for (int i = 0; i < l->count && used < sizeof text - 1; i++) {
-        int w = snprintf(text + used, sizeof text - used, i ? ",%g" : "%g", l->v[i]);
-        if (w < 0)
+    int i = 0;
+    for (; i < l->count; i++) {
+        char one[32];
+        int w = snprintf(one, sizeof one, i ? ",%g" : "%g", l->v[i]);
+        if (used + (size_t)w + 4 > sizeof text)
             break;
+        memcpy(text + used, one, (size_t)w + 1);
         used += (size_t)w;
     }
-    quote(text, q, sizeof q);
-    snprintf(err, errlen, "%s has %d values for %d %s (expected 1 or %d)", q, l->count,
-             elements, what, elements);
+    snprintf(err, errlen, "'%s%s' has %d values for %d %s (expected 1 or %d)", text,
+             i < l->count ? ",..." : "", l->count, elements, what, elements);
 }
 
 /* Checks a list's length against the element count and expands it into dst. */

@@ -49,8 +49,13 @@ int modes_compute(const struct model *m, double *freq, double *shapes)
         free(z);
         return (int)info;
     }
-    for (int j = 0; j < n; j++)
+    for (int j = 0; j < n; j++) {
+        if (!isfinite(freq[j])) { /* the values overflowed: no answer, not a wrong one */
+            free(z);
+            return -2;
+        }
         freq[j] = sqrt(freq[j] > 0.0 ? freq[j] : 0.0) / (2.0 * M_PI);
+    }
     if (shapes) {
         /* Column j of z is eigenvector j; phi = M^(-1/2) z. */
         for (int j = 0; j < n; j++) {

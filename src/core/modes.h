@@ -10,7 +10,8 @@
 
 /* Natural frequencies (Hz, ascending) into freq[N] and, if shapes is not NULL, mode
  * shapes into shapes[j*N + i] (mode j, mass i), each scaled so its largest |component|
- * is 1 and that component is positive. Returns 0, -1 on no memory, or LAPACK's info. */
+ * is 1 and that component is positive. Returns 0, -1 on no memory, -2 when the numbers
+ * overflow, or LAPACK's info. */
 int modes_compute(const struct model *m, double *freq, double *shapes);
 
 /* Index of the frequency in f[0..n-1] closest to freq. */

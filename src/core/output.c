@@ -54,8 +54,15 @@ int output_open(struct output *o, const char *path)
     mode_t mask = umask(0);
     umask(mask);
     mode_t mode = stat(path, &st) == 0 ? st.st_mode & 07777 : 0666 & ~mask;
+    /* Through a symbolic link: replace the file it points to, not the link. */
+    char *real = NULL;
+    struct stat lst;
+    if (lstat(path, &lst) == 0 && S_ISLNK(lst.st_mode) && (real = realpath(path, NULL)))
+        path = real;
     size_t n = strlen(path);
     o->path = strdup(path);
+    free(real);
+    path = o->path;
     o->tmp = malloc(n + 16);
     if (!o->path || !o->tmp) {
         forget(o);

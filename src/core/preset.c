@@ -27,9 +27,9 @@ struct parse {
     const char *path;     /* for messages and origins */
     struct config *c;     /* what the preset sets */
     int *lines;           /* line of each handler call, in order */
+    char *cont;           /* whether that call is a continuation line of the key before */
     int nlines;           /* handler calls expected */
     int call;             /* handler calls so far */
-    char prev_key[64];    /* key of the previous call, for continuation lines */
     char *joined;         /* value of the current key so far, continuations appended */
     size_t joined_cap;    /* bytes in joined */
     int pending;          /* line of a value, empty or ending in ',', awaiting its rest, or 0 */
@@ -76,8 +76,9 @@ static int prescan(struct parse *p, const char *text, size_t size)
     int have_key = 0, line = 0;
     const char *s = text, *end = text + size;
 
-    if (size >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0)
-        s += 3;
+    /* A BOM counts towards the first line's length (inih reads it as part of the line)
+     * but not towards what the line says. */
+    int bom = size >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
     while (s < end) {
         const char *nl = memchr(s, '\n', (size_t)(end - s));
         const char *eol = nl ? nl : end;
@@ -91,7 +92,7 @@ static int prescan(struct parse *p, const char *text, size_t size)
                      "(continue a long list on indented lines)", PRESET_MAX_LINE);
             return line;
         }
-        const char *start = skip_blank(s, eol);
+        const char *start = skip_blank(line == 1 ? s + bom : s, eol);
         if (start == eol || *start == ';' || *start == '#') {
             /* blank or comment */
         } else if (*start == '[') {
@@ -107,10 +108,10 @@ static int prescan(struct parse *p, const char *text, size_t size)
                          "[system], [motor], [initial] or [run])", name);
                 return line;
             }
-            have_key = 0;
-            nseen = 0;
+            have_key = 0; /* keys are unique across sections, so 'seen' goes on */
         } else if (have_key && start > s) {
-            p->lines[p->nlines++] = line; /* continuation of the previous key */
+            p->cont[p->nlines] = 1; /* continuation of the previous key */
+            p->lines[p->nlines++] = line;
         } else {
             const char *sep = start;
             while (sep < eol && *sep != '=' && *sep != ':')
@@ -133,6 +134,7 @@ static int prescan(struct parse *p, const char *text, size_t size)
                 seen_line[nseen++] = line;
             }
             have_key = 1;
+            p->cont[p->nlines] = 0;
             p->lines[p->nlines++] = line;
         }
         s = nl ? nl + 1 : end;
@@ -180,6 +182,7 @@ static int handler(void *user, const char *section, const char *name, const char
 {
     struct parse *p = user;
     int line = p->call < p->nlines ? p->lines[p->call] : 0;
+    int continued = p->call < p->nlines && p->cont[p->call];
     p->call++;
     if (p->err_line)
         return 1; /* report the first error only */
@@ -187,10 +190,8 @@ static int handler(void *user, const char *section, const char *name, const char
     char msg[512];
     if (*name == '\0')
         return handler_fail(p, line, "a key name is missing before '='");
-    int continued = p->call > 1 && strcmp(name, p->prev_key) == 0;
     if (p->pending && !continued && !check_pending(p))
         return 0;
-    snprintf(p->prev_key, sizeof p->prev_key, "%s", name);
     size_t have = continued ? strlen(p->joined) : 0;
     size_t add = strlen(value);
     if (have + add + 2 > p->joined_cap) {
@@ -332,9 +333,10 @@ enum preset_status preset_parse(const char *path, const char *text, size_t size,
 
     struct parse p = {.path = path, .c = c};
     p.lines = malloc((size / 2 + 2) * sizeof *p.lines); /* a value line has 2+ bytes */
+    p.cont = malloc(size / 2 + 2);
     p.joined_cap = 2 * size + 64;
     p.joined = calloc(p.joined_cap, 1);
-    if (!p.lines || !p.joined) {
+    if (!p.lines || !p.cont || !p.joined) {
         snprintf(err, errlen, "%s: %s", path, strerror(ENOMEM));
         st = PRESET_IO;
         goto out;
@@ -357,6 +359,7 @@ enum preset_status preset_parse(const char *path, const char *text, size_t size,
     }
 out:
     free(p.lines);
+    free(p.cont);
     free(p.joined);
     free(copy);
     return st;

@@ -100,6 +100,11 @@ static void draw_response(struct tui *t, bool refresh)
         tui_putn(r.y + 3, r.x + 3, r.w - 6, "choose Right end = motor to see its response.");
         return;
     }
+    if (m->motor.amplitude <= 0.0) {
+        tui_putn(r.y + 2, r.x + 3, r.w - 6, "The motor's amplitude is 0: nothing drives the chain.");
+        tui_putn(r.y + 3, r.x + 3, r.w - 6, "Raise the Amplitude to see its response.");
+        return;
+    }
     int W = 2 * c->cols, H = 4 * c->rows;
     /* The theory curve: a zgtsv solve per dot column, so only when the chain changed
      * (app->version) or the view's width did, not on every refresh. */
