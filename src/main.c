@@ -242,6 +242,25 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
     return status;
 }
 
+/* The interactive program's narrower ranges (SPEC: 1 to 10 masses, dt from 0.001 s):
+ * EXIT_SUCCESS, or EXIT_USAGE after one line naming the value. */
+static int interactive_limits(const struct config *c)
+{
+    char value[32], why[160];
+    int key = c->dt < 0.001 ? CFG_DT : c->masses > 10 ? CFG_MASSES : -1;
+    if (key < 0)
+        return EXIT_SUCCESS;
+    if (key == CFG_DT)
+        snprintf(value, sizeof value, "%g", c->dt);
+    else
+        snprintf(value, sizeof value, "%d", c->masses);
+    snprintf(why, sizeof why, "'%s' is out of range for the interactive program (expected %s)",
+             value, key == CFG_DT ? "0.001 <= dt <= 0.05"
+                                  : "1 <= N <= 10; --headless takes up to 1000");
+    options_report_key(c, key, why);
+    return EXIT_USAGE;
+}
+
 int main(int argc, char **argv)
 {
     static struct config c; /* large: lists of up to 1001 values */
@@ -286,23 +305,9 @@ int main(int argc, char **argv)
         status = run_sweep(&c, m, cli.sweep);
         break;
     default:
-        if (c.dt < 0.001) {
-            char why[160];
-            snprintf(why, sizeof why, "'%g' is out of range for the interactive program "
-                     "(expected 0.001 <= dt <= 0.05)", c.dt);
-            options_report_key(&c, CFG_DT, why);
-            status = EXIT_USAGE;
-            break;
-        }
-        if (c.masses > 10) {
-            char why[160];
-            snprintf(why, sizeof why, "'%d' is out of range for the interactive program "
-                     "(expected 1 <= N <= 10; --headless takes up to 1000)", c.masses);
-            options_report_key(&c, CFG_MASSES, why);
-            status = EXIT_USAGE;
-            break;
-        }
-        status = tui_run(&c, exe_dir);
+        status = interactive_limits(&c);
+        if (status == EXIT_SUCCESS)
+            status = tui_run(&c, exe_dir);
         break;
     }
     model_free(m);

@@ -520,6 +520,8 @@ fi
 # key repeated in a repeated section is an error; -o through a symbolic link writes the
 # file it points to.
 expect_usage_error --preset "'nosuch'" -- -p nosuch -p resonance --modes
+expect_usage_error --masses "'20'" "interactive" -- -n 20
+expect_usage_error --dt "'0.0005'" "interactive" -- --dt 0.0005
 if expect_ok --headless --duration 0.05 --sample 1e300; then
     expect_equal "--sample 1e300: data rows" 1 "$(data_rows "$out")"
 fi
