@@ -575,41 +575,39 @@ static void draw_plot(struct tui *t, struct plotview *p, double t_now, bool refr
                        : (t->utf8 ? plot_titles[idx] : plot_titles_ascii[idx]), true);
     if (r.w < 12 || r.h < 6)
         return;
-    const double *first = trail_first(tr);
-    int count = tr->count;
     double t0 = t_now - APP_WINDOW;
-    /* The samples inside the window. */
-    int start = 0;
-    while (start < count && first[(size_t)start * tr->width + TRAIL_T] < t0)
-        start++;
-    const double *rec = first + (size_t)start * tr->width;
-    int k = count - start;
     bool motor = idx == 0 && m->boundary == BOUNDARY_MOTOR;
-
-    if (refresh)
-        p->t_now = t_now;
-    t_now = p->t_now;
-    t0 = t_now - APP_WINDOW;
-    /* Autoscale over what is shown. */
-    double ymin = INFINITY, ymax = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
-    for (int s = 0; s < k; s++) {
-        const double *q = rec + (size_t)s * tr->width;
-        for (int i = 0; i < m->n; i++) {
-            double yv = quantity(tr, q, p->yq, i);
-            ymin = fmin(ymin, yv), ymax = fmax(ymax, yv);
-            if (p->xq) {
-                double xv = quantity(tr, q, p->xq, i);
-                xmin = fmin(xmin, xv), xmax = fmax(xmax, xv);
-            }
-        }
-        if (motor)
-            ymin = fmin(ymin, q[TRAIL_U]), ymax = fmax(ymax, q[TRAIL_U]);
-    }
     int yticks = c->rows >= 8 ? 4 : 2, xticks = c->cols >= 30 ? 4 : 2;
-    if (k > 0 && refresh) {
-        plot_scale_update(&p->ys, ymin, ymax, yticks, 30);
-        if (p->xq)
-            plot_scale_update(&p->xs, xmin, xmax, xticks, 30);
+    /* Only a refresh looks at the samples: the ones inside the window, and their range
+     * for the autoscale. Frames in between draw the dots the last refresh left. */
+    const double *rec = NULL;
+    int k = 0;
+    if (refresh) {
+        const double *first = trail_first(tr);
+        int start = 0;
+        while (start < tr->count && first[(size_t)start * tr->width + TRAIL_T] < t0)
+            start++;
+        rec = first + (size_t)start * tr->width;
+        k = tr->count - start;
+        double ymin = INFINITY, ymax = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
+        for (int s = 0; s < k; s++) {
+            const double *q = rec + (size_t)s * tr->width;
+            for (int i = 0; i < m->n; i++) {
+                double yv = quantity(tr, q, p->yq, i);
+                ymin = fmin(ymin, yv), ymax = fmax(ymax, yv);
+                if (p->xq) {
+                    double xv = quantity(tr, q, p->xq, i);
+                    xmin = fmin(xmin, xv), xmax = fmax(xmax, xv);
+                }
+            }
+            if (motor)
+                ymin = fmin(ymin, q[TRAIL_U]), ymax = fmax(ymax, q[TRAIL_U]);
+        }
+        if (k > 0) {
+            plot_scale_update(&p->ys, ymin, ymax, yticks, 30);
+            if (p->xq)
+                plot_scale_update(&p->xs, xmin, xmax, xticks, 30);
+        }
     }
     if (!p->ys.set)
         plot_scale_update(&p->ys, -1.0, 1.0, yticks, 30);

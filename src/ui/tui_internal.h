@@ -33,7 +33,6 @@ struct plotview {
     struct scale xs, ys; /* axis scales (xs unused for time plots) */
     struct canvas *canvas;
     struct rect r;       /* frame */
-    double t_now;        /* time of the samples last taken */
 };
 
 struct tui {
@@ -52,7 +51,8 @@ struct tui {
     enum view view;         /* what the plot area shows */
     struct rect area;       /* the plot area */
     struct canvas *view_canvas; /* the analysis views' dots */
-    struct scale view_ys;   /* the energy view's scale */
+    struct scale view_ys;   /* the energy view's scale (the response view's decades) */
+    double view_peak;       /* the energy view's largest kinetic or potential energy */
     enum edit_target edit_target;
     char save_name[256];    /* name waiting for the replace confirmation */
     struct preset_entry *presets; /* the menu's entries */

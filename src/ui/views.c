@@ -248,7 +248,6 @@ static void draw_energy(struct tui *t, bool refresh)
     sim_energy(app->sim, &e);
     char title[160];
     double drift = app_energy_drift(app);
-    double peak = 0.0;
     snprintf(title, sizeof title, "Energy (J): balance %.6g J, drift %.2e J", e.balance, drift);
     tui_frame(t, r, title, true);
     if (!c)
@@ -257,24 +256,30 @@ static void draw_energy(struct tui *t, bool refresh)
                                                       "motor work", "collisions"};
     static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
                                                PAIR_MOTOR, PAIR_WARN};
-    const double *first = trail_first(tr);
     double t_now = sim_time(app->sim), t0 = t_now - APP_WINDOW;
-    int start = 0;
-    while (start < tr->count && first[(size_t)start * tr->width + TRAIL_T] < t0)
-        start++;
-    const double *rec = first + (size_t)start * tr->width;
-    int k = tr->count - start;
-    double lo = 0.0, hi = 0.0;
-    for (int s = 0; s < k; s++)
-        for (int q = 0; q < TRAIL_ENERGIES; q++) {
-            double v = rec[(size_t)s * tr->width + TRAIL_E(tr, q)];
-            lo = fmin(lo, v), hi = fmax(hi, v);
-            if (q < 2)
-                peak = fmax(peak, v);
-        }
     int yticks = c->rows >= 8 ? 5 : 3;
-    if (refresh)
+    /* Only a refresh looks at the samples (the window, the scale, the peak energy). */
+    const double *rec = NULL;
+    int k = 0;
+    if (refresh) {
+        const double *first = trail_first(tr);
+        int start = 0;
+        while (start < tr->count && first[(size_t)start * tr->width + TRAIL_T] < t0)
+            start++;
+        rec = first + (size_t)start * tr->width;
+        k = tr->count - start;
+        double lo = 0.0, hi = 0.0;
+        t->view_peak = 0.0;
+        for (int s = 0; s < k; s++)
+            for (int q = 0; q < TRAIL_ENERGIES; q++) {
+                double v = rec[(size_t)s * tr->width + TRAIL_E(tr, q)];
+                lo = fmin(lo, v), hi = fmax(hi, v);
+                if (q < 2)
+                    t->view_peak = fmax(t->view_peak, v);
+            }
         plot_scale_update(&t->view_ys, lo, hi, yticks, 30);
+    }
+    double peak = t->view_peak;
     if (!t->view_ys.set)
         plot_scale_update(&t->view_ys, 0.0, 1.0, yticks, 30);
     const struct scale *ys = &t->view_ys;
