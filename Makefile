@@ -33,8 +33,10 @@ TEST_LIBS = $(shell $(PKG_CONFIG) --libs cmocka)
 CORE_SRC = $(wildcard src/core/*.c)
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
 CORE_LIB = $(BUILD)/libspringsim-core.a
-UI_SRC = $(wildcard src/ui/*.c)
-UI_OBJ = $(UI_SRC:src/%.c=$(BUILD)/%.o)
+APP_SRC = $(wildcard src/app/*.c)
+APP_OBJ = $(APP_SRC:src/%.c=$(BUILD)/%.o)
+TUI_SRC = $(wildcard src/tui/*.c)
+TUI_OBJ = $(TUI_SRC:src/%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -58,18 +60,24 @@ $(BUILD)/.deps-test: | $(BUILD)/.deps-build
 deps: $(BUILD)/.deps-build
 deps-test: $(BUILD)/.deps-test
 
-# The core never sees curses: this fails the build if a core file includes it, and the
-# core is compiled without the ncurses flags and its tests linked without -lncursesw.
-$(BUILD)/.core-pure: $(wildcard src/core/*.[ch]) | $(BUILD)/.deps-build
-	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h)' \
-	    src/core/*.[ch]; then echo "error: src/core must not include curses" >&2; exit 1; fi
+# The core and the app never see curses: this fails the build if one of their files
+# includes it (or a tui header), and both are compiled without the ncurses flags and
+# their tests linked without -lncursesw.
+$(BUILD)/.core-pure: $(wildcard src/core/*.[ch] src/app/*.[ch]) | $(BUILD)/.deps-build
+	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h|\.\./tui/)' \
+	    src/core/*.[ch] src/app/*.[ch]; then \
+	    echo "error: src/core and src/app must not include curses" >&2; exit 1; fi
 	@touch $@
 
 $(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
 
-$(BUILD)/ui/%.o: src/ui/%.c | $(BUILD)/.deps-build
+$(BUILD)/app/%.o: src/app/%.c | $(BUILD)/.core-pure
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+
+$(BUILD)/tui/%.o: src/tui/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
 
@@ -89,14 +97,13 @@ $(CORE_LIB): $(CORE_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(BIN): $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(UI_OBJ) $(CORE_LIB) $(UI_LIBS) $(CORE_LIBS)
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB) $(UI_LIBS) \
+	    $(CORE_LIBS)
 
-# The pure UI parts (no curses) are unit-tested like the core.
-UI_PURE_OBJ = $(BUILD)/ui/braille.o $(BUILD)/ui/plot.o $(BUILD)/ui/app.o $(BUILD)/ui/trail.o
-UI_PURE_TESTS = $(BUILD)/tests/test_braille $(BUILD)/tests/test_plot $(BUILD)/tests/test_app
-$(UI_PURE_TESTS): $(UI_PURE_OBJ)
-$(UI_PURE_TESTS): TEST_EXTRA = $(UI_PURE_OBJ)
+# The app (no curses) is unit-tested like the core: every test links it.
+$(TEST_BIN): $(APP_OBJ)
+$(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
 
 $(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
 	@mkdir -p $(@D)
@@ -164,7 +171,7 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 FUZZ_SECONDS ?= 60
 FUZZ_CC = clang
 FUZZ_FLAGS = -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-FUZZ_SRC = $(CORE_SRC) src/options.c src/ui/input.c
+FUZZ_SRC = $(CORE_SRC) src/options.c src/tui/input.c
 FUZZ_TARGETS = preset options
 
 fuzz: | $(BUILD)/.deps-build
@@ -199,4 +206,4 @@ uninstall:
 clean:
 	rm -rf $(BUILD) springsim
 
--include $(CORE_OBJ:.o=.d) $(UI_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)
+-include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TUI_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)

@@ -19,7 +19,7 @@
 #include "core/preset.h"
 #include "core/sim.h"
 #include "options.h"
-#include "ui/tui.h"
+#include "tui/tui.h"
 
 #define SWEEP_MAX 1000000 /* rows a sweep may ask for */
 

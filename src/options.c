@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "core/preset.h"
-#include "ui/input.h"
+#include "tui/input.h"
 
 #ifndef VERSION
 #define VERSION "0.1.0"

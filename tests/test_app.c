@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "core/preset.h"
-#include "ui/app.h"
+#include "app/app.h"
 
 static struct app app;
 static struct config cfg;

@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-#include "ui/braille.h"
+#include "app/braille.h"
 
 static void dot_bits(void **state)
 {

@@ -5,7 +5,7 @@
 
 #include <string.h>
 
-#include "ui/plot.h"
+#include "app/plot.h"
 
 static void ticks(void **state)
 {

@@ -8,9 +8,9 @@
 #include <curses.h>
 
 #include "../core/preset.h"
-#include "app.h"
-#include "braille.h"
-#include "plot.h"
+#include "../app/app.h"
+#include "../app/braille.h"
+#include "../app/plot.h"
 
 /* Colour pairs. */
 enum { PAIR_MASS = 1, PAIR_MOTOR = 11, PAIR_SPRING, PAIR_DIM, PAIR_TITLE, PAIR_WARN,
