@@ -35,6 +35,10 @@ enum action {
     ACT_SAVE,      /* save the set-up as a preset */
     ACT_EXPORT,    /* export the recorded samples as CSV */
     ACT_DAMPING,   /* chain: the selected mass's own damping */
+    ACT_ENLARGE,   /* enlarge the plot of the digit pressed (again: the grid) */
+    ACT_GRID,      /* all plots again */
+    ACT_NARROWER,  /* shorter time window */
+    ACT_WIDER,     /* longer time window */
 };
 
 struct binding {

@@ -1,359 +1,337 @@
-/* views.c: the analysis views that can take the plot area: the modes (every natural
- * frequency with its shape), the frequency response (theory on a log axis, with the
- * sine-sweep experiment's measured peaks over it), and the energy balance. */
+/* views.c: the modes, frequency response and energy views, each a chart over the plot
+ * area, each with the state it needs kept in its own struct. */
+#include "views.h"
+
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../core/modes.h"
-#include "tui_internal.h"
+#include "draw.h"
+#include "term.h"
+
+static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5",
+                                          "━6", "━7", "━8", "━9", "━10"};
+
+bool views_place(struct views *v, const struct layout *l)
+{
+    bool ok = chart_place(&v->modes, l->area, 0);
+    ok &= chart_place(&v->response.chart, l->area, 0);
+    ok &= chart_place(&v->energy.chart, l->area, 2);
+    v->response.version = 0;
+    return ok;
+}
+
+void views_free(struct views *v)
+{
+    chart_free(&v->modes);
+    chart_free(&v->response.chart);
+    chart_free(&v->energy.chart);
+    free(v->response.curve);
+    v->response.curve = NULL;
+}
+
+void views_toggle(struct views *v, enum view w)
+{
+    v->shown = v->shown == w ? VIEW_PLOTS : w;
+    v->energy.chart.ys.set = false;
+    v->response.version = 0;
+}
 
 /* ---- modes ---- */
 
-static void draw_modes(struct tui *t)
+/* One mode's shape in cell r: its frequency on the first row, under it the chain from
+ * the wall to the end with each mass at its displacement, about a zero line. */
+static void draw_mode(const struct app *app, int j, struct rect r, bool driven)
 {
-    const struct app *app = &t->app;
     const struct model *m = app->model;
     int n = m->n;
-    struct rect r = t->area;
-    tui_frame(t, r, "Modes: natural frequencies and shapes (n drives the nearest)", true);
+    attron(driven ? term_attr(PAIR_MOTOR) | A_BOLD : A_BOLD);
+    draw_printf(r.y, r.x + 1, r.w - 2, "mode %d  %.4g Hz%s", j + 1, app->modes[j],
+                driven ? "  ◆ driven" : "");
+    attroff(term_attr(PAIR_MOTOR) | A_BOLD);
+    int dh = r.h - 1, dw = r.w - 2;
+    if (dh < 1 || dw < 4)
+        return;
+    struct canvas *c = canvas_new(dw, dh);
+    if (!c)
+        return;
+    const double *phi = app->shapes + (size_t)j * n;
+    int H = 4 * dh, W = 2 * dw;
+    double mid = 0.5 * (H - 1), amp = 0.5 * (H - 1) - 1.0;
+    /* The zero line: the chain at rest. */
+    int zrow = r.y + 1 + (int)lround(mid) / 4;
+    attron(term_attr(PAIR_GRID));
+    mvhline(zrow, r.x + 1, term_utf8() ? ACS_HLINE : '-', dw);
+    attroff(term_attr(PAIR_GRID));
+    int x0 = 0, y0 = (int)lround(mid);
+    for (int i = 0; i <= n; i++) {
+        if (i == n && m->boundary == BOUNDARY_FREE)
+            break;
+        int x = i < n ? (int)lround((double)(i + 1) * (W - 1) / (n + 1)) : W - 1;
+        int y = (int)lround(mid - amp * (i < n ? phi[i] : 0.0));
+        canvas_line(c, x0, y0, x, y, 0);
+        x0 = x, y0 = y;
+    }
+    for (int i = 0; i < n; i++) {
+        int x = (int)lround((double)(i + 1) * (W - 1) / (n + 1));
+        int y = (int)lround(mid - amp * phi[i]);
+        for (int dx = -1; dx <= 1; dx++)
+            for (int dy = -1; dy <= 1; dy++)
+                canvas_set(c, x + dx, y + dy, (uint8_t)(PAIR_MASS + i % 10));
+    }
+    draw_canvas(c, r.y + 1, r.x + 1);
+    canvas_free(c);
+}
+
+static void draw_modes(struct views *v, const struct app *app)
+{
+    const struct model *m = app->model;
+    int n = m->n;
+    chart_draw(&v->modes, "Modes: natural frequencies and shapes (n drives the nearest)",
+               "Modes", NULL, NULL, 0);
+    struct rect f = v->modes.frame, in = {f.y + 1, f.x + 1, f.h - 2, f.w - 2};
     if (!app->modes_ok) {
-        tui_putn(r.y + 1, r.x + 2, r.w - 4, "the eigenvalue solver failed for these values");
+        draw_text(in.y, in.x + 1, in.w - 2, "the eigenvalue solver failed for these values");
         return;
     }
-    int inner_w = r.w - 2, inner_h = r.h - 2;
-    int cols = inner_w / 24 > 0 ? inner_w / 24 : 1;
-    if (cols > n)
-        cols = n;
-    int rows = (n + cols - 1) / cols;
-    int ph = inner_h / rows, pw = inner_w / cols;
-    if (ph < 2)
-        ph = 2;
+    /* The grid of cells that gives each shape the most room (shapes are wide). */
+    int best_cols = 1;
+    double best = -1.0;
+    for (int cols = 1; cols <= n; cols++) {
+        int rows = (n + cols - 1) / cols;
+        double score = fmin((double)(in.w / cols) / 4.0, (double)(in.h / rows));
+        if (score > best)
+            best = score, best_cols = cols;
+    }
+    int cols = best_cols, rows = (n + cols - 1) / cols;
+    int cw = in.w / cols, ch = in.h / rows;
     int driven = modes_nearest(app->modes, n, m->motor.frequency);
-    bool on_mode = fabs(m->motor.frequency - app->modes[driven]) <= 0.02 * app->modes[driven];
+    bool on_mode = m->boundary == BOUNDARY_MOTOR &&
+                   fabs(m->motor.frequency - app->modes[driven]) <= 0.02 * app->modes[driven];
     for (int j = 0; j < n; j++) {
-        int py = r.y + 1 + (j / cols) * ph, px = r.x + 1 + (j % cols) * pw;
-        if (py + ph > r.y + r.h - 1 + (ph > 2 ? 0 : 1))
-            break;
-        bool hot = on_mode && j == driven && m->boundary == BOUNDARY_MOTOR;
-        attron(hot ? tui_pair_attr(t, PAIR_MOTOR) | A_BOLD : A_BOLD);
-        tui_printf(py, px + 1, pw - 2, "%d  %.3f Hz%s", j + 1, app->modes[j],
-                   hot ? "  ◆ driven" : "");
-        attroff(tui_pair_attr(t, PAIR_MOTOR) | A_BOLD);
-        /* The shape: the chain from wall to end, each mass at its displacement. */
-        int dh = ph - 2 > 8 ? 8 : ph - 2, dw = pw - 3;
-        if (dh < 1)
-            dh = ph - 1;
-        if (dh < 1 || dw < 4)
+        struct rect r = {in.y + (j / cols) * ch, in.x + (j % cols) * cw, ch, cw};
+        if (ch < 2) {
+            /* No room for shapes: the frequencies alone. */
+            if (r.y < in.y + in.h)
+                draw_printf(r.y, r.x + 1, cw - 1, "%d %.4g Hz", j + 1, app->modes[j]);
             continue;
-        struct canvas *c = canvas_new(dw, dh);
-        if (!c)
-            continue;
-        const double *phi = app->shapes + (size_t)j * n;
-        int H = 4 * dh, W = 2 * dw;
-        double mid = 0.5 * (H - 1), amp = 0.5 * (H - 1);
-        int x0 = 0, y0 = (int)lround(mid);
-        for (int i = 0; i <= n; i++) {
-            int x = (int)lround((double)(i + 1) * (W - 1) / (n + 1));
-            double v = i < n ? phi[i] : 0.0;
-            if (i == n && m->boundary == BOUNDARY_FREE)
-                break;
-            int y = (int)lround(mid - amp * v);
-            canvas_line(c, x0, y0, x, y, PAIR_DIM);
-            x0 = x, y0 = y;
         }
-        for (int i = 0; i < n; i++) {
-            /* Each mass as a small block in its colour. */
-            int x = (int)lround((double)(i + 1) * (W - 1) / (n + 1));
-            int y = (int)lround(mid - amp * phi[i]);
-            for (int d = -1; d <= 1; d++) {
-                canvas_set(c, x, y + d, (uint8_t)(PAIR_MASS + i % 10));
-                canvas_set(c, x + 1, y + d, (uint8_t)(PAIR_MASS + i % 10));
-            }
-        }
-        tui_canvas(t, c, py + 1, px + 2);
-        canvas_free(c);
+        draw_mode(app, j, r, on_mode && j == driven);
     }
 }
 
 /* ---- frequency response ---- */
 
-/* Column of frequency f on a canvas w dots wide over [APP_FMIN, APP_FMAX], log scale
- * (a Bode plot: the modes of a small chain spread out instead of crowding the left). */
-static int freq_dot(double f, int w)
+/* Solves the theory curve for the chain as it is, one solve per dot column. */
+static void solve_curve(struct response_view *rv, const struct app *app, int width)
 {
-    return (int)lround(app_freq_fraction(f) * (w - 1));
-}
-
-static void draw_response(struct tui *t, bool refresh)
-{
-    const struct app *app = &t->app;
     const struct model *m = app->model;
     int n = m->n;
-    struct rect r = t->area;
-    struct canvas *c = t->view_canvas;
-    tui_frame(t, r, "Frequency response: steady-state amplitude (m) against frequency, log-log", true);
-    if (!c)
+    double amp[APP_MAX_MASSES];
+    double *curve = realloc(rv->curve, (size_t)width * n * sizeof *curve);
+    if (!curve)
         return;
-    if (m->boundary != BOUNDARY_MOTOR) {
-        tui_putn(r.y + 2, r.x + 3, r.w - 6, "The right end does not drive the chain:");
-        tui_putn(r.y + 3, r.x + 3, r.w - 6, "choose Right end = motor to see its response.");
-        return;
-    }
-    if (m->motor.amplitude <= 0.0) {
-        tui_putn(r.y + 2, r.x + 3, r.w - 6, "The motor's amplitude is 0: nothing drives the chain.");
-        tui_putn(r.y + 3, r.x + 3, r.w - 6, "Raise the Amplitude to see its response.");
-        return;
-    }
-    int W = 2 * c->cols, H = 4 * c->rows;
-    /* The theory curve: a zgtsv solve per dot column, so only when the chain changed
-     * (app->version) or the view's width did, not on every refresh. */
-    static double amp[APP_MAX_MASSES], curve[1024][APP_MAX_MASSES], curve_top;
-    static unsigned curve_version;
-    static int curve_width;
-    int cw = W < 1024 ? W : 1024;
-    const struct sweep *sw = app->sweep;
-    if (curve_version != app->version || curve_width != cw) {
-        curve_top = 0.0;
-        for (int x = 0; x < cw; x++) {
-            double f = APP_FMIN * pow(APP_FMAX / APP_FMIN, (double)x / (cw - 1));
-            if (modes_response(m, f, amp) != 0)
-                for (int i = 0; i < n; i++)
-                    amp[i] = INFINITY;
-            for (int i = 0; i < n; i++) {
-                curve[x][i] = amp[i];
-                if (isfinite(amp[i]))
-                    curve_top = fmax(curve_top, amp[i]);
-            }
+    rv->curve = curve;
+    rv->top = 0.0;
+    for (int x = 0; x < width; x++) {
+        double f = APP_FMIN * pow(APP_FMAX / APP_FMIN, (double)x / (width > 1 ? width - 1 : 1));
+        bool ok = modes_response(m, f, amp) == 0;
+        for (int i = 0; i < n; i++) {
+            curve[(size_t)x * n + i] = ok ? amp[i] : INFINITY;
+            if (ok && isfinite(amp[i]))
+                rv->top = fmax(rv->top, amp[i]);
         }
-        curve_version = app->version;
-        curve_width = cw;
-        refresh = true;
     }
-    if (refresh || !t->view_ys.set) {
-        /* The four decades below the top of the theory and the measurements. */
-        double top = curve_top;
+    rv->version = app->version;
+    rv->width = width;
+}
+
+/* Lays the decades on the rows and the frequency ticks on the columns. */
+static void response_axes(struct chart *c, double top)
+{
+    int h = c->area.h > 1 ? c->area.h : 1;
+    double hi = ceil(log10(top) - 1e-9);
+    int decades = h >= 9 ? 4 : h >= 5 ? 2 : 1;
+    int spacing = (h - 1) / decades > 0 ? (h - 1) / decades : 1;
+    c->ya = (struct axis){.lo = hi - decades, .step = 1.0, .intervals = decades,
+                          .first = (h - 1 - decades * spacing) / 2, .spacing = spacing,
+                          .cells = h, .dpc = 4};
+    c->yt.n = 0;
+    for (int k = 0; k <= decades && k < CHART_MAX_TICKS; k++) {
+        c->yt.cell[c->yt.n] = c->ya.first + k * spacing;
+        snprintf(c->yt.label[c->yt.n++], sizeof c->yt.label[0], "1e%d", (int)(hi - decades + k));
+    }
+    static const double ticks[] = {0.1, 0.2, 0.5, 1.0, 2.0, 5.0};
+    static const char *const labels[] = {"0.1", "0.2", "0.5", "1", "2", "5"};
+    c->xt.n = 0;
+    for (size_t k = 0; k < sizeof ticks / sizeof *ticks; k++) {
+        c->xt.cell[c->xt.n] = (int)lround(app_freq_fraction(ticks[k]) * (c->area.w - 1));
+        snprintf(c->xt.label[c->xt.n++], sizeof c->xt.label[0], "%s", labels[k]);
+    }
+}
+
+/* Dot row of amplitude a (log scale), H when below the axis. */
+static int amp_dot(const struct chart *c, double a)
+{
+    if (!(a > 0) || !isfinite(a))
+        return 0;
+    int y = chart_dot_y(c, log10(a));
+    return y >= 4 * c->area.h ? 4 * c->area.h : y;
+}
+
+static void draw_response(struct response_view *rv, const struct app *app, bool fresh)
+{
+    const struct model *m = app->model;
+    const struct sweep *sw = app->sweep;
+    struct chart *c = &rv->chart;
+    int n = m->n;
+    const char *title = "Frequency response: steady-state amplitude (m) against frequency, log-log";
+    if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude <= 0.0 || !c->canvas) {
+        chart_draw(c, title, "Response", NULL, NULL, 0);
+        struct rect f = c->frame;
+        bool end = m->boundary != BOUNDARY_MOTOR;
+        draw_text(f.y + 2, f.x + 3, f.w - 6, end ? "The right end does not drive the chain:"
+                                                  : "The motor's amplitude is 0:");
+        draw_text(f.y + 3, f.x + 3, f.w - 6, end ? "choose Right end = motor to see its response."
+                                                  : "raise the Amplitude to see its response.");
+        return;
+    }
+    int W = 2 * c->canvas->cols, H = 4 * c->canvas->rows;
+    if (rv->version != app->version || rv->width != W) {
+        solve_curve(rv, app, W);
+        fresh = true;
+    }
+    if (fresh && rv->curve) {
+        double top = rv->top;
         for (int p = 0; p < sweep_measured(sw); p++)
             for (int i = 0; i < n; i++)
                 if (isfinite(sw->peak[p * n + i]))
                     top = fmax(top, sw->peak[p * n + i]);
-        if (!(top > 0.0))
-            top = 1.0;
-        t->view_ys.hi = ceil(log10(top) - 1e-9);
-        t->view_ys.lo = t->view_ys.hi - 4.0;
-        t->view_ys.set = true;
-        refresh = true;
-    }
-    double dhi = t->view_ys.hi, dlo = t->view_ys.lo;
-    int cx = r.x + 1 + 6, cy = r.y + 1;
-    /* Decade labels and grid. */
-    for (double d = dlo; d <= dhi + 1e-9; d += 1.0) {
-        int row = (int)lround((dhi - d) / (dhi - dlo) * (H - 1)) / 4;
-        char lab[16];
-        snprintf(lab, sizeof lab, "1e%d", (int)d);
-        tui_printf(cy + row, r.x + 1, 6, "%5s", lab);
-        mvaddch(cy + row, r.x + 6, tui_line(L_RTEE));
-        attron(tui_pair_attr(t, PAIR_DIM));
-        for (int col = 0; col < c->cols; col += 2)
-            if (mvinch(cy + row, cx + col) == ' ')
-                mvaddstr(cy + row, cx + col, t->utf8 ? "·" : ".");
-        attroff(tui_pair_attr(t, PAIR_DIM));
-    }
-    int ay = cy + c->rows;
-    mvaddch(ay, r.x + 6, tui_line(L_LL));
-    mvhline(ay, cx, tui_line(L_H), c->cols);
-    static const double ticks[] = {0.1, 0.2, 0.5, 1.0, 2.0, 5.0};
-    for (size_t k = 0; k < sizeof ticks / sizeof *ticks; k++) {
-        double f = ticks[k];
-        int col = freq_dot(f, W) / 2;
-        char lab[16];
-        snprintf(lab, sizeof lab, "%g", f);
-        mvaddch(ay, cx + col, tui_line(L_TTEE));
-        if (cx + col + (int)strlen(lab) < r.x + r.w - 1)
-            tui_put(ay + 1, cx + col - (col > 0), (int)strlen(lab), lab);
-    }
-    tui_put(ay + 1, r.x + 2, 2, "Hz");
-    if (refresh) {
-        canvas_clear(c);
+        response_axes(c, top > 0.0 ? top : 1.0);
+        canvas_clear(c->canvas);
         /* Natural frequencies: dotted verticals; the drive: a solid one. */
-        for (int j = 0; j < n && app->modes_ok; j++) {
-            int x = freq_dot(app->modes[j], W);
+        for (int j = 0; j < n && app->modes_ok; j++)
             for (int y = 0; y < H; y += 3)
-                canvas_set(c, x, y, PAIR_DIM);
-        }
-        canvas_vspan(c, freq_dot(m->motor.frequency, W), 0, H - 1, PAIR_MOTOR);
+                canvas_set(c->canvas, (int)lround(app_freq_fraction(app->modes[j]) * (W - 1)), y,
+                           0);
+        canvas_vspan(c->canvas, (int)lround(app_freq_fraction(m->motor.frequency) * (W - 1)), 0,
+                     H - 1, PAIR_MOTOR);
         for (int i = n - 1; i >= 0; i--) {
-            int py = -1;
-            for (int x = 0; x < cw; x++) {
-                double a = curve[x][i];
-                int y = isfinite(a) && a > 0 ? (int)lround((dhi - log10(a)) / (dhi - dlo) *
-                                                           (H - 1))
-                                             : 0;
-                if (y >= H)
-                    y = H; /* below the axis: not drawn */
-                if (py >= 0 && y < H && py < H)
-                    canvas_line(c, x - 1, py, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            int py = H;
+            for (int x = 0; x < rv->width; x++) {
+                int y = amp_dot(c, rv->curve[(size_t)x * n + i]);
+                if (py < H && y < H)
+                    canvas_line(c->canvas, x - 1, py, x, y, (uint8_t)(PAIR_MASS + i % 10));
                 else if (y < H)
-                    canvas_set(c, x, y, (uint8_t)(PAIR_MASS + i % 10));
+                    canvas_set(c->canvas, x, y, (uint8_t)(PAIR_MASS + i % 10));
                 py = y;
             }
         }
         /* The experiment's measured peaks: 3x3 dot squares over the curves. */
         for (int p = 0; p < sweep_measured(sw); p++) {
-            int x = freq_dot(sw->freq[p], W);
+            int x = (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1));
             for (int i = 0; i < n; i++) {
-                double a = sw->peak[p * n + i];
-                if (!(a > 0))
-                    continue;
-                int y = (int)lround((dhi - log10(a)) / (dhi - dlo) * (H - 1));
-                for (int dx = -1; dx <= 1; dx++)
+                int y = amp_dot(c, sw->peak[p * n + i]);
+                for (int dx = -1; dx <= 1 && y < H; dx++)
                     for (int dy = -1; dy <= 1; dy++)
-                        canvas_set(c, x + dx, y + dy, (uint8_t)(PAIR_MASS + i % 10));
+                        canvas_set(c->canvas, x + dx, y + dy, (uint8_t)(PAIR_MASS + i % 10));
             }
         }
     }
-    tui_canvas(t, c, cy, cx);
-    /* Legend and the experiment's state on the bottom border. */
-    int lx = r.x + 2, ly = r.y + r.h - 1;
-    for (int i = 0; i < n && lx < r.x + r.w - 10; i++) {
-        attron(tui_mass_attr(t, i) | A_BOLD);
-        tui_printf(ly, lx, 3, t->utf8 ? "━%d" : "-%d", i + 1);
-        attroff(tui_mass_attr(t, i) | A_BOLD);
-        lx += i + 1 >= 10 ? 4 : 3;
-    }
     char state[120];
     if (sw->active)
-        snprintf(state, sizeof state, " sweep %d/%d at %.3f Hz (w stops) ", sw->index + 1,
+        snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz (w stops)", sw->index + 1,
                  sw->points, sweep_frequency(sw));
     else if (sweep_measured(sw))
-        snprintf(state, sizeof state, " ■ measured: %d points (w sweeps again) ",
+        snprintf(state, sizeof state, "■ measured: %d points (w sweeps again)",
                  sweep_measured(sw));
     else
-        snprintf(state, sizeof state, " ┃ drive %.3f Hz  ┊ modes  w: sweep experiment ",
-                 m->motor.frequency);
-    attron(tui_pair_attr(t, PAIR_MOTOR));
-    tui_putn(ly, lx + 1, r.x + r.w - lx - 2, state);
-    attroff(tui_pair_attr(t, PAIR_MOTOR));
+        snprintf(state, sizeof state, "┃ drive %.3f Hz  ┊ modes  w: sweep", m->motor.frequency);
+    struct legend_item legend[11];
+    int k = 0;
+    for (int i = 0; i < n && i < 10; i++)
+        legend[k++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
+    legend[k++] = (struct legend_item){state, PAIR_MOTOR};
+    chart_draw(c, title, "Response (m) against Hz", "Hz", legend, k);
 }
 
 /* ---- energy ---- */
 
-static void draw_energy(struct tui *t, bool refresh)
+static void draw_energy(struct energy_view *ev, const struct app *app, bool fresh)
 {
-    const struct app *app = &t->app;
-    const struct trail *tr = app->trail;
-    struct rect r = t->area;
-    struct canvas *c = t->view_canvas;
-    struct energy e;
-    sim_energy(app->sim, &e);
-    char title[160];
-    double drift = app_energy_drift(app);
-    snprintf(title, sizeof title, "Energy (J): balance %.6g J, drift %.2e J", e.balance, drift);
-    tui_frame(t, r, title, true);
-    if (!c)
-        return;
     static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "dissipated",
                                                       "motor work", "collisions"};
     static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
                                                PAIR_MOTOR, PAIR_WARN};
-    double t_now = sim_time(app->sim), t0 = t_now - APP_WINDOW;
-    int yticks = c->rows >= 8 ? 5 : 3;
-    /* Only a refresh looks at the samples (the window, the scale, the peak energy). */
-    const double *rec = NULL;
-    int k = 0;
-    if (refresh) {
-        const double *first = trail_first(tr);
-        int start = 0;
-        while (start < tr->count && first[(size_t)start * tr->width + TRAIL_T] < t0)
-            start++;
-        rec = first + (size_t)start * tr->width;
-        k = tr->count - start;
+    struct chart *c = &ev->chart;
+    const struct trail *tr = app_trail(app);
+    struct energy e;
+    sim_energy(app->sim, &e);
+    double now = sim_time(app->sim), window = app_window(app);
+    if (fresh) {
+        chart_fit_time(c, window);
+        int k;
+        const double *rec = chart_window(tr, now - window, &k);
         double lo = 0.0, hi = 0.0;
-        t->view_peak = 0.0;
+        ev->peak = 0.0;
         for (int s = 0; s < k; s++)
             for (int q = 0; q < TRAIL_ENERGIES; q++) {
-                double v = rec[(size_t)s * tr->width + TRAIL_E(tr, q)];
-                lo = fmin(lo, v), hi = fmax(hi, v);
+                double val = rec[(size_t)s * tr->width + TRAIL_E(tr, q)];
+                lo = fmin(lo, val), hi = fmax(hi, val);
                 if (q < 2)
-                    t->view_peak = fmax(t->view_peak, v);
+                    ev->peak = fmax(ev->peak, val);
             }
-        plot_scale_update(&t->view_ys, lo, hi, yticks, 30);
+        chart_fit_y(c, lo, hi);
+        if (c->canvas) {
+            canvas_clear(c->canvas);
+            for (int q = TRAIL_ENERGIES - 1; q >= 0; q--)
+                plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_E(tr, q), k, (size_t)tr->width,
+                           now, &c->xa, &c->ya, q == TRAIL_WORK, (unsigned char)colors[q]);
+        }
     }
-    double peak = t->view_peak;
-    if (!t->view_ys.set)
-        plot_scale_update(&t->view_ys, 0.0, 1.0, yticks, 30);
-    const struct scale *ys = &t->view_ys;
-    int cx = r.x + 1 + 7, cy = r.y + 1;
-    for (double v = ys->lo; v <= ys->hi + 1e-9 * ys->step; v += ys->step) {
-        int row = (int)lround((1.0 - (v - ys->lo) / (ys->hi - ys->lo)) * (4 * c->rows - 1)) / 4;
-        char lab[16];
-        plot_tick_label(v, ys->step, lab, sizeof lab);
-        tui_printf(cy + row, r.x + 1, 7, "%6.6s", lab);
-        mvaddch(cy + row, r.x + 7, tui_line(L_RTEE));
-    }
-    int ay = cy + c->rows;
-    mvaddch(ay, r.x + 7, tui_line(L_LL));
-    mvhline(ay, cx, tui_line(L_H), c->cols);
-    for (double v = -APP_WINDOW; v <= 1e-9; v += 2.0) {
-        int col = (int)lround((v + APP_WINDOW) / APP_WINDOW * (c->cols - 1));
-        char lab[16];
-        snprintf(lab, sizeof lab, "%g", v);
-        mvaddch(ay, cx + col, tui_line(L_TTEE));
-        int lx = cx + col - (int)strlen(lab) / 2;
-        if (lx + (int)strlen(lab) > r.x + r.w - 1)
-            lx = r.x + r.w - 1 - (int)strlen(lab);
-        tui_put(ay + 1, lx, (int)strlen(lab), lab);
-    }
-    tui_put(ay + 1, r.x + 2, 1, "s");
-    if (refresh) {
-        canvas_clear(c);
-        for (int q = TRAIL_ENERGIES - 1; q >= 0; q--)
-            plot_series(c, rec + TRAIL_T, rec + TRAIL_E(tr, q), k, (size_t)tr->width, t0,
-                        t_now, ys, q == TRAIL_WORK, (uint8_t)colors[q]);
-    }
-    tui_canvas(t, c, cy, cx);
-    /* Legend with the values now; collisions show as steps in their own line. */
-    int lx = r.x + 2, ly = r.y + r.h - 1;
-    const double now[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,
-                                        e.contact};
+    chart_draw(c, "Energy (J) and its balance", "Energy (J)", "s", NULL, 0);
+    /* Above the data: each energy now, in its colour, then how good the balance is. */
+    struct rect f = c->frame;
+    const double vals[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,
+                                         e.contact};
+    int x = f.x + 2, y = f.y + 1;
     for (int q = 0; q < TRAIL_ENERGIES; q++) {
-        char item[64];
-        snprintf(item, sizeof item, " %s %.3g", names[q], now[q]);
-        if (lx + (int)strlen(item) >= r.x + r.w - 1)
+        char item[48];
+        snprintf(item, sizeof item, "━ %s %.3g", names[q], vals[q]);
+        int len = draw_width(item);
+        if (x + len > f.x + f.w - 2)
+            x = f.x + 2, y++;
+        if (y > f.y + 2)
             break;
-        attron(tui_pair_attr(t, colors[q]) | A_BOLD);
-        tui_putn(ly, lx, (int)strlen(item), item);
-        attroff(tui_pair_attr(t, colors[q]) | A_BOLD);
-        lx += (int)strlen(item);
+        draw_text_attr(y, x, len, term_attr(colors[q]) | A_BOLD, item);
+        x += len + 2;
     }
-    /* How good the balance is: the drift against the largest energy seen. */
-    if (r.h > 4) {
-        char line[200];
-        if (e.contact > 0.0)
-            snprintf(line, sizeof line, "kinetic + potential + dissipated + collisions - motor "
-                     "work = %.6g J; collisions took %.4g J (steps in their line)", e.balance,
-                     e.contact);
-        else
-            snprintf(line, sizeof line, "kinetic + potential + dissipated - motor work = %.6g J;"
-                     " drift %.2e J = %.1e of the peak", e.balance, drift,
-                     peak > 0 ? fabs(drift) / peak : 0.0);
-        attron(tui_pair_attr(t, PAIR_DIM));
-        tui_putn(r.y + 1, cx + 1, r.x + r.w - cx - 3, line);
-        attroff(tui_pair_attr(t, PAIR_DIM));
-    }
+    if (y > f.y + 1 || c->area.y <= f.y + 2)
+        return; /* the legend took both rows */
+    double drift = app_energy_drift(app);
+    char line[200];
+    if (e.contact > 0.0)
+        snprintf(line, sizeof line, "kinetic + potential + dissipated + collisions − motor work "
+                 "= %.6g J", e.balance);
+    else
+        snprintf(line, sizeof line, "kinetic + potential + dissipated − motor work = %.6g J, "
+                 "drift %.1e of the peak", e.balance, ev->peak > 0 ? fabs(drift) / ev->peak : 0.0);
+    draw_text(f.y + 2, f.x + 2, f.w - 4, line);
 }
 
-void views_draw(struct tui *t, bool refresh)
+void views_draw(struct views *v, const struct app *app, bool refresh)
 {
-    switch (t->view) {
+    switch (v->shown) {
     case VIEW_MODES:
-        draw_modes(t);
+        draw_modes(v, app);
         break;
     case VIEW_RESPONSE:
-        draw_response(t, refresh);
+        draw_response(&v->response, app, refresh);
         break;
     case VIEW_ENERGY:
-        draw_energy(t, refresh);
+        draw_energy(&v->energy, app, refresh);
         break;
     case VIEW_PLOTS:
         break;

@@ -1,0 +1,192 @@
+/* chart.c: the chart widget. Gridlines sit on whole rows evenly spaced (the axis maths
+ * in src/app/axis.c decides where), tick labels are never cut, and a refresh is the only
+ * time the data is looked at: frames in between redraw the canvas as it was left. */
+#include "chart.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "draw.h"
+#include "term.h"
+
+#define MIN_ROW_GAP 2 /* rows between y gridlines, at least */
+
+bool chart_place(struct chart *c, struct rect frame, int header_rows)
+{
+    struct rect a = layout_drawing(frame);
+    a.y += header_rows;
+    a.h -= header_rows;
+    if (a.h < 0)
+        a.h = 0;
+    c->frame = frame;
+    c->area = a;
+    c->xs.set = c->ys.set = false;
+    if (c->canvas && c->canvas->cols == a.w && c->canvas->rows == a.h) {
+        canvas_clear(c->canvas);
+    } else {
+        canvas_free(c->canvas);
+        c->canvas = a.w > 0 && a.h > 0 ? canvas_new(a.w, a.h) : NULL;
+    }
+    chart_fit_y(c, -1.0, 1.0);
+    c->ys.set = false; /* the first real data fits at once */
+    chart_fit_x(c, -1.0, 1.0);
+    c->xs.set = false;
+    return c->canvas != NULL;
+}
+
+void chart_free(struct chart *c)
+{
+    canvas_free(c->canvas);
+    c->canvas = NULL;
+}
+
+void chart_ticks_from_axis(struct chart_ticks *t, const struct axis *a)
+{
+    t->n = 0;
+    for (int k = 0; k <= a->intervals && t->n < CHART_MAX_TICKS; k++) {
+        int cell = a->first + k * a->spacing;
+        if (cell < 0 || cell >= a->cells)
+            continue;
+        t->cell[t->n] = cell;
+        axis_label(a, k, t->label[t->n], sizeof t->label[t->n]);
+        t->n++;
+    }
+}
+
+/* Intervals an axis of `cells` cells may have, at most. */
+static int max_ticks(int cells, int per_tick)
+{
+    int n = cells / per_tick;
+    return n < 2 ? 2 : n > 8 ? 8 : n;
+}
+
+void chart_fit_y(struct chart *c, double lo, double hi)
+{
+    int h = c->area.h > 1 ? c->area.h : 1;
+    int ticks = max_ticks(h, 3);
+    plot_scale_update(&c->ys, lo, hi, ticks, 30);
+    axis_fit(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
+    chart_ticks_from_axis(&c->yt, &c->ya);
+}
+
+/* Fits axis a on the x cells, its ticks far enough apart for their labels. */
+static void fit_x(struct chart *c, double lo, double hi, bool anchored)
+{
+    int w = c->area.w > 1 ? c->area.w : 1;
+    int ticks = max_ticks(w, 8), gap = 4;
+    for (int tries = 0; tries < 4; tries++) {
+        if (anchored)
+            axis_fit_anchored(&c->xa, lo, hi, ticks, w, 2, gap);
+        else
+            axis_fit(&c->xa, lo, hi, ticks, w, 2, gap);
+        int need = axis_label_width(&c->xa) + 1;
+        if (c->xa.spacing >= need)
+            break;
+        gap = need;
+    }
+    chart_ticks_from_axis(&c->xt, &c->xa);
+}
+
+void chart_fit_x(struct chart *c, double lo, double hi)
+{
+    int w = c->area.w > 1 ? c->area.w : 1;
+    plot_scale_update(&c->xs, lo, hi, max_ticks(w, 8), 30);
+    fit_x(c, c->xs.lo, c->xs.hi, false);
+}
+
+void chart_fit_time(struct chart *c, double window)
+{
+    fit_x(c, -window, 0.0, true);
+}
+
+int chart_dot_y(const struct chart *c, double v)
+{
+    return 4 * c->area.h - 1 - (int)lround(axis_dot(&c->ya, v));
+}
+
+/* True when tick k of axis a is the value 0. */
+static bool is_zero(const struct axis *a, int cell)
+{
+    if (a->spacing <= 0 || (cell - a->first) % a->spacing != 0)
+        return false;
+    double v = a->lo + (double)((cell - a->first) / a->spacing) * a->step;
+    return fabs(v) < 1e-9 * a->step;
+}
+
+static void draw_axes(const struct chart *c, const char *xunit)
+{
+    struct rect a = c->area, f = c->frame;
+    int axis = a.x - 1;
+    mvvline(a.y, axis, draw_line(L_V), a.h);
+    /* Gridlines under the data, then the y labels. */
+    for (int k = 0; k < c->yt.n; k++) {
+        int row = a.y + a.h - 1 - c->yt.cell[k];
+        bool zero = c->zero_line && is_zero(&c->ya, c->yt.cell[k]);
+        attron(term_attr(PAIR_GRID));
+        for (int col = 0; col < a.w; col += zero ? 1 : 2)
+            mvaddstr(row, a.x + col, zero ? (term_utf8() ? "─" : "-") : (term_utf8() ? "·" : "."));
+        attroff(term_attr(PAIR_GRID));
+        int len = draw_width(c->yt.label[k]);
+        draw_text(row, axis - len, len, c->yt.label[k]);
+        mvaddch(row, axis, draw_line(L_RTEE));
+    }
+    int ay = a.y + a.h;
+    if (ay >= f.y + f.h - 1)
+        return;
+    mvaddch(ay, axis, draw_line(L_LL));
+    mvhline(ay, a.x, draw_line(L_H), a.w);
+    int free_from = f.x + 1;
+    if (xunit) {
+        draw_text(ay + 1, f.x + 2, a.x - f.x - 3, xunit);
+        free_from = f.x + 3 + draw_width(xunit);
+    }
+    int right = f.x + f.w - 1; /* first column a label may not use */
+    for (int k = 0; k < c->xt.n; k++) {
+        int col = a.x + c->xt.cell[k];
+        mvaddch(ay, col, draw_line(L_TTEE));
+        int len = draw_width(c->xt.label[k]);
+        int lx = col - len / 2;
+        if (lx + len > right)
+            lx = right - len;
+        if (lx < free_from || ay + 1 >= f.y + f.h - 1)
+            continue;
+        draw_text(ay + 1, lx, len, c->xt.label[k]);
+        free_from = lx + len + 1;
+    }
+}
+
+void chart_draw(const struct chart *c, const char *title, const char *short_title,
+                const char *xunit, const struct legend_item *legend, int nlegend)
+{
+    struct rect f = c->frame;
+    bool fits = draw_width(title) + 4 <= f.w || !short_title;
+    draw_frame(f, fits ? title : short_title, true);
+    if (c->canvas && c->area.w >= 2 && c->area.h >= 1) {
+        draw_axes(c, xunit);
+        draw_canvas(c->canvas, c->area.y, c->area.x);
+    }
+    /* The legend on the bottom border, as many entries as fit. */
+    int x = f.x + 2, y = f.y + f.h - 1;
+    for (int i = 0; i < nlegend; i++) {
+        int len = draw_width(legend[i].text);
+        if (x + len + 1 > f.x + f.w - 1)
+            break;
+        draw_text_attr(y, x, len, term_attr(legend[i].pair) | A_BOLD, legend[i].text);
+        x += len + 1;
+    }
+}
+
+const double *chart_window(const struct trail *tr, double t0, int *count)
+{
+    const double *first = trail_first(tr);
+    int lo = 0, hi = tr->count; /* the first record at or after t0 is in [lo, hi] */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (first[(size_t)mid * tr->width + TRAIL_T] < t0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    *count = tr->count - lo;
+    return first + (size_t)lo * tr->width;
+}

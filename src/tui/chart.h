@@ -1,0 +1,72 @@
+/* chart.h: the one chart widget: frame, title, axes, ticks, gridlines, legend and the
+ * scan of a time window, drawn around a braille canvas. The six plots and every
+ * analysis view are charts. */
+#ifndef SPRINGSIM_CHART_H
+#define SPRINGSIM_CHART_H
+
+#include <stdbool.h>
+
+#include "../app/axis.h"
+#include "../app/braille.h"
+#include "../app/layout.h"
+#include "../app/plot.h"
+#include "../app/trail.h"
+
+#define CHART_MAX_TICKS 16
+
+/* Where an axis's ticks are and what they say. */
+struct chart_ticks {
+    int n;
+    int cell[CHART_MAX_TICKS];       /* from the axis's start: the left for x, the bottom for y */
+    char label[CHART_MAX_TICKS][12]; /* at most AXIS_LABEL_MAX columns */
+};
+
+/* One legend entry: text in a colour pair (a mass's, the motor's, ...). */
+struct legend_item {
+    const char *text;
+    int pair;
+};
+
+struct chart {
+    struct rect frame, area;   /* the frame, and the drawing area inside it */
+    struct canvas *canvas;     /* the drawing area's dots */
+    struct scale xs, ys;       /* autoscaling memory (grows at once, shrinks after a while) */
+    struct axis xa, ya;        /* the axes as last fitted */
+    struct chart_ticks xt, yt; /* what the axes show */
+    bool zero_line;            /* the y = 0 gridline drawn solid */
+};
+
+/* Places the chart in frame, header rows of text between the frame's top and the drawing
+ * area; the canvas follows the size and the scales start afresh. Returns false on no
+ * memory (the chart then draws its frame only). */
+bool chart_place(struct chart *c, struct rect frame, int header_rows);
+
+/* Frees the canvas. */
+void chart_free(struct chart *c);
+
+/* Fits the y axis to data in [lo, hi] (autoscaled, ticks evenly spaced on the rows). */
+void chart_fit_y(struct chart *c, double lo, double hi);
+
+/* Fits the x axis to data in [lo, hi] (autoscaled, ticks evenly spaced on the columns). */
+void chart_fit_x(struct chart *c, double lo, double hi);
+
+/* Fits the x axis to a rolling time window: -window .. 0 s, 0 at the right edge. */
+void chart_fit_time(struct chart *c, double window);
+
+/* Ticks of axis a. */
+void chart_ticks_from_axis(struct chart_ticks *t, const struct axis *a);
+
+/* Canvas dot row (from the top) of y value v. */
+int chart_dot_y(const struct chart *c, double v);
+
+/* Draws the frame with title (short_title where the long one does not fit), the axes
+ * with their ticks and labels (xunit at the left of the x labels), the gridlines, the
+ * canvas and the legend on the bottom border. */
+void chart_draw(const struct chart *c, const char *title, const char *short_title,
+                const char *xunit, const struct legend_item *legend, int nlegend);
+
+/* The window scan: the first record of tr at or after time t0 (records are in time
+ * order); *count gets how many records follow from there, it included. */
+const double *chart_window(const struct trail *tr, double t0, int *count);
+
+#endif

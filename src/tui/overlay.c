@@ -1,0 +1,349 @@
+/* overlay.c: the help, the preset menu, typing and the confirmation: each one's drawing
+ * and keys together. */
+#include "overlay.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "draw.h"
+#include "input.h"
+#include "term.h"
+
+#define HELP_WIDTH 80 /* the help box, at most */
+
+/* The help's lines: one per key binding that has help, then notes on the mouse and
+ * typing. Line i into buf (key and text); false past the end. */
+static const char *const notes[] = {
+    "",
+    "Mouse: click a control to select it, wheel to adjust it;",
+    "drag a mass (paused) to set its initial position.",
+    "Values can be typed: select a control and press Enter.",
+};
+
+static int help_lines(void)
+{
+    int n = 0;
+    for (const struct binding *b = input_bindings; b->name; b++)
+        n += b->help != NULL;
+    return n + (int)(sizeof notes / sizeof *notes);
+}
+
+/* The keys of binding b and the other keys of its action, as the help shows them. */
+static void binding_keys(const struct binding *b, char *keys, size_t len)
+{
+    bool utf8 = term_utf8();
+    const char *name = utf8 ? b->name : b->ascii;
+    snprintf(keys, len, "%s", name);
+    for (const struct binding *o = b + 1; o->name && !o->help; o++) {
+        const char *other = utf8 ? o->name : o->ascii;
+        if (o->action == b->action && strcmp(other, name) != 0 && !strstr(keys, other))
+            snprintf(keys + strlen(keys), len - strlen(keys), " %s", other);
+    }
+}
+
+/* Draws help line i at row y of box r. */
+static void help_line(int i, int y, struct rect r)
+{
+    int k = 0;
+    for (const struct binding *b = input_bindings; b->name; b++) {
+        if (!b->help)
+            continue;
+        if (k++ != i)
+            continue;
+        char keys[64];
+        binding_keys(b, keys, sizeof keys);
+        draw_text_attr(y, r.x + 2, 16, A_BOLD, keys);
+        draw_text(y, r.x + 19, r.w - 21, b->help);
+        return;
+    }
+    draw_text(y, r.x + 2, r.w - 4, notes[i - k]);
+}
+
+/* A centred box of h x w, cleared, with a title. */
+static struct rect overlay_box(const struct layout *l, int h, int w, const char *title)
+{
+    if (h > l->rows - 2)
+        h = l->rows - 2;
+    if (w > l->cols - 2)
+        w = l->cols - 2;
+    struct rect r = {(l->rows - h) / 2, (l->cols - w) / 2, h, w};
+    draw_clear(r);
+    draw_frame(r, title, true);
+    return r;
+}
+
+/* Rows of help text the box shows at a time. */
+static int help_rows(const struct layout *l)
+{
+    int h = help_lines() + 3;
+    if (h > l->rows - 2)
+        h = l->rows - 2;
+    return h - 3;
+}
+
+static void draw_help(const struct overlay *o, const struct layout *l)
+{
+    int n = help_lines();
+    struct rect r = overlay_box(l, n + 3, HELP_WIDTH, "Keys");
+    int rows = r.h - 3, top = o->help_top;
+    if (top > n - rows) /* the screen grew since the last scroll */
+        top = n - rows > 0 ? n - rows : 0;
+    for (int i = 0; i < rows && top + i < n; i++)
+        help_line(top + i, r.y + 1 + i, r);
+    /* Where the view is, so the end is never a guess. */
+    char foot[120];
+    if (rows >= n)
+        snprintf(foot, sizeof foot, "all %d lines; ? or Esc closes", n);
+    else
+        snprintf(foot, sizeof foot, "lines %d–%d of %d%s  ↑↓ PgUp PgDn scroll  Esc closes",
+                 top + 1, top + rows, n, top + rows >= n ? " (end)" : " ▼ more");
+    draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), foot);
+}
+
+static void draw_presets(const struct overlay *o, const struct layout *l)
+{
+    int n = o->npresets;
+    struct rect r = overlay_box(l, (n ? n : 1) + 4, 76, "Presets");
+    if (n == 0) {
+        draw_text(r.y + 1, r.x + 2, r.w - 4, "No presets found on the search path.");
+        return;
+    }
+    int rows = r.h - 4, first = o->preset_sel >= rows ? o->preset_sel - rows + 1 : 0;
+    for (int i = first; i < n && i - first < rows; i++) {
+        bool sel = i == o->preset_sel;
+        if (sel)
+            attron(term_attr(PAIR_SELECT));
+        mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
+        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-15s %s", o->presets[i].name,
+                    o->presets[i].description);
+        if (sel)
+            attroff(term_attr(PAIR_SELECT));
+    }
+    draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE),
+                   "↑↓ choose   Enter load   Esc close");
+}
+
+/* What the prompt says for the text being typed. */
+static void edit_prompt(const struct overlay *o, const struct selection *sel, char *buf,
+                        size_t len)
+{
+    int i = sel->elem / 2;
+    switch (o->target) {
+    case EDIT_CONTROL:
+        snprintf(buf, len, "%s =", app_control_label((enum control)sel->control));
+        break;
+    case EDIT_MASS:
+        snprintf(buf, len, "mass %d: m (kg) =", i + 1);
+        break;
+    case EDIT_DAMPING:
+        snprintf(buf, len, "mass %d: c (N·s/m) =", i + 1);
+        break;
+    case EDIT_SPRING:
+        snprintf(buf, len, "spring %d: k (N/m) =", i);
+        break;
+    case EDIT_SAVE:
+        snprintf(buf, len, "save preset as:");
+        break;
+    }
+}
+
+void overlay_draw(const struct overlay *o, const struct layout *l, const struct selection *sel)
+{
+    int y = l->hints.y;
+    switch (o->kind) {
+    case OVERLAY_HELP:
+        draw_help(o, l);
+        break;
+    case OVERLAY_PRESETS:
+        draw_presets(o, l);
+        break;
+    case OVERLAY_EDIT: {
+        char prompt[80];
+        edit_prompt(o, sel, prompt, sizeof prompt);
+        mvhline(y, 0, ' ', l->cols);
+        attron(A_BOLD);
+        int x = 1 + draw_printf(y, 1, l->cols - 1, "%s %s", prompt, o->edit);
+        attroff(A_BOLD);
+        draw_text(y, x, l->cols - x, "_   (Enter sets it, Esc cancels)");
+        break;
+    }
+    case OVERLAY_CONFIRM:
+        mvhline(y, 0, ' ', l->cols);
+        attron(term_attr(PAIR_WARN));
+        draw_printf(y, 1, l->cols - 1, "preset %s exists: replace it? (y/n)", o->save_name);
+        attroff(term_attr(PAIR_WARN));
+        break;
+    case OVERLAY_NONE:
+        break;
+    }
+}
+
+void overlay_help(struct overlay *o)
+{
+    o->kind = OVERLAY_HELP;
+    o->help_top = 0;
+}
+
+void overlay_presets(struct overlay *o, const struct app *app)
+{
+    free(o->presets);
+    o->npresets = preset_scan(app->exe_dir, &o->presets);
+    o->preset_sel = 0;
+    for (int i = 0; i < o->npresets; i++)
+        if (strcmp(o->presets[i].name, app->preset) == 0)
+            o->preset_sel = i;
+    o->kind = OVERLAY_PRESETS;
+}
+
+void overlay_edit(struct overlay *o, enum edit_target target)
+{
+    o->kind = OVERLAY_EDIT;
+    o->target = target;
+    o->edit[0] = '\0';
+    o->edit_len = 0;
+}
+
+void overlay_free(struct overlay *o)
+{
+    free(o->presets);
+    o->presets = NULL;
+    o->npresets = 0;
+}
+
+/* Acts on the text typed, by what it was for. */
+static unsigned finish_edit(struct overlay *o, struct app *app, const struct selection *sel)
+{
+    int i = sel->elem / 2;
+    unsigned changed = 0;
+    switch (o->target) {
+    case EDIT_CONTROL:
+        if (o->edit_len && (changed = app_set_text(app, (enum control)sel->control, o->edit)))
+            app_say(app, false, "%s set", app_control_label((enum control)sel->control));
+        break;
+    case EDIT_MASS:
+        if ((changed = app_set_element(app, 'm', i, o->edit)))
+            app_say(app, false, "mass %d: m = %g kg", i + 1, app->model->m[i]);
+        break;
+    case EDIT_DAMPING:
+        if ((changed = app_set_element(app, 'c', i, o->edit)))
+            app_say(app, false, "mass %d: c = %g N·s/m", i + 1, app->model->c[i]);
+        break;
+    case EDIT_SPRING:
+        if ((changed = app_set_element(app, 'k', i, o->edit)))
+            app_say(app, false, "spring %d: k = %g N/m", i, app->model->k[i]);
+        break;
+    case EDIT_SAVE:
+        if (app_save(app, o->edit, false) == SAVE_EXISTS) {
+            snprintf(o->save_name, sizeof o->save_name, "%s", o->edit);
+            o->kind = OVERLAY_CONFIRM;
+        }
+        break;
+    }
+    return changed;
+}
+
+static unsigned edit_key(struct overlay *o, struct app *app, const struct selection *sel, int ch)
+{
+    if (ch == 27) {
+        o->kind = OVERLAY_NONE;
+    } else if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
+        o->kind = OVERLAY_NONE;
+        return finish_edit(o, app, sel);
+    } else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
+        if (o->edit_len)
+            o->edit[--o->edit_len] = '\0';
+    } else if (ch >= 32 && ch < 127 && o->edit_len < (int)sizeof o->edit - 1) {
+        o->edit[o->edit_len++] = (char)ch;
+        o->edit[o->edit_len] = '\0';
+    }
+    return 0;
+}
+
+static unsigned preset_key(struct overlay *o, struct app *app, enum action a)
+{
+    switch (a) {
+    case ACT_UP:
+        if (o->preset_sel > 0)
+            o->preset_sel--;
+        return 0;
+    case ACT_DOWN:
+        if (o->preset_sel < o->npresets - 1)
+            o->preset_sel++;
+        return 0;
+    case ACT_ENTER:
+        o->kind = OVERLAY_NONE;
+        return o->npresets ? app_load_preset(app, o->presets[o->preset_sel].path,
+                                             o->presets[o->preset_sel].name)
+                           : 0;
+    case ACT_ESCAPE:
+    case ACT_PRESETS:
+    case ACT_QUIT:
+        o->kind = OVERLAY_NONE;
+        return 0;
+    default:
+        return 0;
+    }
+}
+
+/* Scrolls the help; the screen's size bounds it when drawn. */
+static void help_key(struct overlay *o, const struct layout *l, int ch)
+{
+    int page = help_rows(l) - 1, n = help_lines(), last = n - help_rows(l);
+    switch (ch) {
+    case KEY_UP:
+    case 'k':
+        o->help_top--;
+        break;
+    case KEY_DOWN:
+    case 'j':
+        o->help_top++;
+        break;
+    case KEY_PPAGE:
+        o->help_top -= page;
+        break;
+    case KEY_NPAGE:
+    case ' ':
+        o->help_top += page;
+        break;
+    case KEY_HOME:
+        o->help_top = 0;
+        break;
+    case KEY_END:
+        o->help_top = n;
+        break;
+    default: {
+        enum action a = input_action(ch);
+        if (a == ACT_HELP || a == ACT_ESCAPE || a == ACT_QUIT)
+            o->kind = OVERLAY_NONE;
+        break;
+    }
+    }
+    if (o->help_top > last)
+        o->help_top = last;
+    if (o->help_top < 0)
+        o->help_top = 0;
+}
+
+unsigned overlay_key(struct overlay *o, struct app *app, const struct selection *sel,
+                     const struct layout *l, int ch)
+{
+    switch (o->kind) {
+    case OVERLAY_EDIT:
+        return edit_key(o, app, sel, ch);
+    case OVERLAY_CONFIRM:
+        o->kind = OVERLAY_NONE;
+        if (ch == 'y' || ch == 'Y')
+            return app_save(app, o->save_name, true) == SAVE_OK ? APP_CHANGED_MESSAGE : 0;
+        app_say(app, false, "not saved: %s kept as it was", o->save_name);
+        return APP_CHANGED_MESSAGE;
+    case OVERLAY_HELP:
+        help_key(o, l, ch);
+        return 0;
+    case OVERLAY_PRESETS:
+        return preset_key(o, app, input_action(ch));
+    case OVERLAY_NONE:
+        break;
+    }
+    return 0;
+}

@@ -1,0 +1,162 @@
+/* panel.c: the status line, the controls panel and the footer. */
+#include "panel.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "draw.h"
+#include "term.h"
+
+int panel_time_decimals(double dt)
+{
+    int d = 2;
+    while (d < 6 && fabs(dt * pow(10.0, d) - round(dt * pow(10.0, d))) > 1e-6)
+        d++;
+    return d;
+}
+
+void panel_status(const struct layout *l, const struct app *app, bool behind)
+{
+    const struct model *m = app->model;
+    const char *bar = "│";
+    int d = panel_time_decimals(app->cfg.dt);
+    char motor[80], speed[64] = "", line[400];
+    if (m->boundary == BOUNDARY_MOTOR)
+        snprintf(motor, sizeof motor, "motor %s %.3g Hz %.3g m", motor_wave_name(m->motor.wave),
+                 m->motor.frequency, m->motor.amplitude);
+    else
+        snprintf(motor, sizeof motor, "%s end", model_boundary_name(m->boundary));
+    if (app->speed != 1.0 || behind || app->cfg.low_bandwidth)
+        snprintf(speed, sizeof speed, " %s %gx%s%s", bar, app->speed, behind ? " behind" : "",
+                 app->cfg.low_bandwidth ? " low-bw" : "");
+    /* The full line where it fits; the SPEC's essentials where it does not. */
+    snprintf(line, sizeof line, " springsim ▸ %-7s t = %.*f s %s %s %s N %d %s dt %.*f s %s "
+             "history %d%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
+             motor, bar, m->n, bar, d, app->cfg.dt, bar, history_count(app->hist), speed);
+    if (draw_width(line) > l->cols) {
+        if (m->boundary == BOUNDARY_MOTOR)
+            snprintf(motor, sizeof motor, "motor %s %.3g Hz", motor_wave_name(m->motor.wave),
+                     m->motor.frequency);
+        snprintf(line, sizeof line, " %s t = %.*f s %s %s %s history %d%s",
+                 app->running ? "Running" : "Paused", d, sim_time(app->sim), bar, motor, bar,
+                 history_count(app->hist), speed);
+    }
+    attron(A_REVERSE);
+    mvhline(l->status.y, 0, ' ', l->cols);
+    int used = draw_text(l->status.y, 0, l->cols, line);
+    const char *right = "? help  q quit ";
+    int rw = draw_width(right);
+    if (used + rw + 2 <= l->cols)
+        draw_text(l->status.y, l->cols - rw, rw, right);
+    attroff(A_REVERSE);
+}
+
+/* The frequency range on a log scale, the natural frequencies marked and the drive on
+ * it, on row y. */
+static void frequency_bar(const struct rect r, int y, const struct app *app)
+{
+    const struct model *m = app->model;
+    int x0 = r.x + 5, w = r.w - 11;
+    draw_text(y, r.x + 1, 3, "0.1");
+    mvhline(y, x0, draw_line(L_H), w);
+    draw_text(y, x0 + w + 1, 3, "5Hz");
+    attron(term_attr(PAIR_TITLE));
+    for (int j = 0; j < m->n; j++) {
+        double f = app->modes[j];
+        if (f >= APP_FMIN && f <= APP_FMAX)
+            mvaddch(y, x0 + (int)lround(app_freq_fraction(f) * (w - 1)),
+                    term_utf8() ? draw_line(L_PLUS) : '|');
+    }
+    attroff(term_attr(PAIR_TITLE));
+    double f = m->motor.frequency;
+    if (f >= APP_FMIN && f <= APP_FMAX)
+        draw_text_attr(y, x0 + (int)lround(app_freq_fraction(f) * (w - 1)), 1,
+                       term_attr(PAIR_MOTOR) | A_BOLD, "●");
+}
+
+void panel_controls(const struct layout *l, const struct app *app, const struct selection *sel)
+{
+    struct rect r = l->controls;
+    draw_frame(r, "Controls", false);
+    int last = r.y + r.h - 2; /* the last row inside the frame */
+    for (int i = 0; i < CTL_COUNT && r.y + 1 + i <= last; i++) {
+        char value[96], line[160];
+        app_control_value(app, (enum control)i, value, sizeof value);
+        bool hot = sel->focus == FOCUS_CONTROLS && sel->control == i;
+        snprintf(line, sizeof line, "%s%-10s %s", hot ? "▸" : " ",
+                 app_control_label((enum control)i), value);
+        if (hot)
+            attron(term_attr(PAIR_SELECT));
+        mvhline(r.y + 1 + i, r.x + 1, ' ', r.w - 2);
+        draw_text(r.y + 1 + i, r.x + 1, r.w - 2, line);
+        if (hot)
+            attroff(term_attr(PAIR_SELECT));
+    }
+    int y = r.y + 1 + CTL_COUNT;
+    if (y > last || !app->modes_ok)
+        return;
+    frequency_bar(r, y++, app);
+    /* The natural frequencies, so resonance is checked, not guessed. */
+    if (++y > last)
+        return;
+    draw_text(y, r.x + 2, r.w - 3, "natural frequencies (Hz)");
+    int x = r.x + 2;
+    y++;
+    for (int j = 0; j < app->model->n && y <= last; j++) {
+        char num[16];
+        snprintf(num, sizeof num, "%.3f", app->modes[j]);
+        int len = (int)strlen(num);
+        if (x + len > r.x + r.w - 2)
+            x = r.x + 2, y++;
+        if (y > last)
+            break;
+        draw_text_attr(y, x, len, term_attr(PAIR_TITLE), num);
+        x += len + 1;
+    }
+}
+
+/* One hint: the key, then what it does. */
+struct hint {
+    const char *key, *what;
+};
+
+void panel_hints(const struct layout *l, const struct app *app, const struct hint_state *h)
+{
+    int y = l->hints.y;
+    if (app->message[0]) {
+        attr_t a = app->message_is_error ? term_attr(PAIR_WARN) : A_BOLD;
+        draw_text_attr(y, 1, l->cols - 1, a, app->message);
+        return;
+    }
+    /* In order of importance: as many as fit. */
+    struct hint hints[16];
+    int n = 0;
+    hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
+    hints[n++] = (struct hint){".", "step"};
+    if (!app->running)
+        hints[n++] = (struct hint){",", "back"};
+    hints[n++] = (struct hint){"r", "reset"};
+    if (h->view)
+        hints[n++] = (struct hint){"m f e", "views (again: plots)"};
+    else if (h->enlarged >= 0)
+        hints[n++] = (struct hint){"0", "all plots"};
+    else
+        hints[n++] = (struct hint){"1-6", "enlarge"};
+    hints[n++] = (struct hint){"<>", "window"};
+    if (!h->view)
+        hints[n++] = (struct hint){"m f e", "modes response energy"};
+    hints[n++] = (struct hint){"p", "presets"};
+    hints[n++] = (struct hint){"↑↓←→", "controls"};
+    hints[n++] = (struct hint){"Enter", "type"};
+    hints[n++] = (struct hint){"Tab", "masses"};
+    hints[n++] = (struct hint){"?", "help"};
+    int x = 1;
+    for (int i = 0; i < n; i++) {
+        int need = draw_width(hints[i].key) + 1 + draw_width(hints[i].what);
+        if (x + need > l->cols - 1)
+            break;
+        x += draw_text_attr(y, x, need, A_BOLD, hints[i].key) + 1;
+        x += draw_text(y, x, l->cols - x, hints[i].what) + 2;
+    }
+}

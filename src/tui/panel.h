@@ -1,0 +1,30 @@
+/* panel.h: the text around the plots: the status line, the controls with the frequency
+ * bar and the natural frequencies, and the footer of hints. */
+#ifndef SPRINGSIM_PANEL_H
+#define SPRINGSIM_PANEL_H
+
+#include <stdbool.h>
+
+#include "../app/app.h"
+#include "../app/layout.h"
+#include "../app/select.h"
+
+/* What the footer's hints depend on besides the app. */
+struct hint_state {
+    int enlarged;   /* the plot enlarged, or -1 */
+    bool view;      /* an analysis view has the plot area */
+};
+
+/* Digits after the point that dt needs (at least 2): t and dt are shown with them. */
+int panel_time_decimals(double dt);
+
+/* The status line: state, t, the drive, N, dt, history, playback. */
+void panel_status(const struct layout *l, const struct app *app, bool behind);
+
+/* The controls with their values, the selected one highlighted. */
+void panel_controls(const struct layout *l, const struct app *app, const struct selection *sel);
+
+/* The footer: the app's message if there is one, else the keys that fit, by state. */
+void panel_hints(const struct layout *l, const struct app *app, const struct hint_state *h);
+
+#endif

@@ -1,0 +1,128 @@
+/* plots.c: the live plots. A refresh scans the samples inside the time window once,
+ * fits the axes to them and rasterises the traces; frames in between redraw what the
+ * last refresh left. */
+#include "plots.h"
+
+#include <math.h>
+
+#include "term.h"
+
+/* What each plot shows: quantity on x (0 time, 1 x, 2 v, 3 a) and on y. */
+static const struct {
+    int xq, yq;
+    const char *title, *short_title;
+} kinds[PLOT_COUNT] = {
+    [PLOT_X] = {0, 1, "1 Displacement (m)", "1 x (m)"},
+    [PLOT_V] = {0, 2, "2 Velocity (m/s)", "2 v (m/s)"},
+    [PLOT_A] = {0, 3, "3 Acceleration (m/s²)", "3 a (m/s²)"},
+    [PLOT_XV] = {1, 2, "4 x–v (m, m/s)", "4 x–v"},
+    [PLOT_XA] = {1, 3, "5 x–a (m, m/s²)", "5 x–a"},
+    [PLOT_VA] = {2, 3, "6 v–a (m/s, m/s²)", "6 v–a"},
+};
+
+static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5",
+                                          "━6", "━7", "━8", "━9", "━10"};
+
+const char *plots_title(enum plot_id id, bool short_form)
+{
+    return short_form ? kinds[id].short_title : kinds[id].title;
+}
+
+bool plots_place(struct plots *p, const struct layout *l)
+{
+    bool ok = true;
+    for (int k = 0; k < l->nplots; k++) {
+        struct chart *c = &p->chart[l->plot_id[k]];
+        ok &= chart_place(c, l->plot[k], 0);
+        c->zero_line = true;
+    }
+    return ok;
+}
+
+void plots_free(struct plots *p)
+{
+    for (int i = 0; i < PLOT_COUNT; i++)
+        chart_free(&p->chart[i]);
+}
+
+/* Offset of quantity q (1 x, 2 v, 3 a) of mass i in a trail record. */
+static int field(const struct trail *tr, int q, int i)
+{
+    return q == 1 ? TRAIL_X(tr, i) : q == 2 ? TRAIL_V(tr, i) : TRAIL_A(tr, i);
+}
+
+/* The time at the left edge of a time chart (its axis extends past -window there). */
+static double left_time(const struct chart *c)
+{
+    const struct axis *a = &c->xa;
+    return a->lo - axis_dot(a, a->lo) * a->step / (a->spacing * a->dpc) - a->step;
+}
+
+/* Takes the newest samples: fits the axes and rasterises. */
+static void take_samples(struct chart *c, enum plot_id id, const struct app *app)
+{
+    const struct trail *tr = app_trail(app);
+    const struct model *m = app->model;
+    int xq = kinds[id].xq, yq = kinds[id].yq;
+    bool motor = id == PLOT_X && m->boundary == BOUNDARY_MOTOR;
+    double now = sim_time(app->sim), window = app_window(app);
+    if (xq == 0)
+        chart_fit_time(c, window);
+    int k;
+    const double *rec = chart_window(tr, now + (xq == 0 ? left_time(c) : -window), &k);
+    size_t w = (size_t)tr->width;
+    double ylo = INFINITY, yhi = -INFINITY, xlo = INFINITY, xhi = -INFINITY;
+    for (int s = 0; s < k; s++) {
+        const double *q = rec + (size_t)s * w;
+        for (int i = 0; i < m->n; i++) {
+            double y = q[field(tr, yq, i)];
+            ylo = fmin(ylo, y), yhi = fmax(yhi, y);
+            if (xq) {
+                double x = q[field(tr, xq, i)];
+                xlo = fmin(xlo, x), xhi = fmax(xhi, x);
+            }
+        }
+        if (motor)
+            ylo = fmin(ylo, q[TRAIL_U]), yhi = fmax(yhi, q[TRAIL_U]);
+    }
+    if (k > 0) {
+        chart_fit_y(c, ylo, yhi);
+        if (xq)
+            chart_fit_x(c, xlo, xhi);
+    }
+    if (!c->canvas)
+        return;
+    canvas_clear(c->canvas);
+    for (int i = m->n - 1; i >= 0; i--) {
+        unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
+        if (xq == 0)
+            plot_trace(c->canvas, rec + TRAIL_T, rec + field(tr, yq, i), k, w, now, &c->xa,
+                       &c->ya, false, col);
+        else
+            plot_path(c->canvas, rec + field(tr, xq, i), rec + field(tr, yq, i), k, w, &c->xa,
+                      &c->ya, col);
+    }
+    if (motor)
+        plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, now, &c->xa, &c->ya, true,
+                   PAIR_MOTOR);
+}
+
+void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool fresh)
+{
+    const struct model *m = app->model;
+    struct legend_item legend[11];
+    int n = 0;
+    for (int i = 0; i < m->n && i < 10; i++)
+        legend[n++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
+    for (int k = 0; k < l->nplots; k++) {
+        enum plot_id id = l->plot_id[k];
+        struct chart *c = &p->chart[id];
+        if (fresh)
+            take_samples(c, id, app);
+        int items = n;
+        if (id == PLOT_X && m->boundary == BOUNDARY_MOTOR)
+            legend[items++] = (struct legend_item){"┅motor", PAIR_MOTOR};
+        chart_draw(c, kinds[id].title, kinds[id].short_title, kinds[id].xq ? NULL : "s", legend,
+                   items);
+    }
+}

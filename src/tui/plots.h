@@ -1,0 +1,28 @@
+/* plots.h: the six live plots (x, v, a against time; x-v, x-a, v-a), as many as the
+ * layout shows, each a chart. */
+#ifndef SPRINGSIM_PLOTS_H
+#define SPRINGSIM_PLOTS_H
+
+#include <stdbool.h>
+
+#include "../app/app.h"
+#include "../app/layout.h"
+#include "chart.h"
+
+struct plots {
+    struct chart chart[PLOT_COUNT]; /* one per plot, placed when shown */
+};
+
+/* Places the plots the layout shows; false on no memory. */
+bool plots_place(struct plots *p, const struct layout *l);
+
+/* Frees the canvases. */
+void plots_free(struct plots *p);
+
+/* Draws the plots shown; with refresh, they first take the newest samples. */
+void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool refresh);
+
+/* The title of plot id (its key first), long or short, UTF-8. */
+const char *plots_title(enum plot_id id, bool short_form);
+
+#endif

@@ -1,0 +1,45 @@
+/* term.h: the terminal itself: set-up and restore, colours, signals, and the one fatal
+ * path. Every other tui file draws through what this sets up. */
+#ifndef SPRINGSIM_TERM_H
+#define SPRINGSIM_TERM_H
+
+#include <stdbool.h>
+
+#include <curses.h>
+
+/* Colour pairs. Information is never drawn in a grey or with A_DIM alone: every pair
+ * reads on dark and light backgrounds, with 8 or 256 colours. */
+enum pair {
+    PAIR_MASS = 1, /* masses 1..10: PAIR_MASS + i */
+    PAIR_MOTOR = 11,
+    PAIR_SPRING,
+    PAIR_GRID, /* gridlines only: the one thing that may be faint */
+    PAIR_TITLE,
+    PAIR_WARN,
+    PAIR_WALL,
+    PAIR_SELECT,
+    PAIR_COUNT
+};
+
+/* Starts curses on the terminal; false (with the reason on stderr) when it cannot. */
+bool term_start(void);
+
+/* Gives the terminal back (safe to call twice, and from atexit). */
+void term_stop(void);
+
+/* True where the locale is UTF-8: braille, box drawing and symbols allowed. */
+bool term_utf8(void);
+
+/* Attribute for colour pair p, or its mono stand-in. */
+attr_t term_attr(int p);
+
+/* Attribute for mass i's colour. */
+attr_t term_mass_attr(int i);
+
+/* The quit signal received (SIGINT, SIGTERM, SIGHUP), or 0. */
+int term_quit_signal(void);
+
+/* After term_stop: dies of the quit signal received, so a shell sees 128 + signal. */
+void term_die_of_signal(void);
+
+#endif
