@@ -1,6 +1,15 @@
 /* app.h: the interactive program's state and what its actions do to it, with no
  * terminal in sight: the chain being run, its initial conditions, history, the plots'
- * samples, playback, and the controls' values. The terminal front end drives this. */
+ * samples and their time window, playback, and the controls' values. The terminal front
+ * end drives this.
+ *
+ * Every action returns what it changed, a mask of enum app_change (0: nothing), so the
+ * loop redraws only what needs it (htop's Htop_Reaction). A rejected input returns 0 and
+ * leaves everything as it was but the message, which says why. Every change of the
+ * chain's or the drive's parameters, by any route, goes through one path that keeps the
+ * rules: a running sweep ends (but for its own retunes) and gives the user's frequency
+ * back; the modes and the stability limit are recomputed once; a new chain (new N, a
+ * preset) is built whole before the old one is let go, or not at all. */
 #ifndef SPRINGSIM_APP_H
 #define SPRINGSIM_APP_H
 
@@ -13,10 +22,26 @@
 #include "trail.h"
 
 #define APP_MAX_MASSES 10    /* the interactive program's limit */
-#define APP_WINDOW 10.0      /* seconds the time plots show */
+#define APP_DT_MIN 0.001     /* its smallest step (s) */
+#define APP_WINDOW 10.0      /* the time plots' default window (s); app_window() rules */
 #define APP_FMIN 0.1         /* the frequency control's range (Hz) */
 #define APP_FMAX 5.0
 #define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */
+
+/* What an action changed: bits of the unsigned it returns. */
+enum app_change {
+    APP_CHANGED_CHAIN = 1u << 0,    /* masses, springs, damping, right end: modes and
+                                     * stability limit recomputed, version bumped */
+    APP_CHANGED_DRIVE = 1u << 1,    /* frequency, amplitude, waveform, right end */
+    APP_CHANGED_SIZE = 1u << 2,     /* the number of masses: what is sized by N follows */
+    APP_CHANGED_STATE = 1u << 3,    /* the state moved or jumped: step, back, reset, a
+                                     * mass moved; plots and history follow */
+    APP_CHANGED_PLAYBACK = 1u << 4, /* running, speed, bandwidth */
+    APP_CHANGED_WINDOW = 1u << 5,   /* the time plots' window */
+    APP_CHANGED_MESSAGE = 1u << 6,  /* the status message */
+    APP_CHANGED_DT = 1u << 7,       /* the time step (and so the plots' sampling) */
+    APP_CHANGED_PENDING = 1u << 8,  /* the Masses control's value waiting for Enter */
+};
 
 /* Position of frequency f on the control's range drawn on a log scale, 0 to 1. */
 double app_freq_fraction(double f);
@@ -42,13 +67,17 @@ enum control {
 };
 
 struct app {
-    struct config cfg;       /* settings; cfg.x0/v0 are the initial conditions */
+    struct config cfg;       /* settings in force; cfg.x0/v0 are the initial conditions */
     struct model *model;     /* parameters in force */
     struct sim *sim;         /* the running chain */
     struct history *hist;    /* states to step back to */
-    struct trail *trail;     /* samples for the plots */
-    int sample_every;        /* steps between trail samples */
-    int since_sample;        /* steps since the last sample */
+    struct trail *trail;     /* fine samples for the plots (about 11 s), and for export */
+    struct trail *coarse;    /* coarse samples for the plots (over 60 s) */
+    int sample_every;        /* steps between fine samples */
+    int since_sample;        /* steps since the last fine sample */
+    int coarse_every;        /* steps between coarse samples */
+    int since_coarse;        /* steps since the last coarse sample */
+    int window;              /* index of the time plots' window in the list of windows */
     bool running;            /* playing, not paused */
     double speed;            /* simulated seconds per wall-clock second */
     int masses_pending;      /* the Masses control before it is applied */
@@ -60,9 +89,11 @@ struct app {
     double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
     bool modes_ok;           /* modes[] and shapes[] are those of the model */
-    unsigned version;        /* counts changes of the chain's parameters (never 0) */
+    unsigned version;        /* counts changes of the chain's or the drive's parameters
+                              * (never 0): what is computed from the model is stale when
+                              * it moves */
     struct sweep *sweep;     /* the sine-sweep experiment */
-    double sweep_from;       /* the drive's frequency before the sweep, given back after */
+    double sweep_from;       /* the user's frequency during a sweep, given back after */
     double energy0;          /* the energy balance at t = 0 */
 };
 
@@ -72,56 +103,68 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir);
 /* Frees what app holds. */
 void app_free(struct app *app);
 
-/* Back to t = 0 at the initial conditions; plots and history cleared. */
-void app_reset(struct app *app);
+/* Back to t = 0 at the initial conditions; plots and history cleared; a sweep ends. */
+unsigned app_reset(struct app *app);
 
 /* One step forward, history and plots kept. On a non-finite result the chain is
- * paused at its last finite state and the message says why; returns false then. */
-bool app_step(struct app *app);
+ * paused at its last finite state and the message says why; returns 0 then. */
+unsigned app_step(struct app *app);
 
-/* One step back; false (with a message) when there is none or it is running. */
-bool app_back(struct app *app);
+/* One step back; 0 (with a message) when there is none or it is running. */
+unsigned app_back(struct app *app);
+
+/* Plays or pauses. */
+unsigned app_set_running(struct app *app, bool running);
 
 /* New random initial positions (a fresh seed), at rest, and a reset. */
-void app_random(struct app *app);
+unsigned app_random(struct app *app);
 
 /* Moves mass i's initial position by dx (m) while paused, keeping it inside its
  * neighbours and the walls; everything restarts at t = 0 from there, at rest. */
-void app_move_mass(struct app *app, int i, double dx);
+unsigned app_move_mass(struct app *app, int i, double dx);
 
 /* Sets mass i's centre to absolute position X (m) while paused, as app_move_mass. */
-void app_place_mass(struct app *app, int i, double X);
+unsigned app_place_mass(struct app *app, int i, double X);
 
 /* Adjusts a control by steps of its fine (coarse = false) or coarse step; negative
  * steps go down. Takes effect at once, except Masses, which waits for app_apply. */
-void app_adjust(struct app *app, enum control ctl, int steps, bool coarse);
+unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse);
 
-/* Sets a control from typed text; false with the reason in the message if it is bad. */
-bool app_set_text(struct app *app, enum control ctl, const char *text);
+/* Sets a control from typed text; 0 with the reason in the message if it is bad. */
+unsigned app_set_text(struct app *app, enum control ctl, const char *text);
 
 /* Applies a pending change of the number of masses (a reset). */
-void app_apply_masses(struct app *app);
+unsigned app_apply_masses(struct app *app);
 
-/* Loads the preset at path; false with the reason in the message. */
-bool app_load_preset(struct app *app, const char *path, const char *name);
+/* Loads the preset at path; 0 with the reason in the message. */
+unsigned app_load_preset(struct app *app, const char *path, const char *name);
 
 /* Sets mass i's own mass (what = 'm') or damping ('c'), or spring j's constant
- * ('k'), from typed text; false with the reason in the message. */
-bool app_set_element(struct app *app, char what, int index, const char *text);
+ * ('k'), from typed text; 0 with the reason in the message. */
+unsigned app_set_element(struct app *app, char what, int index, const char *text);
 
 /* Sets the motor frequency to the natural frequency nearest to it. */
-void app_nearest_mode(struct app *app);
+unsigned app_nearest_mode(struct app *app);
 
 /* Starts (or stops, if running) the sine-sweep experiment across the modes. */
-void app_toggle_sweep(struct app *app);
+unsigned app_toggle_sweep(struct app *app);
+
+/* The time plots' window (s): 1, 2, 5, 10, 20, 30 or 60. */
+double app_window(const struct app *app);
+
+/* Moves dir places along that list (clamped at its ends, with a message). */
+unsigned app_window_step(struct app *app, int dir);
+
+/* The samples that cover the current window: the fine ones up to 10 s, else coarse. */
+const struct trail *app_trail(const struct app *app);
 
 /* Saves the set-up as user preset name (overwrite an existing one only if asked);
  * the message says what happened. */
 enum app_save app_save(struct app *app, const char *name, bool overwrite);
 
-/* Writes the recorded samples as --headless CSV to ./springsim-YYYYmmdd-HHMMSS.csv
- * (or into dir if not NULL); the path goes into path. False with the reason. */
-bool app_export(struct app *app, const char *dir, char *path, size_t len);
+/* Writes the fine samples as --headless CSV to ./springsim-YYYYmmdd-HHMMSS.csv (or into
+ * dir if not NULL); the path goes into path. 0 with the reason in the message. */
+unsigned app_export(struct app *app, const char *dir, char *path, size_t len);
 
 /* The energy balance now, minus its value at t = 0 (J). */
 double app_energy_drift(const struct app *app);
@@ -130,8 +173,8 @@ double app_energy_drift(const struct app *app);
 const char *app_control_label(enum control ctl);
 void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len);
 
-/* Sets the status message (printf-style). */
-void app_say(struct app *app, bool error, const char *fmt, ...)
+/* Sets the status message (printf-style); returns APP_CHANGED_MESSAGE. */
+unsigned app_say(struct app *app, bool error, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
 #endif

@@ -1,0 +1,380 @@
+/* controls.c: the controls panel's table (labels, ranges, steps, units) and what
+ * adjusting or typing a control, editing one element of the chain or choosing the
+ * nearest mode does; every parameter change goes through app_change (app.c). */
+#include "change.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/modes.h"
+
+static const char *const labels[CTL_COUNT] = {
+    [CTL_PRESET] = "Preset",      [CTL_MASSES] = "Masses",     [CTL_DT] = "dt",
+    [CTL_DAMPING] = "Damping",    [CTL_SPRING] = "Spring k",   [CTL_MASS] = "Mass",
+    [CTL_BOUNDARY] = "Right end", [CTL_WAVE] = "Waveform",     [CTL_AMPLITUDE] = "Amplitude",
+    [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Bandwidth",
+};
+
+/* What ends a sweep, for its message. */
+static const char *const whys[CTL_COUNT] = {
+    [CTL_MASSES] = "the new number of masses", [CTL_DAMPING] = "the change of damping",
+    [CTL_SPRING] = "the change of springs",    [CTL_MASS] = "the change of masses",
+    [CTL_BOUNDARY] = "the change of right end", [CTL_WAVE] = "the change of waveform",
+    [CTL_AMPLITUDE] = "the change of amplitude", [CTL_FREQUENCY] = "the change of frequency",
+    [CTL_DT] = "the change of dt",
+};
+
+/* Playback speeds offered by the Speed control. */
+static const double speeds[] = {0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 4.0, 5.0, 10.0};
+#define NSPEEDS (int)(sizeof speeds / sizeof *speeds)
+
+/* Numeric controls: range of the arrows, fine and coarse steps, unit, decimals shown. */
+static const struct {
+    double lo, hi, fine, coarse;
+    const char *unit;
+    int decimals;
+} ranges[CTL_COUNT] = {
+    [CTL_DT] = {APP_DT_MIN, 0.05, 0.001, 0.005, "s", 3},
+    [CTL_DAMPING] = {0.0, 2.0, 0.01, 0.1, "N·s/m", 2},
+    [CTL_SPRING] = {1.0, 50.0, 0.5, 5.0, "N/m", 1},
+    [CTL_MASS] = {0.1, 10.0, 0.1, 1.0, "kg", 2},
+    [CTL_AMPLITUDE] = {0.0, 3.0, 0.05, 0.5, "m", 2},
+    [CTL_FREQUENCY] = {APP_FMIN, APP_FMAX, 0.01, 0.1, "Hz", 3},
+};
+
+const char *app_control_label(enum control ctl)
+{
+    return (unsigned)ctl < CTL_COUNT ? labels[ctl] : "";
+}
+
+double app_freq_fraction(double f)
+{
+    return log(f / APP_FMIN) / log(APP_FMAX / APP_FMIN);
+}
+
+/* The common value of a per-element list, or NAN when they differ. */
+static double common(const double *v, int n)
+{
+    for (int i = 1; i < n; i++)
+        if (v[i] != v[0])
+            return NAN;
+    return v[0];
+}
+
+/* Sets one value for every element of a list. */
+static void set_all(struct config_list *l, double v)
+{
+    l->count = 1;
+    l->v[0] = v;
+}
+
+/* The current value of a numeric control (NAN for mixed per-element values). */
+static double numeric_value(const struct app *app, enum control ctl)
+{
+    const struct model *m = app->model;
+    switch (ctl) {
+    case CTL_DT:
+        return app->cfg.dt;
+    case CTL_DAMPING:
+        return common(m->c, m->n);
+    case CTL_SPRING:
+        return common(m->k, m->boundary == BOUNDARY_FREE ? m->n : m->n + 1);
+    case CTL_MASS:
+        return common(m->m, m->n);
+    case CTL_AMPLITUDE:
+        return m->motor.amplitude;
+    case CTL_FREQUENCY:
+        return m->motor.frequency;
+    default:
+        return NAN;
+    }
+}
+
+/* Puts a numeric control's value into the settings next. */
+static void set_numeric(struct config *next, enum control ctl, double v)
+{
+    switch (ctl) {
+    case CTL_DT:
+        next->dt = v;
+        break;
+    case CTL_DAMPING:
+        set_all(&next->damping, v);
+        break;
+    case CTL_SPRING:
+        set_all(&next->spring, v);
+        break;
+    case CTL_MASS:
+        set_all(&next->mass, v);
+        break;
+    case CTL_AMPLITUDE:
+        next->amplitude = v;
+        break;
+    case CTL_FREQUENCY:
+        next->frequency = v;
+        break;
+    default:
+        break;
+    }
+}
+
+/* Puts next in force for control ctl; what changed, 0 if refused. */
+static unsigned change_control(struct app *app, struct config *next, enum control ctl)
+{
+    unsigned what = 0;
+    unsigned how = ctl == CTL_FREQUENCY ? CHANGE_SETS_FREQUENCY : 0;
+    app_change(app, next, how, whys[ctl], &what);
+    return what;
+}
+
+/* n masses, every element taking the first one's values, at rest in equilibrium (the
+ * page's "Apply Config"); -1 when refused. */
+static int new_masses(struct app *app, int n, unsigned *what)
+{
+    *what = 0;
+    if (n == app->model->n) {
+        if (app->masses_pending != n)
+            *what |= APP_CHANGED_PENDING;
+        app->masses_pending = n;
+        return 0;
+    }
+    struct config next = app->cfg;
+    set_all(&next.mass, app->model->m[0]);
+    set_all(&next.spring, app->model->k[0]);
+    set_all(&next.damping, app->model->c[0]);
+    next.masses = n;
+    next.x0.count = next.v0.count = 0;
+    next.random = false;
+    if (app_change(app, &next, CHANGE_REBUILD, whys[CTL_MASSES], what) != 0)
+        return -1;
+    *what |= APP_CHANGED_PENDING |
+             app_say(app, false, "%d mass%s, at rest", n, n == 1 ? "" : "es");
+    return 0;
+}
+
+unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
+{
+    struct config next = app->cfg;
+    switch (ctl) {
+    case CTL_MASSES: {
+        int n = app->masses_pending + steps * (coarse ? 5 : 1);
+        n = n < 1 ? 1 : n > APP_MAX_MASSES ? APP_MAX_MASSES : n;
+        if (n == app->masses_pending)
+            return 0;
+        app->masses_pending = n;
+        if (n == app->model->n)
+            return APP_CHANGED_PENDING;
+        return APP_CHANGED_PENDING |
+               app_say(app, false, "Enter applies %d masses (a reset)", app->masses_pending);
+    }
+    case CTL_BOUNDARY:
+        next.boundary = (enum boundary)(((int)next.boundary + steps % BOUNDARY_COUNT +
+                                         BOUNDARY_COUNT) % BOUNDARY_COUNT);
+        return change_control(app, &next, ctl);
+    case CTL_WAVE:
+        next.wave = (enum wave)(((int)next.wave + steps % WAVE_COUNT + WAVE_COUNT) % WAVE_COUNT);
+        return change_control(app, &next, ctl);
+    case CTL_BANDWIDTH:
+        if (steps == 0)
+            return 0;
+        app->cfg.low_bandwidth = !app->cfg.low_bandwidth;
+        return APP_CHANGED_PLAYBACK;
+    case CTL_SPEED: {
+        int i = 0;
+        while (i < NSPEEDS - 1 && speeds[i] < app->speed - 1e-9)
+            i++;
+        i += steps * (coarse ? 2 : 1);
+        double v = speeds[i < 0 ? 0 : i >= NSPEEDS ? NSPEEDS - 1 : i];
+        if (v == app->speed)
+            return 0;
+        app->speed = v;
+        return APP_CHANGED_PLAYBACK;
+    }
+    case CTL_DT:
+    case CTL_DAMPING:
+    case CTL_SPRING:
+    case CTL_MASS:
+    case CTL_AMPLITUDE:
+    case CTL_FREQUENCY:
+        break;
+    default:
+        return 0;
+    }
+    double step = coarse ? ranges[ctl].coarse : ranges[ctl].fine;
+    double v = numeric_value(app, ctl);
+    if (isnan(v))
+        v = ctl == CTL_SPRING ? app->model->k[0] : ctl == CTL_MASS ? app->model->m[0]
+                                                                   : app->model->c[0];
+    /* Snap onto the step grid, then move. */
+    v = round(v / step) * step + steps * step;
+    v = fmin(fmax(v, ranges[ctl].lo), ranges[ctl].hi);
+    set_numeric(&next, ctl, v);
+    return change_control(app, &next, ctl);
+}
+
+/* Says what a control was set to, unless the change had more to say. */
+static unsigned say_set(struct app *app, enum control ctl, unsigned what)
+{
+    if (what & APP_CHANGED_MESSAGE)
+        return what;
+    char value[64];
+    app_control_value(app, ctl, value, sizeof value);
+    return what | app_say(app, false, "%s %s", labels[ctl], value);
+}
+
+unsigned app_set_text(struct app *app, enum control ctl, const char *text)
+{
+    static const enum config_key keys[CTL_COUNT] = {
+        [CTL_PRESET] = CFG_PRESET,     [CTL_MASSES] = CFG_MASSES,   [CTL_DT] = CFG_DT,
+        [CTL_DAMPING] = CFG_DAMPING,   [CTL_SPRING] = CFG_SPRING,   [CTL_MASS] = CFG_MASS,
+        [CTL_BOUNDARY] = CFG_BOUNDARY, [CTL_WAVE] = CFG_WAVE,       [CTL_AMPLITUDE] = CFG_AMPLITUDE,
+        [CTL_FREQUENCY] = CFG_FREQUENCY,
+    };
+    char err[300];
+    if ((unsigned)ctl >= CTL_COUNT || ctl == CTL_PRESET)
+        return 0;
+    if (ctl == CTL_SPEED) {
+        char *end;
+        double v = strtod(text, &end);
+        if (end != text && (*end == 'x' || *end == '\0') && (end[0] == '\0' || end[1] == '\0') &&
+            v >= 0.1 && v <= 10.0) {
+            unsigned what = v != app->speed ? APP_CHANGED_PLAYBACK : 0;
+            app->speed = v;
+            return say_set(app, ctl, what);
+        }
+        app_say(app, true, "speed: '%.40s' is not a number from 0.1 to 10", text);
+        return 0;
+    }
+    if (ctl == CTL_BANDWIDTH) {
+        if (strcmp(text, "low") == 0 || strcmp(text, "normal") == 0) {
+            bool low = text[0] == 'l';
+            unsigned what = low != app->cfg.low_bandwidth ? APP_CHANGED_PLAYBACK : 0;
+            app->cfg.low_bandwidth = low;
+            return say_set(app, ctl, what);
+        }
+        app_say(app, true, "bandwidth: '%.40s' is not low or normal", text);
+        return 0;
+    }
+    /* Checked on a copy, so a bad value changes nothing. */
+    struct config next = app->cfg;
+    if (config_set(&next, (int)keys[ctl], text, err, sizeof err) != 0) {
+        app_say(app, true, "%s: %s", config_options[keys[ctl]].name, err);
+        return 0;
+    }
+    unsigned what = 0;
+    if (ctl == CTL_MASSES ? new_masses(app, next.masses, &what)
+                          : app_change(app, &next, ctl == CTL_FREQUENCY ? CHANGE_SETS_FREQUENCY : 0,
+                                       whys[ctl], &what))
+        return 0;
+    return say_set(app, ctl, what);
+}
+
+unsigned app_apply_masses(struct app *app)
+{
+    unsigned what = 0;
+    if (app->masses_pending == app->model->n)
+        return 0;
+    new_masses(app, app->masses_pending, &what);
+    return what;
+}
+
+unsigned app_set_element(struct app *app, char what, int index, const char *text)
+{
+    const struct model *m = app->model;
+    int n = m->n, count = what == 'k' ? n + 1 : n;
+    enum config_key key = what == 'm' ? CFG_MASS : what == 'c' ? CFG_DAMPING : CFG_SPRING;
+    const char *noun = what == 'k' ? "spring" : "mass";
+    int number = index + (what != 'k');
+    if (index < 0 || index >= count)
+        return 0;
+    /* Check the one value with the key's own rules, on a scratch config. */
+    struct config next;
+    char err[300];
+    config_init(&next);
+    if (config_set(&next, key, text, err, sizeof err) != 0 ||
+        (next.mass.count + next.spring.count + next.damping.count) != 1) {
+        if (next.mass.count + next.spring.count + next.damping.count > 1)
+            snprintf(err, sizeof err, "'%.40s' is more than one value", text);
+        app_say(app, true, "%s %d: %s", noun, number, err);
+        return 0;
+    }
+    double v = (what == 'm' ? next.mass : what == 'c' ? next.damping : next.spring).v[0];
+    /* The settings in force with every element of that list spelled out, one changed. */
+    next = app->cfg;
+    struct config_list *l = what == 'm' ? &next.mass : what == 'c' ? &next.damping : &next.spring;
+    const double *cur = what == 'm' ? m->m : what == 'c' ? m->c : m->k;
+    l->count = count;
+    for (int i = 0; i < count; i++)
+        l->v[i] = cur[i];
+    l->v[index] = v;
+    char why[64];
+    snprintf(why, sizeof why, "the change of %s %d", noun, number);
+    unsigned changed = 0;
+    if (app_change(app, &next, 0, why, &changed) != 0)
+        return 0;
+    if (changed & APP_CHANGED_MESSAGE)
+        return changed;
+    const char *symbol = what == 'm' ? "m" : what == 'c' ? "c" : "k";
+    const char *unit = what == 'm' ? "kg" : what == 'c' ? "N·s/m" : "N/m";
+    return changed | app_say(app, false, "%s %d: %s = %g %s", noun, number, symbol, v, unit);
+}
+
+unsigned app_nearest_mode(struct app *app)
+{
+    if (!app->modes_ok)
+        return 0;
+    int j = modes_nearest(app->modes, app->model->n, app->model->motor.frequency);
+    struct config next = app->cfg;
+    unsigned what = 0;
+    next.frequency = app->modes[j];
+    if (app_change(app, &next, CHANGE_SETS_FREQUENCY, "the nearest mode", &what) != 0)
+        return 0;
+    return what | app_say(app, false, "driving at mode %d, %.3f Hz", j + 1, app->modes[j]);
+}
+
+void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len)
+{
+    const struct model *m = app->model;
+    switch (ctl) {
+    case CTL_PRESET:
+        snprintf(buf, len, "%s", app->preset[0] ? app->preset : "(none)");
+        return;
+    case CTL_MASSES:
+        if (app->masses_pending != m->n)
+            snprintf(buf, len, "%d [Enter: apply]", app->masses_pending);
+        else
+            snprintf(buf, len, "%d", m->n);
+        return;
+    case CTL_BOUNDARY:
+        snprintf(buf, len, "%s", model_boundary_name(m->boundary));
+        return;
+    case CTL_WAVE:
+        snprintf(buf, len, "%s", motor_wave_name(m->motor.wave));
+        return;
+    case CTL_SPEED:
+        snprintf(buf, len, "%gx", app->speed);
+        return;
+    case CTL_BANDWIDTH:
+        snprintf(buf, len, "%s", app->cfg.low_bandwidth ? "low" : "normal");
+        return;
+    default:
+        break;
+    }
+    if ((unsigned)ctl >= CTL_COUNT) {
+        snprintf(buf, len, "%s", "");
+        return;
+    }
+    double v = numeric_value(app, ctl);
+    if (isnan(v)) {
+        snprintf(buf, len, "mixed %s", ranges[ctl].unit);
+        return;
+    }
+    snprintf(buf, len, "%.*f %s", ranges[ctl].decimals, v, ranges[ctl].unit);
+    if (ctl == CTL_FREQUENCY && app->modes_ok) {
+        /* On a natural frequency (within 0.5 %): say which. */
+        int j = modes_nearest(app->modes, m->n, v);
+        if (fabs(v - app->modes[j]) <= 0.005 * app->modes[j])
+            snprintf(buf + strlen(buf), len - strlen(buf), " ◆ f%d", j + 1);
+    }
+}

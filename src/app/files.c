@@ -1,0 +1,137 @@
+/* files.c: what the app reads and writes: presets loaded (through app_change, app.c)
+ * and saved, and the plots' samples exported as CSV. */
+#include "change.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../core/output.h"
+#include "../core/preset.h"
+
+unsigned app_load_preset(struct app *app, const char *path, const char *name)
+{
+    struct config next;
+    char err[600];
+    config_init(&next);
+    if (preset_load(path, &next, err, sizeof err) != PRESET_OK) {
+        app_say(app, true, "%s", err);
+        return 0;
+    }
+    if (next.random && !next.seed_set)
+        next.seed = (uint64_t)time(NULL);
+    unsigned what = 0;
+    if (app_change(app, &next, CHANGE_REBUILD | CHANGE_SETS_FREQUENCY, "the preset", &what)) {
+        snprintf(err, sizeof err, "%s", app->message);
+        app_say(app, true, "%s: %s", path, err);
+        return 0;
+    }
+    snprintf(app->preset, sizeof app->preset, "%s", next.name[0] ? next.name : name);
+    return what | app_say(app, false, "preset %s: %s", app->preset, next.description);
+}
+
+/* A preset name: letters, digits, '-', '_' and '.', not starting with '.', at most 64. */
+static const char *bad_name(const char *name)
+{
+    size_t len = strlen(name);
+    if (len == 0)
+        return "a name is needed";
+    if (len > 64)
+        return "names are at most 64 characters";
+    if (name[0] == '.')
+        return "a name may not start with '.'";
+    for (const char *p = name; *p; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+              *p == '-' || *p == '_' || *p == '.'))
+            return "use letters, digits, '-', '_' and '.' only";
+    return NULL;
+}
+
+/* mkdir -p. */
+static int make_dirs(const char *path)
+{
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return -1;
+        *p = '/';
+    }
+    return mkdir(buf, 0777) != 0 && errno != EEXIST ? -1 : 0;
+}
+
+enum app_save app_save(struct app *app, const char *name, bool overwrite)
+{
+    char dir[4096], path[4200];
+    const char *why = bad_name(name);
+    if (why) {
+        app_say(app, true, "save: '%.40s': %s", name, why);
+        return SAVE_BAD_NAME;
+    }
+    if (preset_user_dir(dir, sizeof dir) != 0) {
+        app_say(app, true, "save: neither XDG_CONFIG_HOME nor HOME is set");
+        return SAVE_FAILED;
+    }
+    snprintf(path, sizeof path, "%s/%s.ini", dir, name);
+    if (!overwrite && access(path, F_OK) == 0) {
+        app_say(app, false, "preset %s exists: replace it? (y/n)", name);
+        return SAVE_EXISTS;
+    }
+    if (make_dirs(dir) != 0) {
+        app_say(app, true, "save: %s: %s", dir, strerror(errno));
+        return SAVE_FAILED;
+    }
+    /* The set-up as it stands: every element's values, the initial conditions. */
+    struct config c;
+    c = app->cfg;
+    if (app->sweep->active)
+        c.frequency = app->sweep_from; /* the drive as the user set it, not the sweep's */
+    snprintf(c.name, sizeof c.name, "%s", name);
+    snprintf(c.description, sizeof c.description, "Saved from springsim");
+    struct output o;
+    int e = output_open(&o, path);
+    if (e == 0) {
+        preset_write(o.fp, &c, app->model);
+        e = output_close(&o, true);
+    }
+    if (e) {
+        app_say(app, true, "save: %s: %s", path, strerror(e));
+        return SAVE_FAILED;
+    }
+    snprintf(app->preset, sizeof app->preset, "%s", name);
+    app_say(app, false, "saved %s (springsim -p %s loads it)", path, name);
+    return SAVE_OK;
+}
+
+unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
+{
+    time_t now = time(NULL);
+    struct tm tm;
+    char stamp[32];
+    localtime_r(&now, &tm);
+    strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+    snprintf(path, len, "%s/springsim-%s.csv", dir ? dir : ".", stamp);
+    const struct trail *tr = app->trail;
+    int n = tr->n;
+    struct output o;
+    int e = output_open(&o, path);
+    if (e == 0) {
+        output_csv_header(o.fp, n, false);
+        const double *rec = trail_first(tr);
+        for (int k = 0; k < tr->count; k++, rec += tr->width)
+            output_csv_values(o.fp, n, rec[TRAIL_T], rec + TRAIL_X(tr, 0), rec + TRAIL_V(tr, 0),
+                              rec + TRAIL_A(tr, 0), rec[TRAIL_U], NULL);
+        e = output_close(&o, true);
+    }
+    if (e) {
+        app_say(app, true, "export: %s: %s", path, strerror(e));
+        return 0;
+    }
+    return app_say(app, false, "exported %d rows to %s", tr->count, path);
+}
