@@ -162,3 +162,174 @@ void plot_curve(struct canvas *c, const double *x, const double *y, int count, s
         px = cx, py = cy;
     }
 }
+
+/* Dot coordinates far off the canvas are held here, so they stay finite and convert to
+ * int; clipping has already cut every segment that reaches that far. */
+#define DOT_FAR 1e9
+
+static double dot_clamp(double d)
+{
+    return d < -DOT_FAR ? -DOT_FAR : d > DOT_FAR ? DOT_FAR : d;
+}
+
+/* Dot x is drawn unless dash leaves out its pair of columns (every other pair). */
+static bool dash_draws(int x, bool dash)
+{
+    return !dash || (x / 2) % 2 == 0;
+}
+
+/* The dot column of x and the dot row of y (from the top) in dot coordinates. A value
+ * half way between two dots goes to the right and up, as it would rounding half up on
+ * the axes (which count y from the bottom). */
+static int dot_x(double x)
+{
+    return (int)floor(x + 0.5);
+}
+
+static int dot_y(double y)
+{
+    return (int)ceil(y - 0.5);
+}
+
+/* Clips the segment to [xmin, xmax] x [ymin, ymax] (Liang-Barsky); false when nothing of
+ * it is inside. */
+static bool clip(double *x0, double *y0, double *x1, double *y1, double xmin, double xmax,
+                 double ymin, double ymax)
+{
+    double dx = *x1 - *x0, dy = *y1 - *y0, t0 = 0.0, t1 = 1.0;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {*x0 - xmin, xmax - *x0, *y0 - ymin, ymax - *y0};
+    for (int i = 0; i < 4; i++) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0)
+                return false;
+            continue;
+        }
+        double r = q[i] / p[i];
+        if (p[i] < 0.0) {
+            if (r > t1)
+                return false;
+            if (r > t0)
+                t0 = r;
+        } else {
+            if (r < t0)
+                return false;
+            if (r < t1)
+                t1 = r;
+        }
+    }
+    double ax = *x0, ay = *y0;
+    *x0 = ax + t0 * dx, *y0 = ay + t0 * dy;
+    *x1 = ax + t1 * dx, *y1 = ay + t1 * dy;
+    return true;
+}
+
+/* The segment between two points in dot coordinates (y from the top), clipped to the
+ * canvas and drawn with Bresenham; dash leaves out columns as plot_trace does. */
+static void segment(struct canvas *c, double fx0, double fy0, double fx1, double fy1, bool dash,
+                    unsigned char color)
+{
+    /* Just inside the outer dots, so that rounding keeps the ends on the canvas. */
+    if (!clip(&fx0, &fy0, &fx1, &fy1, -0.5, 2 * c->cols - 0.5 - 1e-6, -0.5 + 1e-6,
+              4 * c->rows - 0.5))
+        return;
+    int x0 = dot_x(fx0), y0 = dot_y(fy0), x1 = dot_x(fx1), y1 = dot_y(fy1);
+    int dx = abs(x1 - x0), sx = x0 < x1 ? 1 : -1;
+    int dy = -abs(y1 - y0), sy = y0 < y1 ? 1 : -1;
+    int err = dx + dy;
+    for (;;) {
+        if (dash_draws(x0, dash))
+            canvas_set(c, x0, y0, color);
+        if (x0 == x1 && y0 == y1)
+            break;
+        int e2 = 2 * err;
+        if (e2 >= dy) {
+            err += dy;
+            x0 += sx;
+        }
+        if (e2 <= dx) {
+            err += dx;
+            y0 += sy;
+        }
+    }
+}
+
+/* One dot column of a trace: the span of its samples, its first and last sample. */
+struct column {
+    int x;         /* dot column */
+    int lo, hi;    /* dot rows spanned, held to -1 .. h */
+    double fx, fy; /* first sample, dot coordinates */
+    double lx, ly; /* last sample */
+};
+
+/* Draws column k, joined to column p (the one before it, if have_p). */
+static void column_draw(struct canvas *c, struct column *k, const struct column *p, bool have_p,
+                        bool dash, unsigned char color)
+{
+    int h = 4 * c->rows;
+    if (have_p && p->x == k->x - 1) {
+        /* Neighbours: this column's span reaches to the row next to the last one before,
+         * so a line is continuous and a shallow one stays one dot thick. */
+        int join = dot_y(fmin(fmax(p->ly, -1.0), (double)h));
+        if (join < k->lo - 1)
+            k->lo = join + 1;
+        if (join > k->hi + 1)
+            k->hi = join - 1;
+    } else if (have_p) {
+        segment(c, p->lx, p->ly, k->fx, k->fy, dash, color);
+    }
+    if (k->x >= 0 && k->x < 2 * c->cols && dash_draws(k->x, dash))
+        canvas_vspan(c, k->x, k->lo, k->hi, color);
+}
+
+void plot_trace(struct canvas *c, const double *t, const double *y, int count, size_t stride,
+                double t_ref, const struct axis *xa, const struct axis *ya, bool dash,
+                unsigned char color)
+{
+    int w = 2 * c->cols, h = 4 * c->rows;
+    struct column cur = {0}, prev = {0};
+    bool have_cur = false, have_prev = false;
+    for (int k = 0; k < count; k++) {
+        double tk = t[(size_t)k * stride], yk = y[(size_t)k * stride];
+        if (!isfinite(tk) || !isfinite(yk))
+            continue;
+        double fx = dot_clamp(axis_dot(xa, tk - t_ref));
+        double fy = dot_clamp(h - 1 - axis_dot(ya, yk));
+        /* Columns off the canvas are never drawn: all of them on a side share one. */
+        int x = dot_x(fmin(fmax(fx, -2.0), w + 1.0));
+        int r = dot_y(fmin(fmax(fy, -1.0), (double)h));
+        if (!have_cur || x != cur.x) {
+            if (have_cur) {
+                column_draw(c, &cur, &prev, have_prev, dash, color);
+                prev = cur, have_prev = true;
+            }
+            cur = (struct column){x, r, r, fx, fy, fx, fy};
+            have_cur = true;
+        }
+        if (r < cur.lo)
+            cur.lo = r;
+        if (r > cur.hi)
+            cur.hi = r;
+        cur.lx = fx, cur.ly = fy;
+    }
+    if (have_cur)
+        column_draw(c, &cur, &prev, have_prev, dash, color);
+}
+
+void plot_path(struct canvas *c, const double *x, const double *y, int count, size_t stride,
+               const struct axis *xa, const struct axis *ya, unsigned char color)
+{
+    int h = 4 * c->rows;
+    double px = 0.0, py = 0.0;
+    bool have = false;
+    for (int k = 0; k < count; k++) {
+        double xk = x[(size_t)k * stride], yk = y[(size_t)k * stride];
+        if (!isfinite(xk) || !isfinite(yk)) {
+            have = false;
+            continue;
+        }
+        double fx = dot_clamp(axis_dot(xa, xk)), fy = dot_clamp(h - 1 - axis_dot(ya, yk));
+        segment(c, have ? px : fx, have ? py : fy, fx, fy, false, color);
+        px = fx, py = fy, have = true;
+    }
+}

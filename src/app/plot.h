@@ -7,6 +7,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "axis.h"
 #include "braille.h"
 
 /* An axis range kept on tick multiples. */
@@ -42,5 +43,21 @@ void plot_series(struct canvas *c, const double *t, const double *y, int count, 
 /* Rasterises the curve (x_k, y_k) as joined segments onto c. */
 void plot_curve(struct canvas *c, const double *x, const double *y, int count, size_t stride,
                 const struct scale *xs, const struct scale *ys, unsigned char color);
+
+/* Rasterises y(t) onto c on axes: each dot column shows the span from the smallest to the
+ * largest sample in it, joined to the neighbouring columns, so fast oscillations draw as
+ * a band. t is mapped by xa after subtracting t_ref (a rolling window passes t_ref = now),
+ * y by ya (its dots counted from the canvas's bottom). Samples off the canvas are not
+ * drawn but still join to those on it. With dash, every other pair of columns is left
+ * out. Samples are in time order; stride steps through interleaved data; samples that
+ * are not finite are skipped. */
+void plot_trace(struct canvas *c, const double *t, const double *y, int count, size_t stride,
+                double t_ref, const struct axis *xa, const struct axis *ya, bool dash,
+                unsigned char color);
+
+/* Rasterises the path (x_k, y_k) as joined segments onto c, x by xa, y by ya, clipped
+ * to the canvas; a sample that is not finite breaks the path. */
+void plot_path(struct canvas *c, const double *x, const double *y, int count, size_t stride,
+               const struct axis *xa, const struct axis *ya, unsigned char color);
 
 #endif

@@ -1,0 +1,239 @@
+/* axis.c: axes on whole cells. Ticks are 1, 2, 5 x 10^k with the ends rounded outward
+ * (gnuplot's axis.c); the gap between ticks is a whole number of cells, the same for
+ * every gap, and the value-to-dot map is linear over the whole axis, so a gridline never
+ * has to be rounded to a row. Labels are built from the tick's integer count of the
+ * step's decade, so they are exact and never carry floating-point noise. */
+#include "axis.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define WIDEN_MAX 200 /* step widenings, at most: 1e-300 to 1e300 is about 1800 / 3 */
+
+enum form { FORM_PLAIN, FORM_EXP, FORM_ROUGH };
+
+/* The exponent e of a 1-2-5 step's decade 10^e. */
+static int decade(double step)
+{
+    return (int)floor(log10(step) + 1e-9);
+}
+
+/* The 1-2-5 step next above or below step (dir +1 or -1). */
+static double step_next(double step, int dir)
+{
+    double mag = pow(10.0, decade(step)), m = step / mag;
+    if (dir > 0)
+        return (m < 1.5 ? 2.0 : m < 3.5 ? 5.0 : 10.0) * mag;
+    return (m < 1.5 ? 0.5 : m < 3.5 ? 1.0 : 2.0) * mag;
+}
+
+/* The smallest 1-2-5 step putting at most max_ticks intervals on [lo, hi]. */
+static double tick_step(double lo, double hi, int max_ticks)
+{
+    double raw = (hi - lo) / max_ticks;
+    double mag = pow(10.0, floor(log10(raw)));
+    static const double nice[] = {1.0, 2.0, 5.0};
+    for (int i = 0; i < 3; i++)
+        if (nice[i] * mag >= raw * (1.0 - 1e-9))
+            return nice[i] * mag;
+    return 10.0 * mag;
+}
+
+/* True when v is a whole multiple of step (to rounding). */
+static bool on_tick(double v, double step)
+{
+    double q = v / step;
+    return fabs(q) < 1e15 && fabs(q - round(q)) < 1e-6;
+}
+
+/* Tick k as a whole number of units of 10^e; false when it does not fit a long long
+ * comfortably (an offset huge beside the step). */
+static bool tick_units(const struct axis *a, int k, int e, long long *n)
+{
+    double unit = pow(10.0, e);
+    double u = a->lo / unit + k * (a->step / unit);
+    if (!(fabs(u) < 1e15))
+        return false;
+    *n = llround(u);
+    return true;
+}
+
+/* n x 10^e in plain decimals (e < 0: -e decimals) into out[32]; its length, or a length
+ * over AXIS_LABEL_MAX when it could not fit anyway. */
+static int format_plain(long long n, int e, char *out)
+{
+    if (e > 15 || e < -15)
+        return 99;
+    char d[40];
+    int len = snprintf(d, sizeof d, "%0*lld", e < 0 ? 1 - e : 1, llabs(n));
+    const char *sign = n < 0 ? "-" : "";
+    if (e >= 0)
+        return snprintf(out, 32, "%s%s%.*s", sign, d, n ? e : 0, "000000000000000");
+    int whole = len + e; /* digits before the point (>= 1: zero-padded above) */
+    return snprintf(out, 32, "%s%.*s.%s", sign, whole, d, d + whole);
+}
+
+/* n x 10^e as m.mmm e x with m 1..9 and no trailing zeros ("-2e4", "1.5e-5"). */
+static int format_exp(long long n, int e, char *out)
+{
+    if (n == 0)
+        return snprintf(out, 32, "0");
+    char d[24];
+    int len = snprintf(d, sizeof d, "%lld", llabs(n));
+    int x = e + len - 1;
+    while (len > 1 && d[len - 1] == '0')
+        d[--len] = '\0';
+    const char *sign = n < 0 ? "-" : "";
+    if (len == 1)
+        return snprintf(out, 32, "%s%se%d", sign, d, x);
+    return snprintf(out, 32, "%s%c.%se%d", sign, d[0], d + 1, x);
+}
+
+/* v to one significant digit: for an axis no exact label fits (only a hand-made one:
+ * axis_fit widens the step until they do). At most 7 columns for any double. */
+static int format_rough(double v, char *out)
+{
+    if (!isfinite(v))
+        return snprintf(out, 32, "?");
+    if (v == 0.0)
+        return snprintf(out, 32, "0");
+    int e = (int)floor(log10(fabs(v)));
+    /* 10^e underflows below 1e-308: scale v up first. */
+    double m = e < -300 ? v * 1e300 / pow(10.0, e + 300) : v / pow(10.0, e);
+    return format_exp(llround(m), e, out);
+}
+
+/* Tick k's label in form f into out[32]; its length. */
+static int format_tick(const struct axis *a, int k, enum form f, char *out)
+{
+    int e = decade(a->step);
+    long long n;
+    if (f == FORM_ROUGH || !tick_units(a, k, e, &n))
+        return format_rough(a->lo + k * a->step, out);
+    return f == FORM_PLAIN ? format_plain(n, e, out) : format_exp(n, e, out);
+}
+
+/* The form every label of a takes: plain if all fit, else exponent if all fit, else
+ * rough; *width gets the widest label. */
+static enum form label_form(const struct axis *a, int *width)
+{
+    char buf[32];
+    if (a->step > 0.0 && isfinite(a->step) && isfinite(a->lo))
+        for (enum form f = FORM_PLAIN; f < FORM_ROUGH; f++) {
+            int e = decade(a->step), w = 0;
+            long long n;
+            for (int k = 0; k <= a->intervals && w <= AXIS_LABEL_MAX; k++) {
+                int len = tick_units(a, k, e, &n) ? format_tick(a, k, f, buf) : 99;
+                if (len > w)
+                    w = len;
+            }
+            if (w <= AXIS_LABEL_MAX) {
+                *width = w;
+                return f;
+            }
+        }
+    *width = 0;
+    for (int k = 0; k <= a->intervals; k++) {
+        int len = format_tick(a, k, FORM_ROUGH, buf);
+        if (len > *width)
+            *width = len;
+    }
+    return FORM_ROUGH;
+}
+
+/* Rounds [lo, hi] out to multiples of step and places the ticks on the cells. */
+static void lay(struct axis *a, double lo, double hi, double step, bool anchored)
+{
+    double klo = floor(lo / step + 1e-9), khi = ceil(hi / step - 1e-9);
+    if (khi <= klo)
+        khi = klo + 1.0;
+    a->lo = klo * step;
+    a->step = step;
+    a->intervals = (int)(khi - klo);
+    int room = (a->cells - 1) / a->intervals; /* 0: the ticks do not all fit */
+    a->spacing = room < 1 ? 1 : room;
+    int leftover = a->cells - 1 - a->intervals * a->spacing;
+    a->first = anchored ? leftover : leftover / 2;
+}
+
+static void fit(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+                int min_spacing, bool anchored)
+{
+    if (!isfinite(lo) || !isfinite(hi))
+        lo = -1.0, hi = 1.0;
+    lo = fmin(fmax(lo, -1e300), 1e300); /* so that hi - lo stays finite */
+    hi = fmin(fmax(hi, -1e300), 1e300);
+    if (hi < lo) {
+        double t = lo;
+        lo = hi, hi = t;
+    }
+    if (hi - lo <= 1e-12 * fmax(fabs(lo), fabs(hi))) {
+        double pad = lo != 0.0 ? 0.1 * fabs(lo) : 1.0;
+        lo -= pad, hi += pad;
+    }
+    if (max_ticks < 1)
+        max_ticks = 1;
+    a->cells = cells < 1 ? 1 : cells;
+    a->dpc = dpc < 1 ? 1 : dpc;
+    double step = tick_step(lo, hi, max_ticks), finer = step_next(step, -1);
+    /* A range already on ticks of the finer step (a scale's range, rounded out with
+     * max_ticks intervals before) is kept as it is, not rounded out a second time. */
+    if (on_tick(lo, finer) && on_tick(hi, finer) && (hi - lo) / finer <= max_ticks + 1.0 + 1e-6)
+        step = finer;
+    double far = fmax(fabs(lo), fabs(hi));
+    for (int i = 0; i < WIDEN_MAX; i++) {
+        lay(a, lo, hi, step, anchored);
+        int width;
+        bool labels_fit = label_form(a, &width) != FORM_ROUGH;
+        /* One interval is as few as there can be; past far, the ticks are -step, 0, step
+         * at most, and a wider step changes nothing. */
+        bool room = a->intervals * a->spacing <= a->cells - 1;
+        if (labels_fit && ((room && a->spacing >= min_spacing) || a->intervals == 1 || step >= far))
+            return;
+        step = step_next(step, +1);
+    }
+}
+
+void axis_fit(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+              int min_spacing)
+{
+    fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, false);
+}
+
+void axis_fit_anchored(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+                       int min_spacing)
+{
+    fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, true);
+}
+
+/* dot = first*dpc + (dpc - 1)/2 + (v - lo)/step * spacing*dpc: linear, one tick step to
+ * spacing cells, tick 0 on the middle of cell `first`. */
+double axis_dot(const struct axis *a, double v)
+{
+    double centre = a->first * a->dpc + 0.5 * (a->dpc - 1);
+    return centre + (v - a->lo) / a->step * (a->spacing * a->dpc);
+}
+
+double axis_value(const struct axis *a, double d)
+{
+    double centre = a->first * a->dpc + 0.5 * (a->dpc - 1);
+    return a->lo + (d - centre) / (a->spacing * a->dpc) * a->step;
+}
+
+void axis_label(const struct axis *a, int k, char *buf, size_t len)
+{
+    int width;
+    char out[32];
+    format_tick(a, k, label_form(a, &width), out);
+    snprintf(buf, len, "%s", out);
+}
+
+int axis_label_width(const struct axis *a)
+{
+    int width;
+    label_form(a, &width);
+    return width;
+}

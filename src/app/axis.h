@@ -1,0 +1,59 @@
+/* axis.h: a plot axis laid on whole character cells: 1-2-5 ticks at exactly equal
+ * spacing, values mapped linearly onto the dots of every cell, and tick labels that are
+ * never cut. No curses here. */
+#ifndef SPRINGSIM_AXIS_H
+#define SPRINGSIM_AXIS_H
+
+#include <stddef.h>
+
+#define AXIS_LABEL_MAX 7 /* columns a tick label may take, at most */
+
+/* An axis laid along `cells` character cells: tick k (k = 0..intervals) has value
+ * lo + k*step and sits at cell first + k*spacing, counted from the axis's start (the
+ * left for x, the BOTTOM for y). Values map linearly onto dots across ALL cells, so the
+ * cells beyond the outer ticks show values beyond them, and every gap between ticks is
+ * exactly `spacing` cells. */
+struct axis {
+    double lo, step; /* first tick's value, tick step (1, 2 or 5 x 10^k) */
+    int intervals;   /* ticks - 1 (>= 1) */
+    int first;       /* cell of tick 0 */
+    int spacing;     /* cells between ticks (>= 1; >= min_spacing when the cells allow) */
+    int cells, dpc;  /* cells along the axis, dots per cell (2 for x, 4 for y) */
+};
+
+/* Lays [lo, hi] on `cells` cells of dpc dots, rounded outward to a 1-2-5 step with at
+ * most max_ticks intervals (max_ticks + 1 when lo and hi are already on ticks, as a
+ * struct scale's range is, so a scale is laid as it is). Ticks end up at least
+ * min_spacing cells apart and their labels within AXIS_LABEL_MAX columns: if not, the
+ * step is widened (1-2-5) and lo, hi rounded out again. Leftover cells are shared so the
+ * ticks are centred. An axis too short for two ticks min_spacing apart gets the fewest
+ * ticks the range allows, packed as far apart as the cells let them be. */
+void axis_fit(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+              int min_spacing);
+
+/* As axis_fit, but the last tick (hi rounded out) sits on the last cell and the leftover
+ * cells extend the axis below lo: a rolling time axis (-window .. 0) keeps 0 s, the
+ * newest sample, at the right edge. */
+void axis_fit_anchored(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+                       int min_spacing);
+
+/* Dot coordinate (fractional, from the axis start) of value v: tick k's value lands on
+ * the middle of its cell, (first + k*spacing)*dpc + (dpc - 1)/2.0. Dot d covers
+ * [d - 0.5, d + 0.5), so floor(axis_dot + 0.5) is the dot to set; the axis shows the
+ * values from axis_value(a, -0.5) to axis_value(a, cells*dpc - 0.5). */
+double axis_dot(const struct axis *a, double v);
+
+/* The value at dot coordinate d: the inverse of axis_dot. */
+double axis_value(const struct axis *a, double d);
+
+/* Tick k's label, at most AXIS_LABEL_MAX columns, never cut, and on an axis from
+ * axis_fit distinct from every other tick's: plain decimals with as many digits as the
+ * step needs ("-0.25", "10", "-20000") where every label of the axis fits, else exponent
+ * form with a mantissa of 1 to 9.x ("-2e4", "1.5e-5") for all of them. buf takes
+ * AXIS_LABEL_MAX + 1 bytes. */
+void axis_label(const struct axis *a, int k, char *buf, size_t len);
+
+/* Widest tick label of the axis, in columns. */
+int axis_label_width(const struct axis *a);
+
+#endif
