@@ -112,7 +112,10 @@ int main(int argc, char **argv)
     double first = 0.0;
     pump(fd, t0 + 5.0, "Controls", &first);
     pump(fd, now_s() + 0.5, NULL, NULL); /* settle */
-    if (write(fd, " ", 1) != 1)
+    /* The keys a person would press: space, or what BENCH_KEYS says (e.g. "1 " to
+     * enlarge the displacement plot first). */
+    const char *keys = getenv("BENCH_KEYS") ? getenv("BENCH_KEYS") : " ";
+    if (write(fd, keys, strlen(keys)) != (ssize_t)strlen(keys))
         return 1;
     double c0 = cpu_s(pid), w0 = now_s();
     long bytes = pump(fd, w0 + secs, NULL, NULL);
