@@ -63,7 +63,7 @@ static int max_ticks(int cells, int per_tick)
 void chart_fit_y(struct chart *c, double lo, double hi)
 {
     int h = c->area.h > 1 ? c->area.h : 1;
-    int ticks = max_ticks(h, 3);
+    int ticks = max_ticks(h, 2);
     plot_scale_update(&c->ys, lo, hi, ticks, 30);
     axis_fit(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
     chart_ticks_from_axis(&c->yt, &c->ya);
