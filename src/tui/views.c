@@ -11,14 +11,18 @@
 #include "draw.h"
 #include "term.h"
 
+#define ENERGY_HEADER 3 /* rows above the energy view's data: the legend, the balance */
+
 static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5",
                                           "━6", "━7", "━8", "━9", "━10"};
 
 bool views_place(struct views *v, const struct layout *l)
 {
-    bool ok = chart_place(&v->modes, l->area, 0);
-    ok &= chart_place(&v->response.chart, l->area, 0);
-    ok &= chart_place(&v->energy.chart, l->area, 2);
+    /* The modes view is a frame of its own small drawings: no axes, no canvas. */
+    chart_free(&v->modes);
+    v->modes.frame = l->area;
+    bool ok = chart_place(&v->response.chart, l->area, 0);
+    ok &= chart_place(&v->energy.chart, l->area, ENERGY_HEADER);
     v->response.version = 0;
     return ok;
 }
@@ -47,10 +51,11 @@ static void draw_mode(const struct app *app, int j, struct rect r, bool driven)
 {
     const struct model *m = app->model;
     int n = m->n;
-    attron(driven ? term_attr(PAIR_MOTOR) | A_BOLD : A_BOLD);
-    draw_printf(r.y, r.x + 1, r.w - 2, "mode %d  %.4g Hz%s", j + 1, app->modes[j],
-                driven ? "  ◆ driven" : "");
-    attroff(term_attr(PAIR_MOTOR) | A_BOLD);
+    char title[64];
+    int len = snprintf(title, sizeof title, "mode %d  %.3f Hz", j + 1, app->modes[j]);
+    if (driven)
+        snprintf(title + len, sizeof title - len, len + 10 <= r.w - 2 ? "  ◆ driven" : " ◆");
+    draw_text_attr(r.y, r.x + 1, r.w - 2, driven ? term_attr(PAIR_MOTOR) | A_BOLD : A_BOLD, title);
     int dh = r.h - 1, dw = r.w - 2;
     if (dh < 1 || dw < 4)
         return;
@@ -115,7 +120,7 @@ static void draw_modes(struct views *v, const struct app *app)
         if (ch < 2) {
             /* No room for shapes: the frequencies alone. */
             if (r.y < in.y + in.h)
-                draw_printf(r.y, r.x + 1, cw - 1, "%d %.4g Hz", j + 1, app->modes[j]);
+                draw_printf(r.y, r.x + 1, cw - 1, "%d %.3f Hz", j + 1, app->modes[j]);
             continue;
         }
         draw_mode(app, j, r, on_mode && j == driven);
@@ -261,8 +266,8 @@ static void draw_response(struct response_view *rv, const struct app *app, bool 
 
 static void draw_energy(struct energy_view *ev, const struct app *app, bool fresh)
 {
-    static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "dissipated",
-                                                      "motor work", "collisions"};
+    static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "damped",
+                                                      "motor", "contact"};
     static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
                                                PAIR_MOTOR, PAIR_WARN};
     struct chart *c = &ev->chart;
@@ -291,7 +296,8 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
                            now, &c->xa, &c->ya, q == TRAIL_WORK, (unsigned char)colors[q]);
         }
     }
-    chart_draw(c, "Energy (J) and its balance", "Energy (J)", "s", NULL, 0);
+    chart_draw(c, "Energy (J): balance = kinetic + potential + damped + contact − motor",
+               "Energy (J)", "s", NULL, 0);
     /* Above the data: each energy now, in its colour, then how good the balance is. */
     struct rect f = c->frame;
     const double vals[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,
@@ -303,22 +309,21 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
         int len = draw_width(item);
         if (x + len > f.x + f.w - 2)
             x = f.x + 2, y++;
-        if (y > f.y + 2)
+        if (y >= f.y + ENERGY_HEADER)
             break;
         draw_text_attr(y, x, len, term_attr(colors[q]) | A_BOLD, item);
         x += len + 2;
     }
-    if (y > f.y + 1 || c->area.y <= f.y + 2)
-        return; /* the legend took both rows */
+    if (c->area.y <= f.y + ENERGY_HEADER)
+        return; /* no room above the data */
     double drift = app_energy_drift(app);
     char line[200];
     if (e.contact > 0.0)
-        snprintf(line, sizeof line, "kinetic + potential + dissipated + collisions − motor work "
-                 "= %.6g J", e.balance);
+        snprintf(line, sizeof line, "balance %.6g J (contact counted)", e.balance);
     else
-        snprintf(line, sizeof line, "kinetic + potential + dissipated − motor work = %.6g J, "
-                 "drift %.1e of the peak", e.balance, ev->peak > 0 ? fabs(drift) / ev->peak : 0.0);
-    draw_text(f.y + 2, f.x + 2, f.w - 4, line);
+        snprintf(line, sizeof line, "balance %.6g J  drift %.1e of the peak", e.balance,
+                 ev->peak > 0 ? fabs(drift) / ev->peak : 0.0);
+    draw_text(f.y + ENERGY_HEADER, f.x + 2, f.w - 4, line);
 }
 
 void views_draw(struct views *v, const struct app *app, bool refresh)
