@@ -87,17 +87,18 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
         app_say(app, true, "save: %s: %s", dir, strerror(errno));
         return SAVE_FAILED;
     }
-    /* The set-up as it stands: every element's values, the initial conditions. */
-    struct config c;
-    c = app->cfg;
+    /* The set-up as it stands: every element's values, the initial conditions, and the
+     * drive as the user set it, not the sweep's (preset_write reads the model). */
+    struct config c = app->cfg;
+    struct model m = *app->model; /* shares the arrays, only read */
     if (app->sweep->active)
-        c.frequency = app->sweep_from; /* the drive as the user set it, not the sweep's */
+        c.frequency = m.motor.frequency = app->sweep_from;
     snprintf(c.name, sizeof c.name, "%s", name);
     snprintf(c.description, sizeof c.description, "Saved from springsim");
     struct output o;
     int e = output_open(&o, path);
     if (e == 0) {
-        preset_write(o.fp, &c, app->model);
+        preset_write(o.fp, &c, &m);
         e = output_close(&o, true);
     }
     if (e) {
