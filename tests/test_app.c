@@ -646,6 +646,36 @@ static void preset_out_of_range(void **state)
     rmdir(dir);
 }
 
+/* Playback settings are the user's: a preset that does not name them keeps them. */
+static void preset_keeps_playback(void **state)
+{
+    (void)state;
+    assert_int_equal(app_set_text(&app, CTL_BANDWIDTH, "low"),
+                     APP_CHANGED_PLAYBACK | APP_CHANGED_MESSAGE);
+    app.cfg.fps = 12;
+    app.speed = 4.0;
+    unsigned w = preset();
+    assert_true(w);
+    assert_false(w & APP_CHANGED_PLAYBACK);
+    assert_true(app.cfg.low_bandwidth);
+    assert_int_equal(app.cfg.fps, 12);
+    assert_close(app.speed, 4.0, 0.0);
+    /* One that does, changes them. */
+    char dir[] = "/tmp/springsim-pb-XXXXXX", path[512];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/p.ini", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("[run]\nfps = 20\n", f);
+    fclose(f);
+    w = app_load_preset(&app, path, "p");
+    assert_true(w & APP_CHANGED_PLAYBACK);
+    assert_int_equal(app.cfg.fps, 20);
+    assert_true(app.cfg.low_bandwidth);
+    unlink(path);
+    rmdir(dir);
+}
+
 /* ---- the time window and its trails ---- */
 
 static void window_steps_and_clamps(void **state)
@@ -939,6 +969,7 @@ int main(void)
         T(masks_say_what_changed),
         T(refused_input_changes_nothing),
         T(preset_out_of_range),
+        T(preset_keeps_playback),
         T(window_steps_and_clamps),
         T(coarse_trail_covers_60_s),
         T(element_editing),

@@ -167,6 +167,8 @@ static unsigned compare(const struct app *app, const struct config *next, const 
         what |= APP_CHANGED_DRIVE;
     if (next->dt != app->cfg.dt)
         what |= APP_CHANGED_DT;
+    if (next->low_bandwidth != app->cfg.low_bandwidth || next->fps != app->cfg.fps)
+        what |= APP_CHANGED_PLAYBACK;
     return what;
 }
 
@@ -235,6 +237,8 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
         parts_free(&p);
         app->cfg = *next;
         fix_initial(app);
+        if (app->masses_pending != app->model->n)
+            what |= APP_CHANGED_PENDING;
         app->masses_pending = app->model->n;
         if (app->running)
             what |= APP_CHANGED_PLAYBACK;

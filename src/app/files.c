@@ -23,6 +23,11 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
     }
     if (next.random && !next.seed_set)
         next.seed = (uint64_t)time(NULL);
+    /* Playback is the user's: a preset changes it only where it says so. */
+    if (!next.origin[CFG_FPS].line)
+        next.fps = app->cfg.fps;
+    if (!next.origin[CFG_LOW_BANDWIDTH].line)
+        next.low_bandwidth = app->cfg.low_bandwidth;
     unsigned what = 0;
     if (app_change(app, &next, CHANGE_REBUILD | CHANGE_SETS_FREQUENCY, "the preset", &what)) {
         snprintf(err, sizeof err, "%s", app->message);
