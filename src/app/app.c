@@ -183,6 +183,41 @@ static unsigned say_sweep_end(struct app *app, const char *why, int measured, in
                    f == app->sweep_from ? "back at" : "now", f);
 }
 
+/* A new chain from next and m (taken over), at t = 0: all or nothing, every part of it
+ * made before the old one is let go. 0, or -1 (no memory) with the old chain as it was. */
+static int rebuild_from(struct app *app, const struct config *next, struct model *m)
+{
+    struct parts p;
+    if (parts_new(&p, m, next->dt) != 0) {
+        app_say(app, true, "out of memory: the chain is as it was");
+        return -1;
+    }
+    parts_swap(app, &p);
+    parts_free(&p);
+    app->cfg = *next;
+    fix_initial(app);
+    restart(app);
+    return 0;
+}
+
+/* The same chain goes on with next's parameters and m's values (m is freed). */
+static void apply_in_place(struct app *app, const struct config *next, struct model *m,
+                           unsigned what)
+{
+    /* The drive keeps its phase through a change of frequency: no jump in u. */
+    struct motor keep = app->model->motor;
+    motor_retune(&keep, m->motor.frequency, sim_time(app->sim));
+    m->motor.phase = keep.phase;
+    model_copy(app->model, m);
+    model_free(m);
+    sim_set_model(app->sim, app->model);
+    app->cfg = *next;
+    if (what & APP_CHANGED_DT) {
+        sim_set_dt(app->sim, app->cfg.dt);
+        set_sampling(app);
+    }
+}
+
 int app_change(struct app *app, struct config *next, unsigned how, const char *why,
                unsigned *changed)
 {
@@ -227,39 +262,19 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
             what |= APP_CHANGED_DRIVE;
     }
     if (rebuild) {
-        /* All or nothing: every part of the new chain first, then the swap. */
-        struct parts p;
-        if (parts_new(&p, m, next->dt) != 0) {
-            app_say(app, true, "out of memory: the chain is as it was");
+        if (rebuild_from(app, next, m) != 0)
             return -1;
-        }
-        parts_swap(app, &p);
-        parts_free(&p);
-        app->cfg = *next;
-        fix_initial(app);
+        what |= APP_CHANGED_CHAIN | APP_CHANGED_STATE;
         if (app->masses_pending != app->model->n)
             what |= APP_CHANGED_PENDING;
-        app->masses_pending = app->model->n;
         if (app->running)
             what |= APP_CHANGED_PLAYBACK;
+        app->masses_pending = app->model->n;
         app->running = false;
-        restart(app);
-        what |= APP_CHANGED_CHAIN | APP_CHANGED_STATE;
     } else {
-        /* The drive keeps its phase through a change of frequency: no jump in u. */
-        struct motor keep = app->model->motor;
-        motor_retune(&keep, m->motor.frequency, sim_time(app->sim));
-        m->motor.phase = keep.phase;
-        model_copy(app->model, m);
-        model_free(m);
         if (ends)
             sweep_stop(app->sweep);
-        sim_set_model(app->sim, app->model);
-        app->cfg = *next;
-        if (what & APP_CHANGED_DT) {
-            sim_set_dt(app->sim, app->cfg.dt);
-            set_sampling(app);
-        }
+        apply_in_place(app, next, m, what);
     }
     if (what & APP_CHANGED_CHAIN)
         compute_modes(app);
