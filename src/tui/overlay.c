@@ -53,8 +53,8 @@ static void help_line(int i, int y, struct rect r)
             continue;
         char keys[64];
         binding_keys(b, keys, sizeof keys);
-        draw_text_attr(y, r.x + 2, 16, A_BOLD, keys);
-        draw_text(y, r.x + 19, r.w - 21, b->help);
+        draw_text_attr(y, r.x + 2, 14, A_BOLD, keys);
+        draw_text(y, r.x + 17, r.w - 19, b->help);
         return;
     }
     draw_text(y, r.x + 2, r.w - 4, notes[i - k]);

@@ -23,7 +23,7 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
     int d = panel_time_decimals(app->cfg.dt);
     char motor[80], speed[64] = "", line[400];
     if (m->boundary == BOUNDARY_MOTOR)
-        snprintf(motor, sizeof motor, "motor %s %.3g Hz %.3g m", motor_wave_name(m->motor.wave),
+        snprintf(motor, sizeof motor, "motor %s %.2f Hz %.2f m", motor_wave_name(m->motor.wave),
                  m->motor.frequency, m->motor.amplitude);
     else
         snprintf(motor, sizeof motor, "%s end", model_boundary_name(m->boundary));
@@ -33,10 +33,10 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
     /* The full line where it fits; the SPEC's essentials where it does not. */
     snprintf(line, sizeof line, " springsim ▸ %-7s t = %.*f s %s %s %s N %d %s dt %.*f s %s "
              "history %d%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
-             motor, bar, m->n, bar, d, app->cfg.dt, bar, history_count(app->hist), speed);
+             motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, bar, history_count(app->hist), speed);
     if (draw_width(line) > l->cols) {
         if (m->boundary == BOUNDARY_MOTOR)
-            snprintf(motor, sizeof motor, "motor %s %.3g Hz", motor_wave_name(m->motor.wave),
+            snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
                      m->motor.frequency);
         snprintf(line, sizeof line, " %s t = %.*f s %s %s %s history %d%s",
                  app->running ? "Running" : "Paused", d, sim_time(app->sim), bar, motor, bar,
