@@ -30,9 +30,12 @@ static double step_next(double step, int dir)
     return (m < 1.5 ? 0.5 : m < 3.5 ? 1.0 : 2.0) * mag;
 }
 
-/* The smallest 1-2-5 step putting at most max_ticks intervals on [lo, hi]. */
-static double tick_step(double lo, double hi, int max_ticks)
+double axis_step(double lo, double hi, int max_ticks)
 {
+    if (!(hi - lo > 0.0) || !isfinite(hi - lo))
+        return 1.0;
+    if (max_ticks < 1)
+        max_ticks = 1;
     double raw = (hi - lo) / max_ticks;
     double mag = pow(10.0, floor(log10(raw)));
     static const double nice[] = {1.0, 2.0, 5.0};
@@ -40,6 +43,14 @@ static double tick_step(double lo, double hi, int max_ticks)
         if (nice[i] * mag >= raw * (1.0 - 1e-9))
             return nice[i] * mag;
     return 10.0 * mag;
+}
+
+void axis_round_out(double *lo, double *hi, double step)
+{
+    *lo = floor(*lo / step + 1e-9) * step;
+    *hi = ceil(*hi / step - 1e-9) * step;
+    if (*hi <= *lo)
+        *hi = *lo + step;
 }
 
 /* True when v is a whole multiple of step (to rounding). */
@@ -178,7 +189,7 @@ static void fit(struct axis *a, double lo, double hi, int max_ticks, int cells, 
         max_ticks = 1;
     a->cells = cells < 1 ? 1 : cells;
     a->dpc = dpc < 1 ? 1 : dpc;
-    double step = tick_step(lo, hi, max_ticks), finer = step_next(step, -1);
+    double step = axis_step(lo, hi, max_ticks), finer = step_next(step, -1);
     /* A range already on ticks of the finer step (a scale's range, rounded out with
      * max_ticks intervals before) is kept as it is, not rounded out a second time. */
     if (on_tick(lo, finer) && on_tick(hi, finer) && (hi - lo) / finer <= max_ticks + 1.0 + 1e-6)

@@ -21,6 +21,12 @@ struct axis {
     int cells, dpc;  /* cells along the axis, dots per cell (2 for x, 4 for y) */
 };
 
+/* The smallest 1-2-5 x 10^k step that puts at most max_ticks intervals on [lo, hi]. */
+double axis_step(double lo, double hi, int max_ticks);
+
+/* Widens [*lo, *hi] outward to multiples of step (gnuplot's axis ends). */
+void axis_round_out(double *lo, double *hi, double step);
+
 /* Lays [lo, hi] on `cells` cells of dpc dots, rounded outward to a 1-2-5 step with at
  * most max_ticks intervals (max_ticks + 1 when lo and hi are already on ticks, as a
  * struct scale's range is, so a scale is laid as it is). Ticks end up at least

@@ -1,6 +1,6 @@
-/* plot.h: what a plot needs that is not drawing: 1-2-5 ticks with axis ends rounded
- * outward, autoscaling that grows at once and shrinks only after a while, and series
- * rasterised onto a braille canvas (min-max per dot column). No curses here. */
+/* plot.h: what a plot needs that is not drawing: autoscaling that grows at once and
+ * shrinks only after a while, and series rasterised onto a braille canvas on axes
+ * (min-max per dot column). No curses here. */
 #ifndef SPRINGSIM_PLOT_H
 #define SPRINGSIM_PLOT_H
 
@@ -19,30 +19,10 @@ struct scale {
     bool fitted;     /* the range came from data that was not flat */
 };
 
-/* The 1-2-5 x 10^k step that puts at most max_ticks intervals on [lo, hi]. */
-double plot_tick_step(double lo, double hi, int max_ticks);
-
-/* Widens [*lo, *hi] outward to multiples of step. */
-void plot_round_out(double *lo, double *hi, double step);
-
 /* Updates s with the data's range [dmin, dmax]: grows at once to cover it, shrinks to
  * a range less than half as wide only after shrink_after quiet updates. */
 void plot_scale_update(struct scale *s, double dmin, double dmax, int max_ticks,
                        int shrink_after);
-
-/* A tick label for v with as many decimals as step needs ("-0.5", "10", "2e+03"). */
-void plot_tick_label(double v, double step, char *buf, size_t len);
-
-/* Rasterises y(t) for t in [t0, t1] onto c: each dot column shows the span from the
- * smallest to the largest sample that falls in it, joined to its neighbour, so fast
- * oscillations draw as a band instead of aliasing. With dash, only every other pair of
- * columns is drawn. Samples are in time order; stride steps through interleaved data. */
-void plot_series(struct canvas *c, const double *t, const double *y, int count, size_t stride,
-                 double t0, double t1, const struct scale *ys, bool dash, unsigned char color);
-
-/* Rasterises the curve (x_k, y_k) as joined segments onto c. */
-void plot_curve(struct canvas *c, const double *x, const double *y, int count, size_t stride,
-                const struct scale *xs, const struct scale *ys, unsigned char color);
 
 /* Rasterises y(t) onto c on axes: each dot column shows the span from the smallest to the
  * largest sample in it, joined to the neighbouring columns, so fast oscillations draw as
