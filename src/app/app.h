@@ -23,7 +23,6 @@
 
 #define APP_MAX_MASSES 10    /* the interactive program's limit */
 #define APP_DT_MIN 0.001     /* its smallest step (s) */
-#define APP_WINDOW 10.0      /* the time plots' default window (s); app_window() rules */
 #define APP_FMIN 0.1         /* the frequency control's range (Hz) */
 #define APP_FMAX 5.0
 #define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */
@@ -149,7 +148,7 @@ unsigned app_nearest_mode(struct app *app);
 /* Starts (or stops, if running) the sine-sweep experiment across the modes. */
 unsigned app_toggle_sweep(struct app *app);
 
-/* The time plots' window (s): 1, 2, 5, 10, 20, 30 or 60. */
+/* The time plots' window (s): 1, 2, 5, 10 (at start), 20, 30 or 60. */
 double app_window(const struct app *app);
 
 /* Moves dir places along that list (clamped at its ends, with a message). */
