@@ -23,7 +23,9 @@
 #include "term.h"
 #include "views.h"
 
-#define PLOT_HZ 10.0      /* plots, while running */
+#define PLOT_HZ 10.0      /* plots, while running, at most */
+#define PLOT_CELL_HZ 2.4e4 /* plot cells redrawn a second, at most: large plots refresh less
+                            * often, so output stays under 100 KB/s at any size */
 #define LOW_FRAME_HZ 10.0 /* low bandwidth: scene and status */
 #define LOW_PLOT_HZ 0.5   /* low bandwidth: plots, every 2 s */
 #define BACKLOG 8192      /* bytes waiting for the terminal that mean it cannot keep up */
@@ -337,6 +339,25 @@ static bool on_key(struct tui *t, int ch)
     return on_action(t, input_action(ch), ch);
 }
 
+/* Plot refreshes a second while running: PLOT_HZ, fewer where the plots cover so many
+ * cells that redrawing them that often would flood the link. */
+static double plot_hz(const struct tui *t)
+{
+    const struct layout *l = &t->layout;
+    if (t->app.cfg.low_bandwidth)
+        return LOW_PLOT_HZ;
+    double cells = 0.0;
+    if (t->views.shown != VIEW_PLOTS) {
+        struct rect d = layout_drawing(l->area);
+        cells = (double)d.w * d.h;
+    }
+    for (int k = 0; k < l->nplots; k++) {
+        struct rect d = layout_drawing(l->plot[k]);
+        cells += (double)d.w * d.h;
+    }
+    return cells * PLOT_HZ > PLOT_CELL_HZ ? PLOT_CELL_HZ / cells : PLOT_HZ;
+}
+
 /* Frames a second for the scene and the status line. */
 static double frame_hz(const struct tui *t)
 {
@@ -424,10 +445,10 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         double now = now_s();
         advance(&t, &debt, now - last);
         last = now;
-        /* Plots refresh at PLOT_HZ while running, at once after anything else. */
+        /* Plots refresh at plot_hz() while running, at once after anything else. */
         bool refresh = t.plots_dirty || (t.app.running && now >= t.plot_due);
         if (refresh) {
-            t.plot_due = now + 1.0 / (t.app.cfg.low_bandwidth ? LOW_PLOT_HZ : PLOT_HZ);
+            t.plot_due = now + 1.0 / plot_hz(&t);
             t.plots_dirty = false;
         }
         watch_backlog(&t, draw(&t, refresh));
