@@ -97,8 +97,11 @@ void panel_controls(const struct layout *l, const struct app *app, const struct 
     if (y > last || !app->modes_ok)
         return;
     frequency_bar(r, y++, app);
-    /* The natural frequencies, so resonance is checked, not guessed. */
-    if (++y > last)
+    /* The natural frequencies, so resonance is checked, not guessed; a blank row before
+     * them where there is room for it and the numbers. */
+    if (last - y >= 2)
+        y++;
+    if (y > last)
         return;
     draw_text(y, r.x + 2, r.w - 3, "natural frequencies (Hz)");
     int x = r.x + 2;
