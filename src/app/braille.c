@@ -50,11 +50,18 @@ void canvas_set(struct canvas *c, int x, int y, uint8_t color)
 
 void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color)
 {
+    canvas_dashed_line(c, x0, y0, x1, y1, color, false);
+}
+
+void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color,
+                        bool dash)
+{
     int dx = abs(x1 - x0), sx = x0 < x1 ? 1 : -1;
     int dy = -abs(y1 - y0), sy = y0 < y1 ? 1 : -1;
     int err = dx + dy;
     for (;;) {
-        canvas_set(c, x0, y0, color);
+        if (!dash || (x0 / 2) % 2 == 0)
+            canvas_set(c, x0, y0, color);
         if (x0 == x1 && y0 == y1)
             break;
         int e2 = 2 * err;

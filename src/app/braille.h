@@ -3,6 +3,7 @@
 #ifndef SPRINGSIM_BRAILLE_H
 #define SPRINGSIM_BRAILLE_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 struct canvas {
@@ -25,6 +26,10 @@ void canvas_set(struct canvas *c, int x, int y, uint8_t color);
 
 /* Sets the dots of a straight line from (x0, y0) to (x1, y1) (Bresenham). */
 void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color);
+
+/* canvas_line; with dash, only the dots of every other pair of columns (x / 2 even). */
+void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color,
+                        bool dash);
 
 /* Sets every dot of column x from y0 to y1 inclusive, in either order. */
 void canvas_vspan(struct canvas *c, int x, int y0, int y1, uint8_t color);

@@ -125,25 +125,7 @@ static void segment(struct canvas *c, double fx0, double fy0, double fx1, double
     if (!clip(&fx0, &fy0, &fx1, &fy1, -0.5, 2 * c->cols - 0.5 - 1e-6, -0.5 + 1e-6,
               4 * c->rows - 0.5))
         return;
-    int x0 = dot_x(fx0), y0 = dot_y(fy0), x1 = dot_x(fx1), y1 = dot_y(fy1);
-    int dx = abs(x1 - x0), sx = x0 < x1 ? 1 : -1;
-    int dy = -abs(y1 - y0), sy = y0 < y1 ? 1 : -1;
-    int err = dx + dy;
-    for (;;) {
-        if (dash_draws(x0, dash))
-            canvas_set(c, x0, y0, color);
-        if (x0 == x1 && y0 == y1)
-            break;
-        int e2 = 2 * err;
-        if (e2 >= dy) {
-            err += dy;
-            x0 += sx;
-        }
-        if (e2 <= dx) {
-            err += dx;
-            y0 += sy;
-        }
-    }
+    canvas_dashed_line(c, dot_x(fx0), dot_y(fy0), dot_x(fx1), dot_y(fy1), color, dash);
 }
 
 /* One dot column of a trace: the span of its samples, its first and last sample. */
