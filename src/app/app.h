@@ -42,6 +42,10 @@ enum app_change {
     APP_CHANGED_PENDING = 1u << 8,  /* the Masses control's value waiting for Enter */
 };
 
+/* Digits after the point that time step dt needs (2 at least): t and dt are shown with
+ * them, so t = 0.003 s after three steps of 0.001 s and dt 0.0075 s reads whole. */
+int app_time_decimals(double dt);
+
 /* Position of frequency f on the control's range drawn on a log scale, 0 to 1. */
 double app_freq_fraction(double f);
 

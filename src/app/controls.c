@@ -49,6 +49,14 @@ const char *app_control_label(enum control ctl)
     return (unsigned)ctl < CTL_COUNT ? labels[ctl] : "";
 }
 
+int app_time_decimals(double dt)
+{
+    int d = 2;
+    while (d < 6 && fabs(dt * pow(10.0, d) - round(dt * pow(10.0, d))) > 1e-6)
+        d++;
+    return d;
+}
+
 double app_freq_fraction(double f)
 {
     return log(f / APP_FMIN) / log(APP_FMAX / APP_FMIN);
@@ -370,7 +378,10 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         snprintf(buf, len, "mixed %s", ranges[ctl].unit);
         return;
     }
-    snprintf(buf, len, "%.*f %s", ranges[ctl].decimals, v, ranges[ctl].unit);
+    int decimals = ranges[ctl].decimals;
+    if (ctl == CTL_DT && app_time_decimals(v) > decimals)
+        decimals = app_time_decimals(v); /* 0.0075 s, not 0.007 */
+    snprintf(buf, len, "%.*f %s", decimals, v, ranges[ctl].unit);
     if (ctl == CTL_FREQUENCY && app->modes_ok) {
         /* On a natural frequency (within 0.5 %): say which. */
         int j = modes_nearest(app->modes, m->n, v);

@@ -8,19 +8,11 @@
 #include "draw.h"
 #include "term.h"
 
-int panel_time_decimals(double dt)
-{
-    int d = 2;
-    while (d < 6 && fabs(dt * pow(10.0, d) - round(dt * pow(10.0, d))) > 1e-6)
-        d++;
-    return d;
-}
-
 void panel_status(const struct layout *l, const struct app *app, bool behind)
 {
     const struct model *m = app->model;
     const char *bar = "│";
-    int d = panel_time_decimals(app->cfg.dt);
+    int d = app_time_decimals(app->cfg.dt);
     char motor[80], speed[64] = "", line[400];
     if (m->boundary == BOUNDARY_MOTOR)
         snprintf(motor, sizeof motor, "motor %s %.2f Hz %.2f m", motor_wave_name(m->motor.wave),

@@ -15,9 +15,6 @@ struct hint_state {
     bool view;      /* an analysis view has the plot area */
 };
 
-/* Digits after the point that dt needs (at least 2): t and dt are shown with them. */
-int panel_time_decimals(double dt);
-
 /* The status line: state, t, the drive, N, dt, history, playback. */
 void panel_status(const struct layout *l, const struct app *app, bool behind);
 

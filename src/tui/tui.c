@@ -149,10 +149,10 @@ static bool on_action(struct tui *t, enum action a, int ch)
     case ACT_QUIT:
         return false;
     case ACT_RUN:
-        app->running = !app->running;
+        changed = app_set_running(app, !app->running);
         break;
     case ACT_STEP:
-        app->running = false;
+        app_set_running(app, false);
         changed = app_step(app);
         break;
     case ACT_BACK:
