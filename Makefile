@@ -104,10 +104,20 @@ $(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB)
 # The app (no curses) is unit-tested like the core: every test links it.
 $(TEST_BIN): $(APP_OBJ)
 $(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
-# test_app makes the chain's allocations fail on demand and counts the modes' computations
-# (tests/test_app.c wraps them).
+# test_app and test_app_rules share a fixture that makes the chain's allocations fail on
+# demand and counts the modes' computations (tests/app_fixture.c wraps them).
 APP_WRAPPED = config_model sim_new history_new trail_new sweep_new modes_compute modes_stable_dt
-$(BUILD)/tests/test_app: TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
+APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules
+APP_FIXTURE = $(BUILD)/tests/app_fixture.o
+$(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
+$(APP_TESTS): TEST_EXTRA += $(APP_FIXTURE)
+$(APP_TESTS): $(APP_FIXTURE) tests/app_fixture.h
+
+$(APP_FIXTURE): tests/app_fixture.c tests/app_fixture.h tests/testutil.h $(APP_OBJ) $(CORE_LIB) \
+    | $(BUILD)/.deps-test
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc \
+	    -DSRCDIR='"$(CURDIR)"' -c -o $@ $<
 
 $(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
 	@mkdir -p $(@D)
