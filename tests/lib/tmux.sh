@@ -272,6 +272,15 @@ function plot(title,   r, k, s, t, m) {
     }
     return 0
 }
+# at(R, T): the cell (column) where the text T begins on row R, 0 if it is not there
+function at(r, t,   s, k, i) {
+    s = ""
+    for (k = 1; k <= ncol[r]; k++) s = s c[r, k]
+    if ((i = index(s, t)) == 0) return 0
+    s = substr(s, 1, i - 1)
+    for (k = 1; k <= ncol[r] && length(s) > 0; k++) s = substr(s, length(c[r, k]) + 1)
+    return k
+}
 function trim(s) { sub(/^ +/, "", s); sub(/ +$/, "", s); return s }
 # label(R): the text left of the y axis on row R, trimmed
 function label(r,   k, s) {
@@ -285,6 +294,12 @@ plot_awk() { # plot_awk 'END { ... }' [VAR=VALUE]...
     pa_prog=$1
     shift
     LC_ALL=C awk "$@" "$CELLS_AWK$pa_prog" "${PLOT_SCR:-$scr}"
+}
+# cell_of TEXT [ROWTEXT]: "ROW COLUMN" (1-based cells) where TEXT first begins, on a row
+# that also holds ROWTEXT if given; nothing if it is not on the screen
+cell_of() {
+    plot_awk 'END { for (r = 1; r <= nrow; r++) if ((k = at(r, text)) && (rowtext == "" || at(r, rowtext))) { print r, k; exit } }' \
+        -v "text=$1" -v "rowtext=$2"
 }
 # plot_area TITLE: "COLS ROWS" of the drawing area of the plot titled TITLE (the cells
 # right of its y axis, inside the frame, beside the y axis and above the x axis);
