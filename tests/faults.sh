@@ -86,60 +86,54 @@ if [ "$rc" -eq 1 ] && grep -q 'warning: dt = 0.05 s is above the RK4 stability l
     grep -q 'dt < 0.0' "$tmp/e" && ! grep -qi nan "$tmp/o"; then pass; else
     fail "unstable dt: expected a warning, a stop naming the limit and no nan; got $rc: $(head -c 300 "$tmp/e")"
 fi
+# In a terminal (tests/lib/tmux.sh; skipped without tmux): the same warning and stop.
 if command -v tmux >/dev/null 2>&1; then
-    sock=springsim-faults-$$
-    tmux -L "$sock" -f /dev/null new-session -d -x 100 -y 30 \
-        "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM --spring 5000 --dt 0.05; sleep 5"
-    seen=
-    for _ in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20; do
-        sleep 0.1
-        scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
-        case $scr in *"above the stability limit"*) seen=1; break ;; esac
-    done
-    if [ -n "$seen" ]; then pass; else
-        fail "interactive: no stability warning at start with dt 0.05 and k 5000; bottom line: $(printf '%s\n' "$scr" | tail -1)"
+    f_lc=${LC_ALL-}
+    . "$(dirname "$0")/lib/tmux.sh"
+    start unstable 100 30 -- --spring 5000 --dt 0.05
+    start sel 120 40 -- -n 10
+    start lowbw 120 40 -- --low-bandwidth
+    S=unstable
+    if wait_for 'above the stability limit' 3; then pass; else
+        fail "interactive: no stability warning at start with dt 0.05 and k 5000; bottom line: $(last_line)"
     fi
-    tmux -L "$sock" send-keys ' ' 2>/dev/null
-    sleep 1
-    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
-    case $scr in
-    *"unstable: dt too large for these springs; dt < 0.0"*"s is stable"*) pass ;;
-    *) fail "interactive: running an unstable chain did not pause with the limit; bottom line: $(printf '%s\n' "$scr" | tail -1)" ;;
-    esac
-    case $scr in *nan* | *NaN* | *inf*) fail "interactive: nan or inf on screen" ;; *) pass ;; esac
-    tmux -L "$sock" kill-server 2>/dev/null
+    keys Space
+    if wait_for 'unstable: dt too large for these springs; dt < 0.0' 3 && has 's is stable' && has Paused; then
+        pass
+    else
+        fail "interactive: running an unstable chain did not pause with the limit; bottom line: $(last_line)"
+    fi
+    if grep -qiE '(^|[^[:alpha:]])[-+]?(nan|inf)([^[:alpha:]]|$)' "$scr"; then fail "interactive: nan or inf on screen"; else pass; fi
     # Found in review: with spring 10 of a 10-mass chain selected, loading a one-mass
     # preset kept the selection past the end of the chain (an out-of-bounds read).
-    sock=$sock-sel
-    tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 \
-        "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM -n 10; echo EXITED \$?; sleep 5"
-    sleep 0.6
-    tmux -L "$sock" send-keys Tab Up Up 2>/dev/null
-    sleep 0.2
-    tmux -L "$sock" send-keys p 2>/dev/null
-    sleep 0.3
-    tmux -L "$sock" send-keys Down Enter 2>/dev/null
-    sleep 0.5
-    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
-    case $scr in
-    *EXITED*) fail "loading a shorter preset with the chain focused killed the program" ;;
-    *"spring 10"*) fail "the selection stayed on spring 10 of a one-mass chain" ;;
-    *"mass 1: m"*) pass ;;
-    *) fail "after loading a shorter preset the chain selection is not on mass 1: $(printf '%s\n' "$scr" | sed -n 6p)" ;;
-    esac
-    tmux -L "$sock" kill-server 2>/dev/null
+    if up sel; then
+        keys Tab
+        wait_for '─ mass 1: m' 3
+        keys Up Up
+        if wait_for '─ spring 10: k' 3; then
+            keys p
+            wait_for ' Presets ' 3
+            keys Down Enter
+            wait_gone ' Presets ' 3
+            if has 'EXITED'; then fail "loading a shorter preset with the chain focused killed the program"
+            elif has 'spring 10'; then fail "the selection stayed on spring 10 of a one-mass chain"
+            elif wait_for '─ mass 1: m' 3 && wait_for 'N 1 ' 3; then pass
+            else fail "after loading a shorter preset the chain selection is not on mass 1: $(grep '^└─ ' "$scr" | head -n 1)"
+            fi
+        else
+            fail "Tab, ↑, ↑ on a 10-mass chain should select spring 10; screen: $(brief "$scr" '^└─ ')"
+        fi
+    fi
     # --low-bandwidth shows in the status line and on its control, which turns it off.
-    sock=$sock-lowbw
-    tmux -L "$sock" -f /dev/null new-session -d -x 120 -y 40 \
-        "env LANG=C.UTF-8 TERM=xterm-256color $SPRINGSIM --low-bandwidth; sleep 5"
-    sleep 0.6
-    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
-    case $scr in *low-bw*"Bandwidth  low"*) pass ;; *) fail "--low-bandwidth: not shown in the status and the Bandwidth control" ;; esac
-    tmux -L "$sock" send-keys Up Right 2>/dev/null
-    sleep 0.4
-    scr=$(tmux -L "$sock" capture-pane -p 2>/dev/null)
-    case $scr in *"Bandwidth  normal"*) pass ;; *) fail "the Bandwidth control did not turn low bandwidth off" ;; esac
-    tmux -L "$sock" kill-server 2>/dev/null
+    if up lowbw; then
+        if has 'low-bw' && has 'Bandwidth  low'; then pass; else
+            fail "--low-bandwidth: not shown in the status and the Bandwidth control"
+        fi
+        keys Up Right
+        if wait_for 'Bandwidth  normal' 3; then pass; else fail "the Bandwidth control did not turn low bandwidth off"; fi
+    fi
+    tm kill-server 2>/dev/null
+    if [ -n "$f_lc" ]; then LC_ALL=$f_lc; else unset LC_ALL; fi
 fi
 
 # 6. A terminal that stops reading (a stalled link): the program steps down to low
