@@ -15,7 +15,7 @@ const struct binding input_bindings[] = {
     {'R', ACT_RANDOM, "R", "R", "random initial positions"},
     {'p', ACT_PRESETS, "p", "p", "preset menu"},
     {'1', ACT_ENLARGE, "1-6", "1-6",
-     "enlarge plot 1 x, 2 v, 3 a, 4 x-v, 5 x-a, 6 v-a; again: grid"},
+     "enlarge: 1 x, 2 v, 3 a, 4 x-v, 5 x-a, 6 v-a (again: grid)"},
     {'2', ACT_ENLARGE, "1-6", "1-6", NULL},
     {'3', ACT_ENLARGE, "1-6", "1-6", NULL},
     {'4', ACT_ENLARGE, "1-6", "1-6", NULL},

@@ -124,25 +124,25 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
         draw_text_attr(y, 1, l->cols - 1, a, app->message);
         return;
     }
-    /* In order of importance: as many as fit. */
+    /* In order of importance; each one that does not fit is left out, not the rest. */
     struct hint hints[16];
     int n = 0;
     hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
     hints[n++] = (struct hint){".", "step"};
+    if (h->view)
+        hints[n++] = (struct hint){"m f e", "views (again: plots)"};
+    else
+        hints[n++] = (struct hint){"m f e", "views"};
+    if (h->enlarged >= 0)
+        hints[n++] = (struct hint){"0", "all plots"};
+    else if (!h->view)
+        hints[n++] = (struct hint){"1-6", "enlarge"};
+    hints[n++] = (struct hint){"<>", "window"};
     if (!app->running)
         hints[n++] = (struct hint){",", "back"};
     hints[n++] = (struct hint){"r", "reset"};
-    if (h->view)
-        hints[n++] = (struct hint){"m f e", "views (again: plots)"};
-    else if (h->enlarged >= 0)
-        hints[n++] = (struct hint){"0", "all plots"};
-    else
-        hints[n++] = (struct hint){"1-6", "enlarge"};
-    hints[n++] = (struct hint){"<>", "window"};
-    if (!h->view)
-        hints[n++] = (struct hint){"m f e", "modes response energy"};
     hints[n++] = (struct hint){"p", "presets"};
-    hints[n++] = (struct hint){"↑↓←→", "controls"};
+    hints[n++] = (struct hint){term_utf8() ? "↑↓←→" : "arrows", "controls"};
     hints[n++] = (struct hint){"Enter", "type"};
     hints[n++] = (struct hint){"Tab", "masses"};
     hints[n++] = (struct hint){"?", "help"};
@@ -150,7 +150,7 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     for (int i = 0; i < n; i++) {
         int need = draw_width(hints[i].key) + 1 + draw_width(hints[i].what);
         if (x + need > l->cols - 1)
-            break;
+            continue;
         x += draw_text_attr(y, x, need, A_BOLD, hints[i].key) + 1;
         x += draw_text(y, x, l->cols - x, hints[i].what) + 2;
     }

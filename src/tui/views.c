@@ -23,6 +23,7 @@ bool views_place(struct views *v, const struct layout *l)
     v->modes.frame = l->area;
     bool ok = chart_place(&v->response.chart, l->area, 0);
     ok &= chart_place(&v->energy.chart, l->area, ENERGY_HEADER);
+    v->energy.chart.zero_line = true;
     v->response.version = 0;
     return ok;
 }
