@@ -19,8 +19,8 @@ shown() { grep -oE '┌─* [1-6] ' "$scr" | sed 's/[^1-6]//g' | tr -d '\n'; } #
 shown_is() { [ "$(shown)" = "$1" ]; }
 # area_at_least TITLE COLS ROWS: the plot's drawing area (plot_area) is at least that
 area_at_least() { aa=$(plot_area "$1"); [ -n "$aa" ] && [ "${aa% *}" -ge "$2" ] && [ "${aa#* }" -ge "$3" ]; }
-# x_from N: the time axis of plot 1 starts at N (s)
-x_from() { awk -v a="$(xlabels "$t1" | head -n 1)" -v n="$1" 'BEGIN { exit !(a != "" && a + 0 == n) }'; }
+# x_from N [TITLE]: the time axis of the plot TITLE (default $t1) starts at N (s)
+x_from() { awk -v a="$(xlabels "${2:-$t1}" | head -n 1)" -v n="$1" 'BEGIN { exit !(a != "" && a + 0 == n) }'; }
 # xlabels TITLE: the numbers under the x axis of the plot titled TITLE
 xlabels() {
     plot_awk 'END { if (plot(title)) { s = ""; for (k = left + 1; k < right; k++) s = s cell(axr + 1, k); print s } }' \
@@ -166,8 +166,7 @@ if up big; then
             fail "120x40: plot $d enlarged should draw on at least 70x24 cells beside the controls, has '$(plot_area "$t")'; screen: $(brief "$scr" '┌─* [1-6] ')"
         fi
         case $d in 1 | 2 | 3)
-            x=$(xlabels "$t" | head -n 1)
-            if [ "$x" = -10 ]; then pass; else
+            if poll 1 x_from -10 "$t"; then pass; else
                 fail "120x40: plot $d's time axis should start at -10 (s), reads '$(xlabels "$t" | tr '\n' ' ')'"
             fi
             ;;
