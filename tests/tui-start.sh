@@ -28,6 +28,7 @@ start mono 120 40 NO_COLOR=1
 start vt100 100 30 TERM=vt100
 start xterm8 100 30 TERM=xterm
 start noterm 100 30 TERM=no-such-terminal
+start dumb 100 30 TERM=dumb
 
 # ---- the first screen at 120x40 ----
 if up main; then
@@ -205,6 +206,14 @@ if wait_for 'TERMINAL '; then
 else
     fail "TERM=no-such-terminal: expected the program to give up with a message; screen: $(brief)"
 fi
+
+# TERM=dumb (Emacs' shell, some CI logs) cannot move the cursor: the program should say
+# it cannot use it, as for an unknown TERM, or still show a screen a person can use
+S=dumb
+if poll 3 eval 'has Controls || (ended && has_re "dumb|terminal")'; then pass; else
+    fail "TERM=dumb: expected a message that this terminal cannot be used (as for an unknown TERM) or the normal screen; the screen shows only: $(grep -n . "$scr" | cut -c 1-100 | tr '\n' '|')"
+fi
+if ended && ! has 'TERMINAL SAME'; then fail "TERM=dumb: the terminal modes differ after exit"; fi
 
 # ---- nothing died on the way ----
 for s in main small mid big resize tiny one ascii mono vt100 xterm8; do
