@@ -338,7 +338,9 @@ unsigned app_nearest_mode(struct app *app)
     next.frequency = app->modes[j];
     if (app_change(app, &next, CHANGE_SETS_FREQUENCY, "the nearest mode", &what) != 0)
         return 0;
-    return what | app_say(app, false, "driving at mode %d, %.3f Hz", j + 1, app->modes[j]);
+    return what | app_say(app, false, "%sdriving at mode %d, %.3f Hz",
+                          what & APP_CHANGED_MESSAGE ? "sweep stopped; " : "", j + 1,
+                          app->modes[j]);
 }
 
 void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len)

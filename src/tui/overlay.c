@@ -12,21 +12,70 @@
 
 #define HELP_WIDTH 80 /* the help box, at most */
 
-/* The help's lines: one per key binding that has help, then notes on the mouse and
- * typing. Line i into buf (key and text); false past the end. */
+#define HELP_MAX_ROWS 160 /* wrapped help rows, at most */
+#define KEY_COLS 14       /* the help's column of keys */
+
+/* The notes after the keys, on the mouse and typing. */
 static const char *const notes[] = {
     "",
-    "Mouse: click a control to select it, wheel to adjust it;",
-    "drag a mass (paused) to set its initial position.",
+    "Mouse: click a control to select it, wheel to adjust it; drag a mass (paused) to set "
+    "its initial position.",
     "Values can be typed: select a control and press Enter.",
 };
 
-static int help_lines(void)
+/* One row of the help as shown: a binding's keys (or none) and a piece of text. */
+struct help_row {
+    const struct binding *b; /* the binding whose keys start this row, or NULL */
+    const char *text;        /* the text, len bytes of it */
+    int len;
+    bool note;               /* a note: across the whole box, not in the text column */
+};
+
+/* The help laid out for a box w columns wide: each binding's text, then the notes,
+ * wrapped at spaces so no line is cut. Returns the rows. */
+static int help_rows_for(int w, struct help_row *rows)
 {
     int n = 0;
-    for (const struct binding *b = input_bindings; b->name; b++)
-        n += b->help != NULL;
-    return n + (int)(sizeof notes / sizeof *notes);
+    const int nnotes = (int)(sizeof notes / sizeof *notes);
+    const struct binding *b = input_bindings;
+    for (int note = -1; note < nnotes && n < HELP_MAX_ROWS;) {
+        const struct binding *key = NULL;
+        const char *text;
+        int width;
+        if (note < 0) {
+            while (b->name && !b->help)
+                b++;
+            if (!b->name) {
+                note = 0;
+                continue;
+            }
+            key = b, text = b->help, width = w - KEY_COLS - 5;
+            b++;
+        } else {
+            text = notes[note++], width = w - 4;
+        }
+        if (width < 8)
+            width = 8;
+        /* Wrap text at spaces into rows of at most width columns. */
+        do {
+            const char *end = text, *cut = NULL;
+            int cols = 0;
+            while (*end && cols < width) {
+                if (*end == ' ')
+                    cut = end;
+                end++;
+                while ((*end & 0xC0) == 0x80)
+                    end++;
+                cols++;
+            }
+            if (*end && *end != ' ' && cut)
+                end = cut;
+            rows[n++] = (struct help_row){key, text, (int)(end - text), note >= 0};
+            key = NULL;
+            text = *end == ' ' ? end + 1 : end;
+        } while (*text && n < HELP_MAX_ROWS);
+    }
+    return n;
 }
 
 /* The keys of binding b and the other keys of its action, as the help shows them. */
@@ -42,22 +91,20 @@ static void binding_keys(const struct binding *b, char *keys, size_t len)
     }
 }
 
-/* Draws help line i at row y of box r. */
-static void help_line(int i, int y, struct rect r)
+/* Draws help row h at row y of box r. */
+static void help_line(const struct help_row *h, int y, struct rect r)
 {
-    int k = 0;
-    for (const struct binding *b = input_bindings; b->name; b++) {
-        if (!b->help)
-            continue;
-        if (k++ != i)
-            continue;
+    char text[256];
+    snprintf(text, sizeof text, "%.*s", h->len, h->text);
+    if (h->b) {
         char keys[64];
-        binding_keys(b, keys, sizeof keys);
-        draw_text_attr(y, r.x + 2, 14, A_BOLD, keys);
-        draw_text(y, r.x + 17, r.w - 19, b->help);
-        return;
+        binding_keys(h->b, keys, sizeof keys);
+        draw_text_attr(y, r.x + 2, KEY_COLS, A_BOLD, keys);
     }
-    draw_text(y, r.x + 2, r.w - 4, notes[i - k]);
+    if (h->note)
+        draw_text(y, r.x + 2, r.w - 4, text);
+    else
+        draw_text(y, r.x + 3 + KEY_COLS, r.w - KEY_COLS - 5, text);
 }
 
 /* A centred box of h x w, cleared, with a title. */
@@ -73,10 +120,16 @@ static struct rect overlay_box(const struct layout *l, int h, int w, const char 
     return r;
 }
 
-/* Rows of help text the box shows at a time. */
-static int help_rows(const struct layout *l)
+/* The help box's width on this screen. */
+static int help_width(const struct layout *l)
 {
-    int h = help_lines() + 3;
+    return HELP_WIDTH < l->cols - 2 ? HELP_WIDTH : l->cols - 2;
+}
+
+/* Rows of help text the box shows at a time, for n rows of help. */
+static int help_visible(const struct layout *l, int n)
+{
+    int h = n + 3;
     if (h > l->rows - 2)
         h = l->rows - 2;
     return h - 3;
@@ -84,20 +137,27 @@ static int help_rows(const struct layout *l)
 
 static void draw_help(const struct overlay *o, const struct layout *l)
 {
-    int n = help_lines();
+    struct help_row help[HELP_MAX_ROWS];
+    int n = help_rows_for(help_width(l), help);
     struct rect r = overlay_box(l, n + 3, HELP_WIDTH, "Keys");
     int rows = r.h - 3, top = o->help_top;
     if (top > n - rows) /* the screen grew since the last scroll */
         top = n - rows > 0 ? n - rows : 0;
     for (int i = 0; i < rows && top + i < n; i++)
-        help_line(top + i, r.y + 1 + i, r);
+        help_line(&help[top + i], r.y + 1 + i, r);
     /* Where the view is, so the end is never a guess. */
     char foot[120];
     if (rows >= n)
         snprintf(foot, sizeof foot, "all %d lines; ? or Esc closes", n);
-    else
+    else {
+        /* The longest form that fits: where the view is comes first. */
+        const char *more = top + rows >= n ? " (end)" : " ▼ more";
         snprintf(foot, sizeof foot, "lines %d–%d of %d%s  ↑↓ PgUp PgDn scroll  Esc closes",
-                 top + 1, top + rows, n, top + rows >= n ? " (end)" : " ▼ more");
+                 top + 1, top + rows, n, more);
+        if (draw_width(foot) > r.w - 4)
+            snprintf(foot, sizeof foot, "lines %d–%d of %d%s  ↑↓ PgUp PgDn", top + 1,
+                     top + rows, n, more);
+    }
     draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), foot);
 }
 
@@ -211,36 +271,27 @@ void overlay_free(struct overlay *o)
     o->npresets = 0;
 }
 
-/* Acts on the text typed, by what it was for. */
+/* Acts on the text typed, by what it was for; the app says what came of it. */
 static unsigned finish_edit(struct overlay *o, struct app *app, const struct selection *sel)
 {
     int i = sel->elem / 2;
-    unsigned changed = 0;
     switch (o->target) {
     case EDIT_CONTROL:
-        if (o->edit_len && (changed = app_set_text(app, (enum control)sel->control, o->edit)))
-            app_say(app, false, "%s set", app_control_label((enum control)sel->control));
-        break;
+        return o->edit_len ? app_set_text(app, (enum control)sel->control, o->edit) : 0;
     case EDIT_MASS:
-        if ((changed = app_set_element(app, 'm', i, o->edit)))
-            app_say(app, false, "mass %d: m = %g kg", i + 1, app->model->m[i]);
-        break;
+        return app_set_element(app, 'm', i, o->edit);
     case EDIT_DAMPING:
-        if ((changed = app_set_element(app, 'c', i, o->edit)))
-            app_say(app, false, "mass %d: c = %g N·s/m", i + 1, app->model->c[i]);
-        break;
+        return app_set_element(app, 'c', i, o->edit);
     case EDIT_SPRING:
-        if ((changed = app_set_element(app, 'k', i, o->edit)))
-            app_say(app, false, "spring %d: k = %g N/m", i, app->model->k[i]);
-        break;
+        return app_set_element(app, 'k', i, o->edit);
     case EDIT_SAVE:
         if (app_save(app, o->edit, false) == SAVE_EXISTS) {
             snprintf(o->save_name, sizeof o->save_name, "%s", o->edit);
             o->kind = OVERLAY_CONFIRM;
         }
-        break;
+        return APP_CHANGED_MESSAGE;
     }
-    return changed;
+    return 0;
 }
 
 static unsigned edit_key(struct overlay *o, struct app *app, const struct selection *sel, int ch)
@@ -289,7 +340,9 @@ static unsigned preset_key(struct overlay *o, struct app *app, enum action a)
 /* Scrolls the help; the screen's size bounds it when drawn. */
 static void help_key(struct overlay *o, const struct layout *l, int ch)
 {
-    int page = help_rows(l) - 1, n = help_lines(), last = n - help_rows(l);
+    struct help_row help[HELP_MAX_ROWS];
+    int n = help_rows_for(help_width(l), help), rows = help_visible(l, n);
+    int page = rows > 1 ? rows - 1 : 1, last = n - rows;
     switch (ch) {
     case KEY_UP:
     case 'k':

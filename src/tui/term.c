@@ -2,6 +2,8 @@
  * the terminal back on every way out. */
 #include "term.h"
 
+#include <term.h>
+
 #include <langinfo.h>
 #include <signal.h>
 #include <stdio.h>
@@ -128,6 +130,15 @@ bool term_start(void)
     }
     if (!newterm(NULL, stdout, stdin)) {
         fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n",
+                getenv("TERM") ? getenv("TERM") : "unset");
+        return false;
+    }
+    /* A terminal that cannot place the cursor (TERM=dumb) would show one garbled line. */
+    const char *cup = tigetstr("cup");
+    if (cup == NULL || cup == (char *)-1) {
+        endwin();
+        fprintf(stderr, "springsim: this terminal (TERM=%s) cannot move the cursor; the "
+                        "interactive program needs one (use --headless, --modes or --sweep)\n",
                 getenv("TERM") ? getenv("TERM") : "unset");
         return false;
     }
