@@ -22,6 +22,7 @@ start ctl 120 40
 start chain 120 40
 start menu 120 40
 start help 80 24
+start help60 60 20
 start hints 120 40
 start hints80 80 24
 start dt1 120 40 -- --dt 0.001
@@ -233,6 +234,33 @@ if up help; then
         fi
     else
         fail "help at 80x24: '?' should open it; screen: $(brief)"
+    fi
+fi
+
+# ---- at the smallest size, 60x20, the help wraps its lines: every text shown whole ----
+if up help60; then
+    keys '?'
+    if wait_for 'preset menu'; then
+        help_body >"$tmp/h60.all"
+        n=0
+        while lacks '(end)' && [ $n -lt 30 ]; do
+            p=$(help_pos)
+            keys PgDn
+            poll 3 pos_not "$p" || break
+            help_body >>"$tmp/h60.all"
+            n=$((n + 1))
+        done
+        tr -s ' ' <"$tmp/h60.all" | tr '\n' ' ' | tr -s ' ' >"$tmp/h60.text"
+        cut=
+        tab=$(printf '\t')
+        while IFS=$tab read -r k what; do
+            grep -qF -- "$(printf '%s' "$what" | tr -s ' ')" "$tmp/h60.text" || cut="$cut | $k: $what"
+        done <"$tmp/keys"
+        if has '(end)' && [ -s "$tmp/keys" ] && [ -z "$cut" ]; then pass; else
+            fail "help at 60x20: scrolled to the end, these lines of --keys are not shown whole$cut; screen: $(brief "$scr" 'lines')"
+        fi
+    else
+        fail "help at 60x20: '?' should open it; screen: $(brief)"
     fi
 fi
 
