@@ -15,6 +15,7 @@ static volatile sig_atomic_t quit_signal; /* SIGINT, SIGTERM, SIGHUP received */
 static bool curses_on;
 static bool utf8;
 static bool color;
+static bool rich; /* 256 colours */
 
 bool term_utf8(void)
 {
@@ -89,7 +90,7 @@ static void init_colors(void)
     static const short c8[10] = {COLOR_BLUE, COLOR_GREEN,  COLOR_RED,   COLOR_MAGENTA,
                                  COLOR_CYAN, COLOR_YELLOW, COLOR_BLUE,  COLOR_GREEN,
                                  COLOR_RED,  COLOR_MAGENTA};
-    bool rich = COLORS >= 256;
+    rich = COLORS >= 256;
     for (int i = 0; i < 10; i++)
         init_pair((short)(PAIR_MASS + i), rich ? c256[i] : c8[i], -1);
     init_pair(PAIR_MOTOR, rich ? 163 : COLOR_MAGENTA, -1);
@@ -101,9 +102,11 @@ static void init_colors(void)
     init_pair(PAIR_SELECT, -1, -1);
 }
 
+static attr_t eight_color_boost(int p);
+
 attr_t term_attr(int p)
 {
-    attr_t a = color ? COLOR_PAIR(p) : A_NORMAL;
+    attr_t a = (color ? COLOR_PAIR(p) : A_NORMAL) | eight_color_boost(p);
     switch (p) {
     case PAIR_TITLE:
     case PAIR_WARN:
@@ -118,6 +121,14 @@ attr_t term_attr(int p)
 attr_t term_mass_attr(int i)
 {
     return term_attr(PAIR_MASS + i % 10);
+}
+
+/* With 8 colours, blue is too dark to read on black: its bright form reads on both. */
+static attr_t eight_color_boost(int p)
+{
+    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 && (p - PAIR_MASS) % 6 == 0
+               ? A_BOLD
+               : 0;
 }
 
 bool term_start(void)

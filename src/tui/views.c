@@ -65,7 +65,7 @@ static void draw_mode(const struct app *app, int j, struct rect r, bool driven)
         return;
     const double *phi = app->shapes + (size_t)j * n;
     int H = 4 * dh, W = 2 * dw;
-    double mid = 0.5 * (H - 1), amp = 0.5 * (H - 1) - 1.0;
+    double mid = 0.5 * (H - 1), amp = 0.5 * (H - 1) - 2.0; /* the markers stay inside */
     /* The zero line: the chain at rest. */
     int zrow = r.y + 1 + (int)lround(mid) / 4;
     attron(term_attr(PAIR_GRID));
@@ -83,8 +83,8 @@ static void draw_mode(const struct app *app, int j, struct rect r, bool driven)
     for (int i = 0; i < n; i++) {
         int x = (int)lround((double)(i + 1) * (W - 1) / (n + 1));
         int y = (int)lround(mid - amp * phi[i]);
-        for (int dx = -1; dx <= 1; dx++)
-            for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -2; dx <= 2; dx++)
+            for (int dy = -2; dy <= 2; dy++)
                 canvas_set(c, x + dx, y + dy, (uint8_t)(PAIR_MASS + i % 10));
     }
     draw_canvas(c, r.y + 1, r.x + 1);
