@@ -215,12 +215,6 @@ else
     fail "export: expected it to run to t = 1 s; screen: $(brief)"
 fi
 
-for s in export save edit; do
-    if alive "$s"; then pass; else
-        S=$s
-        cap
-        fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
-    fi
-done
+all_alive export save edit
 
 summary

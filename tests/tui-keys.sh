@@ -156,6 +156,17 @@ fi
 # help_pos: "FIRST LAST COUNT" of the help's "lines FIRST–LAST of COUNT"
 help_pos() { sed -n 's/.*lines \([0-9]*\)–\([0-9]*\) of \([0-9]*\).*/\1 \2 \3/p' "$scr" | head -n 1; }
 pos_not() { [ "$(help_pos)" != "$1" ]; }
+# page_to_end FILE: PgDn through the help to its end, each page's text appended to FILE
+page_to_end() {
+    n=0
+    while lacks '(end)' && [ $n -lt 30 ]; do
+        p=$(help_pos)
+        keys PgDn
+        poll 3 pos_not "$p" || break
+        help_body >>"$1"
+        n=$((n + 1))
+    done
+}
 # help_body: the overlay's text lines (inside its frame, above "lines a–b of N")
 help_body() {
     awk '/ Keys / { on = 1; next } / lines [0-9]+–[0-9]+ of / { on = 0 } on' "$scr" |
@@ -179,14 +190,7 @@ if up help; then
             fail "help: ↓ should scroll one line (lines 2–$(($2 + 1)) of $3); $(brief "$scr" 'lines')"
         fi
         help_body >>"$tmp/help.all"
-        n=0
-        while lacks '(end)' && [ $n -lt 20 ]; do
-            p=$(help_pos)
-            keys PgDn
-            poll 3 pos_not "$p" || break
-            help_body >>"$tmp/help.all"
-            n=$((n + 1))
-        done
+        page_to_end "$tmp/help.all"
         last=$(help_pos)
         if has '(end)' && [ "${last#* }" = "$3 $3" ] && help_body | grep -qE '^q +quit$'; then pass; else
             fail "help: PgDn to the end should show 'q quit' and 'lines a–$3 of $3 (end)'; screen: $(brief "$scr" 'lines|quit')"
@@ -242,14 +246,7 @@ if up help60; then
     keys '?'
     if wait_for 'preset menu'; then
         help_body >"$tmp/h60.all"
-        n=0
-        while lacks '(end)' && [ $n -lt 30 ]; do
-            p=$(help_pos)
-            keys PgDn
-            poll 3 pos_not "$p" || break
-            help_body >>"$tmp/h60.all"
-            n=$((n + 1))
-        done
+        page_to_end "$tmp/h60.all"
         tr -s ' ' <"$tmp/h60.all" | tr '\n' ' ' | tr -s ' ' >"$tmp/h60.text"
         cut=
         tab=$(printf '\t')
@@ -521,12 +518,6 @@ else
 fi
 
 # ---- nothing died on the way ----
-for s in main ctl chain menu help hints hints80 dt1 dt75 branch; do
-    if alive "$s"; then pass; else
-        S=$s
-        cap
-        fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
-    fi
-done
+all_alive main ctl chain menu help hints hints80 dt1 dt75 branch
 
 summary

@@ -320,12 +320,6 @@ else
     fail "80x24 -p resonance: expected it to run to t = 10 s; screen: $(brief)"
 fi
 
-for s in $sessions; do
-    if alive "$s"; then pass; else
-        S=$s
-        cap
-        fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
-    fi
-done
+all_alive $sessions
 
 summary

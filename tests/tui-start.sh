@@ -216,12 +216,6 @@ fi
 if ended && ! has 'TERMINAL SAME'; then fail "TERM=dumb: the terminal modes differ after exit"; fi
 
 # ---- nothing died on the way ----
-for s in main small mid big resize tiny one ascii mono vt100 xterm8; do
-    if alive "$s"; then pass; else
-        S=$s
-        cap
-        fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
-    fi
-done
+all_alive main small mid big resize tiny one ascii mono vt100 xterm8
 
 summary

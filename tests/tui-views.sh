@@ -271,12 +271,6 @@ else
     fail "energy, -p no-damping: expected it to run to t = 3 s; screen: $(brief)"
 fi
 
-for s in $sessions; do
-    if alive "$s"; then pass; else
-        S=$s
-        cap
-        fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
-    fi
-done
+all_alive $sessions
 
 summary

@@ -138,6 +138,16 @@ lacks() { ! grep -qF -- "$1" "$scr"; }
 keys() { tm send-keys -t "$S" "$@"; }
 text() { tm send-keys -t "$S" -l "$1"; }
 alive() { [ -s "$tmp/$1.pid" ] && kill -0 "$(cat "$tmp/$1.pid")" 2>/dev/null; }
+# all_alive SESSION...: one check per session that its program is still running
+all_alive() {
+    for s in "$@"; do
+        if alive "$s"; then pass; else
+            S=$s
+            cap
+            fail "session $s: the program is no longer running; screen: $(brief "$scr" 'EXITED')"
+        fi
+    done
+}
 # the program has ended and pane.sh has said so: nothing on the screen will change
 ended() { grep -qE '^TERMINAL (SAME|CHANGED)$' "$scr"; }
 
