@@ -41,6 +41,7 @@ struct sim {
     double rot_phase;    /* the drive's phase then */
     double rot_sn, rot_cs; /* sin and cos of the drive's angle there */
     int rot_carried;     /* steps since sin and cos were last taken afresh */
+    enum integrator integrator; /* the stepper in use */
 };
 
 struct sim *sim_new(const struct model *model, double dt)
@@ -63,6 +64,7 @@ struct sim *sim_new(const struct model *model, double dt)
     s->tmp = s->k2 + len;
     s->inv_m = s->tmp + len;
     s->dt = dt;
+    s->integrator = INTEGRATOR_RK4;
     sim_set_model(s, model);
     return s;
 }
@@ -86,6 +88,16 @@ void sim_set_model(struct sim *s, const struct model *model)
     model_copy(s->model, model);
     for (int i = 0; i < s->n; i++)
         s->inv_m[i] = 1.0 / s->model->m[i];
+}
+
+void sim_set_integrator(struct sim *s, enum integrator i)
+{
+    s->integrator = i;
+}
+
+enum integrator sim_integrator(const struct sim *s)
+{
+    return s->integrator;
 }
 
 double sim_time(const struct sim *s)

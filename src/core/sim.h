@@ -3,6 +3,7 @@
 #ifndef SPRINGSIM_SIM_H
 #define SPRINGSIM_SIM_H
 
+#include "integrator.h"
 #include "model.h"
 
 enum sim_status {
@@ -35,6 +36,12 @@ const struct model *sim_model(const struct sim *s);
 
 /* Replaces every parameter with those of model (same n); takes effect at the next step. */
 void sim_set_model(struct sim *s, const struct model *model);
+
+/* Chooses the integrator for the steps from now on (rk4 unless set). */
+void sim_set_integrator(struct sim *s, enum integrator i);
+
+/* The integrator in use. */
+enum integrator sim_integrator(const struct sim *s);
 
 /* Changes the step; the time so far is kept and later steps lie on t + n*dt. */
 void sim_set_dt(struct sim *s, double dt);
