@@ -125,12 +125,45 @@ static void collisions_off(void **state)
 static void velocity_cap(void **state)
 {
     (void)state;
+    struct model *md = model_new(4);
+    md->m[0] = 2.0;
     double v[4] = {60.0, -70.0, 49.0, -50.0};
-    assert_int_equal(collision_cap(4, v), 2);
+    struct collision_books b = {0.0, 0.0};
+    assert_int_equal(collision_cap(md, v, &b), 2);
     assert_close(v[0], 50.0, 0.0);
     assert_close(v[1], -50.0, 0.0);
     assert_close(v[2], 49.0, 0.0);
     assert_close(v[3], -50.0, 0.0);
+    /* The energy the cap took is booked: 1/2 2 (60^2 - 50^2) + 1/2 1 (70^2 - 50^2). */
+    assert_close(b.lost, 1100.0 + 1200.0, 1e-9);
+    model_free(md);
+}
+
+/* A pile-up the sweeps cannot clear leaves no pair closing, and momentum is kept. */
+static void pile_up_keeps_momentum(void **state)
+{
+    (void)state;
+    struct model *md = model_new(200);
+    md->boundary = BOUNDARY_FREE;
+    static double x[200], v[200];
+    double p0 = 0.0;
+    for (int i = 0; i < 200; i++) {
+        x[i] = -model_equilibrium(md, i) + 5.0 + 1e-5 * i;
+        v[i] = (i % 3) - 1.0;
+        p0 += md->m[i] * v[i];
+    }
+    collision_apply(md, x, v, 0.0, 0.0);
+    double p1 = 0.0, w = model_block_width(md);
+    for (int i = 0; i < 200; i++)
+        p1 += md->m[i] * v[i];
+    assert_close(p1, p0, 1e-9);
+    for (int i = 0; i + 1 < 200; i++) {
+        double gap = model_equilibrium(md, i + 1) + x[i + 1] - model_equilibrium(md, i) - x[i];
+        if (gap <= w + 1e-9 && v[i] > v[i + 1] + 1e-12)
+            fail_msg("masses %d and %d touch and still close at %g m/s", i + 1, i + 2,
+                     v[i] - v[i + 1]);
+    }
+    model_free(md);
 }
 
 /* Long chains: the blocks shrink to half the spacing, and even 1000 masses piled on one
@@ -162,6 +195,7 @@ int main(void)
         cmocka_unit_test(equal_masses_average),
         cmocka_unit_test(collisions_off),
         cmocka_unit_test(velocity_cap),
+        cmocka_unit_test(pile_up_keeps_momentum),
         cmocka_unit_test(long_chain_blocks),
     };
     return cmocka_run_group_tests_name("collision", tests, NULL, NULL);

@@ -87,18 +87,7 @@ double model_end_position(const struct model *m, double t)
 
 void model_accel(const struct model *m, const double *x, const double *v, double u, double *a)
 {
-    int n = m->n;
-    /* Force of spring j is k_j * stretch_j, stretch_j = (right end) - (left end). */
-    double left = m->k[0] * x[0];
-    for (int i = 0; i < n; i++) {
-        double right;
-        if (i < n - 1)
-            right = m->k[i + 1] * (x[i + 1] - x[i]);
-        else
-            right = m->boundary == BOUNDARY_FREE ? 0.0 : m->k[n] * (u - x[i]);
-        a[i] = (right - left - m->c[i] * v[i]) / m->m[i];
-        left = right;
-    }
+    model_rates(m, NULL, x, v, u, 0.0, a, NULL, NULL);
 }
 
 double model_potential(const struct model *m, const double *x, double u)

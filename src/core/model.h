@@ -43,6 +43,36 @@ double model_block_width(const struct model *m);
 /* Right-end position u(t): the motor's for BOUNDARY_MOTOR, 0 otherwise. */
 double model_end_position(const struct model *m, double t);
 
+/* The one equation of motion (SPEC section 1): accelerations a[i] at displacements x,
+ * velocities v and right end u moving at du; with diss and work not NULL, also the power
+ * the dampers take (sum c_i v_i^2) and the power the motor gives (k_N (u - x_N) du).
+ * inv_m (1/m_i) saves the divisions where a caller keeps it; NULL divides. Inline: it is
+ * the inner loop of every stepper. */
+__attribute__((always_inline)) static inline void
+model_rates(const struct model *m, const double *inv_m, const double *x, const double *v, double u,
+            double du, double *a, double *diss, double *work)
+{
+    int n = m->n;
+    const double *k = m->k, *c = m->c;
+    /* Force of spring j is k_j * stretch_j, stretch_j = (right end) - (left end). */
+    double left = k[0] * x[0], d = 0.0;
+    for (int i = 0; i < n - 1; i++) {
+        double right = k[i + 1] * (x[i + 1] - x[i]);
+        double fd = c[i] * v[i];
+        a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+        d += fd * v[i];
+        left = right;
+    }
+    int i = n - 1;
+    double right = m->boundary == BOUNDARY_FREE ? 0.0 : k[n] * (u - x[i]);
+    double fd = c[i] * v[i];
+    a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+    if (diss)
+        *diss = d + fd * v[i];
+    if (work)
+        *work = right * du;
+}
+
 /* Accelerations a[i] from the equation of motion at displacements x, velocities v and
  * right-end position u (ignored for BOUNDARY_FREE). */
 void model_accel(const struct model *m, const double *x, const double *v, double u, double *a);

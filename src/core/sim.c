@@ -1,47 +1,48 @@
-/* sim.c: fixed-step classic RK4 (Runge-Kutta 1901/Kutta; e.g. Hairer, Norsett and
- * Wanner, Solving ODEs I, II.1) on the state y = (d, v, D, W):
- *   d' = v,  v' = a(t, d, v),  D' = sum c_i v_i^2,  W' = k_N (u - d_N) u',
- * so the dissipated energy D and the motor's work W are integrated to the same order
- * as the motion. A step that contains a breakpoint of the waveform is split there into
- * RK4 sub-steps, each evaluating the drive on its own smooth piece, which keeps 4th
- * order for square, triangle and sawtooth drives. Where the drive jumps, the motor does
- * the work 1/2 k_N ((u+ - d_N)^2 - (u- - d_N)^2) in an instant; it is added to W.
- * After each full step: collisions, then the velocity cap. */
+/* sim.c: the driver (GSL odeiv2's "driver" layer): it owns the time grid t = t_base +
+ * n dt, splits each step at the drive's breakpoints so every stepper sees one smooth
+ * piece, locates each contact inside the step, and keeps the energy books.
+ *
+ * Contacts are events: after a piece is stepped, a constraint that ended up violated is
+ * traced back along the step's cubic Hermite interpolant of the positions (the velocities
+ * are their exact derivatives) to the instant its gap closed; the piece is stepped again
+ * to that instant, the contact rule is applied there, and the piece goes on from it. A
+ * step error of O(h^5) in the state gives a contact instant to O(h^4), so the method's
+ * order survives contacts. A constraint that was already touching and barely moving is
+ * a resting contact: it is put back on its limit at the end of the step instead. */
 #include "sim.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "collision.h"
+#include "stepper.h"
 
-/* Breakpoints inside one step: dt <= 0.05 s and f of a few hertz give at most one, but
- * any number is handled, MAX_SPLIT at a time. */
+/* Breakpoints of the drive inside one step, handled MAX_SPLIT at a time. */
 #define MAX_SPLIT 16
+/* Contacts located inside one piece; any more are resolved at its end. */
+#define MAX_EVENTS 16
+/* Contacts closing in one piece that are located one by one; more is a pile-up. */
+#define MAX_LOCATED 3
+/* Gaps within this of zero count as touching. */
+#define TOUCH 1e-12
 
 struct sim {
-    struct model *model; /* own copy of the parameters */
+    struct stepper *st;  /* the steppers, with the model's own copy */
+    struct collision_limits lim;
     int n;               /* masses */
     double dt;           /* step */
     double t_base;       /* time at step 0 of the current dt */
     double steps;        /* whole steps since t_base (exact in a double to 2^53) */
+    enum integrator integrator;
     double contact;      /* energy removed by contacts and the cap */
     int last_contacts;   /* contacts and caps in the last step */
     int last_capped;     /* caps in the last step */
-    double *y;           /* 2N+2: d, v, D, W */
-    double *y0;          /* state at the start of the step, for restoring */
-    double *k1, *k2, *tmp; /* RK4: the stages' running sum, one stage, its argument */
-    double *inv_m;       /* 1/m_i */
-    double rot_w, rot_h; /* w and h the rotations below were made for */
-    double rot_s1, rot_c1, rot_s2, rot_c2; /* sin, cos of w h/2 and of w h */
-    double end_u, end_du; /* a sine drive's u and u' at the end of the last sub-step */
-    double rot_next_t;   /* where the last sine step ended (NAN: none) */
-    double rot_phase;    /* the drive's phase then */
-    double rot_sn, rot_cs; /* sin and cos of the drive's angle there */
-    int rot_carried;     /* steps since sin and cos were last taken afresh */
-    enum integrator integrator; /* the stepper in use */
+    double *y;           /* 2N+2: x, v, D (dissipated), W (motor work) */
+    double *y0;          /* the state at the start of the step, for restoring */
+    const double *ya;    /* the state at the start of the piece being stepped: y0 or ya_buf */
+    double *ya_buf;      /* room for it when the piece starts inside the step */
 };
 
 struct sim *sim_new(const struct model *model, double dt)
@@ -51,18 +52,16 @@ struct sim *sim_new(const struct model *model, double dt)
     struct sim *s = calloc(1, sizeof *s);
     if (!s)
         return NULL;
-    s->model = model_new(n);
-    s->y = calloc(5 * len + (size_t)n, sizeof *s->y);
-    if (!s->model || !s->y) {
+    s->st = stepper_new(model);
+    s->y = calloc(3 * len, sizeof *s->y);
+    if (!s->st || !s->y) {
         sim_free(s);
         return NULL;
     }
     s->n = n;
     s->y0 = s->y + len;
-    s->k1 = s->y0 + len;
-    s->k2 = s->k1 + len;
-    s->tmp = s->k2 + len;
-    s->inv_m = s->tmp + len;
+    s->ya_buf = s->y0 + len;
+    s->ya = s->ya_buf;
     s->dt = dt;
     s->integrator = INTEGRATOR_RK4;
     sim_set_model(s, model);
@@ -73,21 +72,20 @@ void sim_free(struct sim *s)
 {
     if (!s)
         return;
-    model_free(s->model);
+    stepper_free(s->st);
     free(s->y);
     free(s);
 }
 
 const struct model *sim_model(const struct sim *s)
 {
-    return s->model;
+    return stepper_model(s->st);
 }
 
 void sim_set_model(struct sim *s, const struct model *model)
 {
-    model_copy(s->model, model);
-    for (int i = 0; i < s->n; i++)
-        s->inv_m[i] = 1.0 / s->model->m[i];
+    stepper_set_model(s->st, model, s->dt);
+    collision_limits(&s->lim, model);
 }
 
 void sim_set_integrator(struct sim *s, enum integrator i)
@@ -110,6 +108,7 @@ void sim_set_dt(struct sim *s, double dt)
     s->t_base = sim_time(s);
     s->steps = 0.0;
     s->dt = dt;
+    stepper_set_model(s->st, sim_model(s), dt);
 }
 
 double sim_dt(const struct sim *s)
@@ -132,116 +131,183 @@ void sim_reset(struct sim *s, const double *x, const double *v)
     s->last_capped = 0;
 }
 
-/* dy/dt at state y with the right end at u moving at du. */
-static void deriv(const struct sim *s, const double *y, double u, double du, double *dy)
+/* Books what contacts did: the losses, and the piston's work as the motor's. */
+static void book(struct sim *s, const struct collision_books *b)
 {
-    const struct model *m = s->model;
+    s->contact += b->lost;
+    s->y[2 * s->n + 1] += b->piston;
+}
+
+/* Position of mass i at theta in [0, 1] of a step of length h from state ya to y: the
+ * cubic Hermite interpolant (Hermite, 1878) of x with x' = v at both ends. */
+static double hermite(const double *ya, const double *y, int n, int i, double h, double th)
+{
+    double t2 = th * th, t3 = t2 * th;
+    double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + th, h01 = -2 * t3 + 3 * t2,
+           h11 = t3 - t2;
+    return h00 * ya[i] + h10 * h * ya[n + i] + h01 * y[i] + h11 * h * y[n + i];
+}
+
+/* Gap of constraint k at theta of the step [a, a + h] from ya to y. */
+static double gap_at(const struct sim *s, const struct drive *d, int k, double a, double h,
+                     double th)
+{
+    const double *ya = s->ya, *y = s->y;
     int n = s->n;
-    const double *x = y, *v = y + n;
-    const double *k = m->k, *c = m->c;
-    double *dx = dy, *dv = dy + n;
-    double left = k[0] * x[0], diss = 0.0;
-
-    for (int i = 0; i < n - 1; i++) {
-        double right = k[i + 1] * (x[i + 1] - x[i]);
-        double fd = c[i] * v[i];
-        dx[i] = v[i];
-        dv[i] = (right - left - fd) * s->inv_m[i];
-        diss += fd * v[i];
-        left = right;
-    }
-    int i = n - 1;
-    double right = 0.0, work = 0.0;
-    if (m->boundary != BOUNDARY_FREE) {
-        right = k[n] * (u - x[i]);
-        work = right * du;
-    }
-    double fd = c[i] * v[i];
-    dx[i] = v[i];
-    dv[i] = (right - left - fd) * s->inv_m[i];
-    dy[2 * n] = diss + fd * v[i];
-    dy[2 * n + 1] = work;
+    const struct collision_limits *l = &s->lim;
+    if (k == 0)
+        return l->spacing + hermite(ya, y, n, 0, h, th) - 0.5 * l->w;
+    if (k < n)
+        return l->spacing + hermite(ya, y, n, k, h, th) - hermite(ya, y, n, k - 1, h, th) -
+               l->w;
+    double u, du;
+    drive_eval(d, a + th * h, &u, &du);
+    return MODEL_LENGTH + u - 0.5 * l->w - (n * l->spacing + hermite(ya, y, n, n - 1, h, th));
 }
 
-/* The sine drive u = A sin(th), du = A w cos(th) at a, a + h/2 and a + h, with one
- * sincos: sin and cos at the later times follow from the angle-addition formulas with
- * sin, cos of w h/2 and w h, kept while w and h stay the same. Exact to a few ulp. */
-static void sine_drive(struct sim *s, double a, double b, double *u0, double *du0,
-                       double *um, double *dum, double *u1, double *du1)
+/* The first theta in (0, 1] at which constraint k's gap closes along the step, given that
+ * it is violated at its end: a coarse scan for the first sign change, then regula falsi
+ * (Illinois) to the root. */
+static double closing_time(const struct sim *s, const struct drive *d, int k, double a,
+                           double h)
 {
-    double h = b - a;
-    const struct motor *mot = &s->model->motor;
-    double w = 2.0 * M_PI * mot->frequency, amp = mot->amplitude;
-    /* b - a of a grid step differs from dt by the rounding of t (a few ulp of b, which
-     * grow with t): such a step keeps the rotation made for dt, an angle error no larger
-     * than that rounding makes anyway. */
-    if (fabs(h - s->dt) <= 1e-12 * s->dt + 8.0 * DBL_EPSILON * fabs(b))
-        h = s->dt;
-    if (w != s->rot_w || h != s->rot_h) {
-        sincos(0.5 * w * h, &s->rot_s1, &s->rot_c1);
-        sincos(w * h, &s->rot_s2, &s->rot_c2);
-        s->rot_w = w;
-        s->rot_h = h;
-        s->rot_next_t = NAN; /* nothing to carry over */
+    enum { SCAN = 8 };
+    double lo = 0.0, glo = gap_at(s, d, k, a, h, 0.0);
+    if (glo <= 0.0)
+        return 0.0;
+    double hi = 1.0, ghi = gap_at(s, d, k, a, h, 1.0);
+    for (int j = 1; j < SCAN; j++) {
+        double th = (double)j / SCAN, g = gap_at(s, d, k, a, h, th);
+        if (g < 0.0) {
+            hi = th, ghi = g;
+            break;
+        }
+        lo = th, glo = g;
     }
-    double sn, cs;
-    if (a == s->rot_next_t && mot->phase == s->rot_phase && s->rot_carried < 64) {
-        /* This step starts where the last ended: carry its sin and cos over, and only
-         * every 64 steps take them afresh, so rounding cannot build up. */
-        sn = s->rot_sn, cs = s->rot_cs;
-        s->rot_carried++;
-    } else {
-        sincos(w * a + 2.0 * M_PI * mot->phase, &sn, &cs);
-        s->rot_carried = 0;
+    int side = 0;
+    for (int it = 0; it < 100 && hi - lo > 1e-15; it++) {
+        double th = (lo * ghi - hi * glo) / (ghi - glo);
+        double g = gap_at(s, d, k, a, h, th);
+        if (g > 0.0) {
+            lo = th, glo = g;
+            if (side == -1)
+                ghi *= 0.5;
+            side = -1;
+        } else {
+            hi = th, ghi = g;
+            if (side == 1)
+                glo *= 0.5;
+            side = 1;
+        }
+        if (fabs(g) < 1e-15)
+            return th;
     }
-    double sm = sn * s->rot_c1 + cs * s->rot_s1, cm = cs * s->rot_c1 - sn * s->rot_s1;
-    double se = sn * s->rot_c2 + cs * s->rot_s2, ce = cs * s->rot_c2 - sn * s->rot_s2;
-    s->rot_next_t = b;
-    s->rot_phase = mot->phase;
-    s->rot_sn = se, s->rot_cs = ce;
-    *u0 = amp * sn, *du0 = amp * w * cs;
-    *um = amp * sm, *dum = amp * w * cm;
-    *u1 = amp * se, *du1 = amp * w * ce;
+    return hi;
 }
 
-/* y += h/6 (k1 + 2 k2 + 2 k3 + k4) over [a, b] with the drive taken from one piece. */
-static void rk4(struct sim *s, double a, double b, const struct motor_piece *piece)
+/* At an instant of contact: every touching constraint that is closing gets the contact
+ * rule; what is still closing after three sweeps is a cluster, which moves as one.
+ * Returns the contacts. */
+static int hit_touching(struct sim *s, double u, double du)
 {
-    int len = 2 * s->n + 2;
-    double h = b - a, h2 = 0.5 * h;
-    double u0 = 0, du0 = 0, um = 0, dum = 0, u1 = 0, du1 = 0;
-    double *y = s->y, *tmp = s->tmp, *k1 = s->k1, *k2 = s->k2;
+    int n = s->n, hits = 0;
+    struct collision_books b = {0.0, 0.0};
+    const struct model *m = sim_model(s);
+    int found = 1;
+    for (int sweep = 0; sweep < 3 && found; sweep++) {
+        found = 0;
+        for (int k = 0; k < s->lim.count; k++)
+            if (collision_gap(&s->lim, k, s->y, u) <= TOUCH)
+                found += collision_hit(&s->lim, m, k, s->y + n, du, &b);
+        hits += found;
+    }
+    if (found) /* still closing after three sweeps: a cluster, which moves as one */
+        hits += collision_merge(&s->lim, m, s->y, s->y + n, u, du, &b);
+    book(s, &b);
+    return hits;
+}
 
-    const struct model *m = s->model;
-    if (m->boundary == BOUNDARY_MOTOR && m->motor.wave == WAVE_SINE) {
-        sine_drive(s, a, b, &u0, &du0, &um, &dum, &u1, &du1);
-        s->end_u = u1;
-        s->end_du = du1;
-    } else if (m->boundary == BOUNDARY_MOTOR) {
-        motor_piece_eval(piece, a, &u0, &du0);
-        motor_piece_eval(piece, a + h2, &um, &dum);
-        motor_piece_eval(piece, b, &u1, &du1);
+/* Steps the piece [a, b] on drive d with its contacts; at_start when the piece starts
+ * the step (the state is still y0). 0, or -1 on a stepper failure. */
+static int piece(struct sim *s, const struct drive *d, double a, double b, bool at_start)
+{
+    int n = s->n, len = 2 * n + 2;
+    enum integrator integ = s->integrator;
+    for (int events = 0;; events++) {
+        if (events == 0 && at_start) {
+            s->ya = s->y0;
+        } else {
+            memcpy(s->ya_buf, s->y, (size_t)len * sizeof *s->y);
+            s->ya = s->ya_buf;
+        }
+        if (stepper_apply(s->st, integ, d, a, b, s->y) != 0)
+            return -1;
+        if (!s->lim.on)
+            return 0;
+        double ua, dua, ub, dub;
+        stepper_end_drive(s->st, &ub, &dub);
+        if (!collision_needed(&s->lim, s->y, s->y + n, ub))
+            return 0; /* the common step: nothing touches */
+        drive_eval(d, a, &ua, &dua);
+        /* The earliest contact in the piece, resting contacts apart. Where more than a
+         * few close in one piece, the chain is piling up: those are settled at its end,
+         * so a pile-up costs a step, not a step per contact. */
+        double first = 2.0;
+        int which = -1, closing = 0;
+        for (int k = 0; k < s->lim.count && closing <= MAX_LOCATED; k++) {
+            if (collision_gap(&s->lim, k, s->y, ub) >= -TOUCH)
+                continue;
+            if (collision_gap(&s->lim, k, s->ya, ua) <= TOUCH &&
+                fabs(collision_rate(&s->lim, k, s->ya + n, dua)) < COLLISION_V_REST)
+                continue;
+            /* A mass joining a pile (its other side already touching) is settled with
+             * the pile at the piece's end. */
+            if ((k > 0 && collision_gap(&s->lim, k - 1, s->ya, ua) <= TOUCH) ||
+                (k + 1 < s->lim.count && collision_gap(&s->lim, k + 1, s->ya, ua) <= TOUCH))
+                continue;
+            closing++;
+            double th = closing_time(s, d, k, a, b - a);
+            if (th < first)
+                first = th, which = k;
+        }
+        if (which < 0 || events >= MAX_EVENTS || closing > MAX_LOCATED)
+            break;
+        /* Step again, to the instant of contact. */
+        double tc = a + first * (b - a);
+        memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
+        if (tc > a && stepper_apply(s->st, integ, d, a, tc, s->y) != 0)
+            return -1;
+        double uc, duc;
+        drive_eval(d, tc, &uc, &duc);
+        if (integ == INTEGRATOR_EXACT) {
+            /* On the exact solution: Newton on the gap, whose rate is known exactly. */
+            for (int it = 0; it < 4; it++) {
+                double g = collision_gap(&s->lim, which, s->y, uc);
+                double r = collision_rate(&s->lim, which, s->y + n, duc);
+                if (fabs(g) < 1e-14 || r >= 0.0)
+                    break;
+                double next = fmin(b, fmax(a, tc - g / r));
+                memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
+                if (stepper_apply(s->st, integ, d, a, next, s->y) != 0)
+                    return -1;
+                tc = next;
+                drive_eval(d, tc, &uc, &duc);
+            }
+        }
+        s->last_contacts += hit_touching(s, uc, duc);
+        if (b - tc <= 1e-12 * s->dt)
+            break;
+        a = tc;
     }
-    /* The sum k1 + 2 k2 + 2 k3 + k4 builds up in acc as the stages come, each loop also
-     * making the next stage's argument: four passes over the state instead of seven. */
-    double *acc = k1, *k = k2;
-    deriv(s, y, u0, du0, acc);
-    for (int i = 0; i < len; i++)
-        tmp[i] = y[i] + h2 * acc[i];
-    deriv(s, tmp, um, dum, k);
-    for (int i = 0; i < len; i++) {
-        acc[i] += 2.0 * k[i];
-        tmp[i] = y[i] + h2 * k[i];
+    /* Resting contacts, and any beyond MAX_EVENTS, are put back at the piece's end. */
+    double ub, dub;
+    stepper_end_drive(s->st, &ub, &dub);
+    if (collision_needed(&s->lim, s->y, s->y + n, ub)) {
+        struct collision_books bk = {0.0, 0.0};
+        s->last_contacts += collision_settle(&s->lim, sim_model(s), s->y, s->y + n, ub, dub, &bk);
+        book(s, &bk);
     }
-    deriv(s, tmp, um, dum, k);
-    for (int i = 0; i < len; i++) {
-        acc[i] += 2.0 * k[i];
-        tmp[i] = y[i] + h * k[i];
-    }
-    deriv(s, tmp, u1, du1, k);
-    double h6 = h / 6.0;
-    for (int i = 0; i < len; i++)
-        y[i] += h6 * (acc[i] + k[i]);
+    return 0;
 }
 
 /* Work done by the motor when the end jumps from u_from to u_to with the last mass at
@@ -250,27 +316,35 @@ static double jump_work(const struct sim *s, double u_from, double u_to)
 {
     double x = s->y[s->n - 1];
     double a = u_from - x, b = u_to - x;
-    return 0.5 * s->model->k[s->n] * (b * b - a * a);
+    return 0.5 * sim_model(s)->k[s->n] * (b * b - a * a);
 }
 
-/* Integrates from t0 to t1 in pieces split at the motor's breakpoints. */
-static void advance(struct sim *s, double t0, double t1)
+/* A jump of the end to u (moving at du after it): the motor's work on the spring, and a
+ * contact if the piston jumped into the last mass. */
+static void jump(struct sim *s, double u_from, double u, double du)
 {
-    const struct model *m = s->model;
-    const struct motor *mot = &m->motor;
-    struct motor_piece piece;
-    double cuts[MAX_SPLIT];
-
-    if (m->boundary != BOUNDARY_MOTOR || mot->wave == WAVE_SINE || mot->amplitude == 0.0) {
-        /* One smooth piece: the sine needs no piece; the others a constant one. */
-        if (m->boundary == BOUNDARY_MOTOR && mot->wave != WAVE_SINE)
-            motor_piece_at(mot, 0.5 * (t0 + t1), &piece);
-        rk4(s, t0, t1, &piece);
-        return;
+    s->y[2 * s->n + 1] += jump_work(s, u_from, u);
+    if (s->lim.on && collision_gap(&s->lim, s->lim.n, s->y, u) < -TOUCH) {
+        struct collision_books b = {0.0, 0.0};
+        s->last_contacts +=
+            collision_settle(&s->lim, sim_model(s), s->y, s->y + s->n, u, du, &b);
+        book(s, &b);
     }
-    int jumps = motor_has_jumps(mot->wave);
-    double *work = &s->y[2 * s->n + 1];
-    double u_now = jumps ? motor_position(mot, t0) : 0.0; /* the end's position now */
+}
+
+/* Integrates from t0 to t1 in pieces split at the drive's breakpoints. */
+static int advance(struct sim *s, double t0, double t1)
+{
+    const struct model *m = sim_model(s);
+    const struct motor *mot = &m->motor;
+    struct drive d;
+    double cuts[MAX_SPLIT];
+    if (m->boundary != BOUNDARY_MOTOR || mot->wave == WAVE_SINE || mot->amplitude == 0.0) {
+        drive_at(&d, m, 0.5 * (t0 + t1));
+        return piece(s, &d, t0, t1, true);
+    }
+    bool jumps = motor_has_jumps(mot->wave);
+    double u_now = motor_position(mot, t0); /* the end's position now */
     double a = t0;
     while (a < t1) {
         /* Up to MAX_SPLIT breakpoints at a time; after the last of a full batch, the
@@ -280,78 +354,56 @@ static void advance(struct sim *s, double t0, double t1)
         if (more)
             nb = MAX_SPLIT;
         for (int j = 0; j < nb + !more; j++) {
-            double b = j < nb ? cuts[j] : t1;
-            motor_piece_at(mot, 0.5 * (a + b), &piece);
-            if (jumps) {
-                double ua, ub, du;
-                motor_piece_eval(&piece, a, &ua, &du);
-                *work += jump_work(s, u_now, ua);
-                rk4(s, a, b, &piece);
-                motor_piece_eval(&piece, b, &ub, &du);
-                u_now = ub;
-            } else {
-                rk4(s, a, b, &piece);
-            }
+            double b = j < nb ? cuts[j] : t1, ua, ub, du;
+            drive_at(&d, m, 0.5 * (a + b));
+            drive_eval(&d, a, &ua, &du);
+            if (jumps && ua != u_now)
+                jump(s, u_now, ua, du);
+            if (piece(s, &d, a, b, a == t0 && s->y[2 * s->n + 1] == s->y0[2 * s->n + 1]) != 0)
+                return -1;
+            drive_eval(&d, b, &ub, &du);
+            u_now = ub;
             a = b;
         }
     }
-    if (jumps)
-        *work += jump_work(s, u_now, motor_position(mot, t1));
+    double u1 = motor_position(mot, t1);
+    if (jumps && u1 != u_now) {
+        struct motor_piece p;
+        double u, du;
+        motor_piece_at(mot, t1 + 1e-6 * s->dt, &p);
+        motor_piece_eval(&p, t1, &u, &du);
+        jump(s, u_now, u1, du);
+    }
+    return 0;
 }
 
-static int all_finite(const double *y, int len)
+static bool all_finite(const double *y, int len)
 {
     for (int i = 0; i < len; i++)
         if (!isfinite(y[i]))
-            return 0;
-    return 1;
-}
-
-/* Kinetic plus potential energy of a state (d, v) with the end at u. */
-static double mechanical(const struct sim *s, const double *y, double u)
-{
-    return model_kinetic(s->model, y + s->n) + model_potential(s->model, y, u);
+            return false;
+    return true;
 }
 
 enum sim_status sim_step(struct sim *s)
 {
     int n = s->n, len = 2 * n + 2;
-    const struct model *m = s->model;
     double t0 = sim_time(s);
     double t1 = s->t_base + (s->steps + 1.0) * s->dt;
-
+    double contact0 = s->contact;
     memcpy(s->y0, s->y, (size_t)len * sizeof *s->y);
-    advance(s, t0, t1);
-    if (!all_finite(s->y, len)) {
+    s->last_contacts = s->last_capped = 0;
+    if (advance(s, t0, t1) != 0 || !all_finite(s->y, len)) {
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
+        s->contact = contact0;
+        s->last_contacts = 0;
         return SIM_NONFINITE;
     }
     s->steps += 1.0;
-
-    double u = 0.0, du = 0.0;
-    if (m->boundary == BOUNDARY_MOTOR && m->motor.wave == WAVE_SINE) {
-        /* The last sub-step ended at t1 and left the piston's position and velocity. */
-        u = s->end_u;
-        du = s->end_du;
-    } else if (m->boundary == BOUNDARY_MOTOR) {
-        struct motor_piece piece;
-        double u_left;
-        /* The piston's velocity just before t1, its position at t1. */
-        motor_piece_at(&m->motor, t1 - 1e-6 * s->dt, &piece);
-        motor_piece_eval(&piece, t1, &u_left, &du);
-        u = motor_position(&m->motor, t1);
-    }
-    s->last_contacts = s->last_capped = 0;
-    if (!collision_needed(m, s->y, s->y + n, u))
-        return SIM_OK;
-    /* Keep the state before contacts so their energy can be booked. */
-    memcpy(s->tmp, s->y, (size_t)(2 * n) * sizeof *s->y);
-    int contacts = collision_apply(m, s->y, s->y + n, u, du);
-    s->last_capped = collision_cap(n, s->y + n);
-    contacts += s->last_capped;
-    if (contacts)
-        s->contact += mechanical(s, s->tmp, u) - mechanical(s, s->y, u);
-    s->last_contacts = contacts;
+    struct collision_books b = {0.0, 0.0};
+    s->last_capped = collision_cap(sim_model(s), s->y + n, &b);
+    book(s, &b);
+    s->last_contacts += s->last_capped;
     return SIM_OK;
 }
 
@@ -367,19 +419,19 @@ const double *sim_v(const struct sim *s)
 
 double sim_end_position(const struct sim *s)
 {
-    return model_end_position(s->model, sim_time(s));
+    return model_end_position(sim_model(s), sim_time(s));
 }
 
 void sim_accel(const struct sim *s, double *a)
 {
-    model_accel(s->model, s->y, s->y + s->n, sim_end_position(s), a);
+    model_accel(sim_model(s), s->y, s->y + s->n, sim_end_position(s), a);
 }
 
 void sim_energy(const struct sim *s, struct energy *e)
 {
     double u = sim_end_position(s);
-    e->kinetic = model_kinetic(s->model, s->y + s->n);
-    e->potential = model_potential(s->model, s->y, u);
+    e->kinetic = model_kinetic(sim_model(s), s->y + s->n);
+    e->potential = model_potential(sim_model(s), s->y, u);
     e->dissipated = s->y[2 * s->n];
     e->motor_work = s->y[2 * s->n + 1];
     e->contact = s->contact;
@@ -396,9 +448,18 @@ int sim_last_capped(const struct sim *s)
     return s->last_capped;
 }
 
+/* What a snapshot holds besides the state: a named head at the start of the buffer. */
+struct snapshot_head {
+    double t_base, steps, dt; /* the time grid */
+    double contact;           /* energy removed by contacts so far */
+    double last_contacts;     /* contacts in the last step */
+    double cycles;            /* the drive's angle then, in cycles in [0, 1) */
+};
+#define HEAD_DOUBLES ((int)(sizeof(struct snapshot_head) / sizeof(double)))
+
 int sim_snapshot_size(const struct sim *s)
 {
-    return 2 * s->n + 2 + 6;
+    return 2 * s->n + 2 + HEAD_DOUBLES;
 }
 
 /* The drive's angle (cycles, in [0, 1)) at time t. */
@@ -410,28 +471,24 @@ static double drive_cycles(const struct motor *m, double t)
 
 void sim_save(const struct sim *s, double *buf)
 {
-    int len = 2 * s->n + 2;
-    buf[0] = s->t_base;
-    buf[1] = s->steps;
-    buf[2] = s->dt;
-    buf[3] = s->contact;
-    buf[4] = s->last_contacts;
-    buf[5] = drive_cycles(&s->model->motor, sim_time(s));
-    memcpy(buf + 6, s->y, (size_t)len * sizeof *buf);
+    struct snapshot_head h = {s->t_base, s->steps, s->dt, s->contact, s->last_contacts,
+                              drive_cycles(&sim_model(s)->motor, sim_time(s))};
+    memcpy(buf, &h, sizeof h);
+    memcpy(buf + HEAD_DOUBLES, s->y, (size_t)(2 * s->n + 2) * sizeof *buf);
 }
 
 void sim_restore(struct sim *s, const double *buf)
 {
-    int len = 2 * s->n + 2;
-    s->t_base = buf[0];
-    s->steps = buf[1];
-    s->dt = buf[2];
-    s->contact = buf[3];
-    s->last_contacts = (int)buf[4];
-    memcpy(s->y, buf + 6, (size_t)len * sizeof *buf);
+    struct snapshot_head h;
+    memcpy(&h, buf, sizeof h);
+    s->t_base = h.t_base;
+    s->steps = h.steps;
+    s->dt = h.dt;
+    s->contact = h.contact;
+    s->last_contacts = (int)h.last_contacts;
+    memcpy(s->y, buf + HEAD_DOUBLES, (size_t)(2 * s->n + 2) * sizeof *buf);
     /* The drive goes on from the angle it had then, at the frequency in force now: if the
      * frequency changed since, the phase is re-anchored so the piston does not jump. */
-    struct motor *m = &s->model->motor;
-    double p = buf[5] - m->frequency * sim_time(s);
-    m->phase = p - floor(p);
+    double p = h.cycles - sim_model(s)->motor.frequency * sim_time(s);
+    stepper_set_phase(s->st, p - floor(p), s->dt);
 }

@@ -1,0 +1,308 @@
+/* stepper.c: explicit Euler, symplectic (semi-implicit) Euler, velocity Verlet, classic
+ * RK4 (Kutta 1901; Hairer, Norsett and Wanner, Solving ODEs I, II.1) and the exact
+ * stepper (exact.c), on y = (x, v, D, W) with D' = sum c_i v_i^2, W' = k_N (u - x_N) u'.
+ * The equation of motion is model_rates, the one in model.c. */
+#include "stepper.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "exact.h"
+
+struct stepper {
+    struct model *model;   /* own copy of the parameters */
+    int n;
+    double dt;             /* the grid step, for the sine's rotations */
+    double *inv_m;         /* 1/m_i */
+    double *k1, *k2, *tmp; /* stage scratch, 2N + 2 each */
+    struct exact *exact;   /* the exact stepper's workspace, made when first needed */
+    double rot_w, rot_h;   /* w and h the rotations below were made for */
+    double rot_s1, rot_c1, rot_s2, rot_c2; /* sin, cos of w h/2 and of w h */
+    double rot_next_t;     /* where the last sine step ended (NAN: none) */
+    double rot_phase;      /* the drive's phase then */
+    double rot_sn, rot_cs; /* sin and cos of the drive's angle there */
+    int rot_carried;       /* steps since sin and cos were last taken afresh */
+    double end_u, end_du;  /* the drive at the end of the last step taken */
+};
+
+void drive_at(struct drive *d, const struct model *m, double t)
+{
+    d->motor = &m->motor;
+    if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude == 0.0) {
+        d->kind = DRIVE_NONE;
+    } else if (m->motor.wave == WAVE_SINE) {
+        d->kind = DRIVE_SINE;
+    } else {
+        d->kind = DRIVE_PIECE;
+        motor_piece_at(&m->motor, t, &d->piece);
+    }
+}
+
+void drive_eval(const struct drive *d, double t, double *u, double *du)
+{
+    switch (d->kind) {
+    case DRIVE_SINE: {
+        double w = 2.0 * M_PI * d->motor->frequency, s, c;
+        sincos(w * t + 2.0 * M_PI * d->motor->phase, &s, &c);
+        *u = d->motor->amplitude * s;
+        *du = d->motor->amplitude * w * c;
+        return;
+    }
+    case DRIVE_PIECE:
+        motor_piece_eval(&d->piece, t, u, du);
+        return;
+    case DRIVE_NONE:
+        break;
+    }
+    *u = *du = 0.0;
+}
+
+struct stepper *stepper_new(const struct model *m)
+{
+    int n = m->n;
+    size_t len = (size_t)(2 * n + 2);
+    struct stepper *st = calloc(1, sizeof *st);
+    if (!st)
+        return NULL;
+    st->model = model_new(n);
+    st->inv_m = calloc(3 * len + (size_t)n, sizeof *st->inv_m);
+    if (!st->model || !st->inv_m) {
+        stepper_free(st);
+        return NULL;
+    }
+    st->n = n;
+    st->k1 = st->inv_m + n;
+    st->k2 = st->k1 + len;
+    st->tmp = st->k2 + len;
+    st->rot_next_t = NAN;
+    stepper_set_model(st, m, 0.01);
+    return st;
+}
+
+void stepper_free(struct stepper *st)
+{
+    if (!st)
+        return;
+    model_free(st->model);
+    exact_free(st->exact);
+    free(st->inv_m);
+    free(st);
+}
+
+void stepper_set_model(struct stepper *st, const struct model *m, double dt)
+{
+    model_copy(st->model, m);
+    for (int i = 0; i < st->n; i++)
+        st->inv_m[i] = 1.0 / m->m[i];
+    st->dt = dt;
+}
+
+void stepper_set_phase(struct stepper *st, double phase, double dt)
+{
+    st->model->motor.phase = phase;
+    st->dt = dt;
+}
+
+void stepper_end_drive(const struct stepper *st, double *u, double *du)
+{
+    *u = st->end_u;
+    *du = st->end_du;
+}
+
+const struct model *stepper_model(const struct stepper *st)
+{
+    return st->model;
+}
+
+const double *stepper_inv_m(const struct stepper *st)
+{
+    return st->inv_m;
+}
+
+/* dy/dt at state y with the right end at u moving at du. */
+static void deriv(const struct stepper *st, const double *y, double u, double du, double *dy)
+{
+    int n = st->n;
+    for (int i = 0; i < n; i++) /* a loop: for a short chain memcpy's call costs more */
+        dy[i] = y[n + i];
+    model_rates(st->model, st->inv_m, y, y + n, u, du, dy + n, &dy[2 * n], &dy[2 * n + 1]);
+}
+
+/* The sine drive u = A sin(th), du = A w cos(th) at a, a + h/2 and a + h, with one
+ * sincos: sin and cos at the later times follow from the angle-addition formulas with
+ * sin, cos of w h/2 and w h, kept while w and h stay the same. Exact to a few ulp. */
+static void sine_drive(struct stepper *st, double a, double b, double u[3], double du[3])
+{
+    double h = b - a;
+    const struct motor *mot = &st->model->motor;
+    double w = 2.0 * M_PI * mot->frequency, amp = mot->amplitude;
+    /* b - a of a grid step differs from dt by the rounding of t (a few ulp of b, which
+     * grow with t): such a step keeps the rotation made for dt, an angle error no larger
+     * than that rounding makes anyway. */
+    if (fabs(h - st->dt) <= 1e-12 * st->dt + 8.0 * DBL_EPSILON * fabs(b))
+        h = st->dt;
+    if (w != st->rot_w || h != st->rot_h) {
+        sincos(0.5 * w * h, &st->rot_s1, &st->rot_c1);
+        sincos(w * h, &st->rot_s2, &st->rot_c2);
+        st->rot_w = w;
+        st->rot_h = h;
+        st->rot_next_t = NAN; /* nothing to carry over */
+    }
+    double sn, cs;
+    if (a == st->rot_next_t && mot->phase == st->rot_phase && st->rot_carried < 64) {
+        /* This step starts where the last ended: carry its sin and cos over, and only
+         * every 64 steps take them afresh, so rounding cannot build up. */
+        sn = st->rot_sn, cs = st->rot_cs;
+        st->rot_carried++;
+    } else {
+        sincos(w * a + 2.0 * M_PI * mot->phase, &sn, &cs);
+        st->rot_carried = 0;
+    }
+    double sm = sn * st->rot_c1 + cs * st->rot_s1, cm = cs * st->rot_c1 - sn * st->rot_s1;
+    double se = sn * st->rot_c2 + cs * st->rot_s2, ce = cs * st->rot_c2 - sn * st->rot_s2;
+    st->rot_next_t = b;
+    st->rot_phase = mot->phase;
+    st->rot_sn = se, st->rot_cs = ce;
+    u[0] = amp * sn, du[0] = amp * w * cs;
+    u[1] = amp * sm, du[1] = amp * w * cm;
+    u[2] = amp * se, du[2] = amp * w * ce;
+}
+
+/* The drive at a, the middle and b. */
+static void drive3(struct stepper *st, const struct drive *d, double a, double b, double u[3],
+                   double du[3])
+{
+    if (d->kind == DRIVE_SINE) {
+        sine_drive(st, a, b, u, du);
+        return;
+    }
+    drive_eval(d, a, &u[0], &du[0]);
+    drive_eval(d, a + 0.5 * (b - a), &u[1], &du[1]);
+    drive_eval(d, b, &u[2], &du[2]);
+}
+
+/* y += h/6 (k1 + 2 k2 + 2 k3 + k4). */
+static void rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
+{
+    int len = 2 * st->n + 2;
+    double h = b - a, h2 = 0.5 * h, u[3], du[3];
+    double *tmp = st->tmp, *acc = st->k1, *k = st->k2;
+    drive3(st, d, a, b, u, du);
+    st->end_u = u[2], st->end_du = du[2];
+    /* The sum k1 + 2 k2 + 2 k3 + k4 builds up in acc as the stages come, each loop also
+     * making the next stage's argument: four passes over the state instead of seven. */
+    deriv(st, y, u[0], du[0], acc);
+    for (int i = 0; i < len; i++)
+        tmp[i] = y[i] + h2 * acc[i];
+    deriv(st, tmp, u[1], du[1], k);
+    for (int i = 0; i < len; i++) {
+        acc[i] += 2.0 * k[i];
+        tmp[i] = y[i] + h2 * k[i];
+    }
+    deriv(st, tmp, u[1], du[1], k);
+    for (int i = 0; i < len; i++) {
+        acc[i] += 2.0 * k[i];
+        tmp[i] = y[i] + h * k[i];
+    }
+    deriv(st, tmp, u[2], du[2], k);
+    double h6 = h / 6.0;
+    for (int i = 0; i < len; i++)
+        y[i] += h6 * (acc[i] + k[i]);
+}
+
+/* Explicit Euler: y += h f(a, y). */
+static void euler(struct stepper *st, const struct drive *d, double a, double b, double *y)
+{
+    int len = 2 * st->n + 2;
+    double u, du;
+    drive_eval(d, a, &u, &du);
+    deriv(st, y, u, du, st->k1);
+    for (int i = 0; i < len; i++)
+        y[i] += (b - a) * st->k1[i];
+}
+
+/* Symplectic Euler: v from the forces at the start, then x with the new v; the books by
+ * the rectangle rule. */
+static void semi_implicit(struct stepper *st, const struct drive *d, double a, double b,
+                          double *y)
+{
+    int n = st->n;
+    double h = b - a, u, du;
+    double *dy = st->k1;
+    drive_eval(d, a, &u, &du);
+    deriv(st, y, u, du, dy);
+    for (int i = 0; i < n; i++) {
+        y[n + i] += h * dy[n + i];
+        y[i] += h * y[n + i];
+    }
+    y[2 * n] += h * dy[2 * n];
+    y[2 * n + 1] += h * dy[2 * n + 1];
+}
+
+/* Velocity Verlet: half kick, drift, half kick (the damping at the end takes the
+ * half-step velocity); the books by the trapezoidal rule. */
+static void verlet(struct stepper *st, const struct drive *d, double a, double b, double *y)
+{
+    int n = st->n;
+    double h = b - a, u0, du0, u1, du1;
+    double *d0 = st->k1, *d1 = st->k2, *vh = st->tmp;
+    drive_eval(d, a, &u0, &du0);
+    drive_eval(d, b, &u1, &du1);
+    deriv(st, y, u0, du0, d0);
+    for (int i = 0; i < n; i++) {
+        vh[i] = y[n + i] + 0.5 * h * d0[n + i];
+        y[i] += h * vh[i];
+    }
+    model_rates(st->model, st->inv_m, y, vh, u1, du1, d1 + n, NULL, NULL);
+    for (int i = 0; i < n; i++)
+        y[n + i] = vh[i] + 0.5 * h * d1[n + i];
+    model_rates(st->model, st->inv_m, y, y + n, u1, du1, d1 + n, &d1[2 * n], &d1[2 * n + 1]);
+    y[2 * n] += 0.5 * h * (d0[2 * n] + d1[2 * n]);
+    y[2 * n + 1] += 0.5 * h * (d0[2 * n + 1] + d1[2 * n + 1]);
+}
+
+/* The exact stepper: the piece's drive in exact.c's terms. */
+static int exact_step(struct stepper *st, const struct drive *d, double a, double b, double *y)
+{
+    int n = st->n;
+    if (!st->exact && !(st->exact = exact_new(n)))
+        return -1;
+    struct exact_drive ed = {0};
+    if (d->kind == DRIVE_SINE) {
+        ed.sine = 1;
+        ed.amp = d->motor->amplitude;
+        ed.omega = 2.0 * M_PI * d->motor->frequency;
+        ed.phi = 2.0 * M_PI * d->motor->phase;
+    } else if (d->kind == DRIVE_PIECE) {
+        ed.t0 = a;
+        drive_eval(d, a, &ed.u0, &ed.du);
+    }
+    return exact_advance(st->exact, st->model, &ed, a, b, y, y + n, &y[2 * n], &y[2 * n + 1]);
+}
+
+int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, double a,
+                  double b, double *y)
+{
+    if (i != INTEGRATOR_RK4)
+        drive_eval(d, b, &st->end_u, &st->end_du);
+    switch (i) {
+    case INTEGRATOR_EULER:
+        euler(st, d, a, b, y);
+        return 0;
+    case INTEGRATOR_SEMI_IMPLICIT:
+        semi_implicit(st, d, a, b, y);
+        return 0;
+    case INTEGRATOR_VERLET:
+        verlet(st, d, a, b, y);
+        return 0;
+    case INTEGRATOR_EXACT:
+        return exact_step(st, d, a, b, y);
+    case INTEGRATOR_RK4:
+    case INTEGRATOR_COUNT:
+        break;
+    }
+    rk4(st, d, a, b, y);
+    return 0;
+}

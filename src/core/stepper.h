@@ -1,0 +1,54 @@
+/* stepper.h: the steppers behind one interface (GSL odeiv2's "step" layer): each advances
+ * the state y = (x, v, D, W) of a chain, D the energy the dampers took and W the work
+ * the motor did, over one smooth piece of the drive. The driver (sim.c) owns the time
+ * grid, breakpoints, contacts and energy books. */
+#ifndef SPRINGSIM_STEPPER_H
+#define SPRINGSIM_STEPPER_H
+
+#include "integrator.h"
+#include "model.h"
+
+/* The right end over one smooth piece of the drive. */
+struct drive {
+    enum { DRIVE_NONE, DRIVE_SINE, DRIVE_PIECE } kind;
+    const struct motor *motor; /* DRIVE_SINE: the motor */
+    struct motor_piece piece;  /* DRIVE_PIECE: a constant or a ramp */
+};
+
+/* The drive for the piece of model m's right end that contains time t (pass a time
+ * inside the piece, not on a breakpoint). */
+void drive_at(struct drive *d, const struct model *m, double t);
+
+/* u(t) and u'(t) on the piece. */
+void drive_eval(const struct drive *d, double t, double *u, double *du);
+
+struct stepper;
+
+/* Scratch and caches for chains of model's size, or NULL on no memory. */
+struct stepper *stepper_new(const struct model *m);
+
+/* Frees it. */
+void stepper_free(struct stepper *st);
+
+/* Takes model m's parameters (same n) for the steps from now on; dt is the grid step,
+ * which a sine drive's rotations are made for. */
+void stepper_set_model(struct stepper *st, const struct model *m, double dt);
+
+/* Advances y (2N + 2 values) from time a to b on drive d with integrator i: 0, or -1 when
+ * the exact stepper's exponential fails. */
+int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, double a,
+                  double b, double *y);
+
+/* The drive (u, u') at the end of the last step taken: a sine's costs no sincos. */
+void stepper_end_drive(const struct stepper *st, double *u, double *du);
+
+/* Sets the drive's phase (cycles) in the stepper's model; dt as for stepper_set_model. */
+void stepper_set_phase(struct stepper *st, double phase, double dt);
+
+/* The model the stepper uses (its own copy). */
+const struct model *stepper_model(const struct stepper *st);
+
+/* 1 / m_i, kept by the stepper. */
+const double *stepper_inv_m(const struct stepper *st);
+
+#endif
