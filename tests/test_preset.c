@@ -87,8 +87,8 @@ static double last_mode(const struct model *m)
     return f[m->n - 1];
 }
 
-/* Each of the page's eleven presets exists, loads, describes itself and shows its
- * phenomenon by the model's own numbers. */
+/* Each of the page's eleven presets, and collisions, exists, loads, describes itself and
+ * shows its phenomenon by the model's own numbers. */
 static void builtin_presets_show_their_names(void **state)
 {
     (void)state;
@@ -135,6 +135,9 @@ static void builtin_presets_show_their_names(void **state)
 
     m = load("triangle-wave", &c);
     assert_int_equal(m->motor.wave, WAVE_TRIANGLE);
+    assert_true(m->motor.frequency < first_mode(m) / 5.0); /* far below mode 1 */
+    /* corners that do not ring: mode 1's damping ratio c / (2 m w1) at least 0.5 */
+    assert_true(m->c[0] / (2 * m->m[0] * 2 * M_PI * first_mode(m)) >= 0.5);
     model_free(m);
 
     m = load("3-mass-chain", &c);
@@ -147,6 +150,13 @@ static void builtin_presets_show_their_names(void **state)
 
     m = load("stiff-springs", &c);
     assert_true(m->k[0] > 10.0);
+    model_free(m);
+
+    m = load("collisions", &c);
+    assert_true(m->collisions);
+    assert_int_equal(m->boundary, BOUNDARY_MOTOR);
+    assert_close(m->motor.frequency, first_mode(m), 1e-5); /* driven at mode 1 */
+    assert_true(c.name[0] && c.description[0]);
     model_free(m);
 }
 
