@@ -129,14 +129,17 @@ static void reference_advance(const struct model *md, double t0, double t1, doub
     }
 }
 
-/* Max |displacement error| of sim against the reference over [0, 20 s]. */
-static double chain_error(enum wave wave, double dt)
+/* Max |displacement error| of sim with integrator i against the reference over
+ * [0, duration]. */
+static double integrator_error(enum wave wave, enum integrator integ, double dt,
+                               double duration)
 {
     struct model *md = chain3(wave);
     struct sim *s = sim_new(md, dt);
+    sim_set_integrator(s, integ);
     double y[2 * N3] = {0};
     double err = 0.0;
-    int steps = (int)lround(20.0 / dt);
+    int steps = (int)lround(duration / dt);
     for (int n = 1; n <= steps; n++) {
         assert_int_equal(sim_step(s), SIM_OK);
         reference_advance(md, (n - 1) * dt, n * dt, y);
@@ -146,6 +149,45 @@ static double chain_error(enum wave wave, double dt)
     sim_free(s);
     model_free(md);
     return err;
+}
+
+/* Max |displacement error| of the default RK4 over [0, 20 s]. */
+static double chain_error(enum wave wave, double dt)
+{
+    return integrator_error(wave, INTEGRATOR_RK4, dt, 20.0);
+}
+
+/* Each integrator shows its order on every waveform: 1 for Euler and symplectic Euler,
+ * 2 for Verlet, 4 for RK4, when dt is halved; exact is exact at dt = 0.05. */
+static void integrator_orders(void **state)
+{
+    (void)state;
+    static const struct {
+        enum integrator i;
+        double lo, hi, dt;
+    } want[] = {{INTEGRATOR_EULER, 0.85, 1.2, 0.002},
+                {INTEGRATOR_SEMI_IMPLICIT, 0.85, 1.2, 0.002},
+                {INTEGRATOR_VERLET, 1.85, 2.2, 0.004},
+                {INTEGRATOR_RK4, 3.7, 4.4, 0.02}};
+    printf("  %-14s %-9s %12s %12s %7s\n", "integrator", "waveform", "err dt", "err dt/2",
+           "order");
+    for (size_t k = 0; k < sizeof want / sizeof *want; k++)
+        for (int w = 0; w < WAVE_COUNT; w++) {
+            double e1 = integrator_error((enum wave)w, want[k].i, want[k].dt, 2.0);
+            double e2 = integrator_error((enum wave)w, want[k].i, 0.5 * want[k].dt, 2.0);
+            double order = log2(e1 / e2);
+            printf("  %-14s %-9s %12.3e %12.3e %7.2f\n", integrator_name(want[k].i),
+                   motor_wave_name((enum wave)w), e1, e2, order);
+            if (!(order >= want[k].lo && order <= want[k].hi))
+                fail_msg("%s on %s: order %.2f, expected %.2f..%.2f", integrator_name(want[k].i),
+                         motor_wave_name((enum wave)w), order, want[k].lo, want[k].hi);
+        }
+    for (int w = 0; w < WAVE_COUNT; w++) {
+        double e = integrator_error((enum wave)w, INTEGRATOR_EXACT, 0.05, 20.0);
+        printf("  %-14s %-9s %12.3e at dt = 0.05 over 20 s\n", "exact",
+               motor_wave_name((enum wave)w), e);
+        assert_true(e <= 1e-9);
+    }
 }
 
 static void accuracy_and_order(void **state)
@@ -360,6 +402,7 @@ int main(void)
         cmocka_unit_test(reference_single_mass_cosine),
         cmocka_unit_test(single_mass_cosine),
         cmocka_unit_test(accuracy_and_order),
+        cmocka_unit_test(integrator_orders),
         cmocka_unit_test(energy_balance),
         cmocka_unit_test(free_oscillation_conserves),
         cmocka_unit_test(dt_change_keeps_time),

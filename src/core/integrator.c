@@ -50,10 +50,10 @@ static void step(enum integrator i, double w2, double s, double h, double *x, do
         *x = x0 + h * *v;
         return;
     case INTEGRATOR_VERLET: {
-        /* Half kick, drift, half kick; the damping at the end takes the half-step v. */
+        /* Half kick, drift, half kick with the damping at the new velocity, solved for. */
         double vh = v0 + 0.5 * h * acc(w2, s, x0, v0);
         *x = x0 + h * vh;
-        *v = vh + 0.5 * h * acc(w2, s, *x, vh);
+        *v = (vh - 0.5 * h * w2 * *x) / (1.0 + h * s);
         return;
     }
     case INTEGRATOR_RK4: {

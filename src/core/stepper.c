@@ -241,23 +241,27 @@ static void semi_implicit(struct stepper *st, const struct drive *d, double a, d
     y[2 * n + 1] += h * dy[2 * n + 1];
 }
 
-/* Velocity Verlet: half kick, drift, half kick (the damping at the end takes the
- * half-step velocity); the books by the trapezoidal rule. */
+/* Velocity Verlet: half kick, drift, half kick. The damping force in the last half kick
+ * is taken at the new velocity, solved for (it is linear in v), which keeps the method
+ * second order with dampers; the books by the trapezoidal rule. */
 static void verlet(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
     int n = st->n;
     double h = b - a, u0, du0, u1, du1;
-    double *d0 = st->k1, *d1 = st->k2, *vh = st->tmp;
+    double *d0 = st->k1, *d1 = st->k2, *vh = st->tmp, *zero = st->tmp + n;
     drive_eval(d, a, &u0, &du0);
     drive_eval(d, b, &u1, &du1);
     deriv(st, y, u0, du0, d0);
     for (int i = 0; i < n; i++) {
         vh[i] = y[n + i] + 0.5 * h * d0[n + i];
         y[i] += h * vh[i];
+        zero[i] = 0.0;
     }
-    model_rates(st->model, st->inv_m, y, vh, u1, du1, d1 + n, NULL, NULL);
+    /* The springs' accelerations at the new positions (no damping: v = 0). */
+    model_rates(st->model, st->inv_m, y, zero, u1, du1, d1 + n, NULL, NULL);
     for (int i = 0; i < n; i++)
-        y[n + i] = vh[i] + 0.5 * h * d1[n + i];
+        y[n + i] = (vh[i] + 0.5 * h * d1[n + i]) /
+                   (1.0 + 0.5 * h * st->model->c[i] * st->inv_m[i]);
     model_rates(st->model, st->inv_m, y, y + n, u1, du1, d1 + n, &d1[2 * n], &d1[2 * n + 1]);
     y[2 * n] += 0.5 * h * (d0[2 * n] + d1[2 * n]);
     y[2 * n + 1] += 0.5 * h * (d0[2 * n + 1] + d1[2 * n + 1]);
