@@ -50,7 +50,7 @@ static void values_at_special_phases(void **state)
     /* A grid time that lands on a jump up to rounding counts as on it. */
     assert_close(motor_wave(WAVE_SQUARE, 1.8 * (50 * 0.01) / 1.8), 0.0, 0.0);
     assert_close(motor_wave(WAVE_SQUARE, 0.9 * (0.5 / 0.9)), 0.0, 0.0);
-    struct motor m = {WAVE_SQUARE, 2.0, 1.0};
+    struct motor m = {WAVE_SQUARE, 2.0, 1.0, 0.0};
     assert_close(motor_position(&m, 50 * 0.01), 0.0, 0.0);
     assert_close(motor_position(&m, 0.2), 2.0, 0.0);
 }
@@ -59,22 +59,22 @@ static void breakpoints_listed(void **state)
 {
     (void)state;
     double out[8];
-    struct motor sq = {WAVE_SQUARE, 1.0, 2.0}; /* jumps every 0.25 s */
+    struct motor sq = {WAVE_SQUARE, 1.0, 2.0, 0.0}; /* jumps every 0.25 s */
     assert_int_equal(motor_breakpoints(&sq, 0.1, 0.6, out, 8), 2);
     assert_close(out[0], 0.25, 1e-15);
     assert_close(out[1], 0.5, 1e-15);
     /* On the ends (up to rounding) does not count as inside. */
     assert_int_equal(motor_breakpoints(&sq, 0.25, 0.5, out, 8), 0);
     assert_int_equal(motor_breakpoints(&sq, 0.24, 0.26, out, 8), 1);
-    struct motor tr = {WAVE_TRIANGLE, 1.0, 1.0}; /* corners at 0.25 + k/2 */
+    struct motor tr = {WAVE_TRIANGLE, 1.0, 1.0, 0.0}; /* corners at 0.25 + k/2 */
     assert_int_equal(motor_breakpoints(&tr, 0.0, 1.0, out, 8), 2);
     assert_close(out[0], 0.25, 1e-15);
     assert_close(out[1], 0.75, 1e-15);
-    struct motor sw = {WAVE_SAWTOOTH, 1.0, 0.5}; /* jumps at (k + 1/2)/f = 1, 3, ... */
+    struct motor sw = {WAVE_SAWTOOTH, 1.0, 0.5, 0.0}; /* jumps at (k + 1/2)/f = 1, 3, ... */
     assert_int_equal(motor_breakpoints(&sw, 0.0, 4.0, out, 8), 2);
     assert_close(out[0], 1.0, 1e-15);
     assert_close(out[1], 3.0, 1e-15);
-    struct motor si = {WAVE_SINE, 1.0, 1.0};
+    struct motor si = {WAVE_SINE, 1.0, 1.0, 0.0};
     assert_int_equal(motor_breakpoints(&si, 0.0, 10.0, out, 8), 0);
     /* More than fit: the count is still right, and counting does not walk them. */
     assert_int_equal(motor_breakpoints(&sq, 0.0, 10.1, out, 8), 40);
@@ -90,7 +90,7 @@ static void pieces_extend_smoothly(void **state)
 {
     (void)state;
     for (int w = 0; w < WAVE_COUNT; w++) {
-        struct motor m = {(enum wave)w, 0.7, 1.3};
+        struct motor m = {(enum wave)w, 0.7, 1.3, 0.0};
         for (int i = 0; i < 50; i++) {
             double tm = 0.013 + i * 0.0917;
             struct motor_piece p;
@@ -106,7 +106,7 @@ static void pieces_extend_smoothly(void **state)
         }
     }
     /* The square's positive piece stays +A past its end at t = 0.5/f. */
-    struct motor sq = {WAVE_SQUARE, 1.0, 1.0};
+    struct motor sq = {WAVE_SQUARE, 1.0, 1.0, 0.0};
     struct motor_piece p;
     double u, du;
     motor_piece_at(&sq, 0.4, &p);
@@ -122,7 +122,7 @@ static void retune_is_continuous(void **state)
 {
     (void)state;
     for (int w = 0; w < WAVE_COUNT; w++) {
-        struct motor m = {(enum wave)w, 0.8, 1.3, 0.0};
+        struct motor m = {(enum wave)w, 0.8, 1.3, 0.0, 0.0};
         double t = 37.123;
         double before = motor_position(&m, t);
         motor_retune(&m, 0.77, t);
