@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "core/config.h"
+#include "core/limits.h"
 #include "core/modes.h"
 #include "core/output.h"
 #include "core/preset.h"
@@ -41,18 +42,48 @@ static void find_exe_dir(const char *argv0, char *out, size_t len)
     snprintf(out, len, "%s", buf);
 }
 
-/* Says why a run stopped on a non-finite number, with the stability limit. */
-static void report_blowup(const struct sim *s)
+/* What dt is worth for this run: the stability and accuracy limits (core/limits.c).
+ * False when the modes cannot be computed (no memory, numbers that overflow): the run
+ * goes on unjudged. */
+static bool judge(const struct config *c, const struct model *m, struct limits *l)
 {
-    const struct model *m = sim_model(s);
-    double dt = sim_dt(s), limit = modes_stable_dt(m);
-    if (dt >= limit)
-        options_say("the simulation blew up at t = %.4g s: dt = %g s is too large for these springs "
-            "(RK4 needs omega_max*dt < %.2f: dt < %.4g s)",
-            sim_time(s), dt, MODES_RK4_LIMIT, limit);
+    struct limits_mode *mode = malloc((size_t)m->n * sizeof *mode);
+    bool ok = mode && limits_modes(m, mode) == 0;
+    if (ok)
+        limits_judge(mode, m->n, m, c->integrator, c->dt, l);
+    free(mode);
+    return ok;
+}
+
+/* The warnings about dt, one line each, before anything runs. */
+static void warn_limits(const struct limits *l)
+{
+    char line[400];
+    limits_say_stability(l, false, line, sizeof line);
+    if (line[0])
+        options_say("warning: %s", line);
+    limits_say_modes(l, false, line, sizeof line);
+    if (line[0])
+        options_say("warning: %s", line);
+    limits_say_drive(l, false, line, sizeof line);
+    if (line[0])
+        options_say("warning: %s", line);
+}
+
+/* Says why a run stopped: a non-finite number, or a velocity at the cap past the
+ * stability limit. */
+static void report_blowup(const struct sim *s, const struct limits *l, bool judged)
+{
+    const char *name = integrator_name(sim_integrator(s));
+    const char *how = sim_last_capped(s) ? "a velocity reached the cap" : "numbers became non-finite";
+    char why[300];
+    if (judged)
+        limits_say_stability(l, false, why, sizeof why);
+    if (judged && why[0])
+        options_say("the simulation blew up at t = %.4g s (%s): %s", sim_time(s), how, why);
     else
-        options_say("the simulation blew up at t = %.4g s: numbers became non-finite with dt = %g s "
-            "(RK4 stability limit dt < %.4g s)", sim_time(s), dt, limit);
+        options_say("the simulation blew up at t = %.4g s (%s) with dt = %g s and %s",
+            sim_time(s), how, sim_dt(s), name);
 }
 
 static int open_output(struct output *o, const struct config *c)
@@ -87,10 +118,12 @@ static int run_headless(const struct config *c, const struct model *m)
         sim_free(s);
         return EXIT_FAILURE;
     }
-    double limit = modes_stable_dt(m);
-    if (c->dt >= limit)
-        options_say("warning: dt = %g s is above the RK4 stability limit of this chain, dt < %.4g s "
-            "(omega_max*dt < %.2f)", c->dt, limit, MODES_RK4_LIMIT);
+    struct limits l;
+    bool judged = judge(c, m, &l);
+    bool unstable = judged && limits_unstable(&l);
+    if (judged)
+        warn_limits(&l);
+    sim_set_integrator(s, c->integrator);
     config_initial(c, m, x, x + n);
     sim_reset(s, x, x + n);
     if (open_output(&o, c)) {
@@ -106,13 +139,20 @@ static int run_headless(const struct config *c, const struct model *m)
         stride = 1.0;
     output_csv_header(o.fp, n, c->energy);
     output_csv_row(o.fp, s, c->energy, x + 2 * n);
+    double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
     for (double step = 1; step <= total; step++) {
         /* Past the stability limit a capped velocity means the numbers are running away:
          * stop rather than write nonsense. */
-        if (sim_step(s) != SIM_OK || (c->dt >= limit && sim_last_capped(s))) {
-            report_blowup(s);
+        if (sim_step(s) != SIM_OK || (unstable && sim_last_capped(s))) {
+            report_blowup(s, &l, judged);
             status = EXIT_FAILURE;
+            capped = 0.0; /* said already */
             break;
+        }
+        if (sim_last_capped(s)) {
+            if (capped == 0.0)
+                first_cap = sim_time(s);
+            capped += sim_last_capped(s);
         }
         if (fmod(step, stride) == 0.0) {
             output_csv_row(o.fp, s, c->energy, x + 2 * n);
@@ -121,6 +161,12 @@ static int run_headless(const struct config *c, const struct model *m)
         }
     }
     status = close_output(&o, c, status);
+    if (capped > 0.0) {
+        char times[32];
+        snprintf(times, sizeof times, capped == 1.0 ? "once" : "%.0f times", capped);
+        options_say("warning: the velocity cap (%g m/s) acted %s, first at t = %.4g s; the "
+            "energy balance includes what it removed", MODEL_VMAX, times, first_cap);
+    }
     free(x);
     sim_free(s);
     return status;

@@ -34,8 +34,8 @@ struct sweep *__real_sweep_new(int n, int points);
 struct sweep *__wrap_sweep_new(int n, int points);
 int __real_modes_compute(const struct model *m, double *freq, double *shapes);
 int __wrap_modes_compute(const struct model *m, double *freq, double *shapes);
-double __real_modes_stable_dt(const struct model *m);
-double __wrap_modes_stable_dt(const struct model *m);
+int __real_limits_modes(const struct model *m, struct limits_mode *mode);
+int __wrap_limits_modes(const struct model *m, struct limits_mode *mode);
 
 struct model *__wrap_config_model(const struct config *c, int *bad_key, char *err, size_t len)
 {
@@ -73,10 +73,10 @@ int __wrap_modes_compute(const struct model *m, double *freq, double *shapes)
     return __real_modes_compute(m, freq, shapes);
 }
 
-double __wrap_modes_stable_dt(const struct model *m)
+int __wrap_limits_modes(const struct model *m, struct limits_mode *mode)
 {
     limit_calls++;
-    return __real_modes_stable_dt(m);
+    return __real_limits_modes(m, mode);
 }
 
 int setup(void **state)

@@ -13,7 +13,7 @@ extern struct app app;    /* the app under test */
 extern struct config cfg; /* what setup built it from: three masses at 0.9 Hz */
 
 extern int modes_calls; /* modes_compute calls since they were last zeroed */
-extern int limit_calls; /* modes_stable_dt calls since they were last zeroed */
+extern int limit_calls; /* limits_modes calls since they were last zeroed */
 
 /* Makes the k-th wrapped allocation from now fail (0: none). */
 void fail_allocation(int k);

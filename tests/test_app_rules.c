@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/limits.h"
 #include "core/modes.h"
 
 /* Everything a refused change must leave as it was. */
@@ -289,7 +290,9 @@ static void modes_once_per_change(void **state)
     double f[APP_MAX_MASSES], shapes[APP_MAX_MASSES * APP_MAX_MASSES];
     assert_int_equal(modes_compute(app.model, f, shapes), 0);
     assert_memory_equal(f, app.modes, (size_t)app.model->n * sizeof *f);
-    assert_close(app.stable_dt, modes_stable_dt(app.model), 0.0);
+    struct limits_mode lm[APP_MAX_MASSES];
+    assert_int_equal(limits_modes(app.model, lm), 0);
+    assert_close(app.stable_dt, limits_stable_dt(lm, app.model->n, app.cfg.integrator), 0.0);
 }
 
 /* ---- all or nothing ---- */

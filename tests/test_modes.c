@@ -1,6 +1,7 @@
 /* test_modes.c: natural frequencies and shapes against the closed forms of the uniform
  * chain, the eigen-equation itself on a non-uniform chain, the steady state against
- * the 1-DOF formula and against a long simulation, and the stability limit. */
+ * the 1-DOF formula and against a long simulation. The limits of dt are in
+ * test_limits.c. */
 #include "testutil.h"
 
 #include <stdlib.h>
@@ -166,34 +167,6 @@ static void response_matches_simulation(void **state)
     model_free(md);
 }
 
-static void stability_limit(void **state)
-{
-    (void)state;
-    struct model *md = uniform(3, 10.0, 1.0, BOUNDARY_MOTOR);
-    double wmax = 2.0 * sqrt(10.0) * sin(3 * M_PI / 8.0);
-    assert_close(modes_omega_max(md), wmax, 1e-9 * wmax);
-    assert_close(modes_stable_dt(md), MODES_RK4_LIMIT / wmax, 1e-9);
-    /* Above the limit an undamped chain without the cap's help really does grow. */
-    md->collisions = false;
-    for (int i = 0; i < 3; i++)
-        md->c[i] = 0.0;
-    md->boundary = BOUNDARY_WALL;
-    double x0[3] = {1e-3, -1e-3, 1e-3};
-    struct sim *s = sim_new(md, 1.05 * 2.83 / wmax);
-    sim_reset(s, x0, NULL);
-    for (int n = 0; n < 400; n++)
-        sim_step(s);
-    assert_true(fabs(sim_x(s)[0]) + fabs(sim_x(s)[1]) > 1e-2);
-    sim_free(s);
-    s = sim_new(md, 0.95 * MODES_RK4_LIMIT / wmax);
-    sim_reset(s, x0, NULL);
-    for (int n = 0; n < 400; n++)
-        sim_step(s);
-    assert_true(fabs(sim_x(s)[0]) + fabs(sim_x(s)[1]) + fabs(sim_x(s)[2]) < 1e-2);
-    sim_free(s);
-    model_free(md);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -203,7 +176,6 @@ int main(void)
         cmocka_unit_test(eigen_equation_holds),
         cmocka_unit_test(one_dof_response),
         cmocka_unit_test(response_matches_simulation),
-        cmocka_unit_test(stability_limit),
     };
     return cmocka_run_group_tests_name("modes", tests, NULL, NULL);
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "../core/limits.h"
 #include "../core/modes.h"
 
 /* Fine samples at least this far apart (s), this many: 11 s or more, for the windows up
@@ -58,10 +59,12 @@ static void parts_free(struct parts *p)
 
 /* Builds the parts around model m, which they take over (freed on failure too); 0, or
  * -1 on no memory with nothing left allocated. */
-static int parts_new(struct parts *p, struct model *m, double dt)
+static int parts_new(struct parts *p, struct model *m, const struct config *next)
 {
     *p = (struct parts){.model = m};
-    p->sim = sim_new(m, dt);
+    p->sim = sim_new(m, next->dt);
+    if (p->sim)
+        sim_set_integrator(p->sim, next->integrator);
     p->hist = p->sim ? history_new(p->sim, HISTORY_DEPTH) : NULL;
     p->trail = trail_new(m->n, FINE_RECORDS);
     p->coarse = trail_new(m->n, COARSE_RECORDS);
@@ -85,11 +88,45 @@ static void parts_swap(struct app *app, struct parts *p)
     *p = old;
 }
 
-/* Natural frequencies, shapes and the stability limit of the model as it is now. */
+/* Natural frequencies, shapes and the damped modes of the model as it is now. */
 static void compute_modes(struct app *app)
 {
     app->modes_ok = modes_compute(app->model, app->modes, app->shapes) == 0;
-    app->stable_dt = modes_stable_dt(app->model);
+    app->limits_ok = limits_modes(app->model, app->limit_modes) == 0;
+}
+
+/* What dt is worth with the chain, drive and integrator in force. */
+static void judge(struct app *app)
+{
+    if (app->limits_ok)
+        limits_judge(app->limit_modes, app->model->n, app->model, app->cfg.integrator,
+                     app->cfg.dt, &app->limits);
+    else
+        app->limits = (struct limits){.integrator = app->cfg.integrator, .dt = app->cfg.dt,
+                                      .stable_dt = INFINITY, .accurate_dt = INFINITY,
+                                      .worst = -1, .drive_steps = INFINITY};
+    app->stable_dt = app->limits.stable_dt;
+}
+
+/* Says what is wrong with dt after a change, if anything. A change of the chain, dt or
+ * the integrator says the first of: unstable, a mode inaccurate, the drive short of
+ * steps; one of the drive alone says only that the drive has just become short of them
+ * (a sweep's retunes cross it once, not at every point). */
+static unsigned say_limits(struct app *app, unsigned what, bool drive_was_rough)
+{
+    const struct limits *l = &app->limits;
+    char line[sizeof app->message];
+    line[0] = '\0';
+    if (what & (APP_CHANGED_CHAIN | APP_CHANGED_DT | APP_CHANGED_INTEGRATOR)) {
+        limits_say_stability(l, true, line, sizeof line);
+        if (!line[0])
+            limits_say_modes(l, true, line, sizeof line);
+        if (!line[0])
+            limits_say_drive(l, true, line, sizeof line);
+    } else if ((what & APP_CHANGED_DRIVE) && !drive_was_rough && !limits_unstable(l)) {
+        limits_say_drive(l, true, line, sizeof line);
+    }
+    return line[0] ? app_say(app, true, "%s", line) : 0;
 }
 
 /* Steps between samples for the current dt, fine and coarse. */
@@ -136,6 +173,7 @@ static void restart(struct app *app)
     struct energy e;
     sim_energy(app->sim, &e);
     app->energy0 = e.balance;
+    app->capped = 0;
 }
 
 /* Whether any of the n values differ. */
@@ -167,6 +205,8 @@ static unsigned compare(const struct app *app, const struct config *next, const 
         what |= APP_CHANGED_DRIVE;
     if (next->dt != app->cfg.dt)
         what |= APP_CHANGED_DT;
+    if (next->integrator != app->cfg.integrator)
+        what |= APP_CHANGED_INTEGRATOR;
     if (next->low_bandwidth != app->cfg.low_bandwidth || next->fps != app->cfg.fps)
         what |= APP_CHANGED_PLAYBACK;
     return what;
@@ -188,7 +228,7 @@ static unsigned say_sweep_end(struct app *app, const char *why, int measured, in
 static int rebuild_from(struct app *app, const struct config *next, struct model *m)
 {
     struct parts p;
-    if (parts_new(&p, m, next->dt) != 0) {
+    if (parts_new(&p, m, next) != 0) {
         app_say(app, true, "out of memory: the chain is as it was");
         return -1;
     }
@@ -216,6 +256,8 @@ static void apply_in_place(struct app *app, const struct config *next, struct mo
         sim_set_dt(app->sim, app->cfg.dt);
         set_sampling(app);
     }
+    if (what & APP_CHANGED_INTEGRATOR)
+        sim_set_integrator(app->sim, app->cfg.integrator);
 }
 
 int app_change(struct app *app, struct config *next, unsigned how, const char *why,
@@ -223,6 +265,7 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
 {
     char err[300];
     int bad;
+    bool drive_was_rough = app->model && limits_rough_drive(&app->limits);
     *changed = 0;
     /* The interactive program's narrower ranges, whatever the route. */
     if (next->masses < 1 || next->masses > APP_MAX_MASSES) {
@@ -278,14 +321,14 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
     }
     if (what & APP_CHANGED_CHAIN)
         compute_modes(app);
+    if (what & (APP_CHANGED_CHAIN | APP_CHANGED_DRIVE | APP_CHANGED_DT | APP_CHANGED_INTEGRATOR))
+        judge(app);
     if ((what & (APP_CHANGED_CHAIN | APP_CHANGED_DRIVE)) && ++app->version == 0)
         app->version = 1;
     if (ends)
         what |= say_sweep_end(app, why, measured, points);
-    /* Said before anything blows up: dt past the RK4 stability limit. */
-    if ((what & (APP_CHANGED_CHAIN | APP_CHANGED_DT)) && app->cfg.dt >= app->stable_dt)
-        what |= app_say(app, true, "warning: dt = %.3f s is above the stability limit: dt < "
-                        "%.3g s is stable", app->cfg.dt, app->stable_dt);
+    /* Said before anything blows up or goes wrong. */
+    what |= say_limits(app, what, drive_was_rough);
     *changed = what;
     return 0;
 }
@@ -365,18 +408,33 @@ static void follow_restored(struct app *app)
     trails_follow(app);
 }
 
+/* Counts the velocities the cap took in the last step and says so. */
+static unsigned note_cap(struct app *app)
+{
+    int capped = sim_last_capped(app->sim);
+    if (!capped)
+        return 0;
+    if (app->capped == 0)
+        app->first_cap = sim_time(app->sim);
+    app->capped += capped;
+    return app_say(app, true, "the velocity cap (%g m/s) acted %ld time%s, first at t = %.*f s",
+                   MODEL_VMAX, app->capped, app->capped == 1 ? "" : "s",
+                   app_time_decimals(app->cfg.dt), app->first_cap);
+}
+
 unsigned app_step(struct app *app)
 {
+    bool unstable = limits_unstable(&app->limits);
     history_push(app->hist, app->sim);
-    if (sim_step(app->sim) != SIM_OK ||
-        (app->cfg.dt >= app->stable_dt && sim_last_capped(app->sim))) {
+    if (sim_step(app->sim) != SIM_OK || (unstable && sim_last_capped(app->sim))) {
         /* Back to the state before this step: the last one known to be sound. */
         history_pop(app->hist, app->sim);
         follow_restored(app);
         app->running = false;
-        if (app->cfg.dt >= app->stable_dt)
-            app_say(app, true, "unstable: dt too large for these springs; dt < %.3g s is stable",
-                    app->stable_dt);
+        if (unstable)
+            app_say(app, true, "unstable with %s: dt < %.3g s is stable; paused at t = %.2f s",
+                    integrator_name(app->cfg.integrator), limits_round_down(app->stable_dt),
+                    sim_time(app->sim));
         else
             app_say(app, true, "unstable: the numbers ran away; paused at t = %.2f s",
                     sim_time(app->sim));
@@ -390,7 +448,7 @@ unsigned app_step(struct app *app)
         app->since_coarse = 0;
         trail_push(app->coarse, app->sim);
     }
-    unsigned what = APP_CHANGED_STATE;
+    unsigned what = APP_CHANGED_STATE | note_cap(app);
     switch (sweep_update(app->sweep, sim_time(app->sim), sim_x(app->sim))) {
     case SWEEP_RETUNE:
         what |= retune(app, sweep_frequency(app->sweep));

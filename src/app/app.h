@@ -8,8 +8,9 @@
  * leaves everything as it was but the message, which says why. Every change of the
  * chain's or the drive's parameters, by any route, goes through one path that keeps the
  * rules: a running sweep ends (but for its own retunes) and gives the user's frequency
- * back; the modes and the stability limit are recomputed once; a new chain (new N, a
- * preset) is built whole before the old one is let go, or not at all. */
+ * back; the modes and the damped modes behind the limits of dt are recomputed once; a
+ * new chain (new N, a preset) is built whole before the old one is let go, or not at
+ * all; a change that leaves dt unstable or inaccurate says so. */
 #ifndef SPRINGSIM_APP_H
 #define SPRINGSIM_APP_H
 
@@ -17,6 +18,7 @@
 
 #include "../core/config.h"
 #include "../core/history.h"
+#include "../core/limits.h"
 #include "../core/sim.h"
 #include "../core/sweep.h"
 #include "trail.h"
@@ -40,6 +42,7 @@ enum app_change {
     APP_CHANGED_MESSAGE = 1u << 6,  /* the status message */
     APP_CHANGED_DT = 1u << 7,       /* the time step (and so the plots' sampling) */
     APP_CHANGED_PENDING = 1u << 8,  /* the Masses control's value waiting for Enter */
+    APP_CHANGED_INTEGRATOR = 1u << 9, /* the integrator (and so the limits of dt) */
 };
 
 /* Digits after the point that time step dt needs (2 at least): t and dt are shown with
@@ -57,6 +60,7 @@ enum control {
     CTL_PRESET,
     CTL_MASSES,
     CTL_DT,
+    CTL_INTEGRATOR,
     CTL_DAMPING,
     CTL_SPRING,
     CTL_MASS,
@@ -84,7 +88,12 @@ struct app {
     bool running;            /* playing, not paused */
     double speed;            /* simulated seconds per wall-clock second */
     int masses_pending;      /* the Masses control before it is applied */
-    double stable_dt;        /* RK4 stability limit of the current chain */
+    double stable_dt;        /* the integrator's stability limit on this chain (s) */
+    struct limits limits;    /* what dt is worth: stability, accuracy, the drive's steps */
+    struct limits_mode limit_modes[APP_MAX_MASSES]; /* the damped chain's modes */
+    bool limits_ok;          /* limit_modes[] and limits are those of the model */
+    long capped;             /* velocities the cap has acted on since t = 0 */
+    double first_cap;        /* when it first did (s) */
     char preset[64];         /* name of the preset loaded, or "" */
     char message[200];       /* one line for the status bar, "" for none */
     bool message_is_error;   /* shown as a warning */

@@ -12,6 +12,7 @@
 
 static const char *const labels[CTL_COUNT] = {
     [CTL_PRESET] = "Preset",      [CTL_MASSES] = "Masses",     [CTL_DT] = "dt",
+    [CTL_INTEGRATOR] = "Integrator",
     [CTL_DAMPING] = "Damping",    [CTL_SPRING] = "Spring k",   [CTL_MASS] = "Mass",
     [CTL_BOUNDARY] = "Right end", [CTL_WAVE] = "Waveform",     [CTL_AMPLITUDE] = "Amplitude",
     [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Bandwidth",
@@ -183,6 +184,10 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
     case CTL_WAVE:
         next.wave = (enum wave)(((int)next.wave + steps % WAVE_COUNT + WAVE_COUNT) % WAVE_COUNT);
         return change_control(app, &next, ctl);
+    case CTL_INTEGRATOR:
+        next.integrator = (enum integrator)(((int)next.integrator + steps % INTEGRATOR_COUNT +
+                                             INTEGRATOR_COUNT) % INTEGRATOR_COUNT);
+        return change_control(app, &next, ctl);
     case CTL_BANDWIDTH:
         if (steps == 0)
             return 0;
@@ -235,6 +240,7 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
 {
     static const enum config_key keys[CTL_COUNT] = {
         [CTL_PRESET] = CFG_PRESET,     [CTL_MASSES] = CFG_MASSES,   [CTL_DT] = CFG_DT,
+        [CTL_INTEGRATOR] = CFG_INTEGRATOR,
         [CTL_DAMPING] = CFG_DAMPING,   [CTL_SPRING] = CFG_SPRING,   [CTL_MASS] = CFG_MASS,
         [CTL_BOUNDARY] = CFG_BOUNDARY, [CTL_WAVE] = CFG_WAVE,       [CTL_AMPLITUDE] = CFG_AMPLITUDE,
         [CTL_FREQUENCY] = CFG_FREQUENCY,
@@ -361,6 +367,9 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         return;
     case CTL_WAVE:
         snprintf(buf, len, "%s", motor_wave_name(m->motor.wave));
+        return;
+    case CTL_INTEGRATOR:
+        snprintf(buf, len, "%s", integrator_name(app->cfg.integrator));
         return;
     case CTL_SPEED:
         snprintf(buf, len, "%gx", app->speed);

@@ -16,7 +16,9 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_SPRING] = {"spring", 0, "system", "LIST", "N/m: one value, or N+1 values (default 10)"},
     [CFG_DAMPING] = {"damping", 0, "system", "LIST",
                      "N s/m: one value, or N values (default 0.1)"},
-    [CFG_DT] = {"dt", 0, "system", "SECONDS", "RK4 step, 0 < dt <= 0.05 (default 0.01)"},
+    [CFG_DT] = {"dt", 0, "system", "SECONDS", "time step, 0 < dt <= 0.05 (default 0.01)"},
+    [CFG_INTEGRATOR] = {"integrator", 0, "system", "euler|semi-implicit|verlet|rk4|exact",
+                        "how each step is taken (default rk4)"},
     [CFG_BOUNDARY] = {"boundary", 0, "motor", "motor|wall|free", "right end (default motor)"},
     [CFG_WAVE] = {"wave", 0, "motor", "sine|square|triangle|sawtooth",
                   "motor waveform (default sine)"},
@@ -35,7 +37,7 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_OUTPUT] = {"output", 'o', NULL, "FILE",
                     "headless/modes/sweep output to FILE instead of standard output"},
     [CFG_ENERGY] = {"energy", 0, "run", NULL,
-                    "headless CSV gains kinetic,potential,dissipated,motor_work"},
+                    "headless CSV gains kinetic,potential,dissipated,motor_work,contact"},
     [CFG_FPS] = {"fps", 0, "run", "N", "interactive frames per second, 1 to 60 (default 30)"},
     [CFG_LOW_BANDWIDTH] = {"low-bandwidth", 0, "run", NULL,
                            "interactive: fewer frames and plot refreshes (slow links)"},
@@ -49,6 +51,7 @@ static const char *const expected[CFG_KEY_COUNT] = {
     [CFG_SPRING] = "springs > 0 N/m: one value, or N+1",
     [CFG_DAMPING] = "damping >= 0 N s/m: one value, or one per mass",
     [CFG_DT] = "0 < dt <= 0.05",
+    [CFG_INTEGRATOR] = "euler, semi-implicit, verlet, rk4 or exact",
     [CFG_BOUNDARY] = "motor, wall or free",
     [CFG_WAVE] = "sine, square, triangle or sawtooth",
     [CFG_AMPLITUDE] = "amplitude >= 0 m",
@@ -74,6 +77,7 @@ void config_init(struct config *c)
     memset(c, 0, sizeof *c);
     c->masses = 2;
     c->dt = 0.01;
+    c->integrator = INTEGRATOR_RK4;
     c->boundary = BOUNDARY_MOTOR;
     c->wave = WAVE_SINE;
     c->amplitude = 1.0;
@@ -269,6 +273,11 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
         return set_list(key, value, &c->damping, GE0, err, errlen);
     case CFG_DT:
         return set_number(key, value, &c->dt, GT0, 0.05, err, errlen);
+    case CFG_INTEGRATOR:
+        if ((e = integrator_parse(value)) < 0)
+            return fail(key, value, "is not an integrator", err, errlen);
+        c->integrator = (enum integrator)e;
+        return 0;
     case CFG_BOUNDARY:
         if ((e = model_boundary_parse(value)) < 0)
             return fail(key, value, "is not a right end", err, errlen);

@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "integrator.h"
 #include "model.h"
 
 enum config_key {
@@ -16,6 +17,7 @@ enum config_key {
     CFG_SPRING,
     CFG_DAMPING,
     CFG_DT,
+    CFG_INTEGRATOR,
     CFG_BOUNDARY,
     CFG_WAVE,
     CFG_AMPLITUDE,
@@ -64,6 +66,7 @@ struct config {
     struct config_list spring;          /* N/m */
     struct config_list damping;         /* N s/m */
     double dt;                          /* s */
+    enum integrator integrator;         /* the stepper (rk4 unless set) */
     enum boundary boundary;             /* right end */
     enum wave wave;                     /* drive waveform */
     double amplitude;                   /* m */
@@ -86,7 +89,7 @@ struct config {
 };
 
 /* The defaults: the page's (2 masses of 1 kg, 10 N/m, 0.1 N s/m, dt 0.01 s, motor,
- * sine, 1 m, 1 Hz, at rest), duration 10 s, every step sampled. */
+ * sine, 1 m, 1 Hz, at rest), rk4, duration 10 s, every step sampled. */
 void config_init(struct config *c);
 
 /* The key with this long name, or -1. */

@@ -2,7 +2,8 @@
  *
  * K phi = w^2 M phi with K tridiagonal (K_ii = k_i + k_{i+1}, K_{i,i+1} = -k_{i+1}; a free
  * end drops k_N from the last diagonal entry) becomes, with z = M^(1/2) phi, the
- * symmetric tridiagonal problem M^(-1/2) K M^(-1/2) z = w^2 z: LAPACK dstev. The
+ * symmetric tridiagonal problem M^(-1/2) K M^(-1/2) z = w^2 z: LAPACK dstev (dstevr,
+ * O(N^2), where the modal damping needs every vector of a long chain). The
  * steady state under u = A sin(w t) solves the complex tridiagonal system
  * (K - w^2 M + i w C) X = k_N A e_N: LAPACK zgtsv. */
 #include "modes.h"
@@ -83,22 +84,34 @@ int modes_compute(const struct model *m, double *freq, double *shapes)
     return 0;
 }
 
-double modes_omega_max(const struct model *m)
+int modes_modal(const struct model *m, double *w2, double *s)
 {
-    double *f = malloc((size_t)m->n * sizeof *f);
-    if (!f)
-        return -1.0;
-    double w = -1.0;
-    if (modes_compute(m, f, NULL) == 0)
-        w = 2.0 * M_PI * f[m->n - 1];
-    free(f);
-    return w;
-}
-
-double modes_stable_dt(const struct model *m)
-{
-    double w = modes_omega_max(m);
-    return w > 0.0 ? MODES_RK4_LIMIT / w : INFINITY;
+    int n = m->n;
+    double *d = malloc((size_t)(2 * n) * sizeof *d);
+    double *z = malloc((size_t)n * (size_t)n * sizeof *z);
+    lapack_int *support = malloc((size_t)(2 * n) * sizeof *support);
+    lapack_int found = 0, info = -1;
+    if (d && z && support) {
+        double *e = d + n;
+        scaled_k(m, d, e);
+        info = LAPACKE_dstevr(LAPACK_COL_MAJOR, 'V', 'A', n, d, e, 0.0, 0.0, 0, 0, 0.0, &found,
+                              w2, z, n, support);
+        if (info == 0 && found != n)
+            info = -2;
+    }
+    /* z_j = M^(1/2) phi_j with |z_j| = 1: phi^T M phi = 1, phi^T C phi = sum c_i z_i^2 / m_i. */
+    for (int j = 0; info == 0 && j < n; j++) {
+        double cc = 0.0;
+        for (int i = 0; i < n; i++)
+            cc += m->c[i] / m->m[i] * z[(size_t)j * n + i] * z[(size_t)j * n + i];
+        s[j] = 0.5 * cc;
+        if (!isfinite(w2[j]) || !isfinite(s[j]))
+            info = -2;
+    }
+    free(d);
+    free(z);
+    free(support);
+    return (int)info;
 }
 
 int modes_response(const struct model *m, double freq_hz, double *amp)

@@ -156,7 +156,7 @@ void output_csv_header(FILE *fp, int n, bool energy)
             fprintf(fp, ",%s%d", groups[g], i);
     fputs(",motor", fp);
     if (energy)
-        fputs(",kinetic,potential,dissipated,motor_work", fp);
+        fputs(",kinetic,potential,dissipated,motor_work,contact", fp);
     fputc('\n', fp);
 }
 
@@ -172,20 +172,21 @@ void output_csv_values(FILE *fp, int n, double t, const double *x, const double 
         fprintf(fp, ",%.12g", a[i]);
     fprintf(fp, ",%.12g", u);
     if (energy)
-        fprintf(fp, ",%.12g,%.12g,%.12g,%.12g", energy[0], energy[1], energy[2], energy[3]);
+        fprintf(fp, ",%.12g,%.12g,%.12g,%.12g,%.12g", energy[0], energy[1], energy[2], energy[3],
+                energy[4]);
     fputc('\n', fp);
 }
 
 void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
 {
     struct energy e;
-    double four[4];
+    double books[5];
     sim_accel(s, scratch);
     if (energy) {
         sim_energy(s, &e);
-        four[0] = e.kinetic, four[1] = e.potential, four[2] = e.dissipated;
-        four[3] = e.motor_work;
+        books[0] = e.kinetic, books[1] = e.potential, books[2] = e.dissipated;
+        books[3] = e.motor_work, books[4] = e.contact;
     }
     output_csv_values(fp, sim_model(s)->n, sim_time(s), sim_x(s), sim_v(s), scratch,
-                      sim_end_position(s), energy ? four : NULL);
+                      sim_end_position(s), energy ? books : NULL);
 }

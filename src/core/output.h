@@ -31,7 +31,7 @@ int output_close(struct output *o, bool commit);
 void output_csv_header(FILE *fp, int n, bool energy);
 
 /* One --headless CSV row from values: t, x[n], v[n], a[n], u and, if energy is not
- * NULL, its four values (kinetic, potential, dissipated, motor work). */
+ * NULL, its five values (kinetic, potential, dissipated, motor work, contact). */
 void output_csv_values(FILE *fp, int n, double t, const double *x, const double *v,
                        const double *a, double u, const double *energy);
 

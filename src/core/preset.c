@@ -542,6 +542,7 @@ int preset_write(FILE *out, const struct config *c, const struct model *m)
     write_list(out, "spring", m->k, n + 1);
     write_list(out, "damping", m->c, n);
     write_number(out, "dt", c->dt);
+    fprintf(out, "integrator = %s\n", integrator_name(c->integrator));
     fprintf(out, "no-collisions = %s\n", m->collisions ? "false" : "true");
     fprintf(out, "\n[motor]\nboundary = %s\nwave = %s\n", model_boundary_name(m->boundary),
             motor_wave_name(m->motor.wave));
