@@ -13,10 +13,12 @@
  * Accuracy: over one period T = 2 pi / |lambda| a mode's amplitude goes by exp(-s T);
  * the method's by rho^(T/h). Their ratio minus one is the mode's error per period.
  *
- * The largest good step of a mode is found on the ray h lambda: a scan in steps of 1/16
- * of h |lambda| up to 8 (past every explicit method's region), then bisection inside
- * the first bad interval. The regions here are intervals of that ray starting at 0,
- * so the scan only guards against the bisection starting on the wrong side. */
+ * The largest good step of a mode is found along h: a scan of h |lambda| (|lambda| the
+ * mode's fastest) in steps of 1/16 up to 8, past the explicit methods' regions, then
+ * growing by 1/16 each step up to 1e6 (verlet, whose damping is implicit, is stable on
+ * an overdamped mode out to 2 / sqrt(w2), far past its fast eigenvalue), then bisection
+ * inside the first bad interval. The good steps here are an interval starting at 0, so
+ * the scan only guards against the bisection starting on the wrong side. */
 #include "limits.h"
 
 #include <math.h>
@@ -29,8 +31,9 @@
 #include "modes.h"
 
 #define RHO_TOL 1e-12  /* rho this far above 1 is rounding, not growth */
-#define SCAN_STEP 0.0625
-#define SCAN_END 8.0
+#define SCAN_STEP 0.0625 /* of h |lambda|, up to SCAN_LINEAR */
+#define SCAN_LINEAR 8.0
+#define SCAN_END 1e6     /* no limit below this h |lambda|: none at all */
 #define BISECTIONS 64
 
 /* ---- the modes ---- */
@@ -188,15 +191,16 @@ static bool good(const struct limits_mode *md, enum integrator i, double h, enum
     return fabs(limits_mode_error(md, i, h)) <= LIMITS_LOSS;
 }
 
-/* The largest h good for mode md from 0 up: scan h |lambda| in steps, then bisect the
- * first bad interval. INFINITY when nothing up to SCAN_END is bad. */
+/* The largest h good for mode md from 0 up: scan, then bisect the first bad interval.
+ * INFINITY when nothing up to SCAN_END is bad. */
 static double largest_good(const struct limits_mode *md, enum integrator i, enum check what)
 {
     double scale = mode_scale(md);
     if (!(scale > 0.0))
         return INFINITY;
     double lo = 0.0, hi = NAN;
-    for (double t = SCAN_STEP; t <= SCAN_END; t += SCAN_STEP) {
+    for (double t = SCAN_STEP; t <= SCAN_END;
+         t = t < SCAN_LINEAR ? t + SCAN_STEP : t * (1.0 + SCAN_STEP)) {
         if (!good(md, i, t / scale, what)) {
             hi = t;
             break;
