@@ -234,8 +234,11 @@ if expect_ok --headless -n 3 --duration 0.1; then
     check_csv "$out" "$cmd"
 fi
 if expect_ok --headless --energy --duration 0.5; then
-    expect_equal "$cmd: header" "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work" \
+    expect_equal "$cmd: header" \
+        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact" \
         "$(first_line "$out")"
+    # 2 x 3 + 2 columns of motion, 5 of energy, on every row (check_csv: each one finite)
+    expect_equal "$cmd: columns" 13 "$(awk -F, 'NR == 1 { print NF }' "$out")"
     check_csv "$out" "$cmd"
 fi
 if expect_ok --headless --duration 1 --sample 0.1; then
@@ -501,8 +504,8 @@ done
 
 if expect_ok --help; then
     for o in preset masses mass spring damping dt boundary wave amplitude frequency x0 v0 \
-        random seed no-collisions duration sample output energy headless modes sweep \
-        list-presets keys fps low-bandwidth help version; do
+        random seed no-collisions duration sample output energy integrator headless modes \
+        sweep list-presets keys fps low-bandwidth help version; do
         if grep -Eq -e "--$o([^a-z0-9-]|\$)" "$out"; then pass; else fail "$cmd: does not mention --$o"; fi
     done
     for o in -p -n -o; do
@@ -537,6 +540,88 @@ if expect_ok --headless --duration 0.1 -o "$tmp/link.csv"; then
     if [ -L "$tmp/link.csv" ] && [ "$(data_rows "$tmp/target.csv")" -eq 11 ]; then pass; else
         fail "-o through a symlink: the link was replaced or the target not written"
     fi
+fi
+
+# 13. Integrators and the limits of dt (SPEC 1, "Integration"): --integrator, its preset
+# key, and the warnings said once on standard error before a run, exit status unchanged.
+run --headless --integrator x
+expect_equal "$cmd: the message" \
+    "springsim: --integrator: 'x' is not an integrator (expected euler, semi-implicit, verlet, rk4 or exact)" \
+    "$(cat "$err")"
+expect_equal "$cmd: exit status" 2 "$rc"
+expect_usage_error --integrator "'RK4'" -- --headless --integrator RK4
+expect_usage_error --integrator -- --headless --integrator
+for i in euler semi-implicit verlet rk4; do
+    if expect_ok --headless --integrator "$i" --duration 1 --dt 0.0005; then
+        check_csv "$out" "$cmd"
+        cp "$out" "$tmp/int-$i.csv"
+    fi
+done
+expect_rows 1 --headless --integrator exact --duration 0
+# the integrators differ, and rk4 is the default
+if cmp -s "$tmp/int-euler.csv" "$tmp/int-rk4.csv"; then fail "--integrator euler and rk4 gave the same"; else pass; fi
+expect_ok --headless --duration 1 --dt 0.0005 &&
+    expect_same_output "--integrator rk4 against the default" "$tmp/int-rk4.csv" "$out"
+# a preset key in [system], the same as the option
+printf '[system]\nintegrator = verlet\n' >"$tmp/p/verlet.ini"
+expect_ok -p "$tmp/p/verlet.ini" --headless --duration 1 --dt 0.0005 &&
+    expect_same_output "integrator = verlet in a preset" "$tmp/int-verlet.csv" "$out"
+expect_preset_error integrator-section 2 integrator '[motor]\nintegrator = rk4\n'
+expect_preset_error integrator-value 2 "integrator: 'leapfrog' is not an integrator" \
+    '[system]\nintegrator = leapfrog\n'
+
+# expect_warnings STATUS NEEDLES ARGS...: exits STATUS; every line of stderr starts
+# "springsim: "; each newline-separated NEEDLE is on exactly one of its lines.
+expect_warnings() {
+    want=$1
+    needles=$2
+    shift 2
+    run "$@"
+    bad=
+    [ "$rc" -eq "$want" ] || bad="$bad exit $rc (expected $want);"
+    grep -qv '^springsim: ' "$err" && bad="$bad a line not starting 'springsim: ';"
+    old_ifs=$IFS
+    IFS='
+'
+    for needle in $needles; do
+        c=$(grep -cF -- "$needle" "$err")
+        [ "$c" -eq 1 ] || bad="$bad \"$needle\" on $c lines (expected 1);"
+    done
+    IFS=$old_ifs
+    if [ -n "$bad" ]; then fail "$cmd:$bad stderr: $(show "$err")"; else pass; fi
+}
+# issue 10's damped instabilities: warned before the run, which then stops (exit 1)
+expect_warnings 1 "springsim: warning: dt = 0.05 s is unstable with rk4 for these springs and dampers: dt < 0.0279 s is stable
+blew up" --headless -n 1 --damping 100 --dt 0.05 --no-collisions --duration 2
+case $(first_line "$err") in
+"springsim: warning: dt = 0.05 s is unstable"*) pass ;;
+*) fail "$cmd: the warning should come first; stderr: $(show "$err")" ;;
+esac
+expect_warnings 1 "springsim: warning: dt = 0.05 s is unstable with rk4 for these springs and dampers: dt < 0.0485 s is stable" \
+    -n 1 --boundary wall --spring 1458 --damping 54 --x0 0.01 --dt 0.05 --headless
+# the same chain at a stable dt runs without a word; exact has no limit
+expect_ok -n 1 --boundary wall --spring 1458 --damping 54 --x0 0.01 --dt 0.01 --headless
+expect_warnings 1 "springsim: warning: dt = 0.03 s is unstable with euler" --headless -n 1 \
+    --damping 100 --dt 0.03 --no-collisions --duration 2 --integrator euler
+expect_ok --headless -n 1 --damping 100 --dt 0.05 --no-collisions --duration 2 --integrator exact
+# accuracy: the N = 10 chain loses its top mode to rk4's damping; a 23.7 Hz drive
+expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: the highest mode (7.05 Hz) loses 76 % of its amplitude per period to rk4; dt < 0.017 s keeps it under 1 %" \
+    --headless -n 10 --spring 50 --mass 0.1 --damping 0 --dt 0.05 --duration 1
+expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
+check_csv "$out" "$cmd"
+expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: the 23.7 Hz drive gets 0.84 steps per period; dt <= 0.0021 s gives it 20" \
+    --headless --frequency 23.7 --dt 0.05 --duration 1
+expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
+# the velocity cap: one line at the end with the count and the first time
+expect_warnings 0 "springsim: warning: the velocity cap (50 m/s) acted 46 times, first at t = 0.014 s; the energy balance includes what it removed" \
+    --headless -n 1 --spring 1000 --damping 0 --x0 2 --no-collisions --dt 0.001 --duration 2 --energy
+expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
+check_csv "$out" "$cmd"
+# the contact column holds what the cap took: 0 at the start, more than 0 at the end
+expect_equal "$cmd: contact at t = 0" 0 "$(column "$out" contact 1)"
+last=$(column "$out" contact 2001)
+if awk -v c="$last" 'BEGIN { exit !(c > 0) }'; then pass; else
+    fail "$cmd: contact at the end is '$last', expected more than 0"
 fi
 
 # 11. Inputs the fuzzers once crashed on (tests/fuzz/regressions/preset-*): each is now
