@@ -10,7 +10,22 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "app/change.h"
 #include "core/preset.h"
+
+/* One value for every element of a list. */
+static void set_list(struct config_list *l, double v)
+{
+    l->count = 1;
+    l->v[0] = v;
+}
+
+/* Puts next in force as a preset would: a new chain at t = 0. */
+static int app_load_config(struct config *next)
+{
+    unsigned what;
+    return app_change(&app, next, CHANGE_REBUILD, "the test", &what);
+}
 
 /* ---- what the masks say ---- */
 
@@ -426,6 +441,93 @@ static void back_across_dt(void **state)
     assert_close(sim_time(app.sim), 0.09, 1e-12);
 }
 
+/* ---- the integrator and the limits of dt ---- */
+
+/* The Integrator control cycles with the arrows and takes typed names; the sim follows,
+ * the limits follow (no modes recomputed), and what dt is worth is said: unstable,
+ * a mode inaccurate, the drive short of steps, the velocity cap when it acts. */
+static void integrator_and_limits(void **state)
+{
+    (void)state;
+    char buf[64];
+    app_control_value(&app, CTL_INTEGRATOR, buf, sizeof buf);
+    assert_string_equal(buf, "rk4");
+    double rk4_limit = app.stable_dt;
+    modes_calls = limit_calls = 0;
+    unsigned w = app_adjust(&app, CTL_INTEGRATOR, 1, false);
+    assert_int_equal(w & ~APP_CHANGED_MESSAGE, APP_CHANGED_INTEGRATOR);
+    assert_int_equal(sim_integrator(app.sim), INTEGRATOR_EXACT);
+    assert_true(isinf(app.stable_dt));
+    assert_int_equal(modes_calls + limit_calls, 0);
+    assert_true(app_adjust(&app, CTL_INTEGRATOR, 1, false)); /* round to euler */
+    assert_int_equal(sim_integrator(app.sim), INTEGRATOR_EULER);
+    /* Euler on the lightly damped chain at dt = 0.01: unstable, and said so. */
+    assert_true(app.message_is_error);
+    assert_non_null(strstr(app.message, "above the stability limit of euler"));
+    assert_true(app.stable_dt < rk4_limit);
+    assert_int_equal(app_set_text(&app, CTL_INTEGRATOR, "leapfrog"), 0);
+    assert_non_null(strstr(app.message, "'leapfrog' is not an integrator"));
+    assert_int_equal(app.cfg.integrator, INTEGRATOR_EULER);
+    assert_true(app_set_text(&app, CTL_INTEGRATOR, "verlet"));
+    assert_int_equal(sim_integrator(app.sim), INTEGRATOR_VERLET);
+    assert_false(app.message_is_error);
+    /* A new chain keeps it. */
+    assert_true(new_n());
+    assert_int_equal(sim_integrator(app.sim), INTEGRATOR_VERLET);
+    assert_true(app_set_text(&app, CTL_INTEGRATOR, "rk4"));
+
+    /* Ten stiff light masses at dt = 0.05: stable with rk4, but its top mode is damped
+     * away; at 0.01 it is fine. */
+    struct config next = app.cfg;
+    next.masses = 10;
+    set_list(&next.spring, 50.0);
+    set_list(&next.mass, 0.1);
+    set_list(&next.damping, 0.0);
+    next.dt = 0.05;
+    next.frequency = 0.5;
+    next.x0.count = next.v0.count = 0;
+    assert_int_equal(app_load_config(&next), 0);
+    assert_true(app.message_is_error);
+    assert_non_null(strstr(app.message, "7.05 Hz mode loses 76 % a period to rk4"));
+    assert_true(app_set_text(&app, CTL_DT, "0.01"));
+    assert_false(app.message_is_error);
+    /* A drive too fast for dt is said when it becomes so, not at every change after. */
+    assert_true(app_set_text(&app, CTL_DT, "0.02"));
+    assert_true(app_set_text(&app, CTL_FREQUENCY, "3"));
+    assert_true(app.message_is_error);
+    assert_non_null(strstr(app.message, "steps per period of the 3 Hz drive"));
+    assert_int_equal(app_adjust(&app, CTL_FREQUENCY, 1, false), APP_CHANGED_DRIVE);
+}
+
+/* Every time the velocity cap acts, the status says so, with the count and the first
+ * time; a reset starts the count again. */
+static void cap_is_reported(void **state)
+{
+    (void)state;
+    struct config next = app.cfg;
+    next.masses = 1;
+    set_list(&next.spring, 1000.0);
+    set_list(&next.damping, 0.0);
+    set_list(&next.x0, 2.0);
+    next.v0.count = 0;
+    next.no_collisions = true;
+    next.dt = 0.001;
+    assert_int_equal(app_load_config(&next), 0);
+    assert_false(app.message_is_error);
+    unsigned w = 0;
+    int steps = 0;
+    while (!(w & APP_CHANGED_MESSAGE) && steps++ < 100)
+        w = app_step(&app);
+    assert_true(w & APP_CHANGED_STATE);
+    assert_true(app.message_is_error);
+    assert_non_null(strstr(app.message, "velocity cap (50 m/s) acted 1 time, first at t = 0.014 s"));
+    while (app.capped < 2 && steps++ < 1000)
+        app_step(&app);
+    assert_non_null(strstr(app.message, "acted 2 times, first at t = 0.014 s"));
+    app_reset(&app);
+    assert_int_equal(app.capped, 0);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
@@ -442,6 +544,8 @@ int main(void)
         T(branch_from_history),
         T(back_across_retune),
         T(back_across_dt),
+        T(integrator_and_limits),
+        T(cap_is_reported),
     };
 #undef T
     return cmocka_run_group_tests_name("app", tests, NULL, NULL);

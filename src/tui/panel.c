@@ -95,9 +95,12 @@ void panel_controls(const struct layout *l, const struct app *app, const struct 
         y++;
     if (y > last)
         return;
-    draw_text(y, r.x + 2, r.w - 3, "natural frequencies (Hz)");
+    /* Their title where there is a row for it and one for the numbers; else the numbers
+     * alone on the last row, "Hz" after them (80x24). */
+    bool titled = last - y >= 1;
+    if (titled)
+        draw_text(y++, r.x + 2, r.w - 3, "natural frequencies (Hz)");
     int x = r.x + 2;
-    y++;
     for (int j = 0; j < app->model->n && y <= last; j++) {
         char num[16];
         snprintf(num, sizeof num, "%.3f", app->modes[j]);
@@ -109,6 +112,8 @@ void panel_controls(const struct layout *l, const struct app *app, const struct 
         draw_text_attr(y, x, len, term_attr(PAIR_TITLE), num);
         x += len + 1;
     }
+    if (!titled && y <= last && x + 2 <= r.x + r.w - 2)
+        draw_text(y, x, 2, "Hz");
 }
 
 /* One hint: the key, then what it does. */
