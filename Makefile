@@ -119,7 +119,7 @@ $(APP_FIXTURE): tests/app_fixture.c tests/app_fixture.h tests/testutil.h $(APP_O
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc \
 	    -DSRCDIR='"$(CURDIR)"' -c -o $@ $<
 
-$(BUILD)/tests/%: tests/%.c tests/testutil.h $(CORE_LIB) | $(BUILD)/.deps-test
+$(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB) | $(BUILD)/.deps-test
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc \
 	    -DSRCDIR='"$(CURDIR)"' $(TEST_LDFLAGS) -o $@ $< \
