@@ -22,7 +22,7 @@ WARN = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"'
 
 # Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
-CORE_PKGS = inih lapacke
+CORE_PKGS = inih lapacke gsl
 CORE_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(CORE_PKGS))
 CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
@@ -158,8 +158,8 @@ check-long: $(BIN) | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) sh tests/long/soak.sh
 	@SPRINGSIM=./$(BIN) sh tests/long/storm.sh
 
-# Speed and cost, side by side in one run (GSL is needed only here): the core against
-# GSL's rk4, cost per mass, CSV rate, and the interactive program in a pseudo-terminal.
+# Speed and cost, side by side in one run: the core against GSL's rk4, cost per mass, CSV
+# rate, and the interactive program in a pseudo-terminal.
 BENCH_SECONDS ?= 10
 bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@sh mk/deps.sh bench

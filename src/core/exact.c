@@ -1,0 +1,509 @@
+/* exact.c: the chain over one smooth piece of the drive by the matrix exponential,
+ * z(b) = expm(A h) z(a), h = b - a, with the drive's own linear system in A, and the two
+ * energy books as quadratic forms in z(a).
+ *
+ * Coordinates. K (tridiagonal: K_ii = k_i + k_{i+1}, K_{i,i+1} = -k_{i+1}, a free end
+ * drops k_N) is positive definite, spring 0 always tying mass 1 to the wall, so
+ * M^(-1/2) K M^(-1/2) = L L^T with L lower bidiagonal (LAPACK dpttrf gives L D L^T). With
+ *
+ *     q = L^T M^(1/2) x,   p = M^(1/2) v,   G = diag(c_i / m_i),
+ *     q' = L^T p,          p' = -L q - G p + sqrt(k_N / m_N) e_N s,   s = sqrt(k_N) u,
+ *
+ * x^T K x / 2 + v^T M v / 2 = (|q|^2 + |p|^2) / 2: the chain's undamped generator is
+ * skew and its exponential a rotation (with damping, a contraction), which keeps scaling
+ * and squaring near rounding and every entry of A near the chain's frequencies. The
+ * drive's two states are scaled by sqrt(k_N) like the chain's: a sine as
+ * (s, r) = sqrt(k_N) amp (sin, cos) of its angle, s' = w r, r' = -w s; a line as
+ * (s, r) = sqrt(k_N) (u, u' / w_s), s' = w_s r, r' = 0, w_s the largest sqrt(K_ii / m_i).
+ *
+ * Books. The dampers take p^T G p, the motor gives k_N (u - x_N) u' = (a . z)(b . z), b
+ * nonzero only on r (u' = b_r r). On a step, with E(t) = expm(A t),
+ *
+ *     D = z^T Gd z,   Gd = int_0^h E(t)^T Q E(t) dt,   Q = G on the p block,
+ *     W = sum_{c = s, r} z_c (Nw_c . z),   Nw_c = b_r int_0^h E(t)^T a E_rc(t) dt,
+ *
+ * (row r of E(t) lives on the drive's columns). Both integrals come from a base interval
+ * t = h / 2^j short enough that ||A|| t <= 1/2, by 6-point Gauss-Legendre (error about
+ * (2 ||A|| t)^12 (6!)^4 / (13 (12!)^3), 2e-16 relative at 1/2), then doubled j times:
+ *
+ *     Gd(2t) = Gd(t) + E(t)^T Gd(t) E(t),   Nw(2t) = Nw(t) + E(t)^T Nw(t) R(t),
+ *
+ * R(t) the drive's 2x2 block of E(t). Every E(t) is GSL's exponential taken afresh:
+ * squaring up from the base instead costs a digit or more (5e-13 against 2e-14 at
+ * ||A h|| = 100, measured against quad precision).
+ *
+ * Cache. E(h), Gd and Nw depend on the model's values, the drive's form, w (sine) and h,
+ * not on z: they are kept for the last few steps, so a run of equal steps costs one
+ * matrix-vector product and one quadratic form, O((2N)^2). A step within 1e-8 / ||A|| of
+ * a cached one (late in a run, b - a carries the rounding of the times) is taken as a
+ * first-order step of the difference, then the cached one. */
+#include "exact.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_matrix.h>
+#include <lapacke.h>
+
+#define MAX_SLOTS 4                      /* cached steps, for small chains */
+#define SLOT_BUDGET (32.0 * 1024 * 1024) /* bytes of cache beyond the first slot */
+#define BASE_NORM 0.5                    /* ||A|| times the quadrature's base interval */
+#define GSL_ROW_TOP 100.0                /* see expm_into */
+#define REUSE 1e-8                       /* ||A|| |h - cached h| up to which a step is reused */
+
+enum drive_kind { DRIVE_NONE, DRIVE_SINE, DRIVE_LINE };
+
+/* One cached step: everything that depends on (model, drive kind, w, h) but not on z. */
+struct slot {
+    gsl_matrix prop;     /* E(h) */
+    gsl_matrix gram;     /* Gd: the dampers' loss as a quadratic form */
+    double *nw;          /* Nw_s then Nw_r (d each): the motor's work */
+    unsigned long model; /* the model's generation; 0: empty */
+    enum drive_kind kind;
+    double omega, h;    /* the sine's angular frequency (sine only), the step */
+    double norm;        /* ||A|| */
+    unsigned long used; /* when last used, for replacement */
+};
+
+struct exact {
+    int n, dmax, slots;
+    double *saved; /* m (n), k (n+1), c (n) as last seen */
+    enum boundary boundary;
+    int valid; /* the saved model factorised: 1, or 0 */
+    unsigned long model, clock;
+    double *sqm;        /* sqrt(m_i) */
+    double *ld, *ls;    /* L's diagonal (n) and subdiagonal (n-1) */
+    double *gam;        /* c_i / m_i */
+    double sk, wscale;  /* sqrt(k_N); w_s, the line's slope scale */
+    int damped;         /* some c_i > 0 */
+    gsl_matrix s, x, t; /* generator, an exponential, product scratch */
+    double *z, *z1, *y; /* state vectors (dmax), y also 2 dmax of scratch */
+    double *mem;        /* the matrices' storage (not GSL's: its allocation aborts) */
+    struct slot slot[MAX_SLOTS];
+};
+
+/* 6-point Gauss-Legendre on [-1, 1]: nodes +-gl_x[i], weights gl_w[i]. */
+static const double gl_x[3] = {0.2386191860831969086305017, 0.6612093864662645136613996,
+                               0.9324695142031520278123016};
+static const double gl_w[3] = {0.4679139345726910473898703, 0.3607615730481386075698335,
+                               0.1713244923791703450402961};
+
+struct exact *exact_new(int n)
+{
+    if (n < 1 || n > MODEL_MAX_MASSES)
+        return NULL;
+    struct exact *e = calloc(1, sizeof *e);
+    if (!e)
+        return NULL;
+    int d = 2 * n + 2;
+    size_t dd = (size_t)d * (size_t)d;
+    int slots = 1 + (int)fmin(MAX_SLOTS - 1, floor(SLOT_BUDGET / (2.0 * sizeof(double) * dd)));
+    e->n = n;
+    e->dmax = d;
+    e->slots = slots;
+    e->saved = malloc((size_t)(3 * n + 1) * sizeof(double));
+    e->sqm = malloc((size_t)(4 * n) * sizeof(double));
+    e->z = malloc((size_t)(4 * d + 2 * d * slots) * sizeof(double));
+    e->mem = malloc((size_t)(3 + 2 * slots) * dd * sizeof(double));
+    if (!e->saved || !e->sqm || !e->z || !e->mem) {
+        exact_free(e);
+        return NULL;
+    }
+    e->ld = e->sqm + n;
+    e->ls = e->ld + n;
+    e->gam = e->ls + n;
+    e->z1 = e->z + d;
+    e->y = e->z1 + d;
+    e->s = gsl_matrix_view_array(e->mem, (size_t)d, (size_t)d).matrix;
+    e->x = gsl_matrix_view_array(e->mem + dd, (size_t)d, (size_t)d).matrix;
+    e->t = gsl_matrix_view_array(e->mem + 2 * dd, (size_t)d, (size_t)d).matrix;
+    for (int i = 0; i < slots; i++) {
+        struct slot *sl = &e->slot[i];
+        double *at = e->mem + (3 + 2 * (size_t)i) * dd;
+        sl->prop = gsl_matrix_view_array(at, (size_t)d, (size_t)d).matrix;
+        sl->gram = gsl_matrix_view_array(at + dd, (size_t)d, (size_t)d).matrix;
+        sl->nw = e->y + 2 * d + 2 * (size_t)d * (size_t)i;
+    }
+    return e;
+}
+
+void exact_free(struct exact *e)
+{
+    if (!e)
+        return;
+    free(e->mem);
+    free(e->z);
+    free(e->sqm);
+    free(e->saved);
+    free(e);
+}
+
+/* Takes in model m if it differs from the one seen last: a new generation (every cached
+ * step is stale) and the coordinates' factor L. */
+static void take_model(struct exact *e, const struct model *m)
+{
+    int n = e->n;
+    double *sv = e->saved;
+    if (e->model && m->boundary == e->boundary && memcmp(sv, m->m, (size_t)n * sizeof *sv) == 0 &&
+        memcmp(sv + n, m->k, (size_t)(n + 1) * sizeof *sv) == 0 &&
+        memcmp(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv) == 0)
+        return;
+    memcpy(sv, m->m, (size_t)n * sizeof *sv);
+    memcpy(sv + n, m->k, (size_t)(n + 1) * sizeof *sv);
+    memcpy(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv);
+    e->boundary = m->boundary;
+    e->model++;
+    e->valid = 0;
+
+    /* M^(-1/2) K M^(-1/2): diagonal into ld, off-diagonal into ls; dpttrf overwrites them
+     * with D and L's unit subdiagonal. */
+    double wmax = 0.0;
+    e->damped = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(m->m[i] > 0.0) || !(m->k[i] > 0.0) || !(m->c[i] >= 0.0) || !isfinite(m->m[i]) ||
+            !isfinite(m->k[i]) || !isfinite(m->c[i]))
+            return;
+        double kd = m->k[i];
+        if (i < n - 1 || m->boundary != BOUNDARY_FREE)
+            kd += m->k[i + 1];
+        e->sqm[i] = sqrt(m->m[i]);
+        e->ld[i] = kd / m->m[i];
+        wmax = fmax(wmax, e->ld[i]);
+        if (i < n - 1)
+            e->ls[i] = -m->k[i + 1] / (e->sqm[i] * sqrt(m->m[i + 1]));
+        e->gam[i] = m->c[i] / m->m[i];
+        e->damped |= m->c[i] > 0.0;
+    }
+    if (m->boundary != BOUNDARY_FREE && (!(m->k[n] > 0.0) || !isfinite(m->k[n])))
+        return;
+    if (!isfinite(wmax))
+        return;
+    if (LAPACKE_dpttrf(n, e->ld, e->ls) != 0)
+        return;
+    /* L D L^T = (L D^(1/2)) (L D^(1/2))^T */
+    for (int i = 0; i < n; i++) {
+        e->ld[i] = sqrt(e->ld[i]);
+        if (i < n - 1)
+            e->ls[i] *= e->ld[i];
+    }
+    e->sk = m->boundary == BOUNDARY_FREE ? 0.0 : sqrt(m->k[n]);
+    e->wscale = sqrt(wmax);
+    e->valid = 1;
+}
+
+/* tau A into s (d x d), A the generator for drive kind and angular frequency omega;
+ * returns ||tau A||, the larger of its 1- and infinity-norms (so above its spectral radius
+ * and its 2-norm). */
+static double generator(const struct exact *e, enum drive_kind kind, double omega, double tau,
+                        gsl_matrix *s)
+{
+    int n = e->n;
+    gsl_matrix_set_zero(s);
+    for (int i = 0; i < n; i++) {
+        gsl_matrix_set(s, i, n + i, tau * e->ld[i]);
+        gsl_matrix_set(s, n + i, i, -tau * e->ld[i]);
+        gsl_matrix_set(s, n + i, n + i, -tau * e->gam[i]);
+        if (i < n - 1) {
+            gsl_matrix_set(s, i, n + i + 1, tau * e->ls[i]);
+            gsl_matrix_set(s, n + i + 1, i, -tau * e->ls[i]);
+        }
+    }
+    if (kind != DRIVE_NONE) {
+        gsl_matrix_set(s, 2 * n - 1, 2 * n, tau * e->sk / e->sqm[n - 1]);
+        if (kind == DRIVE_SINE) {
+            gsl_matrix_set(s, 2 * n, 2 * n + 1, tau * omega);
+            gsl_matrix_set(s, 2 * n + 1, 2 * n, -tau * omega);
+        } else {
+            gsl_matrix_set(s, 2 * n, 2 * n + 1, tau * e->wscale);
+        }
+    }
+    double norm = 0.0;
+    for (size_t i = 0; i < s->size1; i++) {
+        double row = 0.0, col = 0.0;
+        for (size_t j = 0; j < s->size2; j++) {
+            row += fabs(gsl_matrix_get(s, i, j));
+            col += fabs(gsl_matrix_get(s, j, i));
+        }
+        norm = fmax(norm, fmax(row, col));
+    }
+    return norm;
+}
+
+/* A z into out (dim entries), from the generator's nonzeros. */
+static void generator_apply(const struct exact *e, enum drive_kind kind, double omega,
+                            const double *z, double *out)
+{
+    int n = e->n;
+    for (int i = 0; i < n; i++) {
+        out[i] = e->ld[i] * z[n + i] + (i < n - 1 ? e->ls[i] * z[n + i + 1] : 0.0);
+        out[n + i] =
+            -e->ld[i] * z[i] - (i > 0 ? e->ls[i - 1] * z[i - 1] : 0.0) - e->gam[i] * z[n + i];
+    }
+    if (kind != DRIVE_NONE) {
+        out[2 * n - 1] += e->sk / e->sqm[n - 1] * z[2 * n];
+        out[2 * n] = (kind == DRIVE_SINE ? omega : e->wscale) * z[2 * n + 1];
+        out[2 * n + 1] = kind == DRIVE_SINE ? -omega * z[2 * n] : 0.0;
+    }
+}
+
+/* The motor's power k_N (u - x_N) u' as (ax q_N + as s) br r: x_N = q_N / (L_NN sqrt(m_N)),
+ * k_N u = sqrt(k_N) s, and u' = w r / sqrt(k_N) for a sine, w_s r / sqrt(k_N) for a line. */
+static void motor_power(const struct exact *e, enum drive_kind kind, double omega, double *ax,
+                        double *as, double *br)
+{
+    int n = e->n;
+    *ax = -e->sk * e->sk / (e->ld[n - 1] * e->sqm[n - 1]);
+    *as = e->sk;
+    *br = (kind == DRIVE_SINE ? omega : e->wscale) / e->sk;
+}
+
+/* expm(s) into out; s is overwritten, t is scratch. GSL takes its Taylor degree and
+ * squarings from Moler and Van Loan's table (SIAM Rev. 20, 1978) by the largest |entry|:
+ * from 100 up its rows use 8 terms, whose truncation leaves about 1.2e-12 relative
+ * (measured on a rotation of 100 to 800 radians). Halving s into the [10, 100) row (10
+ * terms, 10 squarings) and squaring the result back leaves 1.5e-13 at 120 radians, 7e-13
+ * at 500: rounding in the squarings, about 2^squarings eps. */
+static int expm_into(gsl_matrix *s, gsl_matrix *out, gsl_matrix *t)
+{
+    double lo, hi;
+    gsl_matrix_minmax(s, &lo, &hi);
+    double big = fmax(fabs(lo), fabs(hi));
+    if (!isfinite(big))
+        return -1;
+    int halvings = 0;
+    while (big >= GSL_ROW_TOP) {
+        big *= 0.5;
+        halvings++;
+    }
+    if (halvings)
+        gsl_matrix_scale(s, ldexp(1.0, -halvings));
+    if (gsl_linalg_exponential_ss(s, out, GSL_PREC_DOUBLE) != GSL_SUCCESS)
+        return -1;
+    for (int i = 0; i < halvings; i++) {
+        gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, out, out, 0.0, t);
+        gsl_matrix_memcpy(out, t);
+    }
+    return 0;
+}
+
+/* The d x d leading block of a workspace matrix. */
+static gsl_matrix_view lead(gsl_matrix *a, int d)
+{
+    return gsl_matrix_submatrix(a, 0, 0, (size_t)d, (size_t)d);
+}
+
+/* Fills slot sl for a step h: E(h), Gd and Nw (see the top of the file). */
+static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, double omega, double h,
+                     int d)
+{
+    int n = e->n;
+    gsl_matrix_view sv = lead(&e->s, d), xv = lead(&e->x, d), tv = lead(&e->t, d);
+    gsl_matrix_view gv = lead(&sl->gram, d), pv = lead(&sl->prop, d);
+    gsl_matrix *s = &sv.matrix, *x = &xv.matrix, *t = &tv.matrix, *g = &gv.matrix;
+    double *nw = sl->nw, *y = e->y;
+    int r = 2 * n + 1, driven = kind != DRIVE_NONE;
+
+    double norm = generator(e, kind, omega, 1.0, s);
+    int levels = 0;
+    while (norm * ldexp(h, -levels) > BASE_NORM && levels < 1000)
+        levels++;
+    double base = ldexp(h, -levels);
+
+    double a_x = 0.0, a_s = 0.0, b_r = 0.0;
+    if (driven)
+        motor_power(e, kind, omega, &a_x, &a_s, &b_r);
+
+    gsl_matrix_set_zero(g);
+    memset(nw, 0, (size_t)(2 * d) * sizeof *nw);
+    for (int i = 0; i < 6; i++) {
+        double node = 0.5 * base * (1.0 + (i < 3 ? -gl_x[i] : gl_x[i - 3]));
+        double w = 0.5 * base * gl_w[i % 3];
+        generator(e, kind, omega, node, s);
+        if (expm_into(s, x, t))
+            return -1;
+        if (e->damped) {
+            /* Gd += w F^T F, F = G^(1/2) (p rows of E) */
+            gsl_matrix_view f = gsl_matrix_submatrix(&e->t, 0, 0, (size_t)n, (size_t)d);
+            for (int k = 0; k < n; k++) {
+                double sg = sqrt(e->gam[k]);
+                for (int j = 0; j < d; j++)
+                    gsl_matrix_set(&f.matrix, k, j, sg * gsl_matrix_get(x, n + k, j));
+            }
+            gsl_blas_dsyrk(CblasLower, CblasTrans, w, &f.matrix, 1.0, g);
+        }
+        if (driven) {
+            /* Nw_c += w b_r E^T a E_rc */
+            for (int j = 0; j < d; j++)
+                y[j] = a_x * gsl_matrix_get(x, n - 1, j) + a_s * gsl_matrix_get(x, 2 * n, j);
+            for (int c = 0; c < 2; c++) {
+                double f = w * b_r * gsl_matrix_get(x, r, 2 * n + c);
+                for (int j = 0; j < d; j++)
+                    nw[c * d + j] += f * y[j];
+            }
+        }
+    }
+    for (int i = 0; i < d; i++)
+        for (int j = i + 1; j < d; j++)
+            gsl_matrix_set(g, i, j, gsl_matrix_get(g, j, i));
+
+    for (int level = 0; level < levels; level++) {
+        generator(e, kind, omega, ldexp(base, level), s);
+        if (expm_into(s, x, t))
+            return -1;
+        if (e->damped) {
+            gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, g, x, 0.0, t);
+            gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, x, t, 1.0, g);
+        }
+        if (driven) {
+            /* Nw += E^T (Nw R), R the drive's block of E */
+            double r00 = gsl_matrix_get(x, 2 * n, 2 * n), r01 = gsl_matrix_get(x, 2 * n, r);
+            double r10 = gsl_matrix_get(x, r, 2 * n), r11 = gsl_matrix_get(x, r, r);
+            for (int j = 0; j < d; j++) {
+                y[j] = nw[j] * r00 + nw[d + j] * r10;
+                y[d + j] = nw[j] * r01 + nw[d + j] * r11;
+            }
+            for (int c = 0; c < 2; c++) {
+                gsl_vector_view yv = gsl_vector_view_array(y + c * d, (size_t)d);
+                gsl_vector_view nv = gsl_vector_view_array(nw + c * d, (size_t)d);
+                gsl_blas_dgemv(CblasTrans, 1.0, x, &yv.vector, 1.0, &nv.vector);
+            }
+        }
+    }
+
+    generator(e, kind, omega, h, s);
+    if (expm_into(s, &pv.matrix, t))
+        return -1;
+    sl->model = e->model;
+    sl->kind = kind;
+    sl->omega = omega;
+    sl->h = h;
+    sl->norm = norm;
+    return 0;
+}
+
+/* The cached step for (kind, omega, h), filled if need be; NULL when that fails. A step
+ * within REUSE / ||A|| of a cached one is that one, corrected to first order by the caller:
+ * the steps of a long run differ by the rounding of their times. */
+static struct slot *find_slot(struct exact *e, enum drive_kind kind, double omega, double h, int d)
+{
+    struct slot *old = &e->slot[0];
+    e->clock++;
+    for (int i = 0; i < e->slots; i++) {
+        struct slot *sl = &e->slot[i];
+        if (sl->model == e->model && sl->kind == kind &&
+            (kind != DRIVE_SINE || sl->omega == omega) && fabs(sl->h - h) * sl->norm <= REUSE) {
+            sl->used = e->clock;
+            return sl;
+        }
+        if (sl->used < old->used)
+            old = sl;
+    }
+    old->model = 0;
+    if (fill_slot(e, old, kind, omega, h, d))
+        return NULL;
+    old->used = e->clock;
+    return old;
+}
+
+int exact_advance(struct exact *e, const struct model *m, const struct exact_drive *d, double a,
+                  double b, double *x, double *v, double *diss, double *work)
+{
+    double h = b - a;
+    if (h == 0.0)
+        return 0;
+    if (!(h > 0.0) || m->n != e->n)
+        return -1;
+    take_model(e, m);
+    if (!e->valid)
+        return -1;
+
+    int n = e->n;
+    enum drive_kind kind = DRIVE_NONE;
+    if (m->boundary == BOUNDARY_MOTOR && d) {
+        if (d->sine && d->amp != 0.0)
+            kind = DRIVE_SINE;
+        else if (!d->sine && (d->u0 != 0.0 || d->du != 0.0))
+            kind = DRIVE_LINE;
+    }
+    int dim = kind == DRIVE_NONE ? 2 * n : 2 * n + 2;
+    double omega = kind == DRIVE_SINE ? d->omega : 0.0;
+    if (!isfinite(omega))
+        return -1;
+    struct slot *sl = find_slot(e, kind, omega, h, dim);
+    if (!sl)
+        return -1;
+
+    /* z(a) */
+    double *z = e->z, *z1 = e->z1, *y = e->y;
+    for (int i = 0; i < n; i++) {
+        double q = e->sqm[i] * x[i];
+        z[i] = e->ld[i] * q + (i < n - 1 ? e->ls[i] * e->sqm[i + 1] * x[i + 1] : 0.0);
+        z[n + i] = e->sqm[i] * v[i];
+    }
+    if (kind == DRIVE_SINE) {
+        double th = d->omega * a + d->phi;
+        z[2 * n] = e->sk * d->amp * sin(th);
+        z[2 * n + 1] = e->sk * d->amp * cos(th);
+    } else if (kind == DRIVE_LINE) {
+        z[2 * n] = e->sk * (d->u0 + d->du * (a - d->t0));
+        z[2 * n + 1] = e->sk * d->du / e->wscale;
+    }
+
+    /* A step a little longer or shorter than the cached one: the difference first, as
+     * z + delta A z (error (delta ||A||)^2 / 2 <= 5e-17) and its books as delta times the
+     * powers at z. */
+    double dd = 0.0, ww = 0.0, delta = h - sl->h;
+    if (delta != 0.0) {
+        for (int i = 0; i < n; i++)
+            dd += delta * e->gam[i] * z[n + i] * z[n + i];
+        if (kind != DRIVE_NONE) {
+            double ax, as, br;
+            motor_power(e, kind, omega, &ax, &as, &br);
+            ww += delta * (ax * z[n - 1] + as * z[2 * n]) * br * z[2 * n + 1];
+        }
+        generator_apply(e, kind, omega, z, y);
+        for (int j = 0; j < dim; j++)
+            z[j] += delta * y[j];
+    }
+
+    gsl_vector_view zv = gsl_vector_view_array(z, (size_t)dim);
+    gsl_vector_view z1v = gsl_vector_view_array(z1, (size_t)dim);
+    gsl_vector_view yv = gsl_vector_view_array(y, (size_t)dim);
+    gsl_matrix_view pv = lead(&sl->prop, dim), gv = lead(&sl->gram, dim);
+    gsl_blas_dgemv(CblasNoTrans, 1.0, &pv.matrix, &zv.vector, 0.0, &z1v.vector);
+    if (e->damped) {
+        double q;
+        gsl_blas_dsymv(CblasLower, 1.0, &gv.matrix, &zv.vector, 0.0, &yv.vector);
+        gsl_blas_ddot(&zv.vector, &yv.vector, &q);
+        dd += q;
+    }
+    if (kind != DRIVE_NONE) {
+        for (int c = 0; c < 2; c++) {
+            double s = 0.0;
+            for (int j = 0; j < dim; j++)
+                s += sl->nw[c * dim + j] * z[j];
+            ww += z[2 * n + c] * s;
+        }
+    }
+    for (int j = 0; j < dim; j++)
+        if (!isfinite(z1[j]))
+            return -1;
+    if (!isfinite(dd) || !isfinite(ww))
+        return -1;
+
+    /* x from q = L^T M^(1/2) x: back-substitution on the upper bidiagonal L^T */
+    double next = 0.0;
+    for (int i = n - 1; i >= 0; i--) {
+        double q = (z1[i] - (i < n - 1 ? e->ls[i] * next : 0.0)) / e->ld[i];
+        next = q;
+        x[i] = q / e->sqm[i];
+        v[i] = z1[n + i] / e->sqm[i];
+    }
+    *diss += dd;
+    *work += ww;
+    return 0;
+}
