@@ -122,7 +122,7 @@ static void retune_is_continuous(void **state)
 {
     (void)state;
     for (int w = 0; w < WAVE_COUNT; w++) {
-        struct motor m = {(enum wave)w, 0.8, 1.3, 0.0, 0.0};
+        struct motor m = {(enum wave)w, 0.8, 1.3, 0.0};
         double t = 37.123;
         double before = motor_position(&m, t);
         motor_retune(&m, 0.77, t);
