@@ -139,6 +139,43 @@ static void velocity_cap(void **state)
     model_free(md);
 }
 
+/* A square wave's jump of the piston into the mass is a contact: the mass ends on the
+ * new face, not inside the piston, and the books still balance (the piston's work is the
+ * motor's). */
+static void piston_jump_is_a_contact(void **state)
+{
+    (void)state;
+    struct model *md = model_new(1);
+    md->k[0] = md->k[1] = 1e-6; /* nearly free */
+    md->c[0] = 0.0;
+    md->motor = (struct motor){WAVE_SQUARE, 1.0, 1.0, 0.0};
+    double w = model_block_width(md);
+    /* At rest 0.5 m inside where the face lands when u jumps from +1 to -1 at 0.5 s. */
+    double x0 = MODEL_LENGTH - 0.5 - 0.5 * w - model_equilibrium(md, 0), v0 = 0.0;
+    struct sim *s = sim_new(md, 0.01);
+    sim_reset(s, &x0, &v0);
+    struct energy e0;
+    sim_energy(s, &e0);
+    int contacts = 0;
+    for (int k = 0; k < 60; k++) {
+        assert_int_equal(sim_step(s), SIM_OK);
+        contacts += sim_last_contacts(s);
+        double X = model_equilibrium(md, 0) + sim_x(s)[0];
+        double face = MODEL_LENGTH + sim_end_position(s) - 0.5 * w;
+        if (X > face + 1e-9)
+            fail_msg("t = %.2f s: mass centre %.6f m is inside the piston (face %.6f m)",
+                     sim_time(s), X, face);
+    }
+    assert_true(contacts >= 1);
+    assert_true(sim_v(s)[0] <= 1e-12); /* pushed left, not left behind inside */
+    struct energy e;
+    sim_energy(s, &e);
+    assert_close(e.balance, e0.balance, 1e-9);
+    assert_true(e.motor_work > 0.0); /* the piston pushed the mass: that is work */
+    sim_free(s);
+    model_free(md);
+}
+
 /* A pile-up the sweeps cannot clear leaves no pair closing, and momentum is kept. */
 static void pile_up_keeps_momentum(void **state)
 {
@@ -196,6 +233,7 @@ int main(void)
         cmocka_unit_test(collisions_off),
         cmocka_unit_test(velocity_cap),
         cmocka_unit_test(pile_up_keeps_momentum),
+        cmocka_unit_test(piston_jump_is_a_contact),
         cmocka_unit_test(long_chain_blocks),
     };
     return cmocka_run_group_tests_name("collision", tests, NULL, NULL);
