@@ -4,14 +4,26 @@
 
 #include <term.h>
 
+#include <fcntl.h>
 #include <langinfo.h>
+#include <poll.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <termios.h>
 #include <unistd.h>
 
-static volatile sig_atomic_t quit_signal; /* SIGINT, SIGTERM, SIGHUP received */
+/* Seconds a quit signal leaves for the loop to end and endwin() to finish before the
+ * terminal is taken back by force: output blocked by a stalled link or Ctrl-S would
+ * otherwise hold the program inside curses' write loop (it retries on EINTR) for ever. */
+#define QUIT_GRACE 1
+
+static volatile sig_atomic_t quit_signal; /* the first terminating signal received */
+static struct termios shell_modes;        /* the terminal's modes before curses */
+static bool have_shell_modes;
+static char restore_seq[256]; /* what endwin() sends, for the forced way out */
+static size_t restore_len;
 static bool curses_on;
 static bool utf8;
 static bool color;
@@ -43,9 +55,103 @@ void term_die_of_signal(void)
     }
 }
 
+bool term_check_hangup(void)
+{
+    struct pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {STDOUT_FILENO, POLLOUT, 0}};
+    if (poll(p, 2, 0) < 0)
+        return false;
+    for (int i = 0; i < 2; i++)
+        if (p[i].revents & (POLLHUP | POLLERR | POLLNVAL)) {
+            if (!quit_signal)
+                quit_signal = SIGHUP;
+            return true;
+        }
+    return false;
+}
+
+/* Appends terminfo capability cap (if the terminal has it) to restore_seq. */
+static void restore_add(const char *cap)
+{
+    const char *s = tigetstr(cap);
+    if (s == NULL || s == (char *)-1)
+        return;
+    size_t n = strlen(s);
+    if (restore_len + n < sizeof restore_seq) {
+        memcpy(restore_seq + restore_len, s, n);
+        restore_len += n;
+    }
+}
+
+/* The bytes endwin() would send, gathered while curses is up: CAN first (it ends an
+ * escape sequence a discarded frame may have left half sent), mouse reporting off where
+ * the terminal reports the mouse as xterm does (kmous \E[M or \E[<), then the
+ * attributes, cursor, keypad and screen as they were. */
+static void restore_prepare(void)
+{
+    static const char can[] = "\030";
+    static const char mouse_off[] = "\033[?1006l\033[?1003l\033[?1002l\033[?1000l";
+    memcpy(restore_seq, can, sizeof can - 1);
+    restore_len = sizeof can - 1;
+    const char *kmous = tigetstr("kmous");
+    if (kmous != NULL && kmous != (char *)-1 && strncmp(kmous, "\033[", 2) == 0) {
+        memcpy(restore_seq + restore_len, mouse_off, sizeof mouse_off - 1);
+        restore_len += sizeof mouse_off - 1;
+    }
+    restore_add("sgr0");
+    restore_add("cnorm");
+    restore_add("rmkx");
+    restore_add("rmcup");
+}
+
+/* The way out when a quit signal finds output blocked: only async-signal-safe calls.
+ * Frames the terminal has not read are dropped and output stopped by Ctrl-S restarted
+ * (turning IXON off does that: Linux's n_tty_set_termios; TCOON undoes only TCOOFF), so
+ * the restoring bytes can be queued without waiting. They are written non-blocking: what
+ * does not fit is lost, the program must not wait for the terminal. The modes are set
+ * back at once; then the program dies of the signal, as a shell expects. */
+static void force_exit(int sig)
+{
+    int fd = STDOUT_FILENO;
+    int flags = fcntl(fd, F_GETFL);
+    tcflush(fd, TCOFLUSH);
+    struct termios flowing;
+    if (tcgetattr(fd, &flowing) == 0 && (flowing.c_iflag & IXON)) {
+        flowing.c_iflag &= ~(tcflag_t)IXON;
+        tcsetattr(fd, TCSANOW, &flowing);
+    }
+    if (flags != -1 && fcntl(fd, F_SETFL, flags | O_NONBLOCK) == 0) {
+        ssize_t sent = write(fd, restore_seq, restore_len); /* if not, the screen is lost */
+        (void)sent;
+        fcntl(fd, F_SETFL, flags); /* the file is shared with the shell */
+    }
+    if (have_shell_modes)
+        tcsetattr(fd, TCSANOW, &shell_modes);
+    signal(sig, SIG_DFL);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, sig);
+    sigprocmask(SIG_UNBLOCK, &set, NULL);
+    raise(sig);
+    _exit(128 + sig);
+}
+
+/* SIGINT, SIGTERM, SIGHUP, SIGQUIT and every other signal that ends a program: the loop
+ * ends and gives the terminal back; if it has not within QUIT_GRACE seconds, or a second
+ * such signal comes, the terminal is taken back by force. */
 static void on_quit_signal(int sig)
 {
+    if (quit_signal)
+        force_exit(quit_signal);
     quit_signal = sig;
+    alarm(QUIT_GRACE);
+}
+
+/* The grace period is over (or SIGALRM came from outside: then it is a quit signal). */
+static void on_alarm(int sig)
+{
+    if (quit_signal)
+        force_exit(quit_signal);
+    on_quit_signal(sig);
 }
 
 /* A crash: give the terminal back, then die of the same signal. */
@@ -58,20 +164,29 @@ static void on_fatal_signal(int sig)
 
 static void install_signals(void)
 {
+    static const int quit[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGQUIT, SIGPIPE,
+                               SIGUSR1, SIGUSR2,   SIGXCPU, SIGXFSZ, SIGVTALRM,
+                               SIGPROF,
+#ifdef SIGPWR
+                               SIGPWR,
+#endif
+#ifdef SIGSTKFLT
+                               SIGSTKFLT,
+#endif
+    };
+    static const int fatal[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS};
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_quit_signal;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL);
+    sa.sa_handler = on_quit_signal;
+    for (size_t i = 0; i < sizeof quit / sizeof quit[0]; i++)
+        sigaction(quit[i], &sa, NULL);
+    sa.sa_handler = on_alarm;
+    sigaction(SIGALRM, &sa, NULL);
     sa.sa_handler = on_fatal_signal;
     sa.sa_flags = SA_RESETHAND;
-    sigaction(SIGSEGV, &sa, NULL);
-    sigaction(SIGBUS, &sa, NULL);
-    sigaction(SIGFPE, &sa, NULL);
-    sigaction(SIGILL, &sa, NULL);
-    sigaction(SIGABRT, &sa, NULL);
+    for (size_t i = 0; i < sizeof fatal / sizeof fatal[0]; i++)
+        sigaction(fatal[i], &sa, NULL);
 }
 
 /* Palettes chosen to read on black and on white: mid-tone hues only, no yellow, white,
@@ -139,6 +254,7 @@ bool term_start(void)
                         "--modes or --sweep for scripts\n");
         return false;
     }
+    have_shell_modes = tcgetattr(STDOUT_FILENO, &shell_modes) == 0;
     if (!newterm(NULL, stdout, stdin)) {
         fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n",
                 getenv("TERM") ? getenv("TERM") : "unset");
@@ -155,6 +271,7 @@ bool term_start(void)
     }
     curses_on = true;
     atexit(term_stop);
+    restore_prepare();
     install_signals();
     cbreak();
     noecho();

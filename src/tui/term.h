@@ -36,7 +36,13 @@ attr_t term_attr(int p);
 /* Attribute for mass i's colour. */
 attr_t term_mass_attr(int i);
 
-/* The quit signal received (SIGINT, SIGTERM, SIGHUP), or 0. */
+/* True when the terminal has gone (hung up, closed): SIGHUP is then taken as received,
+ * whether or not it came. Cheap enough to call whenever getch() gives ERR. */
+bool term_check_hangup(void);
+
+/* The terminating signal received (SIGINT, SIGTERM, SIGHUP, SIGQUIT, ...), or 0. A second
+ * one, or the loop not ending within a second of the first (output blocked), ends the
+ * program at once, the terminal given back as far as it will take it. */
 int term_quit_signal(void);
 
 /* After term_stop: dies of the quit signal received, so a shell sees 128 + signal. */

@@ -466,8 +466,13 @@ int tui_run(const struct config *cfg, const char *exe_dir)
             int ms = (int)((next_frame - now_s()) * 1000.0);
             timeout(ms > 0 ? ms : 0);
             int ch = getch();
-            if (ch == ERR)
+            if (ch == ERR) {
+                /* No key, or no terminal: a hung-up one gives ERR at once, for ever, and
+                 * SIGHUP may never come (it was ignored, or this is not the controlling
+                 * terminal). */
+                term_check_hangup();
                 break;
+            }
             if (!on_key(&t, ch)) {
                 go = false;
                 break;
