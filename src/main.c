@@ -6,6 +6,7 @@
 #include <limits.h>
 #include <locale.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -84,6 +85,30 @@ static void report_blowup(const struct sim *s, const struct limits *l, bool judg
     else
         options_say("the simulation blew up at t = %.4g s (%s) with dt = %g s and %s",
             sim_time(s), how, sim_dt(s), name);
+}
+
+/* A terminating signal during a run that writes a file: the temporary file goes (where
+ * it has a name), then the program dies of the signal as it would have. */
+static void on_terminate(int sig)
+{
+    output_discard_pending();
+    signal(sig, SIG_DFL);
+    raise(sig); /* delivered when the handler returns */
+}
+
+/* Catches SIGINT, SIGTERM and SIGHUP for on_terminate, except where they are ignored
+ * (nohup, a background job of a script): those stay ignored. */
+static void catch_terminate(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
+        struct sigaction old, sa = {.sa_handler = on_terminate};
+        sigemptyset(&sa.sa_mask);
+        for (size_t j = 0; j < sizeof sigs / sizeof *sigs; j++)
+            sigaddset(&sa.sa_mask, sigs[j]);
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+            sigaction(sigs[i], &sa, NULL);
+    }
 }
 
 static int open_output(struct output *o, const struct config *c)
@@ -340,6 +365,8 @@ int main(int argc, char **argv)
     }
     if (c.random && !c.seed_set)
         c.seed = (uint64_t)time(NULL) ^ ((uint64_t)getpid() << 32);
+    if (cli.mode == MODE_HEADLESS || cli.mode == MODE_MODES || cli.mode == MODE_SWEEP)
+        catch_terminate();
     switch (cli.mode) {
     case MODE_HEADLESS:
         status = run_headless(&c, m);

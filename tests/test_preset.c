@@ -1,12 +1,16 @@
 /* test_preset.c: the value checks shared by options and presets, every built-in preset
  * loading and really showing what its name says (checked against the model's own
- * natural frequencies), and a written preset reading back to the same model. */
+ * natural frequencies), a written preset reading back to the same model, the syntax the
+ * parser refuses, what the search path reads, and the names presets and exports are
+ * saved under. */
 #include "testutil.h"
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include "app/app.h"
 #include "core/modes.h"
 #include "core/preset.h"
 
@@ -240,6 +244,181 @@ static void random_positions(void **state)
     }
 }
 
+/* Parses text as the preset "t.ini"; returns the status, the message in err. */
+static enum preset_status parse(const char *text, struct config *c, char *err, size_t len)
+{
+    config_init(c);
+    err[0] = '\0';
+    return preset_parse("t.ini", text, strlen(text), c, err, len);
+}
+
+/* Fails unless err contains want. */
+static void assert_says(const char *err, const char *want)
+{
+    if (!strstr(err, want))
+        fail_msg("expected '%s' in: %s", want, err);
+}
+
+/* Syntax that inih would let through: text after a section header, CR-only line ends;
+ * an over-long line names its key. */
+static void syntax_refused(void **state)
+{
+    (void)state;
+    static struct config c;
+    char err[600];
+    assert_int_equal(parse("[system] junk\nmass = 2\n", &c, err, sizeof err), PRESET_BAD);
+    assert_says(err, "t.ini:1: text after the section header [system]");
+    assert_int_equal(parse("[system]junk]\nmass = 2\n", &c, err, sizeof err), PRESET_BAD);
+    assert_int_equal(parse("[system] ; a comment\nmass = 2\n", &c, err, sizeof err), PRESET_OK);
+    assert_int_equal(parse("[system]\t# a comment\nmass = 2\n", &c, err, sizeof err), PRESET_OK);
+    /* A lone CR ends a line; CR LF still reads as one line end. */
+    assert_int_equal(parse("[system]\rmass = abc\r", &c, err, sizeof err), PRESET_BAD);
+    assert_says(err, "t.ini:2: mass: 'abc' is not a number");
+    assert_int_equal(parse("[system]\rmasses = 3\rmass = 2.5\r", &c, err, sizeof err), PRESET_OK);
+    assert_int_equal(c.masses, 3);
+    assert_close(c.mass.v[0], 2.5, 0.0);
+    assert_int_equal(parse("[system]\r\nmass = 1,\r\n  2\r\n", &c, err, sizeof err), PRESET_OK);
+    assert_int_equal(c.mass.count, 2);
+    assert_int_equal(parse("[system]\r\rmass = x\r", &c, err, sizeof err), PRESET_BAD);
+    assert_says(err, "t.ini:3: mass:");
+    /* 5,000 digits: the key is named, and how a list goes on. */
+    char text[6000];
+    int n = snprintf(text, sizeof text, "[system]\nmass = ");
+    memset(text + n, '9', 5000);
+    strcpy(text + n + 5000, "\n");
+    assert_int_equal(parse(text, &c, err, sizeof err), PRESET_BAD);
+    assert_says(err, "t.ini:2: line is longer than 198 characters, in the value of 'mass'");
+    assert_says(err, "indented lines");
+    n = snprintf(text, sizeof text, "[initial]\nx0 = 1,\n    ");
+    memset(text + n, '1', 300);
+    strcpy(text + n + 300, "\n");
+    assert_int_equal(parse(text, &c, err, sizeof err), PRESET_BAD);
+    assert_says(err, "t.ini:3: line is longer than 198 characters, in a continuation of 'x0'");
+}
+
+/* A path over the buffer is refused, never cut to another file's name. */
+static void long_path_refused(void **state)
+{
+    (void)state;
+    char name[5000], out[4096];
+    memset(name, 'a', sizeof name);
+    memcpy(name, "/tmp/", 5);
+    strcpy(name + sizeof name - 5, ".ini");
+    assert_int_equal(preset_find(name, NULL, out, sizeof out), PRESET_NONE);
+    assert_says(out, "too long");
+    /* Exactly fitting: taken as it is. */
+    name[sizeof out - 5] = '\0';
+    strcat(name, ".ini");
+    assert_int_equal(strlen(name), sizeof out - 1);
+    assert_int_equal(preset_find(name, NULL, out, sizeof out), PRESET_OK);
+    assert_string_equal(out, name);
+}
+
+/* FIFOs, devices and huge files in a preset directory are neither listed nor read: both
+ * would block or never end. */
+static void only_regular_files(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/springsim-scan-XXXXXX", path[600], err[600];
+    static struct config c;
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/fifo.ini", dir);
+    assert_int_equal(mkfifo(path, 0600), 0);
+    config_init(&c);
+    assert_int_equal(preset_load(path, &c, err, sizeof err), PRESET_IO);
+    assert_says(err, "not a regular file");
+    snprintf(path, sizeof path, "%s/zero.ini", dir);
+    assert_int_equal(symlink("/dev/zero", path), 0);
+    assert_int_equal(preset_load(path, &c, err, sizeof err), PRESET_IO);
+    assert_says(err, "not a regular file");
+    snprintf(path, sizeof path, "%s/huge.ini", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fclose(f);
+    assert_int_equal(truncate(path, 2000000000), 0);
+    assert_int_equal(preset_load(path, &c, err, sizeof err), PRESET_BAD);
+    assert_says(err, "too large for a preset");
+    snprintf(path, sizeof path, "%s/good.ini", dir);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("[preset]\ndescription = A good one\n", f);
+    fclose(f);
+
+    setenv("SPRINGSIM_PRESETS", dir, 1);
+    setenv("XDG_CONFIG_HOME", dir, 1); /* no springsim/presets under it */
+    struct preset_entry *all;
+    int have = preset_scan(NULL, &all), good = 0;
+    for (int i = 0; i < have; i++) {
+        if (strcmp(all[i].name, "fifo") == 0 || strcmp(all[i].name, "zero") == 0 ||
+            strcmp(all[i].name, "huge") == 0)
+            fail_msg("preset_scan listed %s", all[i].path);
+        if (strcmp(all[i].name, "good") == 0)
+            good = strcmp(all[i].description, "A good one") == 0;
+    }
+    free(all);
+    assert_true(good);
+    unsetenv("SPRINGSIM_PRESETS");
+    unsetenv("XDG_CONFIG_HOME");
+    const char *names[] = {"fifo", "zero", "huge", "good"};
+    for (int i = 0; i < 4; i++) {
+        snprintf(path, sizeof path, "%s/%s.ini", dir, names[i]);
+        unlink(path);
+    }
+    rmdir(dir);
+}
+
+/* Saved names: ASCII only, said clearly; "x.ini" is the file x.ini, loaded by -p x.
+ * Exports in the same second each get a file of their own. */
+static void saved_names(void **state)
+{
+    (void)state;
+    static struct config c;
+    static struct app app;
+    char dir[] = "/tmp/springsim-save-XXXXXX", path[4200], found[4200];
+    assert_non_null(mkdtemp(dir));
+    setenv("XDG_CONFIG_HOME", dir, 1);
+    config_init(&c);
+    assert_int_equal(app_init(&app, &c, NULL), 0);
+
+    assert_int_equal(app_save(&app, "r\xc3\xa9sum\xc3\xa9", false), SAVE_BAD_NAME);
+    assert_true(app.message_is_error);
+    assert_says(app.message, "ASCII");
+    snprintf(path, sizeof path, "%s/springsim/presets/rsum.ini", dir);
+    assert_int_equal(access(path, F_OK), -1);
+
+    assert_int_equal(app_save(&app, "x.ini", false), SAVE_OK);
+    assert_says(app.message, "springsim -p x loads it");
+    snprintf(path, sizeof path, "%s/springsim/presets/x.ini", dir);
+    assert_int_equal(access(path, F_OK), 0);
+    assert_int_equal(preset_find("x", NULL, found, sizeof found), PRESET_OK);
+    assert_string_equal(found, path);
+    assert_string_equal(app.preset, "x");
+    assert_int_equal(app_save(&app, "x.ini", false), SAVE_EXISTS);
+    assert_int_equal(app_save(&app, "x", false), SAVE_EXISTS);
+    assert_int_equal(app_save(&app, "x.ini.ini", false), SAVE_BAD_NAME);
+    snprintf(found, sizeof found, "%s/springsim/presets/x.ini.ini", dir);
+    assert_int_equal(access(found, F_OK), -1);
+    unlink(path);
+
+    /* Three exports at once: three files. */
+    char a[4200], b[4200], d[4200];
+    for (int i = 0; i < 5; i++)
+        app_step(&app);
+    assert_true(app_export(&app, dir, a, sizeof a));
+    assert_true(app_export(&app, dir, b, sizeof b));
+    assert_true(app_export(&app, dir, d, sizeof d));
+    assert_true(strcmp(a, b) != 0 && strcmp(b, d) != 0 && strcmp(a, d) != 0);
+    assert_int_equal(access(a, F_OK) | access(b, F_OK) | access(d, F_OK), 0);
+    unlink(a), unlink(b), unlink(d);
+    app_free(&app);
+    snprintf(path, sizeof path, "%s/springsim/presets", dir);
+    rmdir(path);
+    snprintf(path, sizeof path, "%s/springsim", dir);
+    rmdir(path);
+    rmdir(dir);
+    unsetenv("XDG_CONFIG_HOME");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -247,6 +426,10 @@ int main(void)
         cmocka_unit_test(builtin_presets_show_their_names),
         cmocka_unit_test(write_read_round_trip),
         cmocka_unit_test(random_positions),
+        cmocka_unit_test(syntax_refused),
+        cmocka_unit_test(long_path_refused),
+        cmocka_unit_test(only_regular_files),
+        cmocka_unit_test(saved_names),
     };
     return cmocka_run_group_tests_name("preset", tests, NULL, NULL);
 }

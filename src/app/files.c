@@ -38,7 +38,8 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
     return what | app_say(app, false, "preset %s: %s", app->preset, next.description);
 }
 
-/* A preset name: letters, digits, '-', '_' and '.', not starting with '.', at most 64. */
+/* A preset name: ASCII letters, digits, '-', '_' and '.', not starting with '.', at most
+ * 64, not ending in ".ini" (preset_find would take it for a file name). */
 static const char *bad_name(const char *name)
 {
     size_t len = strlen(name);
@@ -48,10 +49,16 @@ static const char *bad_name(const char *name)
         return "names are at most 64 characters";
     if (name[0] == '.')
         return "a name may not start with '.'";
+    for (const unsigned char *p = (const unsigned char *)name; *p; p++)
+        if (*p >= 0x80)
+            return "use ASCII letters (a-z, A-Z), digits, '-', '_' and '.' only, so that the "
+                   "name is the same on every system";
     for (const char *p = name; *p; p++)
         if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
               *p == '-' || *p == '_' || *p == '.'))
             return "use letters, digits, '-', '_' and '.' only";
+    if (len > 4 && strcmp(name + len - 4, ".ini") == 0)
+        return "a name may not end in '.ini' twice (it would be read as a file name)";
     return NULL;
 }
 
@@ -73,7 +80,15 @@ static int make_dirs(const char *path)
 
 enum app_save app_save(struct app *app, const char *name, bool overwrite)
 {
-    char dir[4096], path[4200];
+    char dir[4096], path[4200], base[64];
+    /* "x.ini" is the file x.ini, loaded by "-p x": the extension is the file's, not the
+     * name's. */
+    size_t len = strlen(name);
+    if (len >= 4 && strcmp(name + len - 4, ".ini") == 0 && len - 4 < sizeof base) {
+        memcpy(base, name, len - 4);
+        base[len - 4] = '\0';
+        name = base;
+    }
     const char *why = bad_name(name);
     if (why) {
         app_say(app, true, "save: '%.40s': %s", name, why);
@@ -122,7 +137,11 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
     char stamp[32];
     localtime_r(&now, &tm);
     strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+    /* Two exports in one second: the second gets -2, then -3, ... never replacing one. */
+    struct stat st;
     snprintf(path, len, "%s/springsim-%s.csv", dir ? dir : ".", stamp);
+    for (int k = 2; lstat(path, &st) == 0 && k < 1000; k++)
+        snprintf(path, len, "%s/springsim-%s-%d.csv", dir ? dir : ".", stamp, k);
     const struct trail *tr = app->trail;
     int n = tr->n;
     struct output o;

@@ -3,17 +3,83 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* The named temporary file being written, for output_discard_pending: a copy in static
+ * storage a signal handler may read, valid while pending_set is 1. */
+static char pending_path[PATH_MAX + 16];
+static volatile sig_atomic_t pending_set;
+
+/* Records tmp as the temporary file a signal handler must remove. */
+static void pending_begin(const char *tmp)
+{
+    pending_set = 0;
+    size_t n = strlen(tmp);
+    if (n < sizeof pending_path) {
+        memcpy(pending_path, tmp, n + 1);
+        atomic_signal_fence(memory_order_seq_cst); /* the name before the flag */
+        pending_set = 1;
+    }
+}
+
+void output_discard_pending(void)
+{
+    if (pending_set) {
+        pending_set = 0;
+        unlink(pending_path);
+    }
+}
+
 /* Frees the names of o. */
 static void forget(struct output *o)
 {
+    pending_set = 0;
     free(o->path);
     free(o->tmp);
     o->path = o->tmp = NULL;
+}
+
+/* The file a chain of symbolic links ends at, even when it does not exist yet (a
+ * dangling link is written through, creating its target): a malloc'ed path, or NULL
+ * with errno set (ELOOP for a loop or a chain over 40 links). */
+static char *link_target(const char *path)
+{
+    char *cur = strdup(path);
+    for (int hops = 0; cur && hops < 40; hops++) {
+        struct stat lst;
+        if (lstat(cur, &lst) != 0 || !S_ISLNK(lst.st_mode))
+            return cur; /* the end of the chain, there or not */
+        char to[PATH_MAX];
+        ssize_t n = readlink(cur, to, sizeof to - 1);
+        if (n < 0) {
+            free(cur);
+            return NULL;
+        }
+        to[n] = '\0';
+        /* A relative target is relative to the link's directory. */
+        const char *slash = strrchr(cur, '/');
+        int dir = to[0] == '/' || !slash ? 0 : (int)(slash - cur) + 1;
+        size_t len = (size_t)dir + (size_t)n + 1;
+        char *next = malloc(len);
+        if (!next) {
+            free(cur);
+            return NULL;
+        }
+        snprintf(next, len, "%.*s%s", dir, cur, to);
+        free(cur);
+        cur = next;
+    }
+    if (cur) {
+        free(cur);
+        errno = ELOOP;
+    }
+    return NULL;
 }
 
 /* An unnamed file in path's directory (Linux O_TMPFILE), or -1. */
@@ -44,7 +110,10 @@ int output_open(struct output *o, const char *path)
         o->fp = stdout;
         return 0;
     }
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+    bool exists = stat(path, &st) == 0;
+    if (!exists && errno != ENOENT)
+        return errno; /* a symbolic link loop, a path through a file, ... */
+    if (exists && !S_ISREG(st.st_mode)) {
         if (S_ISDIR(st.st_mode))
             return EISDIR;
         o->fp = fopen(path, "w");
@@ -53,18 +122,15 @@ int output_open(struct output *o, const char *path)
     /* The new file gets the old one's mode, or what a plain creat() would give. */
     mode_t mask = umask(0);
     umask(mask);
-    mode_t mode = stat(path, &st) == 0 ? st.st_mode & 07777 : 0666 & ~mask;
-    /* Through a symbolic link: replace the file it points to, not the link. */
-    char *real = NULL;
-    struct stat lst;
-    if (lstat(path, &lst) == 0 && S_ISLNK(lst.st_mode) && (real = realpath(path, NULL)))
-        path = real;
-    size_t n = strlen(path);
-    o->path = strdup(path);
-    free(real);
+    mode_t mode = exists ? st.st_mode & 07777 : 0666 & ~mask;
+    /* Through a symbolic link: replace (or create) the file it points to, not the link. */
+    o->path = link_target(path);
+    if (!o->path)
+        return errno;
     path = o->path;
+    size_t n = strlen(path);
     o->tmp = malloc(n + 16);
-    if (!o->path || !o->tmp) {
+    if (!o->tmp) {
         forget(o);
         return ENOMEM;
     }
@@ -78,7 +144,15 @@ int output_open(struct output *o, const char *path)
         forget(o);
         return e;
     } else {
+        /* A file system without O_TMPFILE: a named temporary file, removed by
+         * output_discard_pending if a signal ends the program first. */
+        sigset_t all, old;
+        sigfillset(&all);
+        sigprocmask(SIG_BLOCK, &all, &old);
         fd = mkstemp(o->tmp);
+        if (fd >= 0)
+            pending_begin(o->tmp);
+        sigprocmask(SIG_SETMASK, &old, NULL);
         if (fd < 0) {
             int e = errno;
             forget(o);
@@ -108,8 +182,10 @@ static int name_unnamed(struct output *o)
         /* A fresh suffix each time: the XXXXXX of the template, made unique by hand. */
         snprintf(o->tmp + n - 6, 7, "%06x", (unsigned)(getpid() * 7919 + attempt * 104729) &
                                                 0xffffffu);
+        pending_begin(o->tmp); /* from the moment it may have a name */
         if (linkat(AT_FDCWD, proc, AT_FDCWD, o->tmp, AT_SYMLINK_FOLLOW) == 0)
             return 0;
+        pending_set = 0;
         if (errno != EEXIST)
             return errno;
     }
@@ -140,6 +216,7 @@ int output_close(struct output *o, bool commit)
     if (o->tmp) {
         if (!err && commit && rename(o->tmp, o->path) != 0)
             err = errno;
+        pending_set = 0; /* renamed, or removed just below */
         if (named && (err || !commit))
             unlink(o->tmp);
         forget(o);

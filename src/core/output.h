@@ -27,6 +27,11 @@ int output_open(struct output *o, const char *path);
  * Returns 0, or an errno value. */
 int output_close(struct output *o, bool commit);
 
+/* Removes the named temporary file of the output being written, if any: for a handler
+ * of a terminating signal (async-signal-safe: unlink only). Where the system has unnamed
+ * files (O_TMPFILE) there is nothing to remove until the last moment. */
+void output_discard_pending(void);
+
 /* The --headless CSV header for n masses. */
 void output_csv_header(FILE *fp, int n, bool energy);
 

@@ -1,7 +1,7 @@
 /* preset.c: INI presets. libinih does the parsing; a first pass over the text checks
- * what inih cannot report well (long lines, NUL bytes, unknown sections, keys given
- * twice) and tells which line each handler call comes from, so every error names its
- * file and line. A key's value may go on over indented continuation lines, which is
+ * what inih cannot report well or lets through (long lines, NUL bytes, unknown sections,
+ * text after a section header, keys given twice) and tells which line each handler call
+ * comes from, so every error names its file and line. A lone CR ends a line. A key's value may go on over indented continuation lines, which is
  * how long lists are written back. */
 #include "preset.h"
 
@@ -66,6 +66,35 @@ static size_t copy_name(const char *p, const char *q, char *buf, size_t len)
     return n;
 }
 
+/* The message for a line over PRESET_MAX_LINE: which key it holds (key, for an indented
+ * continuation line, or the name before its '=') and how to write it within the limit. */
+static void too_long(struct parse *p, const char *start, const char *eol, const char *key)
+{
+    char name[64];
+    const char *what = "the value";
+    if (key) {
+        snprintf(name, sizeof name, "%s", key);
+        what = "a continuation";
+    } else {
+        const char *sep = start;
+        while (sep < eol && *sep != '=' && *sep != ':' && sep - start < 63)
+            sep++;
+        if (sep == eol || (*sep != '=' && *sep != ':') || *start == ';' || *start == '#' ||
+            *start == '[') {
+            snprintf(p->msg, sizeof p->msg, "line is longer than %d characters (the longest "
+                     "a preset line may be)", PRESET_MAX_LINE);
+            return;
+        }
+        copy_name(start, sep, name, sizeof name);
+    }
+    for (char *q = name; *q; q++)
+        if (*q < 0x20 || *q > 0x7e)
+            *q = '?';
+    snprintf(p->msg, sizeof p->msg, "line is longer than %d characters, in %s of '%s' "
+             "(a list may go on over indented lines, each ending in ',' but the last; "
+             "one value must fit on one line)", PRESET_MAX_LINE, what, name);
+}
+
 /* The first pass: mirrors how inih classifies lines (comment, section, continuation,
  * key) and checks what it cannot. Returns the bad line, or 0 with p->lines filled. */
 static int prescan(struct parse *p, const char *text, size_t size)
@@ -87,18 +116,25 @@ static int prescan(struct parse *p, const char *text, size_t size)
             snprintf(p->msg, sizeof p->msg, "contains a NUL byte (a preset is text)");
             return line;
         }
+        const char *start = skip_blank(line == 1 ? s + bom : s, eol);
         if (eol - s > PRESET_MAX_LINE) {
-            snprintf(p->msg, sizeof p->msg, "line is longer than %d characters "
-                     "(continue a long list on indented lines)", PRESET_MAX_LINE);
+            too_long(p, start, eol, have_key && start > s ? key : NULL);
             return line;
         }
-        const char *start = skip_blank(line == 1 ? s + bom : s, eol);
         if (start == eol || *start == ';' || *start == '#') {
             /* blank or comment */
         } else if (*start == '[') {
             const char *close = memchr(start, ']', (size_t)(eol - start));
             if (!close) {
                 snprintf(p->msg, sizeof p->msg, "section has no closing ']'");
+                return line;
+            }
+            const char *after = skip_blank(close + 1, eol);
+            if (after < eol && *after != ';' && *after != '#') {
+                char name[64];
+                copy_name(start + 1, close, name, sizeof name);
+                snprintf(p->msg, sizeof p->msg, "text after the section header [%s] (a "
+                         "section line holds only '[name]' and perhaps a comment)", name);
                 return line;
             }
             if (!known_section(start + 1, (size_t)(close - start - 1))) {
@@ -250,21 +286,34 @@ static int handler(void *user, const char *section, const char *name, const char
     return 1;
 }
 
-/* Reads a whole file of at most PRESET_MAX_BYTES into a NUL-terminated buffer. */
+/* Reads a whole file of at most PRESET_MAX_BYTES into a NUL-terminated buffer. Only a
+ * regular file is read: the open does not wait (a FIFO with no writer would block it),
+ * and a device, a FIFO or a file over the limit is refused before any read. */
 static enum preset_status slurp(const char *path, char **text, size_t *size, char *err,
                                 size_t errlen)
 {
     struct stat st;
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
     if (fd < 0) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return PRESET_IO;
     }
-    if (fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: %s", path, S_ISDIR(st.st_mode) ? strerror(EISDIR)
-                                                                   : strerror(errno));
+    if (fstat(fd, &st) != 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
         close(fd);
         return PRESET_IO;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: %s", path, S_ISDIR(st.st_mode) ? strerror(EISDIR)
+                 : "not a regular file (a preset is a text file)");
+        close(fd);
+        return PRESET_IO;
+    }
+    if (st.st_size > PRESET_MAX_BYTES) {
+        snprintf(err, errlen, "%s: too large for a preset (more than %d bytes)", path,
+                 PRESET_MAX_BYTES);
+        close(fd);
+        return PRESET_BAD;
     }
     char *buf = malloc(PRESET_MAX_BYTES + 2);
     size_t n = 0;
@@ -273,6 +322,7 @@ static enum preset_status slurp(const char *path, char **text, size_t *size, cha
         close(fd);
         return PRESET_IO;
     }
+    /* The size may still grow while it is read: the limit holds on what is read too. */
     for (;;) {
         ssize_t r = read(fd, buf + n, PRESET_MAX_BYTES + 1 - n);
         if (r < 0 && errno == EINTR)
@@ -330,6 +380,11 @@ enum preset_status preset_parse(const char *path, const char *text, size_t size,
     }
     memcpy(copy, text, size);
     copy[size] = '\0';
+    /* A lone CR (old Mac line endings) ends a line, as it does on the screen; inih splits
+     * on LF only and would read the whole file as one line. CR LF stays as it is. */
+    for (size_t i = 0; i < size; i++)
+        if (copy[i] == '\r' && (i + 1 == size || copy[i + 1] != '\n'))
+            copy[i] = '\n';
 
     struct parse p = {.path = path, .c = c};
     p.lines = malloc((size / 2 + 2) * sizeof *p.lines); /* a value line has 2+ bytes */
@@ -398,8 +453,14 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
 {
     size_t n = strlen(name);
     if (strchr(name, '/') || (n > 4 && strcmp(name + n - 4, ".ini") == 0)) {
-        snprintf(out, len, "%s", name);
-        return PRESET_OK;
+        /* Never cut: a shortened path could name another file. */
+        if (n < len) {
+            memcpy(out, name, n + 1);
+            return PRESET_OK;
+        }
+        snprintf(out, len, "'%.36s...' is too long for a file name (%zu bytes; expected at "
+                 "most %zu)", name, n, len - 1);
+        return PRESET_NONE;
     }
     if (n > 0 && n < 200) {
         char dirs[4][4096];
@@ -462,10 +523,17 @@ int preset_scan(const char *exe_dir, struct preset_entry **out)
             int w = snprintf(e->path, sizeof e->path, "%s/%s", dirs[d], ent->d_name);
             if (w < 0 || (size_t)w >= sizeof e->path)
                 continue;
+            /* Only what preset_load would read: a FIFO, a device or a huge file is not
+             * a preset, and reading it could hang the listing. */
+            char *text, why[64];
+            size_t size;
+            if (slurp(e->path, &text, &size, why, sizeof why) != PRESET_OK)
+                continue;
             memcpy(e->name, ent->d_name, n - 4);
             e->name[n - 4] = '\0';
             e->description[0] = '\0';
-            ini_parse(e->path, describe, e);
+            ini_parse_string(text, describe, e);
+            free(text);
             have++;
         }
         closedir(dir);

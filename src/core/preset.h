@@ -19,7 +19,8 @@ enum preset_status {
 };
 
 /* Applies the preset file at path to c; its keys record path (which must outlive c)
- * and line as their origin. On failure c may be partly set and err says why. */
+ * and line as their origin. Only a regular file is read, opened without waiting (a FIFO
+ * is refused, not waited on). On failure c may be partly set and err says why. */
 enum preset_status preset_load(const char *path, struct config *c, char *err, size_t errlen);
 
 /* Applies preset text (size bytes, not necessarily NUL-terminated) to c, as if read
@@ -30,7 +31,8 @@ enum preset_status preset_parse(const char *path, const char *text, size_t size,
 /* The file a preset name or path stands for. A value with a '/' or ending in ".ini" is
  * a path; otherwise the search order is the user's directory, $SPRINGSIM_PRESETS, the
  * installed directory and exe_dir/presets. Writes the path into out and returns
- * PRESET_OK, or PRESET_NONE with a message in out. */
+ * PRESET_OK, or PRESET_NONE with a message in out (also for a path too long for out:
+ * it is never cut, which could name another file). */
 enum preset_status preset_find(const char *name, const char *exe_dir, char *out, size_t len);
 
 /* The user's preset directory: $XDG_CONFIG_HOME/springsim/presets, or
@@ -44,7 +46,8 @@ struct preset_entry {
     char description[256]; /* [preset] description, or "" */
 };
 
-/* Every preset on the search path, sorted by name, each name once (the first found
+/* Every preset on the search path (regular files of at most PRESET_MAX_BYTES: a FIFO,
+ * a device or a huge file is skipped, never read), sorted by name, each name once (the first found
  * shadows later ones), into a malloc'ed array *out (free it); returns the count. */
 int preset_scan(const char *exe_dir, struct preset_entry **out);
 
