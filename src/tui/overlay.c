@@ -302,9 +302,13 @@ static unsigned edit_key(struct overlay *o, struct app *app, const struct select
         o->kind = OVERLAY_NONE;
         return finish_edit(o, app, sel);
     } else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
+        /* A whole character: its UTF-8 continuation bytes too. */
+        while (o->edit_len && (o->edit[o->edit_len - 1] & 0xC0) == 0x80)
+            o->edit[--o->edit_len] = '\0';
         if (o->edit_len)
             o->edit[--o->edit_len] = '\0';
-    } else if (ch >= 32 && ch < 127 && o->edit_len < (int)sizeof o->edit - 1) {
+    } else if (((ch >= 32 && ch < 127) || (ch >= 128 && ch < 256)) &&
+               o->edit_len < (int)sizeof o->edit - 1) {
         o->edit[o->edit_len++] = (char)ch;
         o->edit[o->edit_len] = '\0';
     }
