@@ -77,7 +77,7 @@ if up save; then
     # bad names: a message, nothing written
     find "$xs" 2>/dev/null | sort >"$tmp/xs.before"
     long=$(awk 'BEGIN { while (i++ < 65) printf "a" }')
-    for nm in ../x '' a/b "$long"; do
+    for nm in ../x '' a/b "$long" résumé; do
         case $nm in '') what="an empty name" ;; "$long") what="a 65-character name" ;; *) what="'$nm'" ;; esac
         if save_as "$nm"; then
             l=$(last_line)
