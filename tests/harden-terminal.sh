@@ -1,12 +1,12 @@
 #!/bin/sh
 # tests/harden-terminal.sh: the terminal going or jamming under the interactive program
 # (issue 11, defects 1, 3, 6 and 7). A terminal that goes with no SIGHUP, at start-up or
-# later, ends the program within a second (status 129 or 1) instead of leaving it spinning;
-# SIGQUIT (Ctrl-\) and the other terminating signals give the terminal back; SIGTERM and
-# SIGINT end it within a second or two while its output is blocked (Ctrl-S), the
-# terminal given back; TERM=dumb and an unknown TERM are refused with one line, exit 1.
-# Run from the repository root as `sh tests/harden-terminal.sh`, SPRINGSIM naming the
-# binary. Ends with "harden-terminal: N passed, M failed".
+# later, ends the program within a second (status 129 or 1) instead of leaving it
+# spinning; SIGQUIT (Ctrl-\) and the other terminating signals give the terminal back;
+# SIGTERM and SIGINT end it within a second or two while its output is blocked (Ctrl-S, a
+# stalled link), the terminal given back; TERM=dumb and an unknown TERM are refused with
+# one line, exit 1. Run from the repository root as `sh tests/harden-terminal.sh`,
+# SPRINGSIM naming the binary. Ends with "harden-terminal: N passed, M failed".
 NAME=harden-terminal
 . "$(dirname "$0")/lib/check.sh"
 . "$(dirname "$0")/lib/tmux.sh"
@@ -29,7 +29,7 @@ echo $? >"$base.status"
 EOF
 start_lost() { # start_lost NAME [wait]: true once lost.sh ignores SIGHUP
     tm new-session -d -s "$1" -x 100 -y 30 env "LANG=$U8" "LC_ALL=$U8" TERM=xterm-256color \
-        "XDG_CONFIG_HOME=$tmp/xdg" sh "$tmp/lost.sh" "$tmp/$1" "$SPRINGSIM" $2
+        "XDG_CONFIG_HOME=$tmp/xdg" sh "$tmp/lost.sh" "$tmp/$1" "$SPRINGSIM" ${2:+"$2"}
     i=0
     while [ ! -e "$tmp/$1.ready" ] && [ $i -lt 50 ]; do sleep 0.02; i=$((i + 1)); done
 }
@@ -174,6 +174,140 @@ for s in TERM INT; do
         wait_for 'TERMINAL ' 3 || kill -9 "$pid"
     fi
 done
+
+# A stalled link: the program runs in a pseudo-terminal whose reader stops (the helper
+# below, built here with $CC). Once its output has blocked, SIGTERM must end it within
+# 1.5 s, the unread frames dropped for endwin's bytes (rmcup) and the modes given back.
+# (The code before the fix stayed blocked in about half the runs: sometimes the write
+# the signal interrupts lets it finish; Ctrl-S above is the case that always fails.)
+cat >"$tmp/stall.c" <<'EOF'
+/* stall: the interactive program in a pseudo-terminal whose reader stops, as a stalled
+ * link would: once its output is blocked, SIGTERM must end it within 1.5 s, and what it
+ * then sends and the modes it leaves give the terminal back. usage: stall PROGRAM */
+#define _GNU_SOURCE
+#include <poll.h>
+#include <pty.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <termios.h>
+#include <time.h>
+#include <unistd.h>
+
+static char got[1 << 20];
+static size_t have;
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+/* Reads for ms milliseconds, keeping what arrives. */
+static void drain(int fd, int ms)
+{
+    double end = now_ms() + ms;
+    for (double left = ms; left > 0; left = end - now_ms()) {
+        struct pollfd p = {fd, POLLIN, 0};
+        if (poll(&p, 1, (int)left + 1) <= 0)
+            continue;
+        char buf[65536];
+        ssize_t r = read(fd, buf, sizeof buf);
+        if (r <= 0)
+            return;
+        if (have + (size_t)r > sizeof got)
+            have = 0;
+        memcpy(got + have, buf, (size_t)r);
+        have += (size_t)r;
+    }
+}
+
+/* The program is waiting in a write (the syscall it sleeps in, from /proc). */
+static int blocked(pid_t pid)
+{
+    char path[64];
+    long nr = -1;
+    snprintf(path, sizeof path, "/proc/%d/syscall", (int)pid);
+    FILE *f = fopen(path, "r");
+    if (f) {
+        if (fscanf(f, "%ld", &nr) != 1)
+            nr = -1;
+        fclose(f);
+    }
+    return nr == SYS_write || nr == SYS_writev;
+}
+
+int main(int argc, char **argv)
+{
+    int fd, status = 0;
+    struct winsize ws = {60, 200, 0, 0};
+    if (argc < 2)
+        return 2;
+    pid_t pid = forkpty(&fd, NULL, NULL, &ws);
+    if (pid == 0) {
+        setenv("TERM", "xterm-256color", 1);
+        setenv("LANG", "C.UTF-8", 1);
+        execv(argv[1], argv + 1);
+        _exit(127);
+    }
+    struct termios before;
+    tcgetattr(fd, &before);
+    drain(fd, 1000);
+    if (write(fd, " ", 1) != 1)
+        return 1;
+    drain(fd, 200);
+    /* The link stalls: nothing more is read. Wait (at most 8 s) for its output to block. */
+    int i, still = 0;
+    for (i = 0; i < 160 && still < 5; i++) {
+        usleep(50000);
+        still = blocked(pid) ? still + 1 : 0;
+    }
+    if (still < 5) {
+        printf("note: the program's output never blocked; the stalled-link case did not run\n");
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        return 0;
+    }
+    kill(pid, SIGTERM);
+    int done = 0;
+    for (i = 0; i < 150 && !done; i++) {
+        usleep(10000);
+        done = waitpid(pid, &status, WNOHANG) == pid;
+    }
+    if (!done) {
+        printf("FAIL: SIGTERM with its output blocked (a stalled link): still running 1.5 s later\n");
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        return 1;
+    }
+    have = 0;
+    drain(fd, 300);
+    struct termios after;
+    int modes = tcgetattr(fd, &after) == 0 && after.c_lflag == before.c_lflag &&
+                after.c_iflag == before.c_iflag && after.c_oflag == before.c_oflag;
+    int screen = memmem(got, have, "\033[?1049l", 8) != NULL;
+    int sig = WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM;
+    if (modes && screen && sig) {
+        printf("ok\n");
+        return 0;
+    }
+    printf("FAIL: SIGTERM with its output blocked (a stalled link):%s%s%s\n",
+           sig ? "" : " it did not die of SIGTERM;",
+           modes ? "" : " the terminal modes were not given back;",
+           screen ? "" : " the alternate screen was not left (no rmcup sent);");
+    return 1;
+}
+EOF
+if ${CC:-cc} -std=c11 -o "$tmp/stall" "$tmp/stall.c" -lutil 2>"$tmp/cc.err"; then
+    out=$("$tmp/stall" "$SPRINGSIM")
+    case $out in ok) pass ;; note:*) echo "$out" ;; *) fail "$out" ;; esac
+else
+    echo "note: the stalled-link helper did not build: $(head -n 1 "$tmp/cc.err")"
+fi
 
 # 7. TERM=dumb cannot place the cursor; an unknown TERM has no description: one line on
 # the terminal, exit 1, the terminal as it was.
