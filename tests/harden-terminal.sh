@@ -103,6 +103,13 @@ sigs="QUIT USR1 USR2 ALRM PIPE XCPU VTALRM PROF"
 for s in $sigs; do start_in "$tmp" "sig-$s" 100 30; done
 # 6: SIGTERM and SIGINT while the terminal's output is stopped (Ctrl-S)
 for s in TERM INT; do start "stall-$s" 120 40; done
+# a signal the program was started with ignored stays ignored (nohup, `trap '' INT`)
+printf '#!/bin/sh\ntrap "" INT\nexec "%s" "$@"\n' "$SPRINGSIM" >"$tmp/ignore-int"
+chmod +x "$tmp/ignore-int"
+h_bin=$SPRINGSIM
+SPRINGSIM=$tmp/ignore-int
+start ignored-INT 100 30
+SPRINGSIM=$h_bin
 # 7: terminals the program cannot use
 start term-dumb 200 24 TERM=dumb
 start term-unknown 200 24 TERM=unknown-terminal
@@ -141,6 +148,17 @@ done
 for s in $sigs; do
     [ -s "$tmp/sig-$s.pid" ] && restored "sig-$s" "SIG$s" "$(died_of "$s")"
 done
+
+if up ignored-INT; then
+    kill -INT "$(cat "$tmp/ignored-INT.pid")"
+    sleep 0.5
+    if alive ignored-INT; then
+        keys q
+        restored ignored-INT "q after an ignored SIGINT" 0
+    else
+        fail "SIGINT ended the program though it was started with SIGINT ignored"
+    fi
+fi
 
 # 6. Output stopped with Ctrl-S while the program runs: its writes block. SIGTERM or
 # SIGINT must end it within 1.5 s all the same, the terminal given back.

@@ -135,9 +135,10 @@ static void force_exit(int sig)
     _exit(128 + sig);
 }
 
-/* SIGINT, SIGTERM, SIGHUP, SIGQUIT and every other signal that ends a program: the loop
- * ends and gives the terminal back; if it has not within QUIT_GRACE seconds, or a second
- * such signal comes, the terminal is taken back by force. */
+/* SIGINT, SIGTERM, SIGHUP, SIGQUIT and every other signal that ends a program (except
+ * where the program was started with it ignored, as `trap '' HUP` does: it stays
+ * ignored): the loop ends and gives the terminal back; if it has not within QUIT_GRACE
+ * seconds, or a second such signal comes, the terminal is taken back by force. */
 static void on_quit_signal(int sig)
 {
     if (quit_signal)
@@ -179,9 +180,12 @@ static void install_signals(void)
     memset(&sa, 0, sizeof sa);
     sigemptyset(&sa.sa_mask);
     sa.sa_handler = on_quit_signal;
-    for (size_t i = 0; i < sizeof quit / sizeof quit[0]; i++)
-        sigaction(quit[i], &sa, NULL);
-    sa.sa_handler = on_alarm;
+    for (size_t i = 0; i < sizeof quit / sizeof quit[0]; i++) {
+        struct sigaction old;
+        if (sigaction(quit[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+            sigaction(quit[i], &sa, NULL);
+    }
+    sa.sa_handler = on_alarm; /* the grace timer: caught even where it was ignored */
     sigaction(SIGALRM, &sa, NULL);
     sa.sa_handler = on_fatal_signal;
     sa.sa_flags = SA_RESETHAND;
