@@ -258,19 +258,27 @@ bool term_start(void)
                         "--modes or --sweep for scripts\n");
         return false;
     }
-    have_shell_modes = tcgetattr(STDOUT_FILENO, &shell_modes) == 0;
-    if (!newterm(NULL, stdout, stdin)) {
-        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n",
-                getenv("TERM") ? getenv("TERM") : "unset");
+    /* The terminal's description is looked at before curses starts: newterm() would leak
+     * its screen when there is none, and curses has nothing to do on a terminal that
+     * cannot place the cursor (TERM=dumb would show one garbled line). */
+    const char *term = getenv("TERM") ? getenv("TERM") : "unset";
+    int err;
+    if (setupterm(NULL, STDOUT_FILENO, &err) != OK) {
+        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n", term);
         return false;
     }
-    /* A terminal that cannot place the cursor (TERM=dumb) would show one garbled line. */
     const char *cup = tigetstr("cup");
-    if (cup == NULL || cup == (char *)-1) {
-        endwin();
+    bool addressable = cup != NULL && cup != (char *)-1;
+    del_curterm(cur_term);
+    if (!addressable) {
         fprintf(stderr, "springsim: this terminal (TERM=%s) cannot move the cursor; the "
                         "interactive program needs one (use --headless, --modes or --sweep)\n",
-                getenv("TERM") ? getenv("TERM") : "unset");
+                term);
+        return false;
+    }
+    have_shell_modes = tcgetattr(STDOUT_FILENO, &shell_modes) == 0;
+    if (!newterm(NULL, stdout, stdin)) {
+        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n", term);
         return false;
     }
     curses_on = true;
