@@ -232,37 +232,38 @@ static int run_modes(const struct config *c, const struct model *m)
     return status;
 }
 
-/* Parses FMIN:FMAX:COUNT; on error says why and returns -1. */
+/* Parses FMIN:FMAX:COUNT, each part a number as every option reads it (no blanks);
+ * on error says why and returns -1. */
 static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count)
 {
     const char *expect = "expected FMIN:FMAX:COUNT with 0 < FMIN < FMAX <= 1e6 and "
                          "2 <= COUNT <= 1000000";
-    char buf[128], *end;
+    char buf[128], q[4 * CONFIG_QUOTE_MAX + 48];
+    config_quote(spec, strlen(spec), q, sizeof q);
     if (strlen(spec) >= sizeof buf) {
-        options_say("--sweep: '%.40s...' is too long (%s)", spec, expect);
+        options_say("--sweep: %s is too long (%s)", q, expect);
         return -1;
     }
     strcpy(buf, spec);
     char *a = buf, *b = strchr(a, ':'), *cnt = b ? strchr(b + 1, ':') : NULL;
     if (!b || !cnt || strchr(cnt + 1, ':')) {
-        options_say("--sweep: '%s' is not three values separated by ':' (%s)", spec, expect);
+        options_say("--sweep: %s is not three values separated by ':' (%s)", q, expect);
         return -1;
     }
     *b++ = '\0';
     *cnt++ = '\0';
-    *fmin = strtod(a, &end);
-    int bad = end == a || *end || !isfinite(*fmin);
-    *fmax = strtod(b, &end);
-    bad |= end == b || *end || !isfinite(*fmax);
-    errno = 0;
-    *count = strtol(cnt, &end, 10);
-    bad |= end == cnt || *end || errno == ERANGE;
+    double c;
+    const char *digits = cnt + (cnt[0] == '+');
+    int bad = config_parse_number(a, fmin) || config_parse_number(b, fmax) ||
+              config_parse_number(cnt, &c) || !*digits ||
+              strspn(digits, "0123456789") != strlen(digits);
     if (bad) {
-        options_say("--sweep: '%s' has a value that is not a number (%s)", spec, expect);
+        options_say("--sweep: %s has a value that is not a number (%s)", q, expect);
         return -1;
     }
+    *count = c > SWEEP_MAX ? SWEEP_MAX + 1 : (long)c;
     if (!(*fmin > 0.0 && *fmin < *fmax && *fmax <= 1e6 && *count >= 2 && *count <= SWEEP_MAX)) {
-        options_say("--sweep: '%s' is out of range (%s)", spec, expect);
+        options_say("--sweep: %s is out of range (%s)", q, expect);
         return -1;
     }
     return 0;
@@ -332,6 +333,38 @@ static int interactive_limits(const struct config *c)
     return EXIT_USAGE;
 }
 
+/* --list-presets: the list written through config_escape line by line, so a preset's
+ * description cannot carry control bytes to the terminal. */
+static int list_presets(const char *exe_dir)
+{
+    char *text = NULL;
+    size_t size = 0;
+    FILE *mem = open_memstream(&text, &size);
+    if (!mem) {
+        options_say("out of memory");
+        return EXIT_FAILURE;
+    }
+    int found = preset_list(mem, exe_dir);
+    if (fclose(mem) != 0) {
+        free(text);
+        options_say("out of memory");
+        return EXIT_FAILURE;
+    }
+    for (char *line = text; line < text + size;) {
+        char *nl = memchr(line, '\n', (size_t)(text + size - line));
+        size_t n = nl ? (size_t)(nl - line) : (size_t)(text + size - line);
+        char safe[4 * 1024 + 8];
+        config_escape(line, n, 1024, safe, sizeof safe);
+        printf("%s\n", safe);
+        line += n + 1;
+    }
+    free(text);
+    if (found == 0)
+        options_say("no presets found (searched the user's directory, $SPRINGSIM_PRESETS, %s "
+            "and %s/presets)", preset_installed_dir, exe_dir);
+    return options_finish_stdout();
+}
+
 int main(int argc, char **argv)
 {
     static struct config c; /* large: lists of up to 1001 values */
@@ -347,12 +380,8 @@ int main(int argc, char **argv)
     int status = options_parse(argc, argv, &c, &cli, exe_dir);
     if (status >= 0)
         return status;
-    if (cli.mode == MODE_LIST) {
-        if (preset_list(stdout, exe_dir) == 0)
-            options_say("no presets found (searched the user's directory, $SPRINGSIM_PRESETS, %s "
-                "and %s/presets)", preset_installed_dir, exe_dir);
-        return fflush(stdout) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
-    }
+    if (cli.mode == MODE_LIST)
+        return list_presets(exe_dir);
     int bad_key;
     struct model *m = config_model(&c, &bad_key, err, sizeof err);
     if (!m) {
@@ -361,6 +390,11 @@ int main(int argc, char **argv)
             return EXIT_FAILURE;
         }
         options_report_key(&c, bad_key, err);
+        return EXIT_USAGE;
+    }
+    if (cli.mode == MODE_HEADLESS && (bad_key = config_check_steps(&c, err, sizeof err)) >= 0) {
+        options_report_key(&c, bad_key, err);
+        model_free(m);
         return EXIT_USAGE;
     }
     if (c.random && !c.seed_set)

@@ -4,6 +4,7 @@
  * one line. Kept apart from main.c so the fuzz target can drive it. */
 #include "options.h"
 
+#include <errno.h>
 #include <getopt.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -48,12 +49,30 @@ void options_set_errors(FILE *f)
 void options_say(const char *fmt, ...)
 {
     FILE *out = errors ? errors : stderr;
+    char line[2048], safe[4 * sizeof line];
     va_list ap;
     va_start(ap, fmt);
-    fprintf(out, "%s: ", progname);
-    vfprintf(out, fmt, ap);
-    fputc('\n', out);
+    vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
+    /* Whatever went into it, the line reaches the terminal as one line of text. */
+    config_escape(line, strlen(line), sizeof line, safe, sizeof safe);
+    fprintf(out, "%s: %s\n", progname, safe);
+}
+
+int options_finish_stdout(void)
+{
+    /* The error flag may have been set by an earlier write whose errno is gone. */
+    errno = 0;
+    int bad = fflush(stdout) != 0 || ferror(stdout);
+    int e = errno;
+    if (fclose(stdout) != 0 && !bad) {
+        bad = 1;
+        e = errno;
+    }
+    if (!bad)
+        return EXIT_SUCCESS;
+    options_say("standard output: %s", strerror(e ? e : EIO));
+    return EXIT_FAILURE;
 }
 
 static void usage(FILE *out)
@@ -147,10 +166,12 @@ static int option_index(int ch)
     return -1;
 }
 
-/* The option as the user wrote it, for messages about it. */
-static const char *written(char **argv, int index)
+/* The option as the user wrote it, quoted for a message about it. */
+static const char *written(char **argv, int index, char *buf, size_t len)
 {
-    return argv[index] ? argv[index] : "?";
+    const char *w = argv[index] ? argv[index] : "?";
+    config_quote(w, strlen(w), buf, len);
+    return buf;
 }
 
 /* Parses the command line into c and cli. Returns -1 to go on, or an exit status. */
@@ -158,7 +179,7 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                   const char *exe_dir)
 {
     struct option lo[OPT_COUNT + 1];
-    char shortopts[64], err[512];
+    char shortopts[64], err[512], q[4 * CONFIG_QUOTE_MAX + 48];
     const char *preset = NULL;
     int ch;
 
@@ -170,15 +191,15 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         int k = option_index(ch);
         if (k == OPT_HELP) {
             usage(stdout);
-            return fflush(stdout) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+            return options_finish_stdout();
         }
         if (k == OPT_VERSION) {
             printf("springsim %s\n", VERSION);
-            return EXIT_SUCCESS;
+            return options_finish_stdout();
         }
         if (k == OPT_KEYS) {
             input_print_keys(stdout);
-            return fflush(stdout) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+            return options_finish_stdout();
         }
         if (k == CFG_PRESET) {
             /* The last one counts, but every one must exist. */
@@ -215,7 +236,8 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             if (optopt)
                 options_say("'-%c' is not an option (see springsim --help)", optopt);
             else
-                options_say("'%s' is not an option (see springsim --help)", written(argv, before));
+                options_say("%s is not an option (see springsim --help)",
+                            written(argv, before, q, sizeof q));
             return EXIT_USAGE;
         }
         if (ch == ':') {
@@ -227,7 +249,8 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                 options_say("--%s: needs a value (%s)", mode_options[k - CFG_KEY_COUNT].name,
                     mode_options[k - CFG_KEY_COUNT].arg);
             else
-                options_say("'%s' needs a value (see springsim --help)", written(argv, before));
+                options_say("%s needs a value (see springsim --help)",
+                            written(argv, before, q, sizeof q));
             return EXIT_USAGE;
         }
         int k = option_index(ch);
@@ -263,16 +286,21 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         }
         if (m != MODE_INTERACTIVE) {
             if (modes++ && cli->mode != m) {
-                options_say("'%s': give only one of --headless, --modes, --sweep and --list-presets",
-                    written(argv, before));
+                options_say("%s: give only one of --headless, --modes, --sweep and --list-presets",
+                    written(argv, before, q, sizeof q));
                 return EXIT_USAGE;
             }
             cli->mode = m;
         }
     }
     if (optind < argc) {
-        options_say("'%s' is not an option (springsim takes no other arguments; see --help)",
-            argv[optind]);
+        written(argv, optind, q, sizeof q);
+        if (optind > 1 && strcmp(argv[optind - 1], "--") == 0)
+            options_say("springsim takes no arguments, but %s was given after '--' (see "
+                        "--help)", q);
+        else
+            options_say("%s is not an option (springsim takes no other arguments; see --help)",
+                        q);
         return EXIT_USAGE;
     }
     return -1;

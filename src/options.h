@@ -30,6 +30,10 @@ void options_set_errors(FILE *f);
 /* One line on standard error, prefixed "springsim: ". */
 void options_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* Flushes and closes standard output after help-type output: EXIT_SUCCESS, or
+ * EXIT_FAILURE after "springsim: standard output: REASON". */
+int options_finish_stdout(void);
+
 /* Reports a bad value of key, naming where it came from: "--dt: why" on the command
  * line, "FILE:LINE: dt: why" from a preset. */
 void options_report_key(const struct config *c, int key, const char *why);

@@ -2,6 +2,7 @@
  * every value goes through, whichever way it came in. */
 #include "config.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -94,43 +95,122 @@ int config_find(const char *name)
     return -1;
 }
 
-/* The value as quoted in a message: cut short if long, so the message stays one line. */
-static void quote(const char *value, char *buf, size_t len)
+/* Appends byte c to buf (room for len, NUL kept) at *used, escaped if it is a control
+ * byte: C's escapes for the common ones, \xNN for the rest. */
+static void put_escaped(unsigned char c, char *buf, size_t len, size_t *used)
 {
-    size_t n = strlen(value);
-    if (n <= 40) {
-        snprintf(buf, len, "'%s'", value);
-        return;
+    static const char named[] = "\a\b\t\n\v\f\r";
+    static const char letter[] = "abtnvfr";
+    char one[8];
+    const char *at = c ? strchr(named, c) : NULL;
+    if (at)
+        snprintf(one, sizeof one, "\\%c", letter[at - named]);
+    else if (c < 0x20 || c == 0x7f || c >= 0x80)
+        snprintf(one, sizeof one, "\\x%02x", c);
+    else
+        snprintf(one, sizeof one, "%c", c);
+    size_t w = strlen(one);
+    if (*used + w < len) {
+        memcpy(buf + *used, one, w + 1);
+        *used += w;
     }
-    snprintf(buf, len, "'%.36s...' (%zu characters)", value, n);
-    for (char *p = buf; *p; p++)
-        if (*p == '\n' || *p == '\r' || *p == '\t')
-            *p = ' ';
 }
 
-static int fail(int key, const char *value, const char *why, char *err, size_t errlen)
+/* Length of the valid UTF-8 sequence at s (at most n bytes) that is not a C1 control
+ * (U+0080 to U+009F), or 0. */
+static size_t utf8_length(const unsigned char *s, size_t n)
 {
-    char q[96];
-    quote(value, q, sizeof q);
+    size_t k = s[0] >= 0xf0 && s[0] <= 0xf4 ? 4 : s[0] >= 0xe0 ? 3 : s[0] >= 0xc2 ? 2 : 0;
+    if (s[0] >= 0xf5 || k == 0 || k > n)
+        return 0;
+    for (size_t i = 1; i < k; i++)
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    if (k == 2 && s[0] == 0xc2 && s[1] < 0xa0)
+        return 0; /* C1 control */
+    if ((k == 3 && s[0] == 0xe0 && s[1] < 0xa0) || (k == 4 && s[0] == 0xf0 && s[1] < 0x90) ||
+        (k == 4 && s[0] == 0xf4 && s[1] >= 0x90) || (k == 3 && s[0] == 0xed && s[1] >= 0xa0))
+        return 0; /* overlong, past U+10FFFF, or a surrogate */
+    return k;
+}
+
+void config_escape(const char *text, size_t n, size_t max, char *buf, size_t len)
+{
+    const unsigned char *s = (const unsigned char *)text;
+    size_t used = 0, i = 0;
+    if (len == 0)
+        return;
+    buf[0] = '\0';
+    while (i < n && i < max) {
+        size_t k = s[i] >= 0x80 ? utf8_length(s + i, n - i) : 0;
+        if (k > 0) {
+            if (used + k < len) {
+                memcpy(buf + used, s + i, k);
+                used += k;
+                buf[used] = '\0';
+            }
+            i += k;
+        } else {
+            put_escaped(s[i++], buf, len, &used);
+        }
+    }
+    if (i < n)
+        snprintf(buf + used, len - used, "...");
+}
+
+void config_quote(const char *value, size_t n, char *buf, size_t len)
+{
+    char text[4 * CONFIG_QUOTE_MAX + 8];
+    config_escape(value, n, CONFIG_QUOTE_MAX, text, sizeof text);
+    if (n <= CONFIG_QUOTE_MAX)
+        snprintf(buf, len, "'%s'", text);
+    else
+        snprintf(buf, len, "'%s' (%zu characters)", text, n);
+}
+
+static int fail_span(int key, const char *value, size_t n, const char *why, char *err,
+                     size_t errlen)
+{
+    char q[4 * CONFIG_QUOTE_MAX + 48];
+    config_quote(value, n, q, sizeof q);
     snprintf(err, errlen, "%s %s (expected %s)", q, why, expected[key]);
     return -1;
 }
 
-/* Parses a whole finite number; returns a reason on failure. */
-static const char *parse_number(const char *s, double *out)
+static int fail(int key, const char *value, const char *why, char *err, size_t errlen)
+{
+    return fail_span(key, value, strlen(value), why, err, errlen);
+}
+
+/* Parses the n characters at s as one whole finite number, nothing before or after it
+ * (no blanks either); returns a reason on failure. -0 reads as 0. */
+static const char *parse_span(const char *s, size_t n, double *out)
 {
     char *end;
-    if (*s == '\0')
+    if (n == 0)
         return "is empty";
+    if (isspace((unsigned char)s[0]))
+        return "is not a number (it starts with a blank)";
     errno = 0;
     double v = strtod(s, &end);
-    if (end == s || *end != '\0' || s[0] == ' ' || s[0] == '\t')
-        return "is not a number";
+    if (end == s || end != s + n)
+        return isspace((unsigned char)s[n - 1]) ? "is not a number (it ends with a blank)"
+                                                : "is not a number";
     /* ERANGE with a tiny result is an underflow: a valid, very small number. */
     if (!isfinite(v) || (errno == ERANGE && fabs(v) >= 1.0))
         return "is not a finite number";
-    *out = v;
+    *out = v + 0.0;
     return NULL;
+}
+
+const char *config_parse_number(const char *s, double *out)
+{
+    return parse_span(s, strlen(s), out);
+}
+
+static const char *parse_number(const char *s, double *out)
+{
+    return config_parse_number(s, out);
 }
 
 static int in_bound(double v, enum bound b)
@@ -151,46 +231,44 @@ static int set_number(int key, const char *value, double *out, enum bound b, dou
     return 0;
 }
 
-/* Parses a comma-separated list; blanks around items are allowed. */
+/* Parses a comma-separated list: numbers as parse_span reads them, with spaces or tabs
+ * allowed on either side of a comma and nowhere else. Items of any length are read in
+ * place. */
 static int set_list(int key, const char *value, struct config_list *out, enum bound b,
                     char *err, size_t errlen)
 {
     static struct config_list tmp; /* large; the parser is not reentrant anyway */
-    char item[64], msg[160];
+    char msg[4 * CONFIG_QUOTE_MAX + 96], q[4 * CONFIG_QUOTE_MAX + 48];
     const char *p = value;
 
     tmp.count = 0;
     for (;;) {
-        while (*p == ' ' || *p == '\t')
-            p++;
-        const char *end = p;
-        while (*end && *end != ',')
-            end++;
+        if (tmp.count > 0)
+            while (*p == ' ' || *p == '\t')
+                p++;
+        const char *end = strchr(p, ',');
+        if (!end)
+            end = p + strlen(p);
         const char *stop = end;
-        while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
-            stop--;
+        if (*end == ',')
+            while (stop > p && (stop[-1] == ' ' || stop[-1] == '\t'))
+                stop--;
         size_t len = (size_t)(stop - p);
         if (tmp.count > MODEL_MAX_MASSES)
             return fail(key, value, "has more than 1001 values", err, errlen);
-        if (len == 0) {
+        if (len == 0 && (tmp.count > 0 || *end == ',')) {
             snprintf(msg, sizeof msg, "has an empty item (item %d)", tmp.count + 1);
             return fail(key, value, msg, err, errlen);
         }
-        if (len >= sizeof item) {
-            snprintf(msg, sizeof msg, "has an item that is not a number (item %d)",
-                     tmp.count + 1);
-            return fail(key, value, msg, err, errlen);
-        }
-        memcpy(item, p, len);
-        item[len] = '\0';
         double v;
-        const char *why = parse_number(item, &v);
+        const char *why = parse_span(p, len, &v);
         if (!why && !in_bound(v, b))
             why = "is out of range";
         if (why) {
-            if (strcmp(item, value) == 0)
+            if (p == value && *end == '\0')
                 return fail(key, value, why, err, errlen);
-            snprintf(msg, sizeof msg, "item %d '%s' %s", tmp.count + 1, item, why);
+            config_quote(p, len, q, sizeof q);
+            snprintf(msg, sizeof msg, "item %d %s %s", tmp.count + 1, q, why);
             return fail(key, value, msg, err, errlen);
         }
         tmp.v[tmp.count++] = v;
@@ -229,6 +307,8 @@ static const char *parse_whole(const char *s, unsigned long long *out)
     char *end;
     if (*s == '\0')
         return "is empty";
+    if (s[0] == '+' && s[1] >= '0' && s[1] <= '9')
+        s++; /* +3 is 3, as strtod reads +0.01 */
     if (strspn(s, "0123456789") != strlen(s)) {
         double d;
         if (parse_number(s, &d))
@@ -340,6 +420,19 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
     }
     snprintf(err, errlen, "is not a setting");
     return -1;
+}
+
+int config_check_steps(const struct config *c, char *err, size_t errlen)
+{
+    double steps = c->duration / c->dt;
+    if (steps <= CONFIG_MAX_STEPS)
+        return -1;
+    char count[32];
+    snprintf(count, sizeof count, isfinite(steps) ? "%.3g" : "over 1e308", steps);
+    snprintf(err, errlen, "a run of %g s at dt = %g s is %s steps (expected at most %g: "
+             "a shorter --duration or a larger --dt)", c->duration, c->dt, count,
+             CONFIG_MAX_STEPS);
+    return c->dt < 1e-9 ? CFG_DT : CFG_DURATION;
 }
 
 /* Says that list l has the wrong length for this many elements, quoting its values. */

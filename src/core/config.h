@@ -88,6 +88,26 @@ struct config {
     struct config_origin origin[CFG_KEY_COUNT]; /* where each key was set */
 };
 
+#define CONFIG_QUOTE_MAX 40  /* characters of a value quoted in a message */
+#define CONFIG_MAX_STEPS 1e12 /* steps a headless run may take */
+
+/* Writes the n bytes of text into buf (room for len) with every control byte escaped
+ * (\n, \t, \x1b, ...; invalid UTF-8 and C1 controls as \xNN too), at most max of them,
+ * then "..." if there were more: what every message quoting user text goes through. */
+void config_escape(const char *text, size_t n, size_t max, char *buf, size_t len);
+
+/* The n bytes of value as a message quotes them: escaped, in single quotes, cut after
+ * CONFIG_QUOTE_MAX with its length said. */
+void config_quote(const char *value, size_t n, char *buf, size_t len);
+
+/* Parses s as one whole finite number, no blank before, after or inside it (-0 reads
+ * as 0). NULL, or the reason it is not one ("is not a number", ...). */
+const char *config_parse_number(const char *s, double *out);
+
+/* The key to blame when a headless run of c would take more than CONFIG_MAX_STEPS steps
+ * (CFG_DURATION or CFG_DT), with the reason in err; -1 when it would not. */
+int config_check_steps(const struct config *c, char *err, size_t errlen);
+
 /* The defaults: the page's (2 masses of 1 kg, 10 N/m, 0.1 N s/m, dt 0.01 s, motor,
  * sine, 1 m, 1 Hz, at rest), rk4, duration 10 s, every step sampled. */
 void config_init(struct config *c);
