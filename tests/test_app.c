@@ -250,6 +250,33 @@ static void time_decimals(void **state)
     assert_string_equal(buf, "0.0075 s");
 }
 
+/* Typed extremes read as what they are (issue 11, defect 16): no run of digits that cuts
+ * the unit, no 0.00 for a value that is not 0, never -0. */
+static void extremes_shown(void **state)
+{
+    (void)state;
+    static const struct {
+        enum control ctl;
+        const char *text, *shown;
+    } cases[] = {
+        {CTL_SPRING, "1e308", "1e+308 N/m"},
+        {CTL_MASS, "1e-320", "1e-320 kg"},
+        {CTL_DAMPING, "1e-300", "1e-300 N·s/m"},
+        {CTL_AMPLITUDE, "-0", "0.00 m"},
+        {CTL_MASS, "0.125", "0.125 kg"},
+        {CTL_SPRING, "12.5", "12.5 N/m"},
+        {CTL_AMPLITUDE, "0.3", "0.30 m"},
+    };
+    char buf[64];
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        app_set_text(&app, cases[i].ctl, cases[i].text);
+        app_control_value(&app, cases[i].ctl, buf, sizeof buf);
+        if (strcmp(buf, cases[i].shown) != 0)
+            fail_msg("%s typed '%s' shows '%s', expected '%s'", app_control_label(cases[i].ctl),
+                     cases[i].text, buf, cases[i].shown);
+    }
+}
+
 /* ---- editing, modes, files, history ---- */
 
 static void element_editing(void **state)
@@ -546,6 +573,7 @@ int main(void)
         T(back_across_dt),
         T(integrator_and_limits),
         T(cap_is_reported),
+        T(extremes_shown),
     };
 #undef T
     return cmocka_run_group_tests_name("app", tests, NULL, NULL);

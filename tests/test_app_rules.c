@@ -417,6 +417,9 @@ static void preset_out_of_range(void **state)
     snprintf(path, sizeof path, "%s/p.ini", dir);
     static const char *const bodies[] = {
         "[system]\nmasses = 2\ndt = 0.0005\n",
+        "[system]\nmasses = 2\ndt = 0.000999\n",
+        "[system]\ndt = 1e-320\n",
+        "[system]\nmasses = 11\ndt = 0.01\n",
         "[system]\nmasses = 12\n",
         "[system]\nmasses = 2\nmass = 1,2,3\n",
     };
@@ -432,6 +435,14 @@ static void preset_out_of_range(void **state)
         assert_true(app.message_is_error);
         assert_non_null(strstr(app.message, path));
     }
+    /* Typed, the same limits hold (issue 11, defect 8). */
+    struct snapshot before;
+    take(&before);
+    assert_int_equal(app_set_text(&app, CTL_DT, "0.0009"), 0);
+    assert_non_null(strstr(app.message, "0.001 <= dt"));
+    assert_int_equal(app_set_text(&app, CTL_MASSES, "11"), 0);
+    assert_non_null(strstr(app.message, "N <= 10"));
+    unchanged(&before);
     unlink(path);
     rmdir(dir);
 }

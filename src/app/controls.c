@@ -63,6 +63,22 @@ double app_freq_fraction(double f)
     return log(f / APP_FMIN) / log(APP_FMAX / APP_FMIN);
 }
 
+/* v with the control's decimals when they show it to 1 part in 1000 and it is under a
+ * million, else in as few significant digits (up to 6) as show it as closely: 1e+308,
+ * 1e-320, 0.125, never a long run of digits or a misleading 0.00; never -0. */
+static void format_value(double v, int decimals, char *buf, size_t len)
+{
+    v += 0.0; /* -0 becomes 0 */
+    snprintf(buf, len, "%.*f", decimals, v);
+    if (v == 0.0 || (fabs(v) < 1e6 && fabs(strtod(buf, NULL) - v) <= 1e-3 * fabs(v)))
+        return;
+    for (int digits = 1; digits <= 6; digits++) {
+        snprintf(buf, len, "%.*g", digits, v);
+        if (fabs(strtod(buf, NULL) - v) <= 1e-3 * fabs(v))
+            return;
+    }
+}
+
 /* The common value of a per-element list, or NAN when they differ. */
 static double common(const double *v, int n)
 {
@@ -392,7 +408,9 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
     int decimals = ranges[ctl].decimals;
     if (ctl == CTL_DT && app_time_decimals(v) > decimals)
         decimals = app_time_decimals(v); /* 0.0075 s, not 0.007 */
-    snprintf(buf, len, "%.*f %s", decimals, v, ranges[ctl].unit);
+    char number[32];
+    format_value(v, decimals, number, sizeof number);
+    snprintf(buf, len, "%s %s", number, ranges[ctl].unit);
     if (ctl == CTL_FREQUENCY && app->modes_ok) {
         /* On a natural frequency (within 0.5 %): say which. */
         int j = modes_nearest(app->modes, m->n, v);
