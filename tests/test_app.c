@@ -275,6 +275,12 @@ static void extremes_shown(void **state)
             fail_msg("%s typed '%s' shows '%s', expected '%s'", app_control_label(cases[i].ctl),
                      cases[i].text, buf, cases[i].shown);
     }
+    /* A typed control byte is said escaped, never sent to the terminal (defect 10). */
+    app_set_text(&app, CTL_SPEED, "\033]0;X\a");
+    assert_non_null(strstr(app.message, "'\\x1b]0;X\\a'"));
+    app_set_text(&app, CTL_DT, "1\n2");
+    assert_non_null(strstr(app.message, "'1\\n2'"));
+    assert_null(strchr(app.message, '\n'));
 }
 
 /* ---- editing, modes, files, history ---- */

@@ -28,10 +28,13 @@ static const double windows[] = {1.0, 2.0, 5.0, 10.0, 20.0, 30.0, 60.0};
 
 unsigned app_say(struct app *app, bool error, const char *fmt, ...)
 {
+    char line[sizeof app->message];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(app->message, sizeof app->message, fmt, ap);
+    vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
+    /* Whatever went into it, the status line gets no control byte. */
+    config_escape(line, strlen(line), sizeof line, app->message, sizeof app->message);
     app->message_is_error = error;
     return APP_CHANGED_MESSAGE;
 }
@@ -431,7 +434,7 @@ unsigned app_step(struct app *app)
         history_pop(app->hist, app->sim);
         follow_restored(app);
         app->running = false;
-        if (unstable)
+        if (unstable && isfinite(app->stable_dt))
             app_say(app, true, "unstable with %s: dt < %.3g s is stable; paused at t = %.2f s",
                     integrator_name(app->cfg.integrator), limits_round_down(app->stable_dt),
                     sim_time(app->sim));

@@ -273,7 +273,9 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
             app->speed = v;
             return say_set(app, ctl, what);
         }
-        app_say(app, true, "speed: '%.40s' is not a number from 0.1 to 10", text);
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(text, strlen(text), q, sizeof q);
+        app_say(app, true, "speed: %s is not a number from 0.1 to 10", q);
         return 0;
     }
     if (ctl == CTL_BANDWIDTH) {
@@ -283,7 +285,9 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
             app->cfg.low_bandwidth = low;
             return say_set(app, ctl, what);
         }
-        app_say(app, true, "bandwidth: '%.40s' is not low or normal", text);
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(text, strlen(text), q, sizeof q);
+        app_say(app, true, "bandwidth: %s is not low or normal", q);
         return 0;
     }
     /* Checked on a copy, so a bad value changes nothing. */
@@ -324,8 +328,11 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
     config_init(&next);
     if (config_set(&next, key, text, err, sizeof err) != 0 ||
         (next.mass.count + next.spring.count + next.damping.count) != 1) {
-        if (next.mass.count + next.spring.count + next.damping.count > 1)
-            snprintf(err, sizeof err, "'%.40s' is more than one value", text);
+        if (next.mass.count + next.spring.count + next.damping.count > 1) {
+            char q[4 * CONFIG_QUOTE_MAX + 48];
+            config_quote(text, strlen(text), q, sizeof q);
+            snprintf(err, sizeof err, "%s is more than one value", q);
+        }
         app_say(app, true, "%s %d: %s", noun, number, err);
         return 0;
     }
