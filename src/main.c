@@ -314,21 +314,14 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
     return status;
 }
 
-/* The interactive program's narrower ranges (SPEC: 1 to 10 masses, dt from 0.001 s):
- * EXIT_SUCCESS, or EXIT_USAGE after one line naming the value. */
+/* The interactive program's narrower ranges (from the settings table): EXIT_SUCCESS, or
+ * EXIT_USAGE after one line naming the value. */
 static int interactive_limits(const struct config *c)
 {
-    char value[32], why[160];
-    int key = c->dt < 0.001 ? CFG_DT : c->masses > 10 ? CFG_MASSES : -1;
+    char why[200];
+    int key = config_check_interactive(c, why, sizeof why);
     if (key < 0)
         return EXIT_SUCCESS;
-    if (key == CFG_DT)
-        snprintf(value, sizeof value, "%g", c->dt);
-    else
-        snprintf(value, sizeof value, "%d", c->masses);
-    snprintf(why, sizeof why, "'%s' is out of range for the interactive program (expected %s)",
-             value, key == CFG_DT ? "0.001 <= dt <= 0.05"
-                                  : "1 <= N <= 10; --headless takes up to 1000");
     options_report_key(c, key, why);
     return EXIT_USAGE;
 }
@@ -362,7 +355,7 @@ static int list_presets(const char *exe_dir)
     if (found == 0)
         options_say("no presets found (searched the user's directory, $SPRINGSIM_PRESETS, %s "
             "and %s/presets)", preset_installed_dir, exe_dir);
-    return options_finish_stdout();
+    return options_finish_stdout(true);
 }
 
 int main(int argc, char **argv)
@@ -378,6 +371,8 @@ int main(int argc, char **argv)
     find_exe_dir(argv[0], exe_dir, sizeof exe_dir);
     config_init(&c);
     int status = options_parse(argc, argv, &c, &cli, exe_dir);
+    if (status == EXIT_SUCCESS)
+        return options_finish_stdout(true); /* after --help, --version, --keys */
     if (status >= 0)
         return status;
     if (cli.mode == MODE_LIST)

@@ -18,25 +18,6 @@
 #define VERSION "0.1.0"
 #endif
 
-/* Options that choose what to do rather than set something; after the config keys. */
-enum { OPT_HEADLESS = CFG_KEY_COUNT, OPT_MODES, OPT_SWEEP, OPT_LIST, OPT_KEYS, OPT_HELP,
-       OPT_VERSION, OPT_COUNT };
-
-static const struct {
-    const char *name, *arg, *help;
-} mode_options[] = {
-    [OPT_HEADLESS - CFG_KEY_COUNT] = {"headless", NULL, "run without a terminal; CSV to "
-                                      "standard output"},
-    [OPT_MODES - CFG_KEY_COUNT] = {"modes", NULL, "natural frequencies and mode shapes, CSV"},
-    [OPT_SWEEP - CFG_KEY_COUNT] = {"sweep", "FMIN:FMAX:COUNT", "steady-state amplitude "
-                                   "against motor frequency, CSV"},
-    [OPT_LIST - CFG_KEY_COUNT] = {"list-presets", NULL, "one line per preset: its name, "
-                                  "then its description"},
-    [OPT_KEYS - CFG_KEY_COUNT] = {"keys", NULL, "list the interactive program's keys"},
-    [OPT_HELP - CFG_KEY_COUNT] = {"help", NULL, "show this help and exit"},
-    [OPT_VERSION - CFG_KEY_COUNT] = {"version", NULL, "show the version and exit"},
-};
-
 static const char *progname = "springsim";
 
 static FILE *errors; /* where error lines go; NULL: standard error */
@@ -59,13 +40,13 @@ void options_say(const char *fmt, ...)
     fprintf(out, "%s: %s\n", progname, safe);
 }
 
-int options_finish_stdout(void)
+int options_finish_stdout(bool close)
 {
     /* The error flag may have been set by an earlier write whose errno is gone. */
     errno = 0;
     int bad = fflush(stdout) != 0 || ferror(stdout);
     int e = errno;
-    if (fclose(stdout) != 0 && !bad) {
+    if (close && fclose(stdout) != 0 && !bad) {
         bad = 1;
         e = errno;
     }
@@ -73,6 +54,29 @@ int options_finish_stdout(void)
         return EXIT_SUCCESS;
     options_say("standard output: %s", strerror(e ? e : EIO));
     return EXIT_FAILURE;
+}
+
+/* Writes text from column indent, words wrapped before column width, later lines indented. */
+static void wrap(FILE *out, const char *text, int indent, int width)
+{
+    int col = indent;
+    const char *p = text;
+    while (*p) {
+        size_t w = strcspn(p, " ");
+        if (col > indent && col + 1 + (int)w > width) {
+            fprintf(out, "\n%*s", indent, "");
+            col = indent;
+        } else if (col > indent) {
+            fputc(' ', out);
+            col++;
+        }
+        fwrite(p, 1, w, out);
+        col += (int)w;
+        p += w;
+        while (*p == ' ')
+            p++;
+    }
+    fputc('\n', out);
 }
 
 static void usage(FILE *out)
@@ -90,24 +94,19 @@ static void usage(FILE *out)
             "A chain of masses joined by springs, with damping, driven at its right end by "
             "a\nlinear motor. A preset is applied first; every other option overrides it.\n\n"
             "Options:\n");
-    for (int k = 0; k < OPT_COUNT; k++) {
-        const char *name, *arg, *help;
-        char shortopt = 0, left[64];
-        if (k < CFG_KEY_COUNT) {
-            name = config_options[k].name, arg = config_options[k].arg;
-            help = config_options[k].help, shortopt = config_options[k].short_name;
-        } else {
-            name = mode_options[k - CFG_KEY_COUNT].name;
-            arg = mode_options[k - CFG_KEY_COUNT].arg;
-            help = mode_options[k - CFG_KEY_COUNT].help;
-        }
-        snprintf(left, sizeof left, "%c%c%c --%s%s%s", shortopt ? '-' : ' ',
-                 shortopt ? shortopt : ' ', shortopt ? ',' : ' ', name, arg ? " " : "",
-                 arg ? arg : "");
+    for (int k = 0; k < CFG_KEY_COUNT; k++) {
+        const struct config_option *o = &config_options[k];
+        char arg[128], help[256], left[160];
+        config_arg(k, arg, sizeof arg);
+        config_help(k, help, sizeof help);
+        snprintf(left, sizeof left, "%c%c%c --%s%s%s", o->short_name ? '-' : ' ',
+                 o->short_name ? o->short_name : ' ', o->short_name ? ',' : ' ', o->name,
+                 arg[0] ? " " : "", arg);
         if (strlen(left) > 27)
-            fprintf(out, "  %s\n  %27s  %s\n", left, "", help);
+            fprintf(out, "  %s\n  %27s  ", left, "");
         else
-            fprintf(out, "  %-27s  %s\n", left, help);
+            fprintf(out, "  %-27s  ", left);
+        wrap(out, help, 31, 79);
     }
     fprintf(out,
             "\nLists are comma-separated (--mass 1,2,1.5). Negative values work in both "
@@ -131,35 +130,27 @@ void options_report_key(const struct config *c, int key, const char *why)
 
 static void build_longopts(struct option *lo, char *shortopts)
 {
-    int k;
     char *s = shortopts;
     *s++ = ':'; /* report missing arguments as ':' */
-    for (k = 0; k < CFG_KEY_COUNT; k++) {
-        lo[k] = (struct option){config_options[k].name,
-                                config_options[k].arg ? required_argument : no_argument, NULL,
-                                256 + k};
-        if (config_options[k].short_name) {
-            *s++ = config_options[k].short_name;
-            *s++ = ':';
+    for (int k = 0; k < CFG_KEY_COUNT; k++) {
+        const struct config_option *o = &config_options[k];
+        bool arg = o->kind != CONFIG_FLAG && (o->kind != CONFIG_MODE || o->arg);
+        lo[k] = (struct option){o->name, arg ? required_argument : no_argument, NULL, 256 + k};
+        if (o->short_name) {
+            *s++ = o->short_name;
+            if (arg)
+                *s++ = ':';
         }
     }
-    for (; k < OPT_COUNT; k++) {
-        const char *arg = mode_options[k - CFG_KEY_COUNT].arg;
-        lo[k] = (struct option){mode_options[k - CFG_KEY_COUNT].name,
-                                arg ? required_argument : no_argument, NULL, 256 + k};
-    }
-    lo[k] = (struct option){0, 0, 0, 0};
-    *s++ = 'h';
+    lo[CFG_KEY_COUNT] = (struct option){0, 0, 0, 0};
     *s = '\0';
 }
 
-/* Maps getopt's return value to a key or option index, or -1. */
+/* Maps getopt's return value to a key, or -1. */
 static int option_index(int ch)
 {
-    if (ch >= 256 && ch < 256 + OPT_COUNT)
+    if (ch >= 256 && ch < 256 + CFG_KEY_COUNT)
         return ch - 256;
-    if (ch == 'h')
-        return OPT_HELP;
     for (int k = 0; k < CFG_KEY_COUNT; k++)
         if (config_options[k].short_name && config_options[k].short_name == ch)
             return k;
@@ -178,7 +169,7 @@ static const char *written(char **argv, int index, char *buf, size_t len)
 int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                   const char *exe_dir)
 {
-    struct option lo[OPT_COUNT + 1];
+    struct option lo[CFG_KEY_COUNT + 1];
     char shortopts[64], err[512], q[4 * CONFIG_QUOTE_MAX + 48];
     const char *preset = NULL;
     int ch;
@@ -189,17 +180,17 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     optind = 0;
     while ((ch = getopt_long(argc, argv, shortopts, lo, NULL)) != -1) {
         int k = option_index(ch);
-        if (k == OPT_HELP) {
+        if (k == CFG_HELP) {
             usage(stdout);
-            return options_finish_stdout();
+            return options_finish_stdout(false);
         }
-        if (k == OPT_VERSION) {
+        if (k == CFG_VERSION) {
             printf("springsim %s\n", VERSION);
-            return options_finish_stdout();
+            return options_finish_stdout(false);
         }
-        if (k == OPT_KEYS) {
+        if (k == CFG_KEYS) {
             input_print_keys(stdout);
-            return options_finish_stdout();
+            return options_finish_stdout(false);
         }
         if (k == CFG_PRESET) {
             /* The last one counts, but every one must exist. */
@@ -242,13 +233,11 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         }
         if (ch == ':') {
             int k = option_index(optopt);
-            if (k >= 0 && k < CFG_KEY_COUNT)
-                options_say("--%s: needs a value (%s)", config_options[k].name,
-                    config_options[k].arg);
-            else if (k >= CFG_KEY_COUNT)
-                options_say("--%s: needs a value (%s)", mode_options[k - CFG_KEY_COUNT].name,
-                    mode_options[k - CFG_KEY_COUNT].arg);
-            else
+            char arg[128];
+            if (k >= 0) {
+                config_arg(k, arg, sizeof arg);
+                options_say("--%s: needs a value (%s)", config_options[k].name, arg);
+            } else
                 options_say("%s needs a value (see springsim --help)",
                             written(argv, before, q, sizeof q));
             return EXIT_USAGE;
@@ -256,7 +245,7 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         int k = option_index(ch);
         if (k < 0)
             continue;
-        if (k < CFG_KEY_COUNT) {
+        if (config_options[k].kind != CONFIG_MODE) {
             if (k == CFG_PRESET)
                 continue;
             if (config_set(c, k, optarg, err, sizeof err) != 0) {
@@ -268,17 +257,17 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         }
         enum mode m = MODE_INTERACTIVE;
         switch (k) {
-        case OPT_HEADLESS:
+        case CFG_HEADLESS:
             m = MODE_HEADLESS;
             break;
-        case OPT_MODES:
+        case CFG_MODES:
             m = MODE_MODES;
             break;
-        case OPT_SWEEP:
+        case CFG_SWEEP:
             m = MODE_SWEEP;
             cli->sweep = optarg;
             break;
-        case OPT_LIST:
+        case CFG_LIST_PRESETS:
             m = MODE_LIST;
             break;
         default:

@@ -3,6 +3,7 @@
 #define SPRINGSIM_OPTIONS_H
 
 #include <limits.h>
+#include <stdbool.h>
 #include <stdio.h>
 
 #include "core/config.h"
@@ -30,9 +31,10 @@ void options_set_errors(FILE *f);
 /* One line on standard error, prefixed "springsim: ". */
 void options_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
-/* Flushes and closes standard output after help-type output: EXIT_SUCCESS, or
- * EXIT_FAILURE after "springsim: standard output: REASON". */
-int options_finish_stdout(void);
+/* Flushes standard output after help-type output, and closes it if close (the program
+ * is about to exit): EXIT_SUCCESS, or EXIT_FAILURE after "springsim: standard output:
+ * REASON". options_parse flushes only, so the fuzz target can call it again. */
+int options_finish_stdout(bool close);
 
 /* Reports a bad value of key, naming where it came from: "--dt: why" on the command
  * line, "FILE:LINE: dt: why" from a preset. */

@@ -271,14 +271,8 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
     bool drive_was_rough = app->model && limits_rough_drive(&app->limits);
     *changed = 0;
     /* The interactive program's narrower ranges, whatever the route. */
-    if (next->masses < 1 || next->masses > APP_MAX_MASSES) {
-        app_say(app, true, "masses: '%d' is out of range (expected 1 <= N <= %d here)",
-                next->masses, APP_MAX_MASSES);
-        return -1;
-    }
-    if (!(next->dt >= APP_DT_MIN)) {
-        app_say(app, true, "dt: '%g' is out of range (expected %g <= dt <= 0.05 here)", next->dt,
-                APP_DT_MIN);
+    if ((bad = config_check_interactive(next, err, sizeof err)) >= 0) {
+        app_say(app, true, "%s: %s", config_options[bad].name, err);
         return -1;
     }
     struct model *m = config_model(next, &bad, err, sizeof err);

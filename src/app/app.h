@@ -23,8 +23,7 @@
 #include "../core/sweep.h"
 #include "trail.h"
 
-#define APP_MAX_MASSES 10    /* the interactive program's limit */
-#define APP_DT_MIN 0.001     /* its smallest step (s) */
+#define APP_MAX_MASSES CONFIG_INTERACTIVE_MAX_MASSES /* the interactive program's N */
 #define APP_FMIN 0.1         /* the frequency control's range (Hz) */
 #define APP_FMAX 5.0
 #define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */

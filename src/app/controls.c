@@ -31,19 +31,32 @@ static const char *const whys[CTL_COUNT] = {
 static const double speeds[] = {0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 4.0, 5.0, 10.0};
 #define NSPEEDS (int)(sizeof speeds / sizeof *speeds)
 
-/* Numeric controls: range of the arrows, fine and coarse steps, unit, decimals shown. */
+/* Numeric controls: the setting each shows (its unit and decimals from the settings
+ * table), and the range and fine and coarse steps of the arrows. */
 static const struct {
+    enum config_key key;
     double lo, hi, fine, coarse;
-    const char *unit;
-    int decimals;
 } ranges[CTL_COUNT] = {
-    [CTL_DT] = {APP_DT_MIN, 0.05, 0.001, 0.005, "s", 3},
-    [CTL_DAMPING] = {0.0, 2.0, 0.01, 0.1, "N·s/m", 2},
-    [CTL_SPRING] = {1.0, 50.0, 0.5, 5.0, "N/m", 1},
-    [CTL_MASS] = {0.1, 10.0, 0.1, 1.0, "kg", 2},
-    [CTL_AMPLITUDE] = {0.0, 3.0, 0.05, 0.5, "m", 2},
-    [CTL_FREQUENCY] = {APP_FMIN, APP_FMAX, 0.01, 0.1, "Hz", 3},
+    [CTL_DT] = {CFG_DT, 0.0, 0.05, 0.001, 0.005}, /* lo: the interactive limit */
+    [CTL_DAMPING] = {CFG_DAMPING, 0.0, 2.0, 0.01, 0.1},
+    [CTL_SPRING] = {CFG_SPRING, 1.0, 50.0, 0.5, 5.0},
+    [CTL_MASS] = {CFG_MASS, 0.1, 10.0, 0.1, 1.0},
+    [CTL_AMPLITUDE] = {CFG_AMPLITUDE, 0.0, 3.0, 0.05, 0.5},
+    [CTL_FREQUENCY] = {CFG_FREQUENCY, APP_FMIN, APP_FMAX, 0.01, 0.1},
 };
+
+/* The arrows' range of a numeric control, inside its setting's (interactive) range. */
+static double arrow_lo(enum control ctl)
+{
+    const struct config_option *o = &config_options[ranges[ctl].key];
+    return fmax(ranges[ctl].lo, fmax(o->lo, o->ilo));
+}
+
+static double arrow_hi(enum control ctl)
+{
+    const struct config_option *o = &config_options[ranges[ctl].key];
+    return fmin(ranges[ctl].hi, o->ihi > 0.0 ? o->ihi : o->hi);
+}
 
 const char *app_control_label(enum control ctl)
 {
@@ -184,7 +197,7 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
     switch (ctl) {
     case CTL_MASSES: {
         int n = app->masses_pending + steps * (coarse ? 5 : 1);
-        n = n < 1 ? 1 : n > APP_MAX_MASSES ? APP_MAX_MASSES : n;
+        n = n < 1 ? 1 : n > APP_MAX_MASSES ? APP_MAX_MASSES : n; /* the table's ihi */
         if (n == app->masses_pending)
             return 0;
         app->masses_pending = n;
@@ -237,7 +250,7 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
                                                                    : app->model->c[0];
     /* Snap onto the step grid, then move. */
     v = round(v / step) * step + steps * step;
-    v = fmin(fmax(v, ranges[ctl].lo), ranges[ctl].hi);
+    v = fmin(fmax(v, arrow_lo(ctl)), arrow_hi(ctl));
     set_numeric(&next, ctl, v);
     return change_control(app, &next, ctl);
 }
@@ -353,7 +366,7 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
     if (changed & APP_CHANGED_MESSAGE)
         return changed;
     const char *symbol = what == 'm' ? "m" : what == 'c' ? "c" : "k";
-    const char *unit = what == 'm' ? "kg" : what == 'c' ? "N·s/m" : "N/m";
+    const char *unit = config_options[key].unit;
     return changed | app_say(app, false, "%s %d: %s = %g %s", noun, number, symbol, v, unit);
 }
 
@@ -409,15 +422,15 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
     }
     double v = numeric_value(app, ctl);
     if (isnan(v)) {
-        snprintf(buf, len, "mixed %s", ranges[ctl].unit);
+        snprintf(buf, len, "mixed %s", config_options[ranges[ctl].key].unit);
         return;
     }
-    int decimals = ranges[ctl].decimals;
+    int decimals = config_options[ranges[ctl].key].digits;
     if (ctl == CTL_DT && app_time_decimals(v) > decimals)
         decimals = app_time_decimals(v); /* 0.0075 s, not 0.007 */
     char number[32];
     format_value(v, decimals, number, sizeof number);
-    snprintf(buf, len, "%s %s", number, ranges[ctl].unit);
+    snprintf(buf, len, "%s %s", number, config_options[ranges[ctl].key].unit);
     if (ctl == CTL_FREQUENCY && app->modes_ok) {
         /* On a natural frequency (within 0.5 %): say which. */
         int j = modes_nearest(app->modes, m->n, v);

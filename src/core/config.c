@@ -1,90 +1,226 @@
-/* config.c: the option table shared by the command line and presets, and the checks
- * every value goes through, whichever way it came in. */
+/* config.c: the one settings table shared by the command line, presets and the
+ * interactive controls, and what is made from it: --help's lines, every error's
+ * "expected ...", the checks every value goes through whichever way it came in, the
+ * defaults and the interactive program's limits. */
 #include "config.h"
 
 #include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+static const char *integrator_choice(int i) { return integrator_name((enum integrator)i); }
+static const char *boundary_choice(int i) { return model_boundary_name((enum boundary)i); }
+static const char *wave_choice(int i) { return motor_wave_name((enum wave)i); }
+
+#define AT(field) offsetof(struct config, field)
+
 const struct config_option config_options[CFG_KEY_COUNT] = {
-    [CFG_PRESET] = {"preset", 'p', NULL, "NAME|FILE",
-                    "load a preset by name or file path (applied before other options)"},
-    [CFG_MASSES] = {"masses", 'n', "system", "N", "number of masses (1 to 1000; default 2)"},
-    [CFG_MASS] = {"mass", 0, "system", "LIST", "kg: one value for all, or N values (default 1)"},
-    [CFG_SPRING] = {"spring", 0, "system", "LIST", "N/m: one value, or N+1 values (default 10)"},
-    [CFG_DAMPING] = {"damping", 0, "system", "LIST",
-                     "N s/m: one value, or N values (default 0.1)"},
-    [CFG_DT] = {"dt", 0, "system", "SECONDS", "time step, 0 < dt <= 0.05 (default 0.01)"},
-    [CFG_INTEGRATOR] = {"integrator", 0, "system", "euler|semi-implicit|verlet|rk4|exact",
-                        "how each step is taken (default rk4)"},
-    [CFG_BOUNDARY] = {"boundary", 0, "motor", "motor|wall|free", "right end (default motor)"},
-    [CFG_WAVE] = {"wave", 0, "motor", "sine|square|triangle|sawtooth",
-                  "motor waveform (default sine)"},
-    [CFG_AMPLITUDE] = {"amplitude", 0, "motor", "METRES", "motor amplitude >= 0 (default 1)"},
-    [CFG_FREQUENCY] = {"frequency", 0, "motor", "HZ", "motor frequency, 0 < f <= 1e6 (default 1)"},
-    [CFG_X0] = {"x0", 0, "initial", "LIST", "initial displacements (m): one value or N values"},
-    [CFG_V0] = {"v0", 0, "initial", "LIST", "initial velocities (m/s): one value or N values"},
-    [CFG_RANDOM] = {"random", 0, "initial", NULL,
-                    "random initial positions (minimum separation kept)"},
-    [CFG_SEED] = {"seed", 0, "initial", "N", "seed for --random (same seed, same positions)"},
-    [CFG_NO_COLLISIONS] = {"no-collisions", 0, "system", NULL,
-                           "turn collisions off (the velocity cap stays)"},
-    [CFG_DURATION] = {"duration", 0, "run", "SECONDS", "headless run length >= 0 (default 10)"},
-    [CFG_SAMPLE] = {"sample", 0, "run", "SECONDS",
-                    "headless output interval, rounded to whole steps (default every step)"},
-    [CFG_OUTPUT] = {"output", 'o', NULL, "FILE",
-                    "headless/modes/sweep output to FILE instead of standard output"},
-    [CFG_ENERGY] = {"energy", 0, "run", NULL,
-                    "headless CSV gains kinetic,potential,dissipated,motor_work,contact"},
-    [CFG_FPS] = {"fps", 0, "run", "N", "interactive frames per second, 1 to 60 (default 30)"},
-    [CFG_LOW_BANDWIDTH] = {"low-bandwidth", 0, "run", NULL,
-                           "interactive: fewer frames and plot refreshes (slow links)"},
+    [CFG_PRESET] = {.name = "preset", .short_name = 'p', .kind = CONFIG_TEXT,
+                    .arg = "NAME|FILE", .expect = "a preset name or file",
+                    .help = "load a preset by name or file path (applied before other options)"},
+    [CFG_MASSES] = {.name = "masses", .short_name = 'n', .section = "system",
+                    .kind = CONFIG_WHOLE, .arg = "N", .help = "number of masses",
+                    .symbol = "N", .lo = 1, .hi = MODEL_MAX_MASSES,
+                    .ihi = CONFIG_INTERACTIVE_MAX_MASSES, .def = 2, .offset = AT(masses)},
+    [CFG_MASS] = {.name = "mass", .section = "system", .kind = CONFIG_LIST, .arg = "LIST",
+                  .help = "masses", .symbol = "masses", .lo = 0, .lo_open = true,
+                  .def = 1, .unit = "kg", .digits = 2, .offset = AT(mass)},
+    [CFG_SPRING] = {.name = "spring", .section = "system", .kind = CONFIG_LIST, .arg = "LIST",
+                    .help = "springs, the walls' included", .symbol = "springs", .lo = 0,
+                    .lo_open = true, .def = 10, .per = CONFIG_PER_SPRING, .unit = "N/m",
+                    .digits = 1, .offset = AT(spring)},
+    [CFG_DAMPING] = {.name = "damping", .section = "system", .kind = CONFIG_LIST,
+                     .arg = "LIST", .help = "damping of each mass",
+                     .symbol = "damping", .lo = 0, .def = 0.1, .unit = "N·s/m", .digits = 2,
+                     .offset = AT(damping)},
+    [CFG_DT] = {.name = "dt", .section = "system", .kind = CONFIG_NUMBER, .arg = "SECONDS",
+                .help = "time step", .symbol = "dt", .lo = 0, .lo_open = true, .hi = 0.05,
+                .ilo = 0.001, .def = 0.01, .unit = "s", .digits = 3, .offset = AT(dt)},
+    [CFG_INTEGRATOR] = {.name = "integrator", .section = "system", .kind = CONFIG_CHOICE,
+                        .help = "how each step is taken", .def = INTEGRATOR_RK4,
+                        .choice_name = integrator_choice, .choices = INTEGRATOR_COUNT,
+                        .symbol = "an integrator", .offset = AT(integrator)},
+    [CFG_BOUNDARY] = {.name = "boundary", .section = "motor", .kind = CONFIG_CHOICE,
+                      .help = "right end", .def = BOUNDARY_MOTOR,
+                      .choice_name = boundary_choice, .choices = BOUNDARY_COUNT,
+                      .symbol = "a right end", .offset = AT(boundary)},
+    [CFG_WAVE] = {.name = "wave", .section = "motor", .kind = CONFIG_CHOICE,
+                  .help = "motor waveform", .def = WAVE_SINE, .choice_name = wave_choice,
+                  .choices = WAVE_COUNT, .symbol = "a waveform", .offset = AT(wave)},
+    [CFG_AMPLITUDE] = {.name = "amplitude", .section = "motor", .kind = CONFIG_NUMBER,
+                       .arg = "METRES", .help = "motor amplitude", .symbol = "amplitude",
+                       .lo = 0, .hi = INFINITY, .def = 1, .unit = "m", .digits = 2,
+                       .offset = AT(amplitude)},
+    /* A bound well past any mechanical drive: a square wave at f makes 2 f dt sub-steps
+     * a step, so an unbounded f could make one step last forever. */
+    [CFG_FREQUENCY] = {.name = "frequency", .section = "motor", .kind = CONFIG_NUMBER,
+                       .arg = "HZ", .help = "motor frequency", .symbol = "frequency", .lo = 0,
+                       .lo_open = true, .hi = 1e6, .def = 1, .unit = "Hz", .digits = 3,
+                       .offset = AT(frequency)},
+    [CFG_X0] = {.name = "x0", .section = "initial", .kind = CONFIG_LIST, .arg = "LIST",
+                .help = "initial displacements", .symbol = "displacements", .lo = -INFINITY,
+                .def = 0, .unit = "m", .offset = AT(x0)},
+    [CFG_V0] = {.name = "v0", .section = "initial", .kind = CONFIG_LIST, .arg = "LIST",
+                .help = "initial velocities", .symbol = "velocities", .lo = -INFINITY,
+                .def = 0, .unit = "m/s", .offset = AT(v0)},
+    [CFG_RANDOM] = {.name = "random", .section = "initial", .kind = CONFIG_FLAG,
+                    .help = "random initial positions (minimum separation kept)",
+                    .offset = AT(random)},
+    [CFG_SEED] = {.name = "seed", .section = "initial", .kind = CONFIG_WHOLE, .arg = "N",
+                  .help = "seed for --random", .symbol = "seed",
+                  .lo = 0, .hi = 0x1p64, .hi_open = true, .def = NAN,
+                  .offset = AT(seed)},
+    [CFG_NO_COLLISIONS] = {.name = "no-collisions", .section = "system", .kind = CONFIG_FLAG,
+                           .help = "turn collisions off (the velocity cap stays)",
+                           .offset = AT(no_collisions)},
+    [CFG_DURATION] = {.name = "duration", .section = "run", .kind = CONFIG_NUMBER,
+                      .arg = "SECONDS", .help = "headless run length", .symbol = "duration",
+                      .lo = 0, .hi = INFINITY, .def = 10, .unit = "s",
+                      .offset = AT(duration)},
+    [CFG_SAMPLE] = {.name = "sample", .section = "run", .kind = CONFIG_NUMBER,
+                    .arg = "SECONDS", .help = "headless output interval, rounded to whole steps",
+                    .symbol = "sample", .lo = 0, .lo_open = true, .hi = INFINITY, .def = 0,
+                    .def_text = "every step", .unit = "s", .offset = AT(sample)},
+    [CFG_OUTPUT] = {.name = "output", .short_name = 'o', .kind = CONFIG_TEXT, .arg = "FILE",
+                    .expect = "a file name", .offset = AT(output),
+                    .help = "headless/modes/sweep output to FILE instead of standard output"},
+    [CFG_ENERGY] = {.name = "energy", .section = "run", .kind = CONFIG_FLAG,
+                    .help = "headless CSV gains kinetic,potential,dissipated,motor_work,contact",
+                    .offset = AT(energy)},
+    [CFG_FPS] = {.name = "fps", .section = "run", .kind = CONFIG_WHOLE, .arg = "N",
+                 .help = "interactive frames per second", .symbol = "fps", .lo = 1, .hi = 60,
+                 .def = 30, .offset = AT(fps)},
+    [CFG_LOW_BANDWIDTH] = {.name = "low-bandwidth", .section = "run", .kind = CONFIG_FLAG,
+                           .help = "interactive: fewer frames and plot refreshes (slow links)",
+                           .offset = AT(low_bandwidth)},
+    [CFG_HEADLESS] = {.name = "headless", .kind = CONFIG_MODE,
+                      .help = "run without a terminal; CSV to standard output"},
+    [CFG_MODES] = {.name = "modes", .kind = CONFIG_MODE,
+                   .help = "natural frequencies and mode shapes, CSV"},
+    [CFG_SWEEP] = {.name = "sweep", .kind = CONFIG_MODE, .arg = "FMIN:FMAX:COUNT",
+                   .help = "steady-state amplitude against motor frequency, CSV"},
+    [CFG_LIST_PRESETS] = {.name = "list-presets", .kind = CONFIG_MODE,
+                          .help = "one line per preset: its name, then its description"},
+    [CFG_KEYS] = {.name = "keys", .kind = CONFIG_MODE,
+                  .help = "list the interactive program's keys"},
+    [CFG_HELP] = {.name = "help", .short_name = 'h', .kind = CONFIG_MODE,
+                  .help = "show this help and exit"},
+    [CFG_VERSION] = {.name = "version", .kind = CONFIG_MODE, .help = "show the version and exit"},
 };
 
-/* What each key allows, quoted in every error about it. */
-static const char *const expected[CFG_KEY_COUNT] = {
-    [CFG_PRESET] = "a preset name or file",
-    [CFG_MASSES] = "1 <= N <= 1000",
-    [CFG_MASS] = "masses > 0 kg: one value, or one per mass",
-    [CFG_SPRING] = "springs > 0 N/m: one value, or N+1",
-    [CFG_DAMPING] = "damping >= 0 N s/m: one value, or one per mass",
-    [CFG_DT] = "0 < dt <= 0.05",
-    [CFG_INTEGRATOR] = "euler, semi-implicit, verlet, rk4 or exact",
-    [CFG_BOUNDARY] = "motor, wall or free",
-    [CFG_WAVE] = "sine, square, triangle or sawtooth",
-    [CFG_AMPLITUDE] = "amplitude >= 0 m",
-    [CFG_FREQUENCY] = "0 < frequency <= 1e6 Hz",
-    [CFG_X0] = "displacements in m: one value, or one per mass",
-    [CFG_V0] = "velocities in m/s: one value, or one per mass",
-    [CFG_RANDOM] = "true or false",
-    [CFG_SEED] = "a whole number 0 <= seed < 2^64",
-    [CFG_NO_COLLISIONS] = "true or false",
-    [CFG_DURATION] = "duration >= 0 s",
-    [CFG_SAMPLE] = "sample > 0 s",
-    [CFG_OUTPUT] = "a file name",
-    [CFG_ENERGY] = "true or false",
-    [CFG_FPS] = "1 <= fps <= 60",
-    [CFG_LOW_BANDWIDTH] = "true or false",
-};
+/* A bound as a range states it. */
+static void bound_text(double v, char *buf, size_t len)
+{
+    snprintf(buf, len, v == 0x1p64 ? "2^64" : "%g", v);
+    char *e = strstr(buf, "e+");
+    if (e) /* 1e6, not 1e+06 */
+        memmove(e + 1, e + 2 + (e[2] == '0'), strlen(e + 2 + (e[2] == '0')) + 1);
+}
 
-/* Lower bounds of numeric keys: value > lo (open) or value >= lo (closed). */
-enum bound { ANY, GT0, GE0 };
+void config_expected(int key, char *buf, size_t len)
+{
+    const struct config_option *o = &config_options[key];
+    char lo[32], hi[32];
+    bound_text(o->lo, lo, sizeof lo);
+    bound_text(o->hi, hi, sizeof hi);
+    const char *gt = o->lo_open ? ">" : ">=", *lt = o->lo_open ? "<" : "<=";
+    switch (o->kind) {
+    case CONFIG_CHOICE: {
+        size_t used = 0;
+        buf[0] = '\0';
+        for (int i = 0; i < o->choices && used < len; i++)
+            used += (size_t)snprintf(buf + used, len - used, "%s%s",
+                                     i == 0 ? "" : i == o->choices - 1 ? " or " : ", ",
+                                     o->choice_name(i));
+        return;
+    }
+    case CONFIG_WHOLE:
+        snprintf(buf, len, "%s %s %s %s %s", lo, lt, o->symbol, o->hi_open ? "<" : "<=", hi);
+        return;
+    case CONFIG_NUMBER:
+        if (isfinite(o->hi))
+            snprintf(buf, len, "%s %s %s <= %s", lo, lt, o->symbol, hi);
+        else
+            snprintf(buf, len, "%s %s %s %s", o->symbol, gt, lo, o->unit);
+        return;
+    case CONFIG_LIST: {
+        const char *each = o->per == CONFIG_PER_SPRING ? "N+1" : "one per mass";
+        if (isfinite(o->lo))
+            snprintf(buf, len, "%s %s %s %s: one value, or %s", o->symbol, gt, lo, o->unit,
+                     each);
+        else
+            snprintf(buf, len, "%s in %s: one value, or %s", o->symbol, o->unit, each);
+        return;
+    }
+    case CONFIG_FLAG:
+        snprintf(buf, len, "true or false");
+        return;
+    case CONFIG_TEXT:
+    case CONFIG_MODE:
+        snprintf(buf, len, "%s", o->expect ? o->expect : "nothing");
+        return;
+    }
+}
+
+void config_arg(int key, char *buf, size_t len)
+{
+    const struct config_option *o = &config_options[key];
+    buf[0] = '\0';
+    if (o->kind != CONFIG_CHOICE) {
+        snprintf(buf, len, "%s", o->arg ? o->arg : "");
+        return;
+    }
+    size_t used = 0;
+    for (int i = 0; i < o->choices && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s", i ? "|" : "", o->choice_name(i));
+}
+
+void config_help(int key, char *buf, size_t len)
+{
+    const struct config_option *o = &config_options[key];
+    char range[160], def[64] = "";
+    config_expected(key, range, sizeof range);
+    if (o->def_text)
+        snprintf(def, sizeof def, "default %s", o->def_text);
+    else if (o->kind == CONFIG_CHOICE)
+        snprintf(def, sizeof def, "default %s", o->choice_name((int)o->def));
+    else if (o->kind == CONFIG_WHOLE || o->kind == CONFIG_NUMBER || o->kind == CONFIG_LIST)
+        if (isfinite(o->def))
+            snprintf(def, sizeof def, "default %g", o->def);
+    switch (o->kind) {
+    case CONFIG_WHOLE:
+    case CONFIG_NUMBER:
+        snprintf(buf, len, "%s (%s%s%s)", o->help, range, def[0] ? "; " : "", def);
+        return;
+    case CONFIG_LIST:
+        snprintf(buf, len, "%s (%s; one value or %s; %s)", o->help, o->unit,
+                 o->per == CONFIG_PER_SPRING ? "N+1" : "N", def);
+        return;
+    default:
+        snprintf(buf, len, "%s%s%s%s", o->help, def[0] ? " (" : "", def, def[0] ? ")" : "");
+        return;
+    }
+}
 
 void config_init(struct config *c)
 {
     memset(c, 0, sizeof *c);
-    c->masses = 2;
-    c->dt = 0.01;
-    c->integrator = INTEGRATOR_RK4;
-    c->boundary = BOUNDARY_MOTOR;
-    c->wave = WAVE_SINE;
-    c->amplitude = 1.0;
-    c->frequency = 1.0;
-    c->duration = 10.0;
-    c->fps = 30;
+    for (int k = 0; k < CFG_KEY_COUNT; k++) {
+        const struct config_option *o = &config_options[k];
+        char *at = (char *)c + o->offset;
+        if (!isfinite(o->def) || o->kind == CONFIG_LIST)
+            continue; /* lists start empty: the default fills them in config_model */
+        if (o->kind == CONFIG_NUMBER)
+            *(double *)at = o->def;
+        else if (o->kind == CONFIG_WHOLE)
+            *(int *)at = (int)o->def;
+        else if (o->kind == CONFIG_CHOICE)
+            memcpy(at, &(int){(int)o->def}, sizeof(int));
+    }
 }
 
 int config_find(const char *name)
@@ -171,9 +307,10 @@ void config_quote(const char *value, size_t n, char *buf, size_t len)
 static int fail_span(int key, const char *value, size_t n, const char *why, char *err,
                      size_t errlen)
 {
-    char q[4 * CONFIG_QUOTE_MAX + 48];
+    char q[4 * CONFIG_QUOTE_MAX + 48], want[160];
     config_quote(value, n, q, sizeof q);
-    snprintf(err, errlen, "%s %s (expected %s)", q, why, expected[key]);
+    config_expected(key, want, sizeof want);
+    snprintf(err, errlen, "%s %s (expected %s)", q, why, want);
     return -1;
 }
 
@@ -213,19 +350,22 @@ static const char *parse_number(const char *s, double *out)
     return config_parse_number(s, out);
 }
 
-static int in_bound(double v, enum bound b)
+/* Whether v is inside key's range (for a list, above its lower bound). */
+static int in_range(int key, double v)
 {
-    return b == ANY || (b == GT0 && v > 0.0) || (b == GE0 && v >= 0.0);
+    const struct config_option *o = &config_options[key];
+    if (o->lo_open ? !(v > o->lo) : !(v >= o->lo))
+        return 0;
+    return o->kind == CONFIG_LIST || (o->hi_open ? v < o->hi : v <= o->hi);
 }
 
-static int set_number(int key, const char *value, double *out, enum bound b, double hi,
-                      char *err, size_t errlen)
+static int set_number(int key, const char *value, double *out, char *err, size_t errlen)
 {
     double v;
     const char *why = parse_number(value, &v);
     if (why)
         return fail(key, value, why, err, errlen);
-    if (!in_bound(v, b) || v > hi)
+    if (!in_range(key, v))
         return fail(key, value, "is out of range", err, errlen);
     *out = v;
     return 0;
@@ -234,8 +374,8 @@ static int set_number(int key, const char *value, double *out, enum bound b, dou
 /* Parses a comma-separated list: numbers as parse_span reads them, with spaces or tabs
  * allowed on either side of a comma and nowhere else. Items of any length are read in
  * place. */
-static int set_list(int key, const char *value, struct config_list *out, enum bound b,
-                    char *err, size_t errlen)
+static int set_list(int key, const char *value, struct config_list *out, char *err,
+                    size_t errlen)
 {
     static struct config_list tmp; /* large; the parser is not reentrant anyway */
     char msg[4 * CONFIG_QUOTE_MAX + 96], q[4 * CONFIG_QUOTE_MAX + 48];
@@ -262,7 +402,7 @@ static int set_list(int key, const char *value, struct config_list *out, enum bo
         }
         double v;
         const char *why = parse_span(p, len, &v);
-        if (!why && !in_bound(v, b))
+        if (!why && !in_range(key, v))
             why = "is out of range";
         if (why) {
             if (p == value && *end == '\0')
@@ -325,101 +465,86 @@ static const char *parse_whole(const char *s, unsigned long long *out)
 
 int config_set(struct config *c, int key, const char *value, char *err, size_t errlen)
 {
+    const struct config_option *o;
     const char *why;
     unsigned long long whole;
-    int e;
 
     if (key < 0 || key >= CFG_KEY_COUNT) {
         snprintf(err, errlen, "is not a setting");
         return -1;
     }
-    if (!value && config_options[key].arg)
+    o = &config_options[key];
+    char *at = (char *)c + o->offset;
+    if (!value && o->kind != CONFIG_FLAG && o->kind != CONFIG_MODE)
         return fail(key, "", "is missing", err, errlen);
-    switch ((enum config_key)key) {
-    case CFG_PRESET:
-        return 0; /* applied by the caller, before everything else */
-    case CFG_MASSES:
-        if ((why = parse_whole(value, &whole)))
-            return fail(key, value, why, err, errlen);
-        if (whole < 1 || whole > MODEL_MAX_MASSES)
-            return fail(key, value, "is out of range", err, errlen);
-        c->masses = (int)whole;
-        return 0;
-    case CFG_MASS:
-        return set_list(key, value, &c->mass, GT0, err, errlen);
-    case CFG_SPRING:
-        return set_list(key, value, &c->spring, GT0, err, errlen);
-    case CFG_DAMPING:
-        return set_list(key, value, &c->damping, GE0, err, errlen);
-    case CFG_DT:
-        return set_number(key, value, &c->dt, GT0, 0.05, err, errlen);
-    case CFG_INTEGRATOR:
-        if ((e = integrator_parse(value)) < 0)
-            return fail(key, value, "is not an integrator", err, errlen);
-        c->integrator = (enum integrator)e;
-        return 0;
-    case CFG_BOUNDARY:
-        if ((e = model_boundary_parse(value)) < 0)
-            return fail(key, value, "is not a right end", err, errlen);
-        c->boundary = (enum boundary)e;
-        return 0;
-    case CFG_WAVE:
-        if ((e = motor_wave_parse(value)) < 0)
-            return fail(key, value, "is not a waveform", err, errlen);
-        c->wave = (enum wave)e;
-        return 0;
-    case CFG_AMPLITUDE:
-        return set_number(key, value, &c->amplitude, GE0, INFINITY, err, errlen);
-    case CFG_FREQUENCY:
-        /* A bound well past any mechanical drive: a square wave at f makes 2 f dt
-         * sub-steps a step, so an unbounded f could make one step last forever. */
-        return set_number(key, value, &c->frequency, GT0, 1e6, err, errlen);
-    case CFG_X0:
-        if (set_list(key, value, &c->x0, ANY, err, errlen))
-            return -1;
-        c->random = false; /* the later of x0 and random wins */
-        return 0;
-    case CFG_V0:
-        return set_list(key, value, &c->v0, ANY, err, errlen);
-    case CFG_RANDOM:
-        if (set_bool(key, value, &c->random, err, errlen))
-            return -1;
-        if (c->random)
-            c->x0.count = 0;
-        return 0;
-    case CFG_SEED:
-        if ((why = parse_whole(value, &whole)))
-            return fail(key, value, why, err, errlen);
-        c->seed = whole;
-        c->seed_set = true;
-        return 0;
-    case CFG_NO_COLLISIONS:
-        return set_bool(key, value, &c->no_collisions, err, errlen);
-    case CFG_DURATION:
-        return set_number(key, value, &c->duration, GE0, INFINITY, err, errlen);
-    case CFG_SAMPLE:
-        return set_number(key, value, &c->sample, GT0, INFINITY, err, errlen);
-    case CFG_OUTPUT:
+    switch (o->kind) {
+    case CONFIG_MODE:
+        return 0; /* what to do: the caller's business */
+    case CONFIG_TEXT:
+        if (key == CFG_PRESET)
+            return 0; /* applied by the caller, before everything else */
         if (*value == '\0')
             return fail(key, value, "is empty", err, errlen);
-        c->output = value;
+        memcpy(at, &value, sizeof value);
         return 0;
-    case CFG_ENERGY:
-        return set_bool(key, value, &c->energy, err, errlen);
-    case CFG_FPS:
+    case CONFIG_FLAG:
+        if (set_bool(key, value, (bool *)at, err, errlen))
+            return -1;
+        break;
+    case CONFIG_WHOLE:
         if ((why = parse_whole(value, &whole)))
             return fail(key, value, why, err, errlen);
-        if (whole < 1 || whole > 60)
+        /* The seed's whole range is what parse_whole reads (below 2^64, which a double
+         * cannot tell from 2^64 - 1). */
+        if (key != CFG_SEED && !in_range(key, (double)whole))
             return fail(key, value, "is out of range", err, errlen);
-        c->fps = (int)whole;
+        if (key == CFG_SEED) {
+            c->seed = whole;
+            c->seed_set = true;
+        } else {
+            *(int *)at = (int)whole;
+        }
         return 0;
-    case CFG_LOW_BANDWIDTH:
-        return set_bool(key, value, &c->low_bandwidth, err, errlen);
-    case CFG_KEY_COUNT:
+    case CONFIG_NUMBER:
+        return set_number(key, value, (double *)at, err, errlen);
+    case CONFIG_LIST:
+        if (set_list(key, value, (struct config_list *)at, err, errlen))
+            return -1;
         break;
+    case CONFIG_CHOICE: {
+        int i = 0;
+        while (i < o->choices && strcmp(value, o->choice_name(i)) != 0)
+            i++;
+        if (i == o->choices) {
+            char why_not[64];
+            snprintf(why_not, sizeof why_not, "is not %s", o->symbol);
+            return fail(key, value, why_not, err, errlen);
+        }
+        memcpy(at, &i, sizeof i);
+        return 0;
     }
-    snprintf(err, errlen, "is not a setting");
-    return -1;
+    }
+    /* The later of x0 and random wins. */
+    if (key == CFG_X0)
+        c->random = false;
+    if (key == CFG_RANDOM && c->random)
+        c->x0.count = 0;
+    return 0;
+}
+
+int config_check_interactive(const struct config *c, char *err, size_t errlen)
+{
+    const struct config_option *n = &config_options[CFG_MASSES], *dt = &config_options[CFG_DT];
+    if (c->masses > n->ihi)
+        snprintf(err, errlen, "'%d' is out of range for the interactive program (expected "
+                 "%g <= %s <= %g; --headless takes up to %g)", c->masses, n->lo, n->symbol,
+                 n->ihi, n->hi);
+    else if (!(c->dt >= dt->ilo))
+        snprintf(err, errlen, "'%g' is out of range for the interactive program (expected "
+                 "%g <= %s <= %g)", c->dt, dt->ilo, dt->symbol, dt->hi);
+    else
+        return -1;
+    return c->masses > n->ihi ? CFG_MASSES : CFG_DT;
 }
 
 int config_check_steps(const struct config *c, char *err, size_t errlen)
@@ -484,11 +609,13 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
     }
     const char *per_mass = n == 1 ? "mass" : "masses";
     const char *springs = "springs";
-    if (expand(&c->mass, n, 1.0, m->m, per_mass, err, errlen))
+    if (expand(&c->mass, n, config_options[CFG_MASS].def, m->m, per_mass, err, errlen))
         *bad_key = CFG_MASS;
-    else if (expand(&c->spring, n + 1, 10.0, m->k, springs, err, errlen))
+    else if (expand(&c->spring, n + 1, config_options[CFG_SPRING].def, m->k, springs, err,
+                    errlen))
         *bad_key = CFG_SPRING;
-    else if (expand(&c->damping, n, 0.1, m->c, per_mass, err, errlen))
+    else if (expand(&c->damping, n, config_options[CFG_DAMPING].def, m->c, per_mass, err,
+                    errlen))
         *bad_key = CFG_DAMPING;
     else if (c->x0.count > 1 && c->x0.count != n)
         *bad_key = CFG_X0;

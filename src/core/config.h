@@ -1,5 +1,6 @@
-/* config.h: every setting of a run, the table of options that are both long
- * command-line options and preset keys, and the checks of their values (SPEC 2-3). */
+/* config.h: every setting of a run, the one table of options, preset keys and modes
+ * (name, short option, section, kind, range, default, unit, digits, help), and the checks
+ * of their values made from it (SPEC 2-3). */
 #ifndef SPRINGSIM_CONFIG_H
 #define SPRINGSIM_CONFIG_H
 
@@ -10,6 +11,8 @@
 #include "integrator.h"
 #include "model.h"
 
+/* Every option and preset key, and the program's own modes, one row each in
+ * config_options. */
 enum config_key {
     CFG_PRESET,
     CFG_MASSES,
@@ -33,16 +36,55 @@ enum config_key {
     CFG_ENERGY,
     CFG_FPS,
     CFG_LOW_BANDWIDTH,
+    CFG_HEADLESS, /* the modes and the help-type options: command line only */
+    CFG_MODES,
+    CFG_SWEEP,
+    CFG_LIST_PRESETS,
+    CFG_KEYS,
+    CFG_HELP,
+    CFG_VERSION,
     CFG_KEY_COUNT
 };
 
-/* One setting: its long option, short option, preset section and help. */
+/* What a key's value is, and so how it is read, checked and stored. */
+enum config_kind {
+    CONFIG_TEXT,   /* a string kept as given (a file, a preset, a mode's argument) */
+    CONFIG_FLAG,   /* true or false; alone on the command line it means true */
+    CONFIG_WHOLE,  /* a whole number in [lo, hi] */
+    CONFIG_NUMBER, /* a finite number in its range */
+    CONFIG_LIST,   /* one number for all, or one per mass (or per spring) */
+    CONFIG_CHOICE, /* one of the names choice_name(0 .. choices-1) */
+    CONFIG_MODE    /* what to do (--headless, --help, ...), no value */
+};
+
+#define CONFIG_PER_MASS 0   /* a list of N values */
+#define CONFIG_PER_SPRING 1 /* a list of N+1 values */
+#define CONFIG_INTERACTIVE_MAX_MASSES 10 /* N the interactive program takes */
+
+/* One setting: everything about it the program knows outside the physics that uses it.
+ * --help, every error's "expected ...", the checks, the defaults and the interactive
+ * program's limits are made from these rows. */
 struct config_option {
     const char *name;    /* long option and preset key */
     char short_name;     /* short option, or 0 */
     const char *section; /* preset section, or NULL for the command line only */
-    const char *arg;     /* argument for --help, or NULL for a flag */
-    const char *help;    /* one line for --help */
+    enum config_kind kind;
+    const char *arg;     /* argument for --help (choices: made from their names) */
+    const char *help;    /* for --help; the range and default are added to it */
+    const char *symbol;  /* what a range calls it: "dt", "N", "masses" */
+    double lo, hi;       /* the range (whole numbers, numbers; lists: lo only) */
+    bool lo_open;        /* lo itself is out of range */
+    bool hi_open;        /* hi itself is out of range */
+    double ilo, ihi;     /* the interactive program's range, where narrower (0: none) */
+    double def;          /* the default (NAN: none to state) */
+    const char *def_text; /* the default in words, where a number does not say it */
+    int per;             /* lists: CONFIG_PER_MASS or CONFIG_PER_SPRING */
+    const char *unit;    /* SI unit, or "" */
+    int digits;          /* decimals the interactive controls show */
+    const char *(*choice_name)(int i); /* choices: the name of value i */
+    int choices;         /* choices: how many */
+    const char *expect;  /* text keys: what is expected */
+    size_t offset;       /* where the value lives in struct config */
 };
 
 /* The settings, indexed by enum config_key. */
@@ -108,8 +150,19 @@ const char *config_parse_number(const char *s, double *out);
  * (CFG_DURATION or CFG_DT), with the reason in err; -1 when it would not. */
 int config_check_steps(const struct config *c, char *err, size_t errlen);
 
-/* The defaults: the page's (2 masses of 1 kg, 10 N/m, 0.1 N s/m, dt 0.01 s, motor,
- * sine, 1 m, 1 Hz, at rest), rk4, duration 10 s, every step sampled. */
+/* What key allows, as every error about it says it: "0 < dt <= 0.05",
+ * "masses > 0 kg: one value, or one per mass", "sine, square, triangle or sawtooth". */
+void config_expected(int key, char *buf, size_t len);
+
+/* Key's argument and help line for --help, with its range and default. */
+void config_arg(int key, char *buf, size_t len);
+void config_help(int key, char *buf, size_t len);
+
+/* The key to blame when c is beyond the interactive program's narrower ranges (N, dt),
+ * with the reason in err; -1 when it is within them. */
+int config_check_interactive(const struct config *c, char *err, size_t errlen);
+
+/* Every setting at its row's default (lists empty: config_model fills them with it). */
 void config_init(struct config *c);
 
 /* The key with this long name, or -1. */
