@@ -22,6 +22,8 @@ for s in big small; do
     case $s in big) size=120x40 ;; *) size=80x24 ;; esac
 
     # ---- click and wheel on the Frequency control ----
+    # the whole first frame, not a part of it (a slow start, under the sanitizers)
+    wait_for 'Frequency  1.000 Hz' 5
     set -- $(cell_of 'Frequency  1.000 Hz')
     if [ $# -eq 2 ]; then
         row=$1 col=$(($2 + 3))
@@ -43,6 +45,7 @@ for s in big small; do
     fi
 
     # ---- drag mass 1 (paused) ----
+    wait_for MOTOR 5
     set -- $(cell_of 1 MOTOR)
     if [ $# -eq 2 ]; then
         row=$1 col=$2
