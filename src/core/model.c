@@ -40,13 +40,13 @@ struct model *model_new(int n)
     m->k = buf + n;
     m->c = buf + 2 * n + 1;
     for (int i = 0; i < n; i++) {
-        m->m[i] = 1.0;
-        m->c[i] = 0.1;
+        m->m[i] = MODEL_DEFAULT_MASS;
+        m->c[i] = MODEL_DEFAULT_DAMPING;
     }
     for (int j = 0; j <= n; j++)
-        m->k[j] = 10.0;
+        m->k[j] = MODEL_DEFAULT_SPRING;
     m->boundary = BOUNDARY_MOTOR;
-    m->motor = (struct motor){WAVE_SINE, 1.0, 1.0, 0.0};
+    m->motor = (struct motor){WAVE_SINE, MODEL_DEFAULT_AMPLITUDE, MODEL_DEFAULT_FREQUENCY, 0.0};
     m->collisions = true;
     return m;
 }

@@ -12,6 +12,13 @@
 #define MODEL_RESTITUTION 0.8 /* e for walls, piston and mass-mass contacts */
 #define MODEL_VMAX 50.0       /* velocity cap (m/s) */
 
+/* The page's chain, model_new's values and the settings table's defaults. */
+#define MODEL_DEFAULT_MASS 1.0       /* kg */
+#define MODEL_DEFAULT_SPRING 10.0    /* N/m */
+#define MODEL_DEFAULT_DAMPING 0.1    /* N s/m */
+#define MODEL_DEFAULT_AMPLITUDE 1.0  /* m */
+#define MODEL_DEFAULT_FREQUENCY 1.0  /* Hz */
+
 enum boundary { BOUNDARY_MOTOR, BOUNDARY_WALL, BOUNDARY_FREE, BOUNDARY_COUNT };
 
 struct model {
