@@ -37,7 +37,7 @@ static const struct {
     enum config_key key;
     double lo, hi, fine, coarse;
 } ranges[CTL_COUNT] = {
-    [CTL_DT] = {CFG_DT, 0.0, 0.05, 0.001, 0.005}, /* lo: the interactive limit */
+    [CTL_DT] = {CFG_DT, 0.0, INFINITY, 0.001, 0.005}, /* the range is the table's */
     [CTL_DAMPING] = {CFG_DAMPING, 0.0, 2.0, 0.01, 0.1},
     [CTL_SPRING] = {CFG_SPRING, 1.0, 50.0, 0.5, 5.0},
     [CTL_MASS] = {CFG_MASS, 0.1, 10.0, 0.1, 1.0},
