@@ -224,7 +224,10 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         if (ch == -1)
             break;
         if (ch == '?') {
-            if (optopt)
+            if (optopt >= 256 && optopt < 256 + CFG_KEY_COUNT)
+                options_say("--%s: takes no value, but was given %s (see springsim --help)",
+                            config_options[optopt - 256].name, written(argv, before, q, sizeof q));
+            else if (optopt)
                 options_say("'-%c' is not an option (see springsim --help)", optopt);
             else
                 options_say("%s is not an option (see springsim --help)",

@@ -137,6 +137,7 @@ if [ "$rc" -eq 2 ] && grep -q "takes no arguments" "$err" && grep -q "'--dt'" "$
 else
     fail "springsim -- --dt: exit $rc, $(show "$err")"
 fi
+refused "--random: takes no value" --random=maybe --modes
 run --headless --duration 0.05 --mass 1e-300
 if grep -q 'inf s' "$err"; then
     fail "springsim --headless --mass 1e-300: 'inf s' in $(show "$err")"
