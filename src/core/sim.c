@@ -346,6 +346,7 @@ static int advance(struct sim *s, double t0, double t1)
     bool jumps = motor_has_jumps(mot->wave);
     double u_now = motor_position(mot, t0); /* the end's position now */
     double a = t0;
+    bool fresh = true; /* the state is still y0: nothing has been stepped or jumped yet */
     while (a < t1) {
         /* Up to MAX_SPLIT breakpoints at a time; after the last of a full batch, the
          * next batch is looked up from there. */
@@ -357,10 +358,13 @@ static int advance(struct sim *s, double t0, double t1)
             double b = j < nb ? cuts[j] : t1, ua, ub, du;
             drive_at(&d, m, 0.5 * (a + b));
             drive_eval(&d, a, &ua, &du);
-            if (jumps && ua != u_now)
+            if (jumps && ua != u_now) {
                 jump(s, u_now, ua, du);
-            if (piece(s, &d, a, b, a == t0 && s->y[2 * s->n + 1] == s->y0[2 * s->n + 1]) != 0)
+                fresh = false;
+            }
+            if (piece(s, &d, a, b, fresh) != 0)
                 return -1;
+            fresh = false;
             drive_eval(&d, b, &ub, &du);
             u_now = ub;
             a = b;
