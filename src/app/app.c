@@ -446,7 +446,9 @@ unsigned app_step(struct app *app)
         trail_push(app->coarse, app->sim);
     }
     unsigned what = APP_CHANGED_STATE | note_cap(app);
-    switch (sweep_update(app->sweep, sim_time(app->sim), sim_x(app->sim))) {
+    const struct motor *drive = &sim_model(app->sim)->motor;
+    double t = sim_time(app->sim);
+    switch (sweep_update(app->sweep, t, sim_x(app->sim), drive->frequency * t + drive->phase)) {
     case SWEEP_RETUNE:
         what |= retune(app, sweep_frequency(app->sweep));
         break;

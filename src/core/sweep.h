@@ -1,6 +1,7 @@
 /* sweep.h: the stepped-sine experiment of a test rig: drive at one frequency after
- * another, let the chain settle, record each mass's peak amplitude, move on. Pure
- * bookkeeping: the caller steps the simulation and retunes the motor. */
+ * another, let the chain settle, record each mass's peak amplitude and its phase to the
+ * drive (a lock-in: x correlated with the drive's sine and cosine over whole periods),
+ * move on. Pure bookkeeping: the caller steps the simulation and retunes the motor. */
 #ifndef SPRINGSIM_SWEEP_H
 #define SPRINGSIM_SWEEP_H
 
@@ -25,6 +26,9 @@ struct sweep {
     double measure; /* measuring time per point (s) */
     double *freq;   /* points frequencies (Hz) */
     double *peak;   /* points x n peak |x| (m); NAN until measured */
+    double *phase;  /* points x n phase of x to the drive (degrees, (-180, 180]); NAN
+                     * until measured */
+    double *in, *quad; /* n sums of x sin(theta) and x cos(theta) over this point */
 };
 
 /* A sweep of up to points frequencies for n masses, or NULL on no memory. */
@@ -43,8 +47,14 @@ void sweep_stop(struct sweep *s);
 /* The frequency to drive now. */
 double sweep_frequency(const struct sweep *s);
 
-/* Takes the displacements x at time t after a step; says what to do next. */
-enum sweep_event sweep_update(struct sweep *s, double t, const double *x);
+/* Takes the displacements x at time t after a step, when the drive's phase is cycles
+ * (theta / 2 pi: the motor is A w(theta), and its fundamental is in phase with
+ * sin theta); says what to do next. */
+enum sweep_event sweep_update(struct sweep *s, double t, const double *x, double cycles);
+
+/* The phase in degrees, in (-180, 180], of a signal whose correlations with sin theta and
+ * cos theta are in and quad: X sin(theta + phi) gives in ~ X cos phi, quad ~ X sin phi. */
+double sweep_phase_deg(double in, double quad);
 
 /* Points measured so far. */
 int sweep_measured(const struct sweep *s);
