@@ -24,7 +24,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include <lapacke.h>
 
@@ -48,31 +47,6 @@ static int compare_mode(const void *a, const void *b)
 {
     const struct limits_mode *x = a, *y = b;
     return (x->w2 > y->w2) - (x->w2 < y->w2);
-}
-
-/* The first-order matrix A (2N x 2N, column-major), built column by column from the one
- * equation of motion: column j of -M^-1 K is the acceleration of a unit displacement of
- * mass j (right end held at 0), column j of -M^-1 C that of a unit velocity. */
-static void first_order_matrix(const struct model *m, double *a, double *x, double *v,
-                               double *acc)
-{
-    int n = m->n, n2 = 2 * n;
-    memset(a, 0, (size_t)n2 * (size_t)n2 * sizeof *a);
-    memset(x, 0, (size_t)n * sizeof *x);
-    memset(v, 0, (size_t)n * sizeof *v);
-    for (int j = 0; j < n; j++) {
-        a[j + (size_t)(n + j) * n2] = 1.0; /* x' = v */
-        x[j] = 1.0;
-        model_rates(m, NULL, x, v, 0.0, 0.0, acc, NULL, NULL);
-        x[j] = 0.0;
-        for (int i = 0; i < n; i++)
-            a[n + i + (size_t)j * n2] = acc[i];
-        v[j] = 1.0;
-        model_rates(m, NULL, x, v, 0.0, 0.0, acc, NULL, NULL);
-        v[j] = 0.0;
-        for (int i = 0; i < n; i++)
-            a[n + i + (size_t)(n + j) * n2] = acc[i];
-    }
 }
 
 /* Pairs the 2N eigenvalues (re, im) into N modes: each complex pair is one; the real ones,
@@ -126,11 +100,8 @@ int limits_modes(const struct model *m, struct limits_mode *mode)
             free(work);
             return -1;
         }
-        double *re = work, *im = work + n2, *real = work + 2 * n2, *x = work + 3 * n2;
-        first_order_matrix(m, a, x, x + n, x + 2 * n);
-        for (size_t k = 0; k < (size_t)n2 * (size_t)n2; k++)
-            if (!isfinite(a[k]))
-                e = -2;
+        double *re = work, *im = work + n2, *real = work + 2 * n2;
+        e = model_first_order(m, a, work + 3 * n2);
         if (e == 0)
             e = (int)LAPACKE_dgeev(LAPACK_COL_MAJOR, 'N', 'N', n2, a, n2, re, im, NULL, 1,
                                    NULL, 1);

@@ -6,6 +6,7 @@
  * k_N term of the last mass is dropped. */
 #include "model.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -111,4 +112,33 @@ double model_kinetic(const struct model *m, const double *v)
     for (int i = 0; i < m->n; i++)
         e += m->m[i] * v[i] * v[i];
     return 0.5 * e;
+}
+
+/* Built column by column from the one equation of motion: column j of -M^-1 K is the
+ * acceleration of a unit displacement of mass j (right end held at 0), column j of
+ * -M^-1 C that of a unit velocity. */
+int model_first_order(const struct model *m, double *a, double *work)
+{
+    int n = m->n, n2 = 2 * n;
+    double *x = work, *v = work + n, *acc = work + 2 * n;
+    memset(a, 0, (size_t)n2 * (size_t)n2 * sizeof *a);
+    memset(x, 0, (size_t)n * sizeof *x);
+    memset(v, 0, (size_t)n * sizeof *v);
+    for (int j = 0; j < n; j++) {
+        a[j + (size_t)(n + j) * n2] = 1.0; /* x' = v */
+        x[j] = 1.0;
+        model_rates(m, NULL, x, v, 0.0, 0.0, acc, NULL, NULL);
+        x[j] = 0.0;
+        for (int i = 0; i < n; i++)
+            a[n + i + (size_t)j * n2] = acc[i];
+        v[j] = 1.0;
+        model_rates(m, NULL, x, v, 0.0, 0.0, acc, NULL, NULL);
+        v[j] = 0.0;
+        for (int i = 0; i < n; i++)
+            a[n + i + (size_t)(n + j) * n2] = acc[i];
+    }
+    for (size_t k = 0; k < (size_t)n2 * (size_t)n2; k++)
+        if (!isfinite(a[k]))
+            return -2;
+    return 0;
 }

@@ -90,6 +90,11 @@ double model_potential(const struct model *m, const double *x, double u);
 /* Kinetic energy sum 1/2 m_i v_i^2. */
 double model_kinetic(const struct model *m, const double *v);
 
+/* The first-order matrix A = [[0, I], [-M^-1 K, -M^-1 C]] of z' = A z, z = (x, v), with
+ * the right end held at 0: 2N x 2N, column-major, into a; work holds 3N doubles.
+ * Returns 0, or -2 when an entry overflows. */
+int model_first_order(const struct model *m, double *a, double *work);
+
 /* The boundary's name ("motor", ...), or NULL. */
 const char *model_boundary_name(enum boundary b);
 

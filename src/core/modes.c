@@ -5,7 +5,7 @@
  * symmetric tridiagonal problem M^(-1/2) K M^(-1/2) z = w^2 z: LAPACK dstev (dstevr,
  * O(N^2), where the modal damping needs every vector of a long chain). The
  * steady state under u = A sin(w t) solves the complex tridiagonal system
- * (K - w^2 M + i w C) X = k_N A e_N: LAPACK zgtsv. */
+ * (K - w^2 M + i w C) X = k_N A e_N: LAPACK zgtsv. The damped modes are in damped.c. */
 #include "modes.h"
 
 #include <complex.h>
@@ -114,12 +114,15 @@ int modes_modal(const struct model *m, double *w2, double *s)
     return (int)info;
 }
 
-int modes_response(const struct model *m, double freq_hz, double *amp)
+int modes_response_phase(const struct model *m, double freq_hz, double *amp, double *phase_deg)
 {
     int n = m->n;
     if (m->boundary != BOUNDARY_MOTOR) {
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < n; i++) {
             amp[i] = 0.0;
+            if (phase_deg)
+                phase_deg[i] = 0.0;
+        }
         return 0;
     }
     lapack_complex_double *buf = malloc((size_t)(4 * n) * sizeof *buf);
@@ -133,13 +136,58 @@ int modes_response(const struct model *m, double freq_hz, double *amp)
         if (i + 1 < n)
             dl[i] = du[i] = -m->k[i + 1];
     }
-    b[n - 1] = m->k[n] * m->motor.amplitude;
+    /* A unit drive: the phase is there even at amplitude 0. */
+    b[n - 1] = m->k[n];
     lapack_int info = LAPACKE_zgtsv(LAPACK_COL_MAJOR, n, 1, dl, d, du, b, n);
-    if (info == 0)
-        for (int i = 0; i < n; i++)
-            amp[i] = cabs(b[i]);
+    for (int i = 0; info == 0 && i < n; i++) {
+        amp[i] = cabs(b[i]) * m->motor.amplitude;
+        if (phase_deg) {
+            /* carg is in [-pi, pi]: -180 (a real negative X with Im -0) is 180. */
+            double p = carg(b[i]) * (180.0 / M_PI);
+            phase_deg[i] = p <= -180.0 ? p + 360.0 : p + 0.0; /* + 0.0: no -0 */
+        }
+    }
     free(buf);
     return (int)info;
+}
+
+int modes_response(const struct model *m, double freq_hz, double *amp)
+{
+    return modes_response_phase(m, freq_hz, amp, NULL);
+}
+
+void modes_energy(const struct model *m, const double *freq, const double *shapes,
+                  const double *x, const double *v, double *energy)
+{
+    int n = m->n;
+    for (int j = 0; j < n; j++) {
+        const double *phi = shapes + (size_t)j * n;
+        double norm = 0.0, q = 0.0, p = 0.0;
+        for (int i = 0; i < n; i++) {
+            double mp = m->m[i] * phi[i];
+            norm += mp * phi[i];
+            q += mp * x[i];
+            p += mp * v[i];
+        }
+        /* With phi^ = phi / sqrt(norm): q^ = q / sqrt(norm), p^ = p / sqrt(norm). */
+        double w = 2.0 * M_PI * freq[j];
+        energy[j] = 0.5 * (p * p + w * w * q * q) / norm;
+    }
+}
+
+int modes_start(const struct model *m, int k, double amp, double *x0)
+{
+    int n = m->n;
+    if (k < 1 || k > n)
+        return -2;
+    double *buf = malloc((size_t)n * (size_t)(n + 1) * sizeof *buf);
+    if (!buf)
+        return -1;
+    int e = modes_compute(m, buf, buf + n);
+    for (int i = 0; e == 0 && i < n; i++)
+        x0[i] = amp * buf[n + (size_t)(k - 1) * n + i];
+    free(buf);
+    return e;
 }
 
 int modes_nearest(const double *f, int n, double freq)

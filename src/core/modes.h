@@ -1,5 +1,6 @@
-/* modes.h: natural frequencies and mode shapes of the undamped chain, the modal damping
- * of each, and the steady-state response to a sine drive. */
+/* modes.h: natural frequencies and mode shapes of the undamped chain, the damping of
+ * each, the energy in each, a start along one, and the steady-state response (amplitude
+ * and phase) to a sine drive. */
 #ifndef SPRINGSIM_MODES_H
 #define SPRINGSIM_MODES_H
 
@@ -24,5 +25,33 @@ int modes_nearest(const double *f, int n, double freq);
  * m->motor.amplitude at freq_hz: X = (K - w^2 M + i w C)^-1 k_N A e_N. Zero for a wall
  * or free end, which do not drive. Returns 0, -1 on no memory, or LAPACK's info. */
 int modes_response(const struct model *m, double freq_hz, double *amp);
+
+/* As modes_response, with the phase of each mass's displacement relative to the motor's
+ * displacement in degrees, in (-180, 180] (a lag is negative), into phase_deg unless it is
+ * NULL. For a wall or free end, amplitude 0 and phase 0. */
+int modes_response_phase(const struct model *m, double freq_hz, double *amp, double *phase_deg);
+
+/* Damping of each undamped mode j (ascending frequency, as modes_compute, whose shapes
+ * these are): the damped first-order system's eigenvalues (LAPACK dgeev with right
+ * eigenvectors, up to LIMITS_DGEEV_MAX masses; above it the modal damping of modes_modal),
+ * paired with the undamped modes by the largest overlap |phi_j^T M psi| of shapes, each
+ * eigen pair used once. ratio[j] = zeta_j = -Re(lambda) / |lambda| for a complex pair,
+ * damped_hz[j] = |Im lambda| / 2 pi; for two real eigenvalues (overdamped)
+ * zeta = -(l1 + l2) / (2 sqrt(l1 l2)) >= 1 and damped_hz[j] = 0. Returns 0, -1 on no
+ * memory, -2 when the numbers overflow (or do not pair), or LAPACK's info. */
+int modes_damped(const struct model *m, const double *shapes, double *ratio, double *damped_hz);
+
+/* Energy of each mode in the state (x, v) (displacements from equilibrium, right end at
+ * rest): with mass-normalised shapes phi^_j = phi_j / sqrt(phi_j^T M phi_j),
+ * q_j = phi^_j^T M x, p_j = phi^_j^T M v, energy[j] = (p_j^2 + w_j^2 q_j^2) / 2,
+ * w_j = 2 pi freq[j]; freq and shapes are modes_compute's. They sum to the chain's kinetic
+ * and spring energy. No allocation: callable every frame. */
+void modes_energy(const struct model *m, const double *freq, const double *shapes,
+                  const double *x, const double *v, double *energy);
+
+/* Initial displacements x0[N] along mode k (1-based, from 1 to N): amp times its shape as
+ * modes_compute scales it (largest |component| 1, positive), so max |x0| = amp. Returns 0,
+ * -2 when k is out of range, or modes_compute's error. */
+int modes_start(const struct model *m, int k, double amp, double *x0);
 
 #endif

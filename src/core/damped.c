@@ -1,0 +1,185 @@
+/* damped.c: the damping ratio and damped frequency of each mode (modes_damped).
+ *
+ * The damped chain z' = A z (model_first_order) has 2N eigenvalues: a complex pair
+ * lambda = -zeta w +- i w sqrt(1 - zeta^2) per oscillating mode, two real ones
+ * l1 l2 = w^2, -(l1 + l2) / 2 = zeta w per overdamped mode. Which undamped mode each
+ * belongs to is read off the displacement half psi of its eigenvector (LAPACK dgeev):
+ * the undamped shape phi_j with the largest |phi_j^T M psi| relative to the lengths of
+ * both in the M inner product. Candidates are taken best first; a complex pair takes a
+ * mode of its own, two real eigenvalues share one, and a real one never takes the last
+ * mode a pair still needs. Above LIMITS_DGEEV_MAX masses the modes' damping is the
+ * modal one (modes_modal), exact when C is diagonal in the undamped modes. */
+#include "modes.h"
+
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <lapacke.h>
+
+#include "limits.h"
+
+/* One candidate: eigen unit u (a complex pair or one real eigenvalue) for mode j. */
+struct candidate {
+    double overlap;
+    int unit, mode;
+};
+
+static int compare_candidate(const void *a, const void *b)
+{
+    const struct candidate *x = a, *y = b;
+    if (x->overlap != y->overlap)
+        return (x->overlap < y->overlap) - (x->overlap > y->overlap);
+    if (x->unit != y->unit)
+        return x->unit - y->unit;
+    return x->mode - y->mode;
+}
+
+/* The ratio and damped frequency of a mode oscillating as x'' = -w2 x - 2 s x'. */
+static void from_modal(double w2, double s, double *ratio, double *hz)
+{
+    double w = sqrt(w2 > 0.0 ? w2 : 0.0);
+    *ratio = s / w;
+    *hz = s < w ? sqrt((w - s) * (w + s)) / (2.0 * M_PI) : 0.0;
+}
+
+static int modal_damping(const struct model *m, double *ratio, double *hz)
+{
+    int n = m->n;
+    double *w2 = malloc((size_t)(2 * n) * sizeof *w2);
+    int e = w2 ? modes_modal(m, w2, w2 + n) : -1;
+    for (int j = 0; e == 0 && j < n; j++)
+        from_modal(w2[j], w2[n + j], &ratio[j], &hz[j]);
+    free(w2);
+    return e;
+}
+
+/* |phi^T M psi| / sqrt(phi^T M phi psi^H M psi) for psi = re + i im (im may be NULL). */
+static double overlap(const struct model *m, const double *phi, const double *re,
+                      const double *im)
+{
+    double complex dot = 0.0;
+    double pp = 0.0, ss = 0.0;
+    for (int i = 0; i < m->n; i++) {
+        double y = im ? im[i] : 0.0;
+        dot += m->m[i] * phi[i] * (re[i] + I * y);
+        pp += m->m[i] * phi[i] * phi[i];
+        ss += m->m[i] * (re[i] * re[i] + y * y);
+    }
+    return pp > 0.0 && ss > 0.0 ? cabs(dot) / sqrt(pp * ss) : 0.0;
+}
+
+/* Gives each eigen unit a mode: unit u is a complex pair when pair[u], else one real
+ * eigenvalue; owner[u] receives its mode. cand holds units * n candidates. */
+static void assign(int n, int units, const bool *pair, struct candidate *cand, int *owner,
+                   int *taken)
+{
+    int empty = n, pairs_left = 0;
+    for (int u = 0; u < units; u++) {
+        owner[u] = -1;
+        pairs_left += pair[u];
+    }
+    for (int j = 0; j < n; j++)
+        taken[j] = 0; /* eigenvalues held: 2 is full */
+    qsort(cand, (size_t)units * (size_t)n, sizeof *cand, compare_candidate);
+    for (size_t k = 0; k < (size_t)units * (size_t)n; k++) {
+        int u = cand[k].unit, j = cand[k].mode;
+        if (owner[u] >= 0)
+            continue;
+        if (pair[u] && taken[j] == 0) {
+            pairs_left--;
+        } else if (pair[u] || taken[j] == 2 || (taken[j] == 0 && empty - 1 < pairs_left)) {
+            continue;
+        }
+        empty -= taken[j] == 0;
+        taken[j] += pair[u] ? 2 : 1;
+        owner[u] = j;
+    }
+    /* Every pair found a mode (a real one never took the last one a pair needed); a real
+     * one passed over for that reason takes what is left. */
+    for (int u = 0; u < units; u++)
+        for (int j = 0; owner[u] < 0 && j < n; j++)
+            if (taken[j] < 2) {
+                taken[j]++;
+                owner[u] = j;
+            }
+}
+
+/* Ratio and damped frequency from the eigenvalues given each mode: a pair, or two reals
+ * (lo, hi). A passive chain has Re lambda <= 0: a positive real part is rounding. */
+static int conclude(int n, int units, const bool *pair, const int *owner, const double *re,
+                    const double *im, const int *first, double *ratio, double *hz)
+{
+    for (int j = 0; j < n; j++)
+        ratio[j] = hz[j] = NAN;
+    double *held = malloc((size_t)n * sizeof *held);
+    if (!held)
+        return -1;
+    for (int j = 0; j < n; j++)
+        held[j] = NAN;
+    for (int u = 0; u < units; u++) {
+        int j = owner[u], k = first[u];
+        if (j < 0) {
+            free(held);
+            return -2;
+        }
+        if (pair[u]) {
+            double s = fmax(-re[k], 0.0), w = hypot(re[k], im[k]);
+            ratio[j] = s / w;
+            hz[j] = fabs(im[k]) / (2.0 * M_PI);
+        } else if (isnan(held[j])) {
+            held[j] = fmin(re[k], 0.0);
+        } else {
+            double l1 = held[j], l2 = fmin(re[k], 0.0);
+            ratio[j] = -(l1 + l2) / (2.0 * sqrt(l1 * l2));
+            hz[j] = 0.0;
+        }
+    }
+    free(held);
+    for (int j = 0; j < n; j++)
+        if (!isfinite(ratio[j]) || !isfinite(hz[j]))
+            return -2;
+    return 0;
+}
+
+int modes_damped(const struct model *m, const double *shapes, double *ratio, double *damped_hz)
+{
+    int n = m->n, n2 = 2 * n;
+    if (n > LIMITS_DGEEV_MAX)
+        return modal_damping(m, ratio, damped_hz);
+    size_t nn = (size_t)n2 * (size_t)n2;
+    double *a = malloc(2 * nn * sizeof *a);
+    double *work = malloc((size_t)(4 * n2) * sizeof *work);
+    struct candidate *cand = malloc((size_t)n2 * (size_t)n * sizeof *cand);
+    int *ints = malloc((size_t)(4 * n2) * sizeof *ints);
+    bool *pair = malloc((size_t)n2 * sizeof *pair);
+    int e = a && work && cand && ints && pair ? 0 : -1;
+    double *vr = a ? a + nn : NULL, *re = work, *im = work ? work + n2 : NULL;
+    if (e == 0)
+        e = model_first_order(m, a, work + 2 * n2);
+    if (e == 0)
+        e = (int)LAPACKE_dgeev(LAPACK_COL_MAJOR, 'N', 'V', n2, a, n2, re, im, NULL, 1, vr, n2);
+    int units = 0, *first = ints, *owner = ints + n2, *taken = ints + 2 * n2;
+    /* Column k of vr is the eigenvector of a real lambda_k; for a pair (im[k] > 0, its
+     * conjugate next), columns k and k+1 are its real and imaginary parts. */
+    for (int k = 0; e == 0 && k < n2; k++) {
+        const double *psi = vr + (size_t)k * n2;
+        bool is_pair = im[k] != 0.0;
+        for (int j = 0; j < n; j++)
+            cand[(size_t)units * n + j] = (struct candidate){
+                overlap(m, shapes + (size_t)j * n, psi, is_pair ? psi + n2 : NULL), units, j};
+        pair[units] = is_pair;
+        first[units++] = k;
+        k += is_pair;
+    }
+    if (e == 0) {
+        assign(n, units, pair, cand, owner, taken);
+        e = conclude(n, units, pair, owner, re, im, first, ratio, damped_hz);
+    }
+    free(a);
+    free(work);
+    free(cand);
+    free(ints);
+    free(pair);
+    return e;
+}
