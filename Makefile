@@ -22,7 +22,7 @@ WARN = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes 
 DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"'
 
 # Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
-CORE_PKGS = inih lapacke gsl
+CORE_PKGS = inih lapacke gsl fftw3
 CORE_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(CORE_PKGS))
 CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
@@ -112,6 +112,11 @@ APP_FIXTURE = $(BUILD)/tests/app_fixture.o
 $(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
 $(APP_TESTS): TEST_EXTRA += $(APP_FIXTURE)
 $(APP_TESTS): $(APP_FIXTURE) tests/app_fixture.h
+
+# test_spectrum counts the allocations spectrum.c makes, to see a refresh make none.
+$(BUILD)/tests/test_spectrum: TEST_LDFLAGS = $(addprefix -Wl$(comma)--wrap=,malloc calloc \
+    fftw_malloc fftw_plan_dft_r2c_1d)
+comma = ,
 
 $(APP_FIXTURE): tests/app_fixture.c tests/app_fixture.h tests/testutil.h $(APP_OBJ) $(CORE_LIB) \
     | $(BUILD)/.deps-test

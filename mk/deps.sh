@@ -1,6 +1,6 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
-# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL), test (cmocka, tmux),
+# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka, tmux),
 # bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed with
 # apt-get; otherwise the one apt-get line to run is printed and the step stops.
 need=""
@@ -17,6 +17,7 @@ for group in "$@"; do
         want_pc inih libinih-dev
         want_pc lapacke liblapacke-dev
         want_pc gsl libgsl-dev
+        want_pc fftw3 libfftw3-dev
         ;;
     test)
         want_pc cmocka libcmocka-dev
