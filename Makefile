@@ -3,7 +3,8 @@
 # make run        build and start it on the default configuration
 # make check      build and run every test
 # make sanitize   the tests under AddressSanitizer + UndefinedBehaviorSanitizer
-# make install    PREFIX=/usr/local DESTDIR=: binary, man page, presets
+# make install    PREFIX=/usr/local DESTDIR=: binary, man page, presets, shell completions
+# make deb        an unsigned Debian package in build/ (debhelper, checked by lintian)
 # Missing Debian packages are installed by mk/deps.sh (as root) or named (otherwise).
 
 VERSION = 0.1.0
@@ -11,6 +12,9 @@ PREFIX ?= /usr/local
 BINDIR ?= $(PREFIX)/bin
 DATADIR ?= $(PREFIX)/share/springsim
 MANDIR ?= $(PREFIX)/share/man/man1
+BASHCOMPDIR ?= $(PREFIX)/share/bash-completion/completions
+ZSHCOMPDIR ?= $(PREFIX)/share/zsh/site-functions
+FISHCOMPDIR ?= $(PREFIX)/share/fish/vendor_completions.d
 PKG_CONFIG ?= pkg-config
 CC ?= cc
 BUILD ?= build
@@ -41,9 +45,13 @@ MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all run check check-long sanitize valgrind bench fuzz install uninstall clean deps deps-test FORCE
+COMPLETIONS = $(BUILD)/completions/springsim.bash $(BUILD)/completions/_springsim \
+              $(BUILD)/completions/springsim.fish
 
-all: $(BIN)
+.PHONY: all run check check-long sanitize valgrind bench fuzz install uninstall clean deps deps-test \
+        completions deb FORCE
+
+all: $(BIN) completions
 
 run: $(BIN)
 	./$(BIN)
@@ -101,6 +109,21 @@ $(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB) $(UI_LIBS) \
 	    $(CORE_LIBS)
 
+# The shell completions are written from the option table by a build tool on the core.
+completions: $(COMPLETIONS)
+
+$(BUILD)/mk/completions: mk/completions.c $(CORE_LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc $(LDFLAGS) -o $@ $< \
+	    $(CORE_LIB) $(CORE_LIBS)
+
+$(BUILD)/completions/springsim.bash: SHELL_NAME = bash
+$(BUILD)/completions/_springsim: SHELL_NAME = zsh
+$(BUILD)/completions/springsim.fish: SHELL_NAME = fish
+$(COMPLETIONS): $(BUILD)/mk/completions
+	@mkdir -p $(@D)
+	$(BUILD)/mk/completions $(SHELL_NAME) >$@.tmp && mv $@.tmp $@
+
 # The app (no curses) is unit-tested like the core: every test links it.
 $(TEST_BIN): $(APP_OBJ)
 $(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
@@ -135,8 +158,9 @@ $(BUILD)/tests/slowterm: tests/slowterm.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) -D_GNU_SOURCE $(LDFLAGS) -o $@ $< -lutil
 
-check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm | $(BUILD)/.deps-test
-	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm sh tests/run.sh $(TEST_BIN)
+check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm completions | $(BUILD)/.deps-test
+	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm COMPLETIONS=$(BUILD)/completions \
+	    sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
@@ -214,15 +238,21 @@ fuzz: | $(BUILD)/.deps-build
 	    fi; \
 	done
 
-install: $(BIN)
-	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/presets
+install: $(BIN) completions
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/presets \
+	    $(DESTDIR)$(BASHCOMPDIR) $(DESTDIR)$(ZSHCOMPDIR) $(DESTDIR)$(FISHCOMPDIR)
 	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/springsim
 	install -m 644 man/springsim.1 $(DESTDIR)$(MANDIR)/springsim.1
 	install -m 644 presets/*.ini $(DESTDIR)$(DATADIR)/presets/
+	install -m 644 $(BUILD)/completions/springsim.bash $(DESTDIR)$(BASHCOMPDIR)/springsim
+	install -m 644 $(BUILD)/completions/_springsim $(DESTDIR)$(ZSHCOMPDIR)/_springsim
+	install -m 644 $(BUILD)/completions/springsim.fish $(DESTDIR)$(FISHCOMPDIR)/springsim.fish
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/springsim $(DESTDIR)$(MANDIR)/springsim.1
 	rm -rf $(DESTDIR)$(DATADIR)
+	rm -f $(DESTDIR)$(BASHCOMPDIR)/springsim $(DESTDIR)$(ZSHCOMPDIR)/_springsim \
+	    $(DESTDIR)$(FISHCOMPDIR)/springsim.fish
 
 clean:
 	rm -rf $(BUILD) springsim

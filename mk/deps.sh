@@ -1,7 +1,8 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
-# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka, tmux),
-# bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed with
+# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka,
+# tmux, and bash, zsh and fish for the completions), bench (GSL), valgrind, fuzz (clang with
+# libFuzzer). As root the missing ones are installed with
 # apt-get; otherwise the one apt-get line to run is printed and the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
@@ -22,6 +23,9 @@ for group in "$@"; do
     test)
         want_pc cmocka libcmocka-dev
         want_bin tmux tmux
+        want_bin bash bash
+        want_bin zsh zsh
+        want_bin fish fish
         ;;
     bench)
         want_pc gsl libgsl-dev

@@ -134,7 +134,7 @@ static void build_longopts(struct option *lo, char *shortopts)
     *s++ = ':'; /* report missing arguments as ':' */
     for (int k = 0; k < CFG_KEY_COUNT; k++) {
         const struct config_option *o = &config_options[k];
-        bool arg = o->kind != CONFIG_FLAG && (o->kind != CONFIG_MODE || o->arg);
+        bool arg = config_takes_value(k);
         lo[k] = (struct option){o->name, arg ? required_argument : no_argument, NULL, 256 + k};
         if (o->short_name) {
             *s++ = o->short_name;

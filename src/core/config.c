@@ -235,6 +235,12 @@ int config_find(const char *name)
     return -1;
 }
 
+bool config_takes_value(int key)
+{
+    const struct config_option *o = &config_options[key];
+    return o->kind != CONFIG_FLAG && (o->kind != CONFIG_MODE || o->arg);
+}
+
 /* Appends byte c to buf (room for len, NUL kept) at *used, escaped if it is a control
  * byte: C's escapes for the common ones, \xNN for the rest. */
 static void put_escaped(unsigned char c, char *buf, size_t len, size_t *used)

@@ -168,6 +168,10 @@ void config_init(struct config *c);
 /* The key with this long name, or -1. */
 int config_find(const char *name);
 
+/* Whether key's option takes a value on the command line (a flag and a mode without an
+ * argument do not). */
+bool config_takes_value(int key);
+
 /* Sets key from its text value (NULL for a command-line flag). On error returns -1
  * and writes into err one phrase naming the value and what is allowed, e.g.
  * "'abc' is not a number (expected 0 < dt <= 0.05)"; the config is unchanged then. */
