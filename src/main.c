@@ -200,14 +200,16 @@ static int run_headless(const struct config *c, const struct model *m)
 static int run_modes(const struct config *c, const struct model *m)
 {
     int n = m->n;
-    double *f = malloc((size_t)n * sizeof *f);
+    double *f = malloc((size_t)(3 * n) * sizeof *f);
     double *shapes = malloc((size_t)n * (size_t)n * sizeof *shapes);
     struct output o;
     int status = EXIT_SUCCESS;
-    if (!f || !shapes || modes_compute(m, f, shapes) != 0) {
+    double *ratio = f ? f + n : NULL, *damped_hz = f ? f + 2 * n : NULL;
+    if (!f || !shapes || modes_compute(m, f, shapes) != 0 ||
+        modes_damped(m, shapes, ratio, damped_hz) != 0) {
         options_say(!f || !shapes ? "out of memory"
-                                  : "the natural frequencies cannot be computed for these values "
-                                    "(LAPACK dstev failed, or the numbers overflow)");
+                                  : "the modes cannot be computed for these values "
+                                    "(LAPACK failed, or the numbers overflow)");
         free(f);
         free(shapes);
         return EXIT_FAILURE;
@@ -216,12 +218,12 @@ static int run_modes(const struct config *c, const struct model *m)
         fputs("mode,frequency_hz", o.fp);
         for (int i = 1; i <= n; i++)
             fprintf(o.fp, ",x%d", i);
-        fputc('\n', o.fp);
+        fputs(",damping_ratio,damped_frequency_hz\n", o.fp);
         for (int j = 0; j < n; j++) {
             fprintf(o.fp, "%d,%.12g", j + 1, f[j]);
             for (int i = 0; i < n; i++)
                 fprintf(o.fp, ",%.12g", shapes[(size_t)j * n + i]);
-            fputc('\n', o.fp);
+            fprintf(o.fp, ",%.12g,%.12g\n", ratio[j], damped_hz[j]);
         }
         status = close_output(&o, c, status);
     } else {
@@ -281,7 +283,7 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
         return EXIT_USAGE;
     }
     int n = m->n, status = EXIT_SUCCESS;
-    double *amp = malloc((size_t)n * sizeof *amp);
+    double *amp = malloc((size_t)(2 * n) * sizeof *amp), *phase = amp ? amp + n : NULL;
     struct output o;
     if (!amp) {
         options_say("out of memory");
@@ -294,17 +296,19 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
     fputs("frequency_hz", o.fp);
     for (int i = 1; i <= n; i++)
         fprintf(o.fp, ",amp%d", i);
+    for (int i = 1; i <= n; i++)
+        fprintf(o.fp, ",phase%d", i);
     fputc('\n', o.fp);
     for (long r = 0; r < count; r++) {
         double f = r == count - 1 ? fmax : fmin + (fmax - fmin) * ((double)r / (count - 1));
-        if (modes_response(m, f, amp) != 0) {
+        if (modes_response_phase(m, f, amp, phase) != 0) {
             /* An undamped chain exactly at a natural frequency has no steady state. */
             for (int i = 0; i < n; i++)
-                amp[i] = INFINITY;
+                amp[i] = INFINITY, phase[i] = NAN;
         }
         fprintf(o.fp, "%.12g", f);
-        for (int i = 0; i < n; i++)
-            fprintf(o.fp, isfinite(amp[i]) ? ",%.12g" : ",inf", amp[i]);
+        for (int i = 0; i < 2 * n; i++)
+            fprintf(o.fp, isfinite(amp[i]) ? ",%.12g" : isnan(amp[i]) ? ",nan" : ",inf", amp[i]);
         fputc('\n', o.fp);
         if (ferror(o.fp))
             break;

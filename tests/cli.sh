@@ -274,7 +274,10 @@ fi
 # 4. --modes against the closed form of the uniform chain.
 
 # check_modes N: -n N --modes, frequencies 2 sqrt(k/m) sin(j pi / (2 (N+1))) / 2 pi with
-# k = 10, m = 1 to 1e-9 relative, ascending, each shape's largest |component| is +1.
+# k = 10, m = 1 to 1e-9 relative, ascending, each shape's largest |component| is +1. The
+# dampers (0.1 on masses of 1 kg) are proportional to M, so the modes do not mix and each
+# is lambda^2 + 0.1 lambda + w^2 = 0: damping ratio 0.1 / (2 w), damped frequency
+# w sqrt(1 - ratio^2) / 2 pi.
 check_modes() {
     nm=$1
     shift
@@ -282,7 +285,7 @@ check_modes() {
     hdr=mode,frequency_hz
     i=1
     while [ "$i" -le "$nm" ]; do hdr="$hdr,x$i"; i=$((i + 1)); done
-    expect_equal "$cmd: header" "$hdr" "$(first_line "$out")"
+    expect_equal "$cmd: header" "$hdr,damping_ratio,damped_frequency_hz" "$(first_line "$out")"
     expect_equal "$cmd: rows" "$nm" "$(data_rows "$out")"
     bad=$(awk -F, -v n="$nm" '
         function abs(x) { return x < 0 ? -x : x }
@@ -290,15 +293,20 @@ check_modes() {
         {
             j = NR - 1
             pi = atan2(0, -1)
-            want = 2 * sqrt(10) * sin(j * pi / (2 * (n + 1))) / (2 * pi)
+            w = 2 * sqrt(10) * sin(j * pi / (2 * (n + 1)))
+            want = w / (2 * pi)
             if ($1 != j) { print "row " j " is mode " $1; exit }
             if (abs($2 - want) > 1e-9 * want) { print "mode " j " f = " $2 ", expected " want; exit }
             if (j > 1 && $2 <= last) { print "mode " j " not above mode " j - 1; exit }
             last = $2
-            if (NF != n + 2) { print "mode " j " has " NF - 2 " components"; exit }
+            if (NF != n + 4) { print "mode " j " has " NF - 4 " components"; exit }
             max = -2; min = 2
-            for (i = 3; i <= NF; i++) { if ($i + 0 > max) max = $i + 0; if ($i + 0 < min) min = $i + 0 }
+            for (i = 3; i <= n + 2; i++) { if ($i + 0 > max) max = $i + 0; if ($i + 0 < min) min = $i + 0 }
             if (max != 1 || min < -1) { print "mode " j " shape " $0 " is not scaled to +1"; exit }
+            z = 0.1 / (2 * w)
+            if (abs($(n + 3) - z) > 1e-9 * z) { print "mode " j " ratio " $(n + 3) ", expected " z; exit }
+            fd = w * sqrt(1 - z * z) / (2 * pi)
+            if (abs($(n + 4) - fd) > 1e-9 * fd) { print "mode " j " damped " $(n + 4) ", expected " fd; exit }
         }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
 }
@@ -306,12 +314,22 @@ check_modes 2
 check_modes 5
 # the wall end has the same modes
 check_modes 3 --boundary wall
+# Overdamped: one mass, k = 20 (both springs), m = 1, c = 20 > 2 sqrt(k m): both
+# eigenvalues real, ratio c / (2 sqrt(k m)) = sqrt(5), damped frequency 0.
+if expect_ok --modes -n 1 --damping 20; then
+    expect_equal "$cmd: header" "mode,frequency_hz,x1,damping_ratio,damped_frequency_hz" \
+        "$(first_line "$out")"
+    bad=$(awk -F, 'NR == 2 { d = $4 - sqrt(5); if (d < 0) d = -d
+        if (d > 1e-9 || $5 != 0) print "ratio " $4 " (expected sqrt 5), damped " $5 " (expected 0)" }' "$out")
+    if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
+fi
 
 # ---------------------------------------------------------------------------------------
-# 5. --sweep against the 1-DOF steady state: amp = k A / sqrt((2k - m w^2)^2 + (c w)^2).
+# 5. --sweep against the 1-DOF steady state: amp = k A / sqrt((2k - m w^2)^2 + (c w)^2),
+# phase atan2(-c w, 2k - m w^2) in degrees.
 
 if expect_ok --sweep 0.1:2:20 -n 1; then
-    expect_equal "$cmd: header" "frequency_hz,amp1" "$(first_line "$out")"
+    expect_equal "$cmd: header" "frequency_hz,amp1,phase1" "$(first_line "$out")"
     expect_equal "$cmd: rows" 20 "$(data_rows "$out")"
     expect_equal "$cmd: first frequency" 0.1 "$(column "$out" frequency_hz 1)"
     expect_equal "$cmd: last frequency" 2 "$(column "$out" frequency_hz 20)"
@@ -326,6 +344,8 @@ if expect_ok --sweep 0.1:2:20 -n 1; then
             k = 10; m = 1; c = 0.1; A = 1
             want = k * A / sqrt((2 * k - m * w * w) ^ 2 + (c * w) ^ 2)
             if (abs($2 - want) > 1e-9 * want) { print "f = " $1 ": amp " $2 ", expected " want; exit }
+            ph = atan2(-c * w, 2 * k - m * w * w) * 180 / atan2(0, -1)
+            if (abs($3 - ph) > 1e-9 * 180) { print "f = " $1 ": phase " $3 ", expected " ph; exit }
         }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
 fi
@@ -336,6 +356,20 @@ if expect_ok --sweep 0.1:2:20 -n 1 --amplitude 0.5; then
         d = $2 - want; if (d < 0) d = -d
         if (d > 1e-9 * want) { print "f = " $1 ": amp " $2 ", expected " want; exit } }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
+fi
+
+# Lightly damped, far below resonance (0.712 Hz) the mass follows the motor, far above it
+# moves against it: a lag near 0 and near -180 degrees; the columns come N of each.
+if expect_ok --sweep 0.05:5:2 -n 1 --damping 0.01; then
+    bad=$(awk -F, 'NR == 2 && !($3 <= 0 && $3 > -0.1) { print "below: phase " $3 }
+        NR == 3 && !($3 < -179.9 && $3 > -180) { print "above: phase " $3 }' "$out")
+    if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
+fi
+if expect_ok --sweep 0.1:1:3 -n 3; then
+    expect_equal "$cmd: header" "frequency_hz,amp1,amp2,amp3,phase1,phase2,phase3" \
+        "$(first_line "$out")"
+    expect_equal "$cmd: columns in every row" 7 \
+        "$(awk -F, '{ print NF }' "$out" | sort -u | tr '\n' ' ' | sed 's/ $//')"
 fi
 
 # ---------------------------------------------------------------------------------------
@@ -365,7 +399,8 @@ case $(cat "$err") in
 esac
 # --modes and --sweep write FILE too
 if expect_ok --modes -o "$tmp/o/modes.csv"; then
-    expect_equal "$cmd: header in FILE" "mode,frequency_hz,x1,x2" "$(first_line "$tmp/o/modes.csv")"
+    expect_equal "$cmd: header in FILE" "mode,frequency_hz,x1,x2,damping_ratio,damped_frequency_hz" \
+        "$(first_line "$tmp/o/modes.csv")"
     expect_equal "$cmd: stdout" "" "$(cat "$out")"
 fi
 if expect_ok --sweep 0.5:1:3 -o "$tmp/o/sweep.csv"; then
