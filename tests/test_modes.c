@@ -205,6 +205,13 @@ static void damped_one_dof(void **state)
                 assert_true(hz == 0.0 && ratio >= 1.0);
         }
     }
+    /* A mass of 1e-70 kg: the slow eigenvalue -k/c is below the rounding of |A| ~ 1e71
+     * and fails the backward-error test; the modal route gives the same closed form. */
+    md->m[0] = 1e-70, md->c[0] = 0.1;
+    double f, ratio, hz, zeta = 0.1 / (2.0 * sqrt(15.0 * 1e-70));
+    damped(md, &f, &ratio, &hz);
+    assert_close(ratio, zeta, 1e-9 * zeta);
+    assert_true(hz == 0.0);
     model_free(md);
 }
 

@@ -143,7 +143,8 @@ if up edit; then
             fail "per-element: ↑ from spring 1 should select mass 1 again; screen: $(brief "$scr" '└─ (mass|spring)')"
         fi
         # the modes view follows the edits
-        "$SPRINGSIM" -n 3 --mass 2.5,1,1 --spring 10,22,10,10 --modes >"$tmp/modes.cli" 2>&1
+        "$SPRINGSIM" -n 3 --mass 2.5,1,1 --spring 10,22,10,10 --damping 0.3,0.1,0.1 --modes \
+            >"$tmp/modes.cli" 2>&1
         fl=$(awk -F, 'NR > 1 { printf "%.3f ", $2 }' "$tmp/modes.cli")
         keys m
         if wait_for Modes 3; then
@@ -172,7 +173,7 @@ if up edit; then
             fi
             XDG_CONFIG_HOME=$xe "$SPRINGSIM" -p pe --modes >"$tmp/modes.pe" 2>&1
             if cmp -s "$tmp/modes.pe" "$tmp/modes.cli" && ! cmp -s "$tmp/modes.pe" "$tmp/modes.orig"; then pass; else
-                fail "per-element: -p pe --modes should match --mass 2.5,1,1 --spring 10,22,10,10 --modes and differ from the uniform chain; got: $(head -n 2 "$tmp/modes.pe" | tr '\n' '|')"
+                fail "per-element: -p pe --modes should match --mass 2.5,1,1 --spring 10,22,10,10 --damping 0.3,0.1,0.1 --modes and differ from the uniform chain; got: $(head -n 2 "$tmp/modes.pe" | tr '\n' '|')"
             fi
         else
             fail "per-element: s, pe, Enter should save \$XDG_CONFIG_HOME/springsim/presets/pe.ini; screen: $(brief)"

@@ -8,7 +8,13 @@
  * both in the M inner product. Candidates are taken best first; a complex pair takes a
  * mode of its own, two real eigenvalues share one, and a real one never takes the last
  * mode a pair still needs. Above LIMITS_DGEEV_MAX masses the modes' damping is the
- * modal one (modes_modal), exact when C is diagonal in the undamped modes. */
+ * modal one (modes_modal), exact when C is diagonal in the undamped modes. So is that of
+ * a mode whose eigenvalues dgeev cannot resolve: an eigenvalue counts only when its
+ * backward error in the chain's own equation,
+ *   |(lambda^2 M + lambda C + K) psi| / ((|lambda|^2 |M| + |lambda| |C| + |K|) |psi|)
+ * (infinity norms, |K| bounded by twice its largest diagonal entry), is below
+ * TRUST_ERROR. Masses 1e70 apart make |A| so large that the slow modes' eigenvalues
+ * drown in its rounding. */
 #include "modes.h"
 
 #include <complex.h>
@@ -18,6 +24,8 @@
 #include <lapacke.h>
 
 #include "limits.h"
+
+#define TRUST_ERROR 1e-8 /* a backward stable dgeev gives ~1e-15 where it can */
 
 /* One candidate: eigen unit u (a complex pair or one real eigenvalue) for mode j. */
 struct candidate {
@@ -48,8 +56,11 @@ static int modal_damping(const struct model *m, double *ratio, double *hz)
     int n = m->n;
     double *w2 = malloc((size_t)(2 * n) * sizeof *w2);
     int e = w2 ? modes_modal(m, w2, w2 + n) : -1;
-    for (int j = 0; e == 0 && j < n; j++)
+    for (int j = 0; e == 0 && j < n; j++) {
         from_modal(w2[j], w2[n + j], &ratio[j], &hz[j]);
+        if (!isfinite(ratio[j]))
+            e = -2;
+    }
     free(w2);
     return e;
 }
@@ -105,41 +116,59 @@ static void assign(int n, int units, const bool *pair, struct candidate *cand, i
             }
 }
 
-/* Ratio and damped frequency from the eigenvalues given each mode: a pair, or two reals
- * (lo, hi). A passive chain has Re lambda <= 0: a positive real part is rounding. */
-static int conclude(int n, int units, const bool *pair, const int *owner, const double *re,
-                    const double *im, const int *first, double *ratio, double *hz)
+/* The backward error above of eigenvalue lambda with displacements psi = re + i im (im
+ * NULL for a real one); scratch holds 4N doubles. model_rates, being linear, gives
+ * acc = -M^-1 (K x + C v) for the real and the imaginary parts of (psi, lambda psi); the
+ * residual is m_i (lambda^2 psi_i - acc_i). */
+static double backward_error(const struct model *m, double complex lambda, const double *re,
+                             const double *im, double *scratch)
+{
+    int n = m->n;
+    double *x = scratch, *v = scratch + n, *acc_re = scratch + 2 * n, *acc_im = scratch + 3 * n;
+    for (int pass = 0; pass < 2; pass++) {
+        for (int i = 0; i < n; i++) {
+            double complex z = re[i] + I * (im ? im[i] : 0.0), lz = lambda * z;
+            x[i] = pass ? cimag(z) : creal(z);
+            v[i] = pass ? cimag(lz) : creal(lz);
+        }
+        model_rates(m, NULL, x, v, 0.0, 0.0, pass ? acc_im : acc_re, NULL, NULL);
+    }
+    double top_m = 0.0, top_c = 0.0, top_k = 0.0, top_psi = 0.0, top_r = 0.0;
+    for (int i = 0; i < n; i++) {
+        double complex z = re[i] + I * (im ? im[i] : 0.0);
+        top_m = fmax(top_m, m->m[i]);
+        top_c = fmax(top_c, m->c[i]);
+        top_k = fmax(top_k, 2.0 * (m->k[i] + m->k[i + 1]));
+        top_psi = fmax(top_psi, cabs(z));
+        top_r = fmax(top_r, cabs(m->m[i] * (lambda * lambda * z - (acc_re[i] + I * acc_im[i]))));
+    }
+    double l = cabs(lambda);
+    return top_r / ((l * l * top_m + l * top_c + top_k) * top_psi);
+}
+
+/* Ratio and damped frequency of every mode given a pair or two real eigenvalues; NAN for
+ * the others. A passive chain has Re lambda <= 0: a positive real part is rounding. */
+static void conclude(int n, int units, const bool *pair, const int *owner, const double *re,
+                     const double *im, const int *first, double *ratio, double *hz)
 {
     for (int j = 0; j < n; j++)
         ratio[j] = hz[j] = NAN;
-    double *held = malloc((size_t)n * sizeof *held);
-    if (!held)
-        return -1;
-    for (int j = 0; j < n; j++)
-        held[j] = NAN;
+    /* A mode's first real eigenvalue waits in hz[j] (as -l1, > 0), tagged by ratio NAN. */
     for (int u = 0; u < units; u++) {
         int j = owner[u], k = first[u];
-        if (j < 0) {
-            free(held);
-            return -2;
-        }
+        if (j < 0)
+            continue;
         if (pair[u]) {
-            double s = fmax(-re[k], 0.0), w = hypot(re[k], im[k]);
-            ratio[j] = s / w;
+            ratio[j] = fmax(-re[k], 0.0) / hypot(re[k], im[k]);
             hz[j] = fabs(im[k]) / (2.0 * M_PI);
-        } else if (isnan(held[j])) {
-            held[j] = fmin(re[k], 0.0);
+        } else if (isnan(hz[j])) {
+            hz[j] = fmax(-re[k], 0.0);
         } else {
-            double l1 = held[j], l2 = fmin(re[k], 0.0);
-            ratio[j] = -(l1 + l2) / (2.0 * sqrt(l1 * l2));
+            double l1 = hz[j], l2 = fmax(-re[k], 0.0);
+            ratio[j] = (l1 + l2) / (2.0 * sqrt(l1 * l2));
             hz[j] = 0.0;
         }
     }
-    free(held);
-    for (int j = 0; j < n; j++)
-        if (!isfinite(ratio[j]) || !isfinite(hz[j]))
-            return -2;
-    return 0;
 }
 
 int modes_damped(const struct model *m, const double *shapes, double *ratio, double *damped_hz)
@@ -155,27 +184,43 @@ int modes_damped(const struct model *m, const double *shapes, double *ratio, dou
     bool *pair = malloc((size_t)n2 * sizeof *pair);
     int e = a && work && cand && ints && pair ? 0 : -1;
     double *vr = a ? a + nn : NULL, *re = work, *im = work ? work + n2 : NULL;
+    double *scratch = work ? work + 2 * n2 : NULL;
     if (e == 0)
-        e = model_first_order(m, a, work + 2 * n2);
+        e = model_first_order(m, a, scratch);
     if (e == 0)
         e = (int)LAPACKE_dgeev(LAPACK_COL_MAJOR, 'N', 'V', n2, a, n2, re, im, NULL, 1, vr, n2);
     int units = 0, *first = ints, *owner = ints + n2, *taken = ints + 2 * n2;
     /* Column k of vr is the eigenvector of a real lambda_k; for a pair (im[k] > 0, its
      * conjugate next), columns k and k+1 are its real and imaginary parts. */
     for (int k = 0; e == 0 && k < n2; k++) {
-        const double *psi = vr + (size_t)k * n2;
-        bool is_pair = im[k] != 0.0;
-        for (int j = 0; j < n; j++)
-            cand[(size_t)units * n + j] = (struct candidate){
-                overlap(m, shapes + (size_t)j * n, psi, is_pair ? psi + n2 : NULL), units, j};
-        pair[units] = is_pair;
-        first[units++] = k;
+        const double *psi = vr + (size_t)k * n2, *psi_im = im[k] != 0.0 ? psi + n2 : NULL;
+        bool is_pair = psi_im != NULL;
+        if (backward_error(m, re[k] + I * im[k], psi, psi_im, scratch) <= TRUST_ERROR) {
+            for (int j = 0; j < n; j++)
+                cand[(size_t)units * n + j] = (struct candidate){
+                    overlap(m, shapes + (size_t)j * n, psi, psi_im), units, j};
+            pair[units] = is_pair;
+            first[units++] = k;
+        }
         k += is_pair;
     }
+    bool missing = false;
     if (e == 0) {
         assign(n, units, pair, cand, owner, taken);
-        e = conclude(n, units, pair, owner, re, im, first, ratio, damped_hz);
+        conclude(n, units, pair, owner, re, im, first, ratio, damped_hz);
+        for (int j = 0; j < n; j++)
+            missing |= !isfinite(ratio[j]) || !isfinite(damped_hz[j]);
     }
+    if (missing) {
+        /* Reuses re, im as the modal route's answer for the modes dgeev could not give. */
+        e = modal_damping(m, re, im);
+        for (int j = 0; e == 0 && j < n; j++)
+            if (!isfinite(ratio[j]) || !isfinite(damped_hz[j]))
+                ratio[j] = re[j], damped_hz[j] = im[j];
+    }
+    for (int j = 0; e == 0 && j < n; j++)
+        if (!isfinite(ratio[j]) || !isfinite(damped_hz[j]))
+            e = -2; /* w^2 underflowed to 0: no answer, not an infinite one */
     free(a);
     free(work);
     free(cand);
