@@ -158,16 +158,18 @@ $(BUILD)/tests/slowterm: tests/slowterm.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) -D_GNU_SOURCE $(LDFLAGS) -o $@ $< -lutil
 
+# tests/deb.sh builds the Debian package (make deb) unless DEB_CHECK=no.
+DEB_CHECK ?= yes
 check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm completions | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm COMPLETIONS=$(BUILD)/completions \
-	    sh tests/run.sh $(TEST_BIN)
+	    BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 sanitize:
 	@mkdir -p $(BUILD)/san && ln -sfn $(CURDIR)/presets $(BUILD)/san/presets
 	$(MAKE) BUILD=$(BUILD)/san BIN=$(BUILD)/san/springsim CFLAGS="$(SAN_FLAGS)" \
-	    LDFLAGS="$(SAN_FLAGS)" check
+	    LDFLAGS="$(SAN_FLAGS)" DEB_CHECK=no check
 
 # The unit tests and a headless run with collisions under valgrind's memcheck: zero
 # errors and no definite leaks, or it fails.
@@ -253,6 +255,26 @@ uninstall:
 	rm -rf $(DESTDIR)$(DATADIR)
 	rm -f $(DESTDIR)$(BASHCOMPDIR)/springsim $(DESTDIR)$(ZSHCOMPDIR)/_springsim \
 	    $(DESTDIR)$(FISHCOMPDIR)/springsim.fish
+
+# An unsigned Debian package (debian/, dh with debhelper compat 13), built from a copy of
+# the tree in $(BUILD)/deb so that its clean step leaves this build alone; the .deb is
+# copied to $(BUILD)/ and lintian must find no error in it (its warnings are shown).
+DEB_DIR = $(BUILD)/deb
+deb: | $(BUILD)/.deps-build
+	@sh mk/deps.sh deb
+	@v=$$(dpkg-parsechangelog -S Version); [ "$$v" = "$(VERSION)" ] || \
+	    { echo "make deb: debian/changelog is at $$v, the Makefile at $(VERSION)" >&2; exit 1; }
+	@rm -rf $(DEB_DIR) && mkdir -p $(DEB_DIR)/springsim-$(VERSION)
+	@tar -cf - --exclude=./build --exclude=./$(BUILD) --exclude=./.git --exclude=./springsim . | \
+	    tar -xf - -C $(DEB_DIR)/springsim-$(VERSION)
+	@echo "dpkg-buildpackage -us -uc -b in $(DEB_DIR)/springsim-$(VERSION) (log: $(DEB_DIR)/build.log)"
+	@cd $(DEB_DIR)/springsim-$(VERSION) && \
+	    if ! env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL dpkg-buildpackage -us -uc -b \
+	        >../build.log 2>&1; then tail -n 30 ../build.log; exit 1; fi
+	@cp $(DEB_DIR)/springsim_$(VERSION)_*.deb $(BUILD)/
+	@echo "lintian $(DEB_DIR)/springsim_$(VERSION)_*.changes"
+	@lintian --fail-on error $(DEB_DIR)/springsim_$(VERSION)_*.changes
+	@ls $(BUILD)/springsim_$(VERSION)_*.deb
 
 clean:
 	rm -rf $(BUILD) springsim

@@ -1,8 +1,8 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka,
-# tmux, and bash, zsh and fish for the completions), bench (GSL), valgrind, fuzz (clang with
-# libFuzzer). As root the missing ones are installed with
+# tmux, and bash, zsh and fish for the completions), deb (dpkg-dev, debhelper, lintian,
+# build-essential), bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed with
 # apt-get; otherwise the one apt-get line to run is printed and the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
@@ -29,6 +29,12 @@ for group in "$@"; do
         ;;
     bench)
         want_pc gsl libgsl-dev
+        ;;
+    deb)
+        want_bin dpkg-buildpackage dpkg-dev
+        want_bin dh debhelper
+        want_bin lintian lintian
+        [ -e /usr/share/build-essential/essential-packages-list ] || need="$need build-essential"
         ;;
     valgrind)
         want_bin valgrind valgrind

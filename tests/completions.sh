@@ -11,12 +11,8 @@ case $COMPLETIONS in /*) ;; *) COMPLETIONS=$PWD/$COMPLETIONS ;; esac
 presets=$PWD/presets
 
 # Only the presets shipped in presets/ (found beside the binary), none of the user's.
-mkdir -p "$tmp/xdg" "$tmp/work/sub"
-XDG_CONFIG_HOME=$tmp/xdg
-export XDG_CONFIG_HOME
-unset SPRINGSIM_PRESETS
-LC_ALL=C
-export LC_ALL
+plain_env
+mkdir -p "$tmp/work/sub"
 
 # Files the file-taking options see (the cases run in $tmp/work).
 touch "$tmp/work/mine.ini" "$tmp/work/notes.txt" "$tmp/work/run.csv"

@@ -8,12 +8,7 @@
 NAME=harden-values
 . "$(dirname "$0")/lib/check.sh"
 
-mkdir -p "$tmp/xdg"
-XDG_CONFIG_HOME=$tmp/xdg
-export XDG_CONFIG_HOME
-unset SPRINGSIM_PRESETS
-LC_ALL=C
-export LC_ALL
+plain_env
 
 out=$tmp/stdout
 err=$tmp/stderr

@@ -1,6 +1,8 @@
 # tests/lib/check.sh: what the shell test scripts share. Source it after setting NAME:
 # it makes $SPRINGSIM absolute, a scratch directory $tmp removed at exit, pass and fail,
-# and summary, which prints "NAME: N passed, M failed" and gives the exit status.
+# summary, which prints "NAME: N passed, M failed" and gives the exit status, and
+# plain_env, which keeps the user's presets out of the way (an empty user directory,
+# no $SPRINGSIM_PRESETS) in the C locale.
 SPRINGSIM=${SPRINGSIM:-./springsim}
 case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
 passed=0
@@ -13,4 +15,12 @@ fail() { failed=$((failed + 1)); printf 'FAIL: %s\n' "$*"; }
 summary() {
     echo "$NAME: $passed passed, $failed failed"
     [ "$failed" -eq 0 ]
+}
+plain_env() {
+    mkdir -p "$tmp/xdg"
+    XDG_CONFIG_HOME=$tmp/xdg
+    export XDG_CONFIG_HOME
+    unset SPRINGSIM_PRESETS
+    LC_ALL=C
+    export LC_ALL
 }
