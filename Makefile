@@ -127,14 +127,16 @@ $(COMPLETIONS): $(BUILD)/mk/completions
 # The app (no curses) is unit-tested like the core: every test links it.
 $(TEST_BIN): $(APP_OBJ)
 $(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
-# test_app and test_app_rules share a fixture that makes the chain's allocations fail on
+# test_app, test_app_rules and test_ghost share a fixture that makes the chain's allocations fail on
 # demand and counts the modes' computations (tests/app_fixture.c wraps them).
 APP_WRAPPED = config_model sim_new history_new trail_new sweep_new modes_compute limits_modes
-APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules
+APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules $(BUILD)/tests/test_ghost
 APP_FIXTURE = $(BUILD)/tests/app_fixture.o
 $(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
 $(APP_TESTS): TEST_EXTRA += $(APP_FIXTURE)
 $(APP_TESTS): $(APP_FIXTURE) tests/app_fixture.h
+# test_ghost counts every allocation the app and the core make while the ghost runs.
+$(BUILD)/tests/test_ghost: TEST_LDFLAGS += -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
 
 # test_spectrum counts the allocations spectrum.c makes, to see a refresh make none.
 $(BUILD)/tests/test_spectrum: TEST_LDFLAGS = $(addprefix -Wl$(comma)--wrap=,malloc calloc \

@@ -1,43 +1,22 @@
 /* app.c: the interactive program's state, independent of the terminal: its lifecycle,
  * the one path by which its parameters change (app_change, for controls.c and files.c),
  * and time: steps forward and back, resets, the initial positions, the sweep, and the
- * plots' samples and window. */
+ * plots' samples and window. The ghost (ghost.c) follows each of these moves in time. */
 #include "change.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
 
 #include "../core/limits.h"
 #include "../core/modes.h"
-
-/* Fine samples at least this far apart (s), this many: 11 s or more, for the windows up
- * to 10 s and for export. Coarse ones: 66 s or more, for the longer windows. At N = 10 a
- * record is 37 doubles, stored twice: 2.6 MB per trail; at N = 2, 0.9 MB. */
-#define FINE_SPACING 0.0025
-#define FINE_RECORDS 4400
-#define COARSE_SPACING 0.015
-#define COARSE_RECORDS 4400
+#include "ghost.h"
 
 /* The time plots' windows (s), and the one at start (10 s). */
 static const double windows[] = {1.0, 2.0, 5.0, 10.0, 20.0, 30.0, 60.0};
 #define NWINDOWS (int)(sizeof windows / sizeof *windows)
 #define DEFAULT_WINDOW 3
-
-unsigned app_say(struct app *app, bool error, const char *fmt, ...)
-{
-    char line[sizeof app->message];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(line, sizeof line, fmt, ap);
-    va_end(ap);
-    /* Whatever went into it, the status line gets no control byte. */
-    config_escape(line, strlen(line), sizeof line, app->message, sizeof app->message);
-    app->message_is_error = error;
-    return APP_CHANGED_MESSAGE;
-}
 
 /* The chain-sized parts, made together and swapped in together. */
 struct parts {
@@ -69,8 +48,8 @@ static int parts_new(struct parts *p, struct model *m, const struct config *next
     if (p->sim)
         sim_set_integrator(p->sim, next->integrator);
     p->hist = p->sim ? history_new(p->sim, HISTORY_DEPTH) : NULL;
-    p->trail = trail_new(m->n, FINE_RECORDS);
-    p->coarse = trail_new(m->n, COARSE_RECORDS);
+    p->trail = trail_new(m->n, TRAIL_FINE_RECORDS);
+    p->coarse = trail_new(m->n, TRAIL_COARSE_RECORDS);
     p->sweep = sweep_new(m->n, APP_SWEEP_POINTS);
     if (p->sim && p->hist && p->trail && p->coarse && p->sweep)
         return 0;
@@ -135,12 +114,8 @@ static unsigned say_limits(struct app *app, unsigned what, bool drive_was_rough)
 /* Steps between samples for the current dt, fine and coarse. */
 static void set_sampling(struct app *app)
 {
-    app->sample_every = (int)ceil(FINE_SPACING / app->cfg.dt - 1e-9);
-    app->coarse_every = (int)ceil(COARSE_SPACING / app->cfg.dt - 1e-9);
-    if (app->sample_every < 1)
-        app->sample_every = 1;
-    if (app->coarse_every < 1)
-        app->coarse_every = 1;
+    app->sample_every = trail_every(TRAIL_FINE_SPACING, app->cfg.dt);
+    app->coarse_every = trail_every(TRAIL_COARSE_SPACING, app->cfg.dt);
     app->since_sample = 0;
     app->since_coarse = 0;
 }
@@ -177,6 +152,7 @@ static void restart(struct app *app)
     sim_energy(app->sim, &e);
     app->energy0 = e.balance;
     app->capped = 0;
+    ghost_restart(app);
 }
 
 /* Whether any of the n values differ. */
@@ -304,7 +280,7 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
     if (rebuild) {
         if (rebuild_from(app, next, m) != 0)
             return -1;
-        what |= APP_CHANGED_CHAIN | APP_CHANGED_STATE;
+        what |= APP_CHANGED_CHAIN | APP_CHANGED_STATE | ghost_drop(app, "with the new chain");
         if (app->masses_pending != app->model->n)
             what |= APP_CHANGED_PENDING;
         if (app->running)
@@ -344,6 +320,7 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
 
 void app_free(struct app *app)
 {
+    ghost_drop(app, NULL);
     struct parts p = {0};
     parts_swap(app, &p);
     parts_free(&p);
@@ -385,24 +362,13 @@ double app_energy_drift(const struct app *app)
     return e.balance - app->energy0;
 }
 
-/* Drops the samples later than the chain's time, keeping at least the state now. */
-static void trails_follow(struct app *app)
-{
-    double t = sim_time(app->sim);
-    trail_drop_after(app->trail, t);
-    trail_drop_after(app->coarse, t);
-    if (app->trail->count == 0)
-        trail_push(app->trail, app->sim);
-    if (app->coarse->count == 0)
-        trail_push(app->coarse, app->sim);
-}
-
 /* The state was put back from history: the app's copy of the drive takes the phase the
  * sim re-anchored for the frequency in force. */
 static void follow_restored(struct app *app)
 {
     app->model->motor.phase = sim_model(app->sim)->motor.phase;
-    trails_follow(app);
+    trail_follow(app->trail, app->sim);
+    trail_follow(app->coarse, app->sim);
 }
 
 /* Counts the velocities the cap took in the last step and says so. */
@@ -437,15 +403,9 @@ unsigned app_step(struct app *app)
                     sim_time(app->sim));
         return 0;
     }
-    if (++app->since_sample >= app->sample_every) {
-        app->since_sample = 0;
-        trail_push(app->trail, app->sim);
-    }
-    if (++app->since_coarse >= app->coarse_every) {
-        app->since_coarse = 0;
-        trail_push(app->coarse, app->sim);
-    }
-    unsigned what = APP_CHANGED_STATE | note_cap(app);
+    trail_tick(app->trail, &app->since_sample, app->sample_every, app->sim);
+    trail_tick(app->coarse, &app->since_coarse, app->coarse_every, app->sim);
+    unsigned what = APP_CHANGED_STATE | note_cap(app) | ghost_follow(app);
     const struct motor *drive = &sim_model(app->sim)->motor;
     double t = sim_time(app->sim);
     switch (sweep_update(app->sweep, t, sim_x(app->sim), drive->frequency * t + drive->phase)) {
@@ -476,7 +436,7 @@ unsigned app_back(struct app *app)
         return 0;
     }
     follow_restored(app);
-    unsigned what = APP_CHANGED_STATE;
+    unsigned what = APP_CHANGED_STATE | ghost_back(app);
     if (sim_dt(app->sim) != app->cfg.dt) {
         /* Stepped back past a change of dt: the state carries the dt it was made with. */
         struct config next = app->cfg;
@@ -594,5 +554,12 @@ unsigned app_window_step(struct app *app, int dir)
 const struct trail *app_trail(const struct app *app)
 {
     /* The fine samples serve every window they span. */
-    return app_window(app) < FINE_RECORDS * FINE_SPACING ? app->trail : app->coarse;
+    return app_window(app) < TRAIL_FINE_RECORDS * TRAIL_FINE_SPACING ? app->trail : app->coarse;
+}
+
+const struct trail *app_ghost_trail(const struct app *app)
+{
+    if (!app->ghost)
+        return NULL;
+    return app_trail(app) == app->trail ? app->ghost->trail : app->ghost->coarse;
 }

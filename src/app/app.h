@@ -42,6 +42,7 @@ enum app_change {
     APP_CHANGED_DT = 1u << 7,       /* the time step (and so the plots' sampling) */
     APP_CHANGED_PENDING = 1u << 8,  /* the Masses control's value waiting for Enter */
     APP_CHANGED_INTEGRATOR = 1u << 9, /* the integrator (and so the limits of dt) */
+    APP_CHANGED_GHOST = 1u << 10,   /* the ghost came or went (ghost.h) */
 };
 
 /* Digits after the point that time step dt needs (2 at least): t and dt are shown with
@@ -106,6 +107,7 @@ struct app {
     struct sweep *sweep;     /* the sine-sweep experiment */
     double sweep_from;       /* the user's frequency during a sweep, given back after */
     double energy0;          /* the energy balance at t = 0 */
+    struct ghost *ghost;     /* a frozen copy run beside the chain (ghost.h), or NULL */
 };
 
 /* Sets up app from cfg (N already checked to be 1..APP_MAX_MASSES); 0, or -1 on no memory. */
@@ -168,6 +170,9 @@ unsigned app_window_step(struct app *app, int dir);
 
 /* The samples that cover the current window: the fine ones up to 10 s, else coarse. */
 const struct trail *app_trail(const struct app *app);
+
+/* The ghost's samples for the same window as app_trail's, or NULL without a ghost. */
+const struct trail *app_ghost_trail(const struct app *app);
 
 /* Saves the set-up as user preset name (overwrite an existing one only if asked);
  * the message says what happened. */

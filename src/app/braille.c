@@ -53,14 +53,21 @@ void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color
     canvas_dashed_line(c, x0, y0, x1, y1, color, false);
 }
 
-void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color,
-                        bool dash)
+/* Quarter cells of a canvas_stroke dash, and of the gap after it. */
+#define STROKE_DASH 8
+
+/* The dots of the line from (x0, y0) to (x1, y1) (Bresenham): all of them; with dash, those
+ * of every other pair of columns; with run, those of every other STROKE_DASH quarter cells
+ * along it (a dot across is half a cell, a dot down a quarter). */
+static void walk(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color, bool dash,
+                 int *run)
 {
     int dx = abs(x1 - x0), sx = x0 < x1 ? 1 : -1;
     int dy = -abs(y1 - y0), sy = y0 < y1 ? 1 : -1;
     int err = dx + dy;
     for (;;) {
-        if (!dash || (x0 / 2) % 2 == 0)
+        bool on = run ? (*run / STROKE_DASH) % 2 == 0 : !dash || (x0 / 2) % 2 == 0;
+        if (on)
             canvas_set(c, x0, y0, color);
         if (x0 == x1 && y0 == y1)
             break;
@@ -68,12 +75,27 @@ void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_
         if (e2 >= dy) {
             err += dy;
             x0 += sx;
+            if (run)
+                *run += 2;
         }
         if (e2 <= dx) {
             err += dx;
             y0 += sy;
+            if (run)
+                *run += 1;
         }
     }
+}
+
+void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color,
+                        bool dash)
+{
+    walk(c, x0, y0, x1, y1, color, dash, NULL);
+}
+
+void canvas_stroke(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color, int *run)
+{
+    walk(c, x0, y0, x1, y1, color, false, run);
 }
 
 void canvas_vspan(struct canvas *c, int x, int y0, int y1, uint8_t color)

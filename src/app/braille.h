@@ -31,6 +31,11 @@ void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color
 void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color,
                         bool dash);
 
+/* canvas_line in dashes along its length, the same on a line at any slope: *run counts
+ * the line walked so far in quarter cells (carried from one segment to the next, so a
+ * path's dashes run on across its joins); two cells drawn, two left out. */
+void canvas_stroke(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color, int *run);
+
 /* Sets every dot of column x from y0 to y1 inclusive, in either order. */
 void canvas_vspan(struct canvas *c, int x, int y0, int y1, uint8_t color);
 

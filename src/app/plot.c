@@ -117,15 +117,19 @@ static bool clip(double *x0, double *y0, double *x1, double *y1, double xmin, do
 }
 
 /* The segment between two points in dot coordinates (y from the top), clipped to the
- * canvas and drawn with Bresenham; dash leaves out columns as plot_trace does. */
+ * canvas and drawn with Bresenham; dash leaves out columns as plot_trace does, run (if
+ * not NULL) makes it a stroke of canvas_stroke's dashes. */
 static void segment(struct canvas *c, double fx0, double fy0, double fx1, double fy1, bool dash,
-                    unsigned char color)
+                    int *run, unsigned char color)
 {
     /* Just inside the outer dots, so that rounding keeps the ends on the canvas. */
     if (!clip(&fx0, &fy0, &fx1, &fy1, -0.5, 2 * c->cols - 0.5 - 1e-6, -0.5 + 1e-6,
               4 * c->rows - 0.5))
         return;
-    canvas_dashed_line(c, dot_x(fx0), dot_y(fy0), dot_x(fx1), dot_y(fy1), color, dash);
+    if (run)
+        canvas_stroke(c, dot_x(fx0), dot_y(fy0), dot_x(fx1), dot_y(fy1), color, run);
+    else
+        canvas_dashed_line(c, dot_x(fx0), dot_y(fy0), dot_x(fx1), dot_y(fy1), color, dash);
 }
 
 /* One dot column of a trace: the span of its samples, its first and last sample. */
@@ -150,7 +154,7 @@ static void column_draw(struct canvas *c, struct column *k, const struct column 
         if (join > k->hi + 1)
             k->hi = join - 1;
     } else if (have_p) {
-        segment(c, p->lx, p->ly, k->fx, k->fy, dash, color);
+        segment(c, p->lx, p->ly, k->fx, k->fy, dash, NULL, color);
     }
     if (k->x >= 0 && k->x < 2 * c->cols && dash_draws(k->x, dash))
         canvas_vspan(c, k->x, k->lo, k->hi, color);
@@ -190,8 +194,9 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
         column_draw(c, &cur, &prev, have_prev, dash, color);
 }
 
-void plot_path(struct canvas *c, const double *x, const double *y, int count, size_t stride,
-               const struct axis *xa, const struct axis *ya, unsigned char color)
+/* plot_path, solid (run NULL) or dashed along its length. */
+static void path(struct canvas *c, const double *x, const double *y, int count, size_t stride,
+                 const struct axis *xa, const struct axis *ya, int *run, unsigned char color)
 {
     int h = 4 * c->rows;
     double px = 0.0, py = 0.0;
@@ -203,7 +208,21 @@ void plot_path(struct canvas *c, const double *x, const double *y, int count, si
             continue;
         }
         double fx = dot_clamp(axis_dot(xa, xk)), fy = dot_clamp(h - 1 - axis_dot(ya, yk));
-        segment(c, have ? px : fx, have ? py : fy, fx, fy, false, color);
+        segment(c, have ? px : fx, have ? py : fy, fx, fy, false, run, color);
         px = fx, py = fy, have = true;
     }
+}
+
+void plot_path(struct canvas *c, const double *x, const double *y, int count, size_t stride,
+               const struct axis *xa, const struct axis *ya, unsigned char color)
+{
+    path(c, x, y, count, stride, xa, ya, NULL, color);
+}
+
+void plot_dashed_path(struct canvas *c, const double *x, const double *y, int count,
+                      size_t stride, const struct axis *xa, const struct axis *ya,
+                      unsigned char color)
+{
+    int run = 0;
+    path(c, x, y, count, stride, xa, ya, &run, color);
 }

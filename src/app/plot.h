@@ -40,4 +40,10 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
 void plot_path(struct canvas *c, const double *x, const double *y, int count, size_t stride,
                const struct axis *xa, const struct axis *ya, unsigned char color);
 
+/* plot_path in dashes along its length (canvas_stroke), for a second trace drawn beside a
+ * solid one. */
+void plot_dashed_path(struct canvas *c, const double *x, const double *y, int count,
+                      size_t stride, const struct axis *xa, const struct axis *ya,
+                      unsigned char color);
+
 #endif

@@ -2,6 +2,7 @@
  * records head .. head + count - 1 are always one contiguous run. */
 #include "trail.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -60,11 +61,32 @@ void trail_push(struct trail *tr, const struct sim *s)
     tr->count++;
 }
 
+int trail_every(double spacing, double dt)
+{
+    int every = (int)ceil(spacing / dt - 1e-9);
+    return every < 1 ? 1 : every;
+}
+
+void trail_tick(struct trail *tr, int *since, int every, const struct sim *s)
+{
+    if (++*since < every)
+        return;
+    *since = 0;
+    trail_push(tr, s);
+}
+
 void trail_drop_after(struct trail *tr, double t)
 {
     const double *first = trail_first(tr);
     while (tr->count > 0 && first[(size_t)(tr->count - 1) * tr->width + TRAIL_T] > t + 1e-6)
         tr->count--;
+}
+
+void trail_follow(struct trail *tr, const struct sim *s)
+{
+    trail_drop_after(tr, sim_time(s));
+    if (tr->count == 0)
+        trail_push(tr, s);
 }
 
 void trail_clear(struct trail *tr)

@@ -15,6 +15,15 @@ struct trail {
     double *accel;  /* scratch for accelerations, n doubles */
 };
 
+/* The plots' samples of a chain: fine ones at least this far apart (s), this many: 11 s
+ * or more, for the windows up to 10 s and for export; coarse ones 66 s or more, for the
+ * longer windows. At N = 10 a record is 37 doubles, stored twice: 2.6 MB per trail; at
+ * N = 2, 0.9 MB. */
+#define TRAIL_FINE_SPACING 0.0025
+#define TRAIL_FINE_RECORDS 4400
+#define TRAIL_COARSE_SPACING 0.015
+#define TRAIL_COARSE_RECORDS 4400
+
 /* Offsets inside a record. */
 #define TRAIL_T 0
 #define TRAIL_U 1
@@ -34,8 +43,19 @@ void trail_free(struct trail *tr);
 /* Appends the current state of s, dropping the oldest record when full. */
 void trail_push(struct trail *tr, const struct sim *s);
 
+/* Steps of dt between samples at least spacing (s) apart: 1 at least. */
+int trail_every(double spacing, double dt);
+
+/* Counts a step of s in *since and, when it makes every steps, pushes the state of s and
+ * starts counting again. */
+void trail_tick(struct trail *tr, int *since, int every, const struct sim *s);
+
 /* Drops the records later than t (after stepping back). */
 void trail_drop_after(struct trail *tr, double t);
+
+/* Drops the records later than the time of s (after stepping back), keeping at least
+ * its state now. */
+void trail_follow(struct trail *tr, const struct sim *s);
 
 /* Drops everything. */
 void trail_clear(struct trail *tr);

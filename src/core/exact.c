@@ -142,6 +142,34 @@ void exact_free(struct exact *e)
     free(e);
 }
 
+void exact_copy(struct exact *dst, const struct exact *src)
+{
+    int n = src->n, d = src->dmax, slots = src->slots;
+    size_t dd = (size_t)d * (size_t)d;
+    memcpy(dst->saved, src->saved, (size_t)(3 * n + 1) * sizeof(double));
+    memcpy(dst->sqm, src->sqm, (size_t)(4 * n) * sizeof(double));
+    memcpy(dst->z, src->z, (size_t)(4 * d + 2 * d * slots) * sizeof(double));
+    memcpy(dst->mem, src->mem, (size_t)(3 + 2 * slots) * dd * sizeof(double));
+    dst->boundary = src->boundary;
+    dst->valid = src->valid;
+    dst->model = src->model;
+    dst->clock = src->clock;
+    dst->sk = src->sk;
+    dst->wscale = src->wscale;
+    dst->damped = src->damped;
+    for (int i = 0; i < slots; i++) {
+        /* The values only: each keeps its own views of its own memory. */
+        struct slot *a = &dst->slot[i];
+        const struct slot *b = &src->slot[i];
+        a->model = b->model;
+        a->kind = b->kind;
+        a->omega = b->omega;
+        a->h = b->h;
+        a->norm = b->norm;
+        a->used = b->used;
+    }
+}
+
 /* Takes in model m if it differs from the one seen last: a new generation (every cached
  * step is stale) and the coordinates' factor L. */
 static void take_model(struct exact *e, const struct model *m)

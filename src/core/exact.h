@@ -17,6 +17,10 @@ struct exact *exact_new(int n);
 /* Frees it. */
 void exact_free(struct exact *e);
 
+/* Makes dst (made for the same n) hold what src holds, its cached steps included, so the
+ * two step alike. */
+void exact_copy(struct exact *dst, const struct exact *src);
+
 /* The right end over the piece: u(t) = amp * sin(omega * t + phi) when sine is set, else
  * u(t) = u0 + du * (t - t0) (a constant or a ramp; 0 for wall and free ends). */
 struct exact_drive {

@@ -68,6 +68,22 @@ struct sim *sim_new(const struct model *model, double dt)
     return s;
 }
 
+int sim_copy(struct sim *dst, const struct sim *src)
+{
+    if (stepper_copy(dst->st, src->st) != 0)
+        return -1;
+    dst->lim = src->lim;
+    dst->dt = src->dt;
+    dst->t_base = src->t_base;
+    dst->steps = src->steps;
+    dst->integrator = src->integrator;
+    dst->contact = src->contact;
+    dst->last_contacts = src->last_contacts;
+    dst->last_capped = src->last_capped;
+    memcpy(dst->y, src->y, (size_t)(2 * src->n + 2) * sizeof *src->y);
+    return 0;
+}
+
 void sim_free(struct sim *s)
 {
     if (!s)

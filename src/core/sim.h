@@ -28,6 +28,12 @@ struct sim;
  * NULL when memory runs out. */
 struct sim *sim_new(const struct model *model, double dt);
 
+/* Makes dst (made for the same n) a copy of src: parameters, integrator, time grid,
+ * state, energy books and what the steppers carry from step to step, so that the two go
+ * on bit for bit alike while nothing of either is changed. 0, or -1 on no memory with
+ * dst as it was. */
+int sim_copy(struct sim *dst, const struct sim *src);
+
 /* Frees a simulation. */
 void sim_free(struct sim *s);
 

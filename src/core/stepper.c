@@ -111,6 +111,23 @@ void stepper_end_drive(const struct stepper *st, double *u, double *du)
     *du = st->end_du;
 }
 
+int stepper_copy(struct stepper *dst, const struct stepper *src)
+{
+    if (src->exact && !dst->exact && !(dst->exact = exact_new(src->n)))
+        return -1;
+    if (src->exact)
+        exact_copy(dst->exact, src->exact);
+    stepper_set_model(dst, src->model, src->dt);
+    dst->rot_w = src->rot_w, dst->rot_h = src->rot_h;
+    dst->rot_s1 = src->rot_s1, dst->rot_c1 = src->rot_c1;
+    dst->rot_s2 = src->rot_s2, dst->rot_c2 = src->rot_c2;
+    dst->rot_next_t = src->rot_next_t, dst->rot_phase = src->rot_phase;
+    dst->rot_sn = src->rot_sn, dst->rot_cs = src->rot_cs;
+    dst->rot_carried = src->rot_carried;
+    dst->end_u = src->end_u, dst->end_du = src->end_du;
+    return 0;
+}
+
 const struct model *stepper_model(const struct stepper *st)
 {
     return st->model;

@@ -45,6 +45,11 @@ void stepper_end_drive(const struct stepper *st, double *u, double *du);
 /* Sets the drive's phase (cycles) in the stepper's model; dt as for stepper_set_model. */
 void stepper_set_phase(struct stepper *st, double phase, double dt);
 
+/* Makes dst (same n) step as src does: its parameters, grid step, the sine drive's
+ * carried sin and cos and the exact stepper's cached steps. 0, or -1 on no memory (for
+ * that cache; dst is then as it was). */
+int stepper_copy(struct stepper *dst, const struct stepper *src);
+
 /* The model the stepper uses (its own copy). */
 const struct model *stepper_model(const struct stepper *st);
 

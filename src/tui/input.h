@@ -39,6 +39,7 @@ enum action {
     ACT_GRID,      /* all plots again */
     ACT_NARROWER,  /* shorter time window */
     ACT_WIDER,     /* longer time window */
+    ACT_GHOST,     /* ghost on / off */
 };
 
 struct binding {

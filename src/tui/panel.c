@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../app/ghost.h"
 #include "draw.h"
 #include "term.h"
 
@@ -13,7 +14,7 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
     const struct model *m = app->model;
     const char *bar = "│";
     int d = app_time_decimals(app->cfg.dt);
-    char motor[80], speed[64] = "", line[400];
+    char motor[80], speed[64] = "", ghost[120] = "", line[520];
     if (m->boundary == BOUNDARY_MOTOR)
         snprintf(motor, sizeof motor, "motor %s %.2f Hz %.2f m", motor_wave_name(m->motor.wave),
                  m->motor.frequency, m->motor.amplitude);
@@ -22,17 +23,24 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
     if (app->speed != 1.0 || behind || app->cfg.low_bandwidth)
         snprintf(speed, sizeof speed, " %s %gx%s%s", bar, app->speed, behind ? " behind" : "",
                  app->cfg.low_bandwidth ? " low-bw" : "");
+    if (app->ghost) {
+        /* The ghost by what differs from the live chain. */
+        char what[100];
+        ghost_describe(app, what, sizeof what);
+        snprintf(ghost, sizeof ghost, " %s %s", bar, what);
+    }
     /* The full line where it fits; the SPEC's essentials where it does not. */
     snprintf(line, sizeof line, " springsim ▸ %-7s t = %.*f s %s %s %s N %d %s dt %.*f s %s "
-             "history %d%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
-             motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, bar, history_count(app->hist), speed);
+             "history %d%s%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
+             motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, bar, history_count(app->hist),
+             speed, ghost);
     if (draw_width(line) > l->cols) {
         if (m->boundary == BOUNDARY_MOTOR)
             snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
                      m->motor.frequency);
-        snprintf(line, sizeof line, " %s t = %.*f s %s %s %s history %d%s",
+        snprintf(line, sizeof line, " %s t = %.*f s %s %s %s history %d%s%s",
                  app->running ? "Running" : "Paused", d, sim_time(app->sim), bar, motor, bar,
-                 history_count(app->hist), speed);
+                 history_count(app->hist), speed, ghost);
     }
     attron(A_REVERSE);
     mvhline(l->status.y, 0, ' ', l->cols);

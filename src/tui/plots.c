@@ -58,33 +58,62 @@ static double left_time(const struct chart *c)
     return a->lo - axis_dot(a, a->lo) * a->step / (a->spacing * a->dpc) - a->step;
 }
 
-/* Takes the newest samples: fits the axes and rasterises. */
+/* The range of quantity q (0: none) over k records of tr from rec, into [*lo, *hi]. */
+static void scan(const struct trail *tr, const double *rec, int k, int q, double *lo,
+                 double *hi)
+{
+    if (!q)
+        return;
+    for (int s = 0; s < k; s++) {
+        const double *r = rec + (size_t)s * (size_t)tr->width;
+        for (int i = 0; i < tr->n; i++)
+            *lo = fmin(*lo, r[field(tr, q, i)]), *hi = fmax(*hi, r[field(tr, q, i)]);
+    }
+}
+
+/* Each mass's trace from k records of tr from rec, in its colour: solid, or dashed (the
+ * ghost's). */
+static void traces(struct chart *c, enum plot_id id, const struct trail *tr, const double *rec,
+                   int k, double now, bool dashed)
+{
+    int xq = kinds[id].xq, yq = kinds[id].yq;
+    size_t w = (size_t)tr->width;
+    for (int i = tr->n - 1; i >= 0; i--) {
+        unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
+        const double *y = rec + field(tr, yq, i);
+        if (xq == 0)
+            plot_trace(c->canvas, rec + TRAIL_T, y, k, w, now, &c->xa, &c->ya, dashed, col);
+        else if (dashed)
+            plot_dashed_path(c->canvas, rec + field(tr, xq, i), y, k, w, &c->xa, &c->ya, col);
+        else
+            plot_path(c->canvas, rec + field(tr, xq, i), y, k, w, &c->xa, &c->ya, col);
+    }
+}
+
+/* Takes the newest samples: fits the axes to the live chain's and the ghost's, and
+ * rasterises the ghost's dashed under the live chain's. */
 static void take_samples(struct chart *c, enum plot_id id, const struct app *app)
 {
-    const struct trail *tr = app_trail(app);
+    const struct trail *tr = app_trail(app), *gt = app_ghost_trail(app);
     const struct model *m = app->model;
     int xq = kinds[id].xq, yq = kinds[id].yq;
     bool motor = id == PLOT_X && m->boundary == BOUNDARY_MOTOR;
     double now = sim_time(app->sim), window = app_window(app);
     if (xq == 0)
         chart_fit_time(c, window);
-    int k;
-    const double *rec = chart_window(tr, now + (xq == 0 ? left_time(c) : -window), &k);
+    int k, gk = 0;
+    double t0 = now + (xq == 0 ? left_time(c) : -window);
+    const double *rec = chart_window(tr, t0, &k), *grec = gt ? chart_window(gt, t0, &gk) : NULL;
     size_t w = (size_t)tr->width;
     double ylo = INFINITY, yhi = -INFINITY, xlo = INFINITY, xhi = -INFINITY;
-    for (int s = 0; s < k; s++) {
-        const double *q = rec + (size_t)s * w;
-        for (int i = 0; i < m->n; i++) {
-            double y = q[field(tr, yq, i)];
-            ylo = fmin(ylo, y), yhi = fmax(yhi, y);
-            if (xq) {
-                double x = q[field(tr, xq, i)];
-                xlo = fmin(xlo, x), xhi = fmax(xhi, x);
-            }
-        }
-        if (motor)
-            ylo = fmin(ylo, q[TRAIL_U]), yhi = fmax(yhi, q[TRAIL_U]);
+    scan(tr, rec, k, yq, &ylo, &yhi);
+    scan(tr, rec, k, xq, &xlo, &xhi);
+    if (gt) {
+        scan(gt, grec, gk, yq, &ylo, &yhi);
+        scan(gt, grec, gk, xq, &xlo, &xhi);
     }
+    for (int s = 0; motor && s < k; s++)
+        ylo = fmin(ylo, rec[s * w + TRAIL_U]), yhi = fmax(yhi, rec[s * w + TRAIL_U]);
     if (k > 0) {
         chart_fit_y(c, ylo, yhi);
         if (xq)
@@ -93,15 +122,9 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     if (!c->canvas)
         return;
     canvas_clear(c->canvas);
-    for (int i = m->n - 1; i >= 0; i--) {
-        unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
-        if (xq == 0)
-            plot_trace(c->canvas, rec + TRAIL_T, rec + field(tr, yq, i), k, w, now, &c->xa,
-                       &c->ya, false, col);
-        else
-            plot_path(c->canvas, rec + field(tr, xq, i), rec + field(tr, yq, i), k, w, &c->xa,
-                      &c->ya, col);
-    }
+    if (gt)
+        traces(c, id, gt, grec, gk, now, true);
+    traces(c, id, tr, rec, k, now, false);
     if (motor)
         plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, now, &c->xa, &c->ya, true,
                    PAIR_MOTOR);
@@ -110,10 +133,12 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
 void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool fresh)
 {
     const struct model *m = app->model;
-    struct legend_item legend[11];
+    struct legend_item legend[12];
     int n = 0;
     for (int i = 0; i < m->n && i < 10; i++)
         legend[n++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
+    if (app->ghost)
+        legend[n++] = (struct legend_item){"┄ghost", PAIR_TITLE};
     for (int k = 0; k < l->nplots; k++) {
         enum plot_id id = l->plot_id[k];
         struct chart *c = &p->chart[id];

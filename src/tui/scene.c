@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "../app/ghost.h"
 #include "draw.h"
 #include "term.h"
 
@@ -111,6 +112,51 @@ static void draw_block(const struct layout *l, double a, double b, double height
     }
 }
 
+/* The ghost's blocks (ghost.h): outlines in each mass's colour, dim, drawn before the
+ * live chain's blocks, which cover them where the two are together. Each spans the cells
+ * and rows its live twin would, so an unchanged ghost is hidden. */
+static void draw_ghost(const struct layout *l, const struct app *app)
+{
+    const struct ghost *g = app->ghost;
+    if (!g)
+        return;
+    const struct model *m = g->model;
+    const double *x = sim_x(g->sim);
+    double w = model_block_width(m), mmax = 0.0;
+    bool utf8 = term_utf8();
+    int xmin = l->scene.x + 1, xmax = l->scene.x + l->scene.w - 2;
+    for (int i = 0; i < m->n; i++)
+        mmax = fmax(mmax, m->m[i]);
+    for (int i = 0; i < m->n; i++) {
+        double X = model_equilibrium(m, i) + x[i];
+        double c0 = layout_scene_col(l, X - 0.5 * w), c1 = layout_scene_col(l, X + 0.5 * w);
+        int first = (int)floor(c0), last = (int)ceil(c1) - 1;
+        /* Rows above and below the chain's where the live block would fill any. */
+        bool tall = 0.5 * (fmax(1.0, 3.0 * sqrt(m->m[i] / mmax)) - 1.0) > 0.06;
+        attron(term_mass_attr(i) | A_DIM);
+        for (int row = tall ? 1 : CHAIN_ROW; row <= (tall ? 3 : CHAIN_ROW); row++) {
+            int y = l->scene.y + row;
+            for (int c = first; c <= last; c++) {
+                if (c < xmin || c > xmax)
+                    continue;
+                bool left = c == first, right = c == last, edge = left || right;
+                const char *s;
+                if (row == CHAIN_ROW && !tall)
+                    s = left ? (utf8 ? "▕" : "[") : right ? (utf8 ? "▏" : "]") : NULL;
+                else if (row == CHAIN_ROW)
+                    s = edge ? (utf8 ? "│" : "|") : NULL;
+                else if (row < CHAIN_ROW)
+                    s = !utf8 ? (edge ? "+" : "-") : left ? "┌" : right ? "┐" : "─";
+                else
+                    s = !utf8 ? (edge ? "+" : "-") : left ? "└" : right ? "┘" : "─";
+                if (s)
+                    mvaddstr(y, c, s);
+            }
+        }
+        attroff(term_mass_attr(i) | A_DIM);
+    }
+}
+
 /* The springs, on the canvas (or as / and \ without UTF-8). */
 static void draw_springs(struct scene *s, const struct layout *l, const struct app *app,
                          const struct selection *sel, double end)
@@ -191,6 +237,7 @@ void scene_draw(struct scene *s, const struct layout *l, const struct app *app,
     if (s->canvas)
         draw_springs(s, l, app, sel, end);
     draw_end(l, m, end);
+    draw_ghost(l, app);
     /* Masses to scale, each with its number; heavier ones stand taller. */
     double mmax = 0.0;
     for (int i = 0; i < m->n; i++)

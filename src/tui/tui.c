@@ -12,6 +12,7 @@
 
 #include <curses.h>
 
+#include "../app/ghost.h"
 #include "../app/layout.h"
 #include "../app/select.h"
 #include "draw.h"
@@ -217,6 +218,9 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_NEAREST:
         changed = app_nearest_mode(app);
+        break;
+    case ACT_GHOST:
+        changed = app_toggle_ghost(app);
         break;
     case ACT_SWEEP:
         changed = app_toggle_sweep(app);
