@@ -149,7 +149,13 @@ static int run_headless(const struct config *c, const struct model *m)
     if (judged)
         warn_limits(&l);
     sim_set_integrator(s, c->integrator);
-    config_initial(c, m, x, x + n);
+    if (config_initial(c, m, x, x + n) != 0) {
+        options_say("--start-mode: mode %d's shape cannot be computed for these values "
+                    "(LAPACK failed, or the numbers overflow)", c->start_mode);
+        free(x);
+        sim_free(s);
+        return EXIT_FAILURE;
+    }
     sim_reset(s, x, x + n);
     if (open_output(&o, c)) {
         free(x);

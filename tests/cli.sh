@@ -4,34 +4,15 @@
 # (default ./springsim). Prints one line per failing case, then exactly one summary line
 # "cli: N passed, M failed"; exits non-zero if anything failed.
 
-SPRINGSIM=${SPRINGSIM:-./springsim}
-case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac # survives a cd
-
-passed=0
-failed=0
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
+NAME=cli
+. "$(dirname "$0")/lib/check.sh"
 trap 'exit 1' HUP INT TERM
 
 # Keep the user's own presets out of the way: an empty user preset directory, no
 # $SPRINGSIM_PRESETS. Cases that need them set them for one run.
-mkdir -p "$tmp/xdg"
-XDG_CONFIG_HOME=$tmp/xdg
-export XDG_CONFIG_HOME
-unset SPRINGSIM_PRESETS
-LC_ALL=C
-export LC_ALL
-
+plain_env
 out=$tmp/stdout
 err=$tmp/stderr
-
-pass() { passed=$((passed + 1)); }
-
-# fail WHAT: one line saying which case failed, what was expected and what came out.
-fail() {
-    failed=$((failed + 1))
-    printf 'FAIL: %s\n' "$*"
-}
 
 # run ARGS...: runs the binary; stdout in $out, stderr in $err, exit status in $rc, and
 # the command as written in $cmd for messages.

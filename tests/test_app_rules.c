@@ -447,6 +447,31 @@ static void preset_out_of_range(void **state)
     rmdir(dir);
 }
 
+/* --start-mode reaches the interactive program through its config, as --x0 does: the
+ * chain starts along the mode's shape at rest, and the start is kept as per-mass lists
+ * (so a later edit does not recompute it). */
+static void starts_along_a_mode(void **state)
+{
+    (void)state;
+    static struct config c;
+    char err[256];
+    app_free(&app);
+    config_init(&c);
+    c.masses = 3;
+    assert_int_equal(config_set(&c, CFG_MASS, "1,2,0.5", err, sizeof err), 0);
+    assert_int_equal(config_set(&c, CFG_START_MODE, "2:0.3", err, sizeof err), 0);
+    assert_int_equal(app_init(&app, &c, SRCDIR), 0);
+    double want[3];
+    assert_int_equal(modes_start(app.model, 2, 0.3, want), 0);
+    for (int i = 0; i < 3; i++) {
+        assert_close(sim_x(app.sim)[i], want[i], 0.0);
+        assert_close(sim_v(app.sim)[i], 0.0, 0.0);
+    }
+    assert_int_equal(app.cfg.start_mode, 0);
+    assert_int_equal(app.cfg.x0.count, 3);
+    assert_memory_equal(app.cfg.x0.v, want, sizeof want);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
@@ -459,6 +484,7 @@ int main(void)
         T(failed_init_leaves_nothing),
         T(refused_input_changes_nothing),
         T(preset_out_of_range),
+        T(starts_along_a_mode),
     };
 #undef T
     return cmocka_run_group_tests_name("app rules", tests, NULL, NULL);

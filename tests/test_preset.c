@@ -164,6 +164,21 @@ static void builtin_presets_show_their_names(void **state)
     model_free(m);
 }
 
+/* Writes c (and m, made from it) as a preset file and reads it back into back. */
+static void write_and_read(const struct config *c, const struct model *m, struct config *back)
+{
+    char path[] = "/tmp/springsim-test-XXXXXX", err[512];
+    int fd = mkstemp(path);
+    FILE *f = fdopen(fd, "w");
+    assert_int_equal(preset_write(f, c, m), 0);
+    fclose(f);
+    config_init(back);
+    enum preset_status st = preset_load(path, back, err, sizeof err);
+    unlink(path);
+    if (st != PRESET_OK)
+        fail_msg("%s", err);
+}
+
 /* A config with per-element values written out and read back gives the same model. */
 static void write_read_round_trip(void **state)
 {
@@ -193,16 +208,7 @@ static void write_read_round_trip(void **state)
     struct model *m = config_model(&c, &bad, err, sizeof err);
     assert_non_null(m);
 
-    char path[] = "/tmp/springsim-test-XXXXXX";
-    int fd = mkstemp(path);
-    FILE *f = fdopen(fd, "w");
-    assert_int_equal(preset_write(f, &c, m), 0);
-    fclose(f);
-    config_init(&back);
-    enum preset_status st = preset_load(path, &back, err, sizeof err);
-    if (st != PRESET_OK)
-        fail_msg("%s", err);
-    unlink(path);
+    write_and_read(&c, m, &back);
     struct model *m2 = config_model(&back, &bad, err, sizeof err);
     assert_non_null(m2);
     assert_int_equal(m2->n, 40);
@@ -220,6 +226,48 @@ static void write_read_round_trip(void **state)
     assert_memory_equal(x, x2, sizeof x);
     model_free(m);
     model_free(m2);
+}
+
+/* A start along a mode is written back as start-mode = K:AMP and read back the same;
+ * the later of x0, v0, random and start-mode wins. */
+static void start_mode_round_trip(void **state)
+{
+    (void)state;
+    static struct config c, back;
+    char err[512];
+    int bad;
+    config_init(&c);
+    config_set(&c, CFG_MASSES, "3", err, sizeof err);
+    assert_int_equal(config_set(&c, CFG_RANDOM, NULL, err, sizeof err), 0);
+    assert_int_equal(config_set(&c, CFG_V0, "0.2", err, sizeof err), 0);
+    assert_int_equal(config_set(&c, CFG_START_MODE, "3:0.1234567890123", err, sizeof err), 0);
+    assert_false(c.random);
+    assert_int_equal(c.v0.count, 0);
+    struct model *m = config_model(&c, &bad, err, sizeof err);
+    assert_non_null(m);
+    write_and_read(&c, m, &back);
+    assert_int_equal(back.start_mode, 3);
+    assert_true(back.start_amp == 0.1234567890123);
+    double x[3], v[3], want[3];
+    assert_int_equal(config_initial(&back, m, x, v), 0);
+    assert_int_equal(modes_start(m, 3, 0.1234567890123, want), 0);
+    assert_memory_equal(x, want, sizeof x);
+    for (int i = 0; i < 3; i++)
+        assert_true(v[i] == 0.0);
+    /* x0 after it wins, and so does random. */
+    assert_int_equal(config_set(&back, CFG_X0, "0.1", err, sizeof err), 0);
+    assert_int_equal(back.start_mode, 0);
+    assert_int_equal(config_set(&back, CFG_START_MODE, "1", err, sizeof err), 0);
+    assert_true(back.start_mode == 1 && back.start_amp == CONFIG_START_AMP);
+    assert_int_equal(back.x0.count, 0);
+    assert_int_equal(config_set(&back, CFG_RANDOM, NULL, err, sizeof err), 0);
+    assert_int_equal(back.start_mode, 0);
+    /* K above N is found with the chain. */
+    assert_int_equal(config_set(&back, CFG_START_MODE, "4", err, sizeof err), 0);
+    assert_null(config_model(&back, &bad, err, sizeof err));
+    assert_int_equal(bad, CFG_START_MODE);
+    assert_non_null(strstr(err, "1 <= K <= 3"));
+    model_free(m);
 }
 
 /* Random positions: reproducible from the seed, inside the walls, blocks apart. */
@@ -425,6 +473,7 @@ int main(void)
         cmocka_unit_test(value_checks),
         cmocka_unit_test(builtin_presets_show_their_names),
         cmocka_unit_test(write_read_round_trip),
+        cmocka_unit_test(start_mode_round_trip),
         cmocka_unit_test(random_positions),
         cmocka_unit_test(syntax_refused),
         cmocka_unit_test(long_path_refused),

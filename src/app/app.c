@@ -125,8 +125,9 @@ static void fix_initial(struct app *app)
 {
     int n = app->model->n;
     double x[APP_MAX_MASSES], v[APP_MAX_MASSES];
-    config_initial(&app->cfg, app->model, x, v);
+    config_initial(&app->cfg, app->model, x, v); /* on failure at rest in equilibrium */
     app->cfg.random = false;
+    app->cfg.start_mode = 0;
     app->cfg.x0.count = n;
     app->cfg.v0.count = n;
     memcpy(app->cfg.x0.v, x, (size_t)n * sizeof *x);

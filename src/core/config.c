@@ -78,6 +78,12 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                   .help = "seed for --random", .symbol = "seed",
                   .lo = 0, .hi = 0x1p64, .hi_open = true, .def = NAN,
                   .offset = AT(seed)},
+    /* Checked against N in config_model; the later of x0, v0, random and this wins. */
+    [CFG_START_MODE] = {.name = "start-mode", .section = "initial", .kind = CONFIG_TEXT,
+                        .arg = "K[:AMP]", .offset = AT(start_mode),
+                        .expect = "K[:AMP]: a mode 1 <= K <= N, AMP >= 0 m, default 0.5",
+                        .help = "start along mode K's shape, largest |x| = AMP m (default "
+                                "0.5), at rest"},
     [CFG_NO_COLLISIONS] = {.name = "no-collisions", .section = "system", .kind = CONFIG_FLAG,
                            .help = "turn collisions off (the velocity cap stays)",
                            .offset = AT(no_collisions)},
@@ -473,6 +479,44 @@ static const char *parse_whole(const char *s, unsigned long long *out)
     return NULL;
 }
 
+/* --start-mode K[:AMP]: K a whole number from 1 (N is checked in config_model), AMP a
+ * number >= 0. */
+static int set_start_mode(struct config *c, const char *value, char *err, size_t errlen)
+{
+    char k_text[32], msg[4 * CONFIG_QUOTE_MAX + 96], q[4 * CONFIG_QUOTE_MAX + 48];
+    const char *colon = strchr(value, ':'), *why;
+    size_t klen = colon ? (size_t)(colon - value) : strlen(value);
+    unsigned long long k = 0;
+    double amp = CONFIG_START_AMP;
+    if (klen >= sizeof k_text)
+        return fail(CFG_START_MODE, value, "is not a mode number", err, errlen);
+    memcpy(k_text, value, klen);
+    k_text[klen] = '\0';
+    if ((why = parse_whole(k_text, &k)) || k < 1 || k > MODEL_MAX_MASSES) {
+        config_quote(k_text, klen, q, sizeof q);
+        snprintf(msg, sizeof msg, "has mode %s, which %s", q, why ? why : "is out of range");
+        return fail(CFG_START_MODE, value, colon ? msg : why ? why : "is out of range", err,
+                    errlen);
+    }
+    if (colon) {
+        if (!colon[1])
+            return fail(CFG_START_MODE, value, "has no amplitude after ':'", err, errlen);
+        why = config_parse_number(colon + 1, &amp);
+        if (!why && !(amp >= 0.0))
+            why = "is out of range";
+        if (why) {
+            config_quote(colon + 1, strlen(colon + 1), q, sizeof q);
+            snprintf(msg, sizeof msg, "has amplitude %s, which %s", q, why);
+            return fail(CFG_START_MODE, value, msg, err, errlen);
+        }
+    }
+    c->start_mode = (int)k;
+    c->start_amp = amp;
+    c->x0.count = c->v0.count = 0;
+    c->random = false;
+    return 0;
+}
+
 int config_set(struct config *c, int key, const char *value, char *err, size_t errlen)
 {
     const struct config_option *o;
@@ -493,6 +537,8 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
     case CONFIG_TEXT:
         if (key == CFG_PRESET)
             return 0; /* applied by the caller, before everything else */
+        if (key == CFG_START_MODE)
+            return set_start_mode(c, value, err, errlen);
         if (*value == '\0')
             return fail(key, value, "is empty", err, errlen);
         memcpy(at, &value, sizeof value);
@@ -534,11 +580,14 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
         return 0;
     }
     }
-    /* The later of x0 and random wins. */
+    /* The later of x0 and random wins; either, or v0, replaces a start along a mode
+     * (which replaced them: set_start_mode). */
     if (key == CFG_X0)
         c->random = false;
     if (key == CFG_RANDOM && c->random)
         c->x0.count = 0;
+    if (key == CFG_X0 || key == CFG_V0 || (key == CFG_RANDOM && c->random))
+        c->start_mode = 0;
     return 0;
 }
 

@@ -29,6 +29,7 @@ enum config_key {
     CFG_V0,
     CFG_RANDOM,
     CFG_SEED,
+    CFG_START_MODE,
     CFG_NO_COLLISIONS,
     CFG_DURATION,
     CFG_SAMPLE,
@@ -118,6 +119,8 @@ struct config {
     bool random;                        /* random initial positions */
     uint64_t seed;                      /* seed for random */
     bool seed_set;                      /* seed given */
+    int start_mode;                     /* start along this mode (1-based), 0: not */
+    double start_amp;                   /* its largest |displacement| (m) */
     bool no_collisions;                 /* collisions off */
     double duration;                    /* headless run length (s) */
     double sample;                      /* headless output interval (s), 0 = every step */
@@ -131,6 +134,7 @@ struct config {
 };
 
 #define CONFIG_QUOTE_MAX 40  /* characters of a value quoted in a message */
+#define CONFIG_START_AMP 0.5 /* --start-mode's AMP unless given (m) */
 #define CONFIG_MAX_STEPS 1e12 /* steps a headless run may take */
 
 /* Writes the n bytes of text into buf (room for len) with every control byte escaped
@@ -182,8 +186,10 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
  * means no memory. */
 struct model *config_model(const struct config *c, int *bad_key, char *err, size_t errlen);
 
-/* Initial displacements and velocities for model m (built from c) into x and v. */
-void config_initial(const struct config *c, const struct model *m, double *x, double *v);
+/* Initial displacements and velocities for model m (built from c) into x and v: x0 and
+ * v0, random positions, or start_amp times mode start_mode's shape at rest. Returns 0, or
+ * modes_start's error with x and v at 0. */
+int config_initial(const struct config *c, const struct model *m, double *x, double *v);
 
 /* Random displacements for model m from seed: block centres uniformly placed inside
  * the walls (clear of the piston at its furthest), neighbours at least 1.5 block widths

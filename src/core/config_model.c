@@ -1,12 +1,14 @@
 /* config_model.c: a configuration made into the chain it describes: lists expanded to
  * one value per element (with the reason when a list has the wrong length), and the
- * initial conditions, random positions included. */
+ * initial conditions, random positions and a start along a mode included. */
 #include "config.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "modes.h"
 
 /* Says that list l has the wrong length for this many elements, quoting its values. */
 static void wrong_length(const struct config_list *l, int elements, const char *what,
@@ -71,6 +73,11 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
         *bad_key = CFG_V0;
     if (*bad_key == CFG_X0 || *bad_key == CFG_V0)
         wrong_length(*bad_key == CFG_X0 ? &c->x0 : &c->v0, n, per_mass, err, errlen);
+    if (*bad_key < 0 && c->start_mode > n) {
+        *bad_key = CFG_START_MODE;
+        snprintf(err, errlen, "'%d' is out of range for %d %s (expected a mode 1 <= K <= %d)",
+                 c->start_mode, n, per_mass, n);
+    }
     if (*bad_key >= 0) {
         model_free(m);
         return NULL;
@@ -115,9 +122,18 @@ void config_random_positions(const struct model *m, uint64_t seed, double *x)
         x[i] = lo + x[i] + i * sep - model_equilibrium(m, i);
 }
 
-void config_initial(const struct config *c, const struct model *m, double *x, double *v)
+int config_initial(const struct config *c, const struct model *m, double *x, double *v)
 {
     int n = m->n;
+    if (c->start_mode > 0) {
+        int e = modes_start(m, c->start_mode, c->start_amp, x);
+        for (int i = 0; i < n; i++) {
+            v[i] = 0.0;
+            if (e != 0)
+                x[i] = 0.0;
+        }
+        return e;
+    }
     if (c->random)
         config_random_positions(m, c->seed, x);
     else
@@ -125,4 +141,5 @@ void config_initial(const struct config *c, const struct model *m, double *x, do
             x[i] = c->x0.count ? c->x0.v[c->x0.count == 1 ? 0 : i] : 0.0;
     for (int i = 0; i < n; i++)
         v[i] = c->v0.count ? c->v0.v[c->v0.count == 1 ? 0 : i] : 0.0;
+    return 0;
 }

@@ -65,7 +65,11 @@ int preset_write(FILE *out, const struct config *c, const struct model *m)
     write_number(out, "amplitude", m->motor.amplitude);
     write_number(out, "frequency", m->motor.frequency);
     fprintf(out, "\n[initial]\n");
-    if (c->random) {
+    if (c->start_mode > 0) {
+        char amp[32];
+        format_exact(c->start_amp, amp, sizeof amp);
+        fprintf(out, "start-mode = %d:%s\n", c->start_mode, amp);
+    } else if (c->random) {
         fprintf(out, "random = true\nseed = %llu\n", (unsigned long long)c->seed);
     } else {
         double *x = calloc((size_t)n, sizeof *x);
