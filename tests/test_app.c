@@ -29,6 +29,25 @@ static int app_load_config(struct config *next)
 
 /* ---- what the masks say ---- */
 
+/* The arrows move damping, springs and masses up as well as down, by their fine and
+ * coarse steps (0.01 and 0.1 N s/m, 1 and 5 N/m, 0.1 and 0.5 kg: the controls' table). */
+static void arrows_move_lists_both_ways(void **state)
+{
+    (void)state;
+    app_set_text(&app, CTL_DAMPING, "0.1");
+    app_adjust(&app, CTL_DAMPING, 1, false);
+    assert_close(app.model->c[0], 0.11, 1e-12);
+    app_adjust(&app, CTL_DAMPING, 1, true);
+    assert_close(app.model->c[2], 0.2, 1e-12);
+    app_adjust(&app, CTL_DAMPING, -1, false);
+    assert_close(app.model->c[1], 0.19, 1e-12);
+    double k = app.model->k[0], m = app.model->m[0];
+    app_adjust(&app, CTL_SPRING, 1, false);
+    assert_true(app.model->k[0] > k);
+    app_adjust(&app, CTL_MASS, 1, false);
+    assert_true(app.model->m[0] > m);
+}
+
 static void masks_say_what_changed(void **state)
 {
     (void)state;
@@ -566,6 +585,7 @@ int main(void)
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
     const struct CMUnitTest tests[] = {
         T(masks_say_what_changed),
+        T(arrows_move_lists_both_ways),
         T(preset_keeps_playback),
         T(window_steps_and_clamps),
         T(coarse_trail_covers_60_s),

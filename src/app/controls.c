@@ -55,7 +55,9 @@ static double arrow_lo(enum control ctl)
 static double arrow_hi(enum control ctl)
 {
     const struct config_option *o = &config_options[ranges[ctl].key];
-    return fmin(ranges[ctl].hi, o->ihi > 0.0 ? o->ihi : o->hi);
+    /* A list's row has a lower bound only (its hi is left 0). */
+    double hi = o->ihi > 0.0 ? o->ihi : o->hi > o->lo ? o->hi : INFINITY;
+    return fmin(ranges[ctl].hi, hi);
 }
 
 const char *app_control_label(enum control ctl)
