@@ -204,7 +204,7 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@echo
 	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"
 	@echo "CPU < 3 %, output < 100 KB/s, first frame < 50 ms, RSS < 10 MB; also < 100 KB/s at"
-	@echo "200x60 and with a plot enlarged; low bandwidth < 20 KB/s)"
+	@echo "200x60, with a plot enlarged and in the spectrum view; low bandwidth < 20 KB/s)"
 	@echo
 	@echo "| run | size | CPU | output | first frame | peak RSS |"
 	@echo "| --- | --- | --- | --- | --- | --- |"
@@ -212,6 +212,9 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) default ./$(BIN)
 	@BENCH_KEYS='1 ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'plot 1 enlarged' ./$(BIN)
 	@BENCH_KEYS='1 ' $(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) 'plot 1 enlarged' ./$(BIN)
+	@BENCH_KEYS='F ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'spectrum view (F)' ./$(BIN)
+	@BENCH_KEYS='F]]]] ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
+	    'spectrum view, 10x (a 60 s record)' ./$(BIN)
 	@$(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 

@@ -101,10 +101,14 @@ int spectrum_compute(struct spectrum *s, const double *x, int count, size_t stri
         return -1;
     if (count != s->count)
         hann(s, count);
+    /* The offset taken off is the window-weighted mean, sum(w x) / sum(w): then bin 0 is
+     * exactly empty and the result does not depend on the offset at all. (The plain
+     * mean of a record that is not a whole number of cycles differs from it, and the
+     * difference leaks into the lowest bins as a false line.) */
     double mean = 0.0;
     for (int i = 0; i < count; i++)
-        mean += x[(size_t)i * stride];
-    mean /= count;
+        mean += s->window[i] * x[(size_t)i * stride];
+    mean /= s->window_sum;
     for (int i = 0; i < count; i++)
         s->in[i] = s->window[i] * (x[(size_t)i * stride] - mean);
     for (int i = count; i < size; i++)

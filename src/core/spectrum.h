@@ -4,8 +4,9 @@
  * Normalisation: a sine of amplitude A (m) whose frequency falls on a bin reads
  * 20 log10(A / 1 m) dB there, whatever the number of samples or the padding: the
  * transform is divided by the window's sum (count/2 for the Hann window, its coherent
- * gain 0.5 times count) and doubled for every bin but 0 and the Nyquist bin. The mean of
- * the samples is taken off first, so an offset does not spread into the lowest bins. The
+ * gain 0.5 times count) and doubled for every bin but 0 and the Nyquist bin. The
+ * window-weighted mean of the samples is taken off first, so an offset (a mass's resting
+ * place, a drift) changes nothing and leaves no false line in the lowest bins. The
  * samples may be zero-padded to a longer transform: the bins are then closer together
  * (a smoother curve), the levels are the same, the resolution is still 1 / (count dt). */
 #ifndef SPRINGSIM_SPECTRUM_H
@@ -28,7 +29,7 @@ void spectrum_free(struct spectrum *s);
 int spectrum_length(int count, int pad);
 
 /* The spectrum of count samples x[0], x[stride], x[2 stride], ... (2 <= count <= size),
- * mean removed, periodic Hann window w_n = (1 - cos(2 pi n / count)) / 2, zero-padded to
+ * weighted mean removed, periodic Hann window w_n = (1 - cos(2 pi n / count)) / 2, zero-padded to
  * a transform of size points. The plan and buffers are made only when size differs from
  * the last call's (FFTW_ESTIMATE; the one allocation); with the same size nothing is
  * allocated. Returns 0, -1 on no memory (s is then empty), -2 on bad arguments (s is left

@@ -99,6 +99,18 @@ void chart_fit_time(struct chart *c, double window)
     fit_x(c, -window, 0.0, true);
 }
 
+void chart_fix_x(struct chart *c, double lo, double hi)
+{
+    fit_x(c, lo, hi, false);
+}
+
+void chart_fix_y(struct chart *c, double lo, double hi)
+{
+    int h = c->area.h > 1 ? c->area.h : 1;
+    axis_fit(&c->ya, lo, hi, max_ticks(h, 2), h, 4, MIN_ROW_GAP);
+    chart_ticks_from_axis(&c->yt, &c->ya);
+}
+
 int chart_dot_y(const struct chart *c, double v)
 {
     return 4 * c->area.h - 1 - (int)lround(axis_dot(&c->ya, v));

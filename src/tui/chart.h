@@ -53,6 +53,11 @@ void chart_fit_x(struct chart *c, double lo, double hi);
 /* Fits the x axis to a rolling time window: -window .. 0 s, 0 at the right edge. */
 void chart_fit_time(struct chart *c, double window);
 
+/* Fits the x (or y) axis to exactly [lo, hi] rounded out to its ticks, with no
+ * autoscaling memory and no margin: an axis whose ends are chosen, not found in data. */
+void chart_fix_x(struct chart *c, double lo, double hi);
+void chart_fix_y(struct chart *c, double lo, double hi);
+
 /* Ticks of axis a. */
 void chart_ticks_from_axis(struct chart_ticks *t, const struct axis *a);
 

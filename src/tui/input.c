@@ -27,6 +27,7 @@ const struct binding input_bindings[] = {
     {'m', ACT_MODES, "m", "m", "modes view: natural frequencies and shapes (again: plots)"},
     {'f', ACT_RESPONSE, "f", "f", "frequency response view (again: plots)"},
     {'e', ACT_ENERGY, "e", "e", "energy view: the balance and its drift (again: plots)"},
+    {'F', ACT_SPECTRUM, "F", "F", "spectrum view of the selected mass (again: plots)"},
     {'g', ACT_GHOST, "g", "g", "ghost: a frozen copy run beside the chain (again: drop it)"},
     {'n', ACT_NEAREST, "n", "n", "drive at the nearest natural frequency"},
     {'w', ACT_SWEEP, "w", "w", "start / stop a sine-sweep experiment (see it in f)"},

@@ -30,6 +30,7 @@ enum action {
     ACT_MODES,     /* modes view */
     ACT_RESPONSE,  /* frequency response view */
     ACT_ENERGY,    /* energy view */
+    ACT_SPECTRUM,  /* spectrum view */
     ACT_NEAREST,   /* drive at the nearest natural frequency */
     ACT_SWEEP,     /* start / stop the sine-sweep experiment */
     ACT_SAVE,      /* save the set-up as a preset */

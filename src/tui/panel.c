@@ -143,9 +143,9 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
     hints[n++] = (struct hint){".", "step"};
     if (h->view)
-        hints[n++] = (struct hint){"m f e", "views (again: plots)"};
+        hints[n++] = (struct hint){"m f e F", "views (again: plots)"};
     else
-        hints[n++] = (struct hint){"m f e", "views"};
+        hints[n++] = (struct hint){"m f e F", "views"};
     if (h->enlarged >= 0)
         hints[n++] = (struct hint){"0", "all plots"};
     else if (!h->view)

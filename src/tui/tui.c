@@ -102,6 +102,9 @@ static double draw(struct tui *t, bool refresh)
     } else {
         panel_status(l, &t->app, t->behind);
         scene_draw(&t->scene, l, &t->app, &t->sel);
+        /* The spectrum follows the mass last selected in the chain. */
+        if (select_mass(&t->sel) >= 0)
+            t->views.spectrum.mass = select_mass(&t->sel);
         if (t->views.shown == VIEW_PLOTS)
             plots_draw(&t->plots, l, &t->app, refresh);
         else
@@ -215,6 +218,9 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_ENERGY:
         toggle_view(t, VIEW_ENERGY);
+        break;
+    case ACT_SPECTRUM:
+        toggle_view(t, VIEW_SPECTRUM);
         break;
     case ACT_NEAREST:
         changed = app_nearest_mode(app);

@@ -24,6 +24,7 @@ bool views_place(struct views *v, const struct layout *l)
     bool ok = chart_place(&v->response.chart, l->area, 0);
     ok &= chart_place(&v->energy.chart, l->area, ENERGY_HEADER);
     v->energy.chart.zero_line = true;
+    ok &= spectrum_view_place(&v->spectrum, l->area);
     v->response.version = 0;
     return ok;
 }
@@ -33,6 +34,7 @@ void views_free(struct views *v)
     chart_free(&v->modes);
     chart_free(&v->response.chart);
     chart_free(&v->energy.chart);
+    spectrum_view_free(&v->spectrum);
     free(v->response.curve);
     v->response.curve = NULL;
 }
@@ -338,6 +340,9 @@ void views_draw(struct views *v, const struct app *app, bool refresh)
         break;
     case VIEW_ENERGY:
         draw_energy(&v->energy, app, refresh);
+        break;
+    case VIEW_SPECTRUM:
+        spectrum_view_draw(&v->spectrum, app, refresh);
         break;
     case VIEW_PLOTS:
         break;

@@ -1,7 +1,7 @@
 /* views.h: the analysis views that can take the plot area: the modes (every natural
  * frequency with its shape), the frequency response (theory on log-log axes with the
- * sine-sweep experiment's measured peaks over it) and the energy balance. Each view
- * keeps its own state here. */
+ * sine-sweep experiment's measured peaks over it), the energy balance and the spectrum
+ * (view_spectrum.h). Each view keeps its own state here. */
 #ifndef SPRINGSIM_VIEWS_H
 #define SPRINGSIM_VIEWS_H
 
@@ -10,8 +10,9 @@
 #include "../app/app.h"
 #include "../app/layout.h"
 #include "chart.h"
+#include "view_spectrum.h"
 
-enum view { VIEW_PLOTS, VIEW_MODES, VIEW_RESPONSE, VIEW_ENERGY };
+enum view { VIEW_PLOTS, VIEW_MODES, VIEW_RESPONSE, VIEW_ENERGY, VIEW_SPECTRUM };
 
 /* The response view's theory curve, solved again only when the chain or the width
  * changes. */
@@ -33,6 +34,7 @@ struct views {
     struct chart modes;        /* the modes view's frame */
     struct response_view response;
     struct energy_view energy;
+    struct spectrum_view spectrum; /* view_spectrum.c */
 };
 
 /* Places the views in the layout's plot area; false on no memory. */

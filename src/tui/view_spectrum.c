@@ -1,0 +1,317 @@
+/* view_spectrum.c: the spectrum view. At each refresh of the plots it takes the coarse
+ * samples of the last 60 s (the longest time window: the default 10 s would resolve only
+ * 0.1 Hz, too coarse to part lines 0.09 Hz apart as the beating preset's are), the
+ * selected mass's displacement, and shows its Hann-windowed spectrum (src/core/spectrum.c,
+ * zero-padded twice for a smoother curve) in dB, from the top level down 80 dB, against
+ * frequency from 0 to twice the highest natural frequency or the drive's, whichever is
+ * higher (never past the Nyquist frequency). The natural frequencies are dotted
+ * verticals labelled f1, f2, ...; the drive's harmonics that its waveform has (sine: the
+ * fundamental; square and triangle: the odd ones; sawtooth: all) dashed ones labelled
+ * 1×, 3×, .... Nothing is allocated at a refresh unless the transform's length changes,
+ * which it does only while the record grows to 60 s, or when dt changes. */
+#include "view_spectrum.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "../core/motor.h"
+#include "draw.h"
+#include "term.h"
+
+#define HEADER_ROWS 2 /* the marker labels: the natural frequencies, then the harmonics */
+#define PAD 2         /* zero padding: the transform is twice the samples' power of two */
+#define MIN_GAP 2     /* columns between two markers of the harmonics, at least */
+
+bool spectrum_view_place(struct spectrum_view *sv, struct rect area)
+{
+    bool ok = chart_place(&sv->chart, area, HEADER_ROWS);
+    sv->shown = -1;
+    return ok;
+}
+
+void spectrum_view_free(struct spectrum_view *sv)
+{
+    chart_free(&sv->chart);
+    spectrum_free(sv->fft);
+    sv->fft = NULL;
+    sv->size = 0;
+}
+
+/* True when the motor drives the chain. */
+static bool driven(const struct model *m)
+{
+    return m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+}
+
+/* The harmonic after the n-th that the drive's waveform has, 0 after the last: a sine
+ * has the fundamental only, a square and a triangle the odd ones, a sawtooth all. */
+static int next_harmonic(const struct model *m, int n)
+{
+    switch (m->motor.wave) {
+    case WAVE_SQUARE:
+    case WAVE_TRIANGLE:
+        return n + 2;
+    case WAVE_SAWTOOTH:
+        return n + 1;
+    default:
+        return 0;
+    }
+}
+
+/* The frequency axis's end (Hz): twice the highest line of interest, at most nyquist. */
+static double top_frequency(const struct app *app, double nyquist)
+{
+    const struct model *m = app->model;
+    double f = 0.0;
+    if (app->modes_ok)
+        f = app->modes[m->n - 1];
+    if (driven(m))
+        f = fmax(f, m->motor.frequency);
+    f = f > 0.0 ? 2.0 * f : nyquist;
+    return fmin(f, nyquist);
+}
+
+/* Dot column of frequency f. */
+static int freq_dot(const struct chart *c, double f)
+{
+    return (int)lround(axis_dot(&c->xa, f));
+}
+
+/* The newest run of samples dt apart covering at most SPECTRUM_VIEW_SECONDS: a change of
+ * dt ends a run. *first gets its first record, *step the spacing; returns its length. */
+static int uniform_run(const struct trail *tr, const double **first, double *step)
+{
+    const double *rec = trail_first(tr);
+    int w = tr->width, last = tr->count - 1;
+    if (last < 1)
+        return 0;
+    double t1 = rec[(size_t)last * w + TRAIL_T];
+    double d = t1 - rec[(size_t)(last - 1) * w + TRAIL_T];
+    int i = last - 1;
+    while (i > 0) {
+        double t0 = rec[(size_t)(i - 1) * w + TRAIL_T], t = rec[(size_t)i * w + TRAIL_T];
+        if (fabs(t - t0 - d) > 1e-6 * d || t1 - t0 > SPECTRUM_VIEW_SECONDS + 0.5 * d)
+            break;
+        i--;
+    }
+    *first = rec + (size_t)i * w;
+    *step = d;
+    return last - i + 1;
+}
+
+/* The level shown at dot column x: the highest bin the column covers, or between bins
+ * (closer than the dots) the straight line through the two nearest. */
+static double column_level(const struct spectrum_view *sv, int x, double bin_hz)
+{
+    const struct chart *c = &sv->chart;
+    const double *level = spectrum_db(sv->fft);
+    int bins = spectrum_bins(sv->fft);
+    double lo = axis_value(&c->xa, x - 0.5) / bin_hz, hi = axis_value(&c->xa, x + 0.5) / bin_hz;
+    int kl = (int)ceil(fmax(lo, 0.0)), kh = (int)floor(fmin(hi, bins - 1.0));
+    if (kl <= kh) {
+        double best = level[kl];
+        for (int k = kl + 1; k <= kh; k++)
+            best = fmax(best, level[k]);
+        return best;
+    }
+    double k = 0.5 * (lo + hi);
+    int k0 = (int)floor(k);
+    if (k0 < 0 || k0 + 1 >= bins)
+        return NAN;
+    return level[k0] + (k - k0) * (level[k0 + 1] - level[k0]);
+}
+
+/* The dot row of the spectrum at dot column x, held to the canvas; -1 where it has
+ * none (below 0 Hz, past the last bin). */
+static int trace_dot(const struct spectrum_view *sv, int x, double bin_hz)
+{
+    const struct chart *c = &sv->chart;
+    double v = column_level(sv, x, bin_hz);
+    if (!isfinite(v))
+        return -1;
+    int y = chart_dot_y(c, v), H = 4 * c->canvas->rows;
+    return y < 0 ? 0 : y >= H ? H - 1 : y;
+}
+
+/* A marker at dot column x: a stem from the spectrum down to the floor, every dot of
+ * the pattern's period whose row % period is below on. */
+static void stem(struct spectrum_view *sv, int x, double bin_hz, int period, int on, int pair)
+{
+    struct canvas *cv = sv->chart.canvas;
+    int top = trace_dot(sv, x, bin_hz);
+    if (top < 0 || x >= 2 * cv->cols)
+        return;
+    for (int y = top + 1; y < 4 * cv->rows; y++)
+        if (y % period < on)
+            canvas_set(cv, x, y, (uint8_t)pair);
+}
+
+/* The markers, each a stem under the spectrum at its frequency (so a line standing on
+ * it reads at once): the natural frequencies dotted, the drive's harmonics dashed in the
+ * motor's colour. Harmonics closer than MIN_GAP columns to the one before are left out. */
+static void draw_markers(struct spectrum_view *sv, const struct app *app, double fend,
+                         double bin_hz)
+{
+    const struct model *m = app->model;
+    struct chart *c = &sv->chart;
+    for (int j = 0; j < m->n && app->modes_ok; j++)
+        if (app->modes[j] <= fend)
+            stem(sv, freq_dot(c, app->modes[j]), bin_hz, 3, 1, 0);
+    if (!driven(m))
+        return;
+    int last = -2 * c->canvas->cols;
+    for (int n = 1; n > 0 && n * m->motor.frequency <= fend; n = next_harmonic(m, n)) {
+        int x = freq_dot(c, n * m->motor.frequency);
+        if (x - last < 2 * MIN_GAP)
+            continue;
+        last = x;
+        stem(sv, x, bin_hz, 4, 2, PAIR_MOTOR);
+    }
+}
+
+/* Takes the newest samples: the spectrum, the axes, the canvas. */
+static void take_samples(struct spectrum_view *sv, const struct app *app)
+{
+    struct chart *c = &sv->chart;
+    const struct trail *tr = app->coarse;
+    int mass = sv->mass < app->model->n ? sv->mass : 0;
+    const double *first;
+    double step;
+    int count = uniform_run(tr, &first, &step);
+    sv->shown = -1;
+    if (count < 4 || !c->canvas)
+        return;
+    int want = spectrum_length(count, PAD);
+    int size = sv->size >= want && sv->size <= 2 * want ? sv->size : want;
+    if (!sv->fft)
+        sv->fft = spectrum_new();
+    sv->no_memory = !sv->fft || spectrum_compute(sv->fft, first + TRAIL_X(tr, mass), count,
+                                                 (size_t)tr->width, size) != 0;
+    if (sv->no_memory) {
+        sv->size = 0;
+        return;
+    }
+    sv->size = size;
+    sv->shown = mass;
+    sv->span = (count - 1) * step;
+    double bin_hz = spectrum_bin_hz(sv->fft, 1, step);
+    double fend = top_frequency(app, 0.5 / step);
+    chart_fix_x(c, 0.0, fend);
+    /* The peak within the axis, and the axis's top: a multiple of 10 dB above it that
+     * moves only when the peak passes it or falls 20 dB below it. */
+    const double *level = spectrum_db(sv->fft);
+    double right = axis_value(&c->xa, 2 * c->canvas->cols - 0.5);
+    int kmax = (int)fmin(spectrum_bins(sv->fft) - 1.0, floor(right / bin_hz));
+    int kp = 0;
+    for (int k = 1; k <= kmax; k++)
+        if (level[k] > level[kp])
+            kp = k;
+    sv->peak_hz = kp * bin_hz;
+    sv->peak_db = level[kp];
+    if (sv->peak_db > sv->top || sv->peak_db < sv->top - 20.0)
+        sv->top = 10.0 * ceil(fmax(sv->peak_db, -250.0) / 10.0);
+    chart_fix_y(c, sv->top - SPECTRUM_VIEW_RANGE_DB, sv->top);
+    canvas_clear(c->canvas);
+    draw_markers(sv, app, fend, bin_hz);
+    /* The spectrum over the markers, each column joined to the one before. */
+    uint8_t color = (uint8_t)(PAIR_MASS + mass % 10);
+    for (int x = 0, py = -1; x < 2 * c->canvas->cols; x++) {
+        int y = trace_dot(sv, x, bin_hz);
+        if (y >= 0 && py >= 0)
+            canvas_line(c->canvas, x - 1, py, x, y, color);
+        else if (y >= 0)
+            canvas_set(c->canvas, x, y, color);
+        py = y;
+    }
+}
+
+/* A label centred on dot column x of the drawing area, in row y, if it fits after
+ * column *free; *free moves past it. */
+static void marker_label(const struct chart *c, int y, int x, const char *text, attr_t a,
+                         int *free)
+{
+    int len = draw_width(text), col = c->area.x + x / 2 - (len - 1) / 2;
+    if (col < *free || col + len > c->area.x + c->area.w)
+        return;
+    draw_text_attr(y, col, len, a, text);
+    *free = col + len + 1;
+}
+
+/* The labels above the drawing area: f1, f2, ... on the first row, the harmonics on the
+ * second, "dB" over the level axis. */
+static void draw_labels(const struct spectrum_view *sv, const struct app *app)
+{
+    const struct chart *c = &sv->chart;
+    const struct model *m = app->model;
+    int W = 2 * c->area.w, y = c->area.y - HEADER_ROWS;
+    if (y <= c->frame.y)
+        return;
+    draw_text(y + 1, c->area.x - 3, 2, "dB");
+    int free = c->area.x;
+    char text[16];
+    for (int j = 0; j < m->n && app->modes_ok; j++) {
+        int x = freq_dot(c, app->modes[j]);
+        if (x < 0 || x >= W)
+            continue;
+        snprintf(text, sizeof text, "f%d", j + 1);
+        marker_label(c, y, x, text, A_BOLD, &free);
+    }
+    if (!driven(m))
+        return;
+    free = c->area.x;
+    for (int n = 1; n > 0; n = next_harmonic(m, n)) {
+        int x = freq_dot(c, n * m->motor.frequency);
+        if (x < 0 || x >= W)
+            break;
+        snprintf(text, sizeof text, "%d×", n);
+        marker_label(c, y + 1, x, text, term_attr(PAIR_MOTOR) | A_BOLD, &free);
+    }
+}
+
+void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fresh)
+{
+    struct chart *c = &sv->chart;
+    const struct model *m = app->model;
+    if (fresh)
+        take_samples(sv, app);
+    int mass = (sv->shown >= 0 ? sv->shown : sv->mass) + 1;
+    char title[120], brief[60], span[24];
+    if (sv->shown >= 0 && sv->span < SPECTRUM_VIEW_SECONDS - 0.5)
+        snprintf(span, sizeof span, "%.0f s so far", sv->span);
+    else
+        snprintf(span, sizeof span, "the last %.0f s", SPECTRUM_VIEW_SECONDS);
+    snprintf(title, sizeof title,
+             "Spectrum of mass %d's displacement: dB re 1 m, Hann window over %s", mass, span);
+    snprintf(brief, sizeof brief, "Spectrum of mass %d (dB), %s", mass, span);
+    if (sv->shown < 0) {
+        /* Empty axes and the reason above them. */
+        c->xt.n = c->yt.n = 0;
+        if (c->canvas)
+            canvas_clear(c->canvas);
+        chart_draw(c, title, brief, NULL, NULL, 0);
+        struct rect f = c->frame;
+        draw_text(f.y + 1, f.x + 2, f.w - 4, sv->no_memory ? "no memory for the transform"
+                                                          : "not enough samples yet: space runs");
+        return;
+    }
+    char mass_key[24], peak[48], drive[64], modes[32];
+    snprintf(mass_key, sizeof mass_key, "━ mass %d", mass);
+    snprintf(peak, sizeof peak, "peak %.3f Hz %.1f dB", sv->peak_hz, sv->peak_db);
+    int next = next_harmonic(m, 1);
+    snprintf(drive, sizeof drive, "┃ drive %.3f Hz%s", m->motor.frequency,
+             next == 3 ? ", odd harmonics" : next == 2 ? ", all harmonics" : "");
+    if (m->n > 1)
+        snprintf(modes, sizeof modes, "┊ natural f1..f%d", m->n);
+    else
+        snprintf(modes, sizeof modes, "┊ natural f1");
+    struct legend_item legend[4];
+    int k = 0;
+    legend[k++] = (struct legend_item){mass_key, PAIR_MASS + sv->shown % 10};
+    legend[k++] = (struct legend_item){peak, 0};
+    if (driven(m))
+        legend[k++] = (struct legend_item){drive, PAIR_MOTOR};
+    if (app->modes_ok)
+        legend[k++] = (struct legend_item){modes, 0};
+    chart_draw(c, title, brief, "Hz", legend, k);
+    draw_labels(sv, app);
+}

@@ -1,0 +1,38 @@
+/* view_spectrum.h: the spectrum view (key F): the amplitude spectrum in dB of one mass's
+ * displacement over the last 60 s, Hann-windowed, against frequency in Hz, with the
+ * natural frequencies and the drive's harmonics marked. */
+#ifndef SPRINGSIM_VIEW_SPECTRUM_H
+#define SPRINGSIM_VIEW_SPECTRUM_H
+
+#include <stdbool.h>
+
+#include "../app/app.h"
+#include "../app/layout.h"
+#include "../core/spectrum.h"
+#include "chart.h"
+
+#define SPECTRUM_VIEW_SECONDS 60.0 /* the span analysed: the longest time window */
+#define SPECTRUM_VIEW_RANGE_DB 80.0 /* the axis shows this far below its top */
+
+struct spectrum_view {
+    struct chart chart;
+    struct spectrum *fft; /* the transform, planned again only when its length changes */
+    int size;             /* its length (0: none yet) */
+    int mass;             /* the mass to analyse: the last one selected in the chain */
+    int shown;            /* the mass the canvas shows (-1: nothing computed) */
+    double span;          /* seconds the samples shown cover */
+    double top;           /* dB at the top of the axis */
+    double peak_hz, peak_db; /* the highest level on the axis */
+    bool no_memory;       /* the transform could not be made */
+};
+
+/* Places the view in the plot area; false on no memory. */
+bool spectrum_view_place(struct spectrum_view *sv, struct rect area);
+
+/* Frees what the view holds. */
+void spectrum_view_free(struct spectrum_view *sv);
+
+/* Draws the view; with fresh, it first takes the newest samples. */
+void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fresh);
+
+#endif
