@@ -1,0 +1,80 @@
+/* config_quote.c: user text as every message quotes it: control bytes escaped (C's
+ * escapes, \xNN for the rest, invalid UTF-8 and C1 controls included), valid UTF-8 kept,
+ * long values cut. */
+#include "config.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* Appends byte c to buf (room for len, NUL kept) at *used, escaped if it is a control
+ * byte: C's escapes for the common ones, \xNN for the rest. */
+static void put_escaped(unsigned char c, char *buf, size_t len, size_t *used)
+{
+    static const char named[] = "\a\b\t\n\v\f\r";
+    static const char letter[] = "abtnvfr";
+    char one[8];
+    const char *at = c ? strchr(named, c) : NULL;
+    if (at)
+        snprintf(one, sizeof one, "\\%c", letter[at - named]);
+    else if (c < 0x20 || c == 0x7f || c >= 0x80)
+        snprintf(one, sizeof one, "\\x%02x", c);
+    else
+        snprintf(one, sizeof one, "%c", c);
+    size_t w = strlen(one);
+    if (*used + w < len) {
+        memcpy(buf + *used, one, w + 1);
+        *used += w;
+    }
+}
+
+/* Length of the valid UTF-8 sequence at s (at most n bytes) that is not a C1 control
+ * (U+0080 to U+009F), or 0. */
+static size_t utf8_length(const unsigned char *s, size_t n)
+{
+    size_t k = s[0] >= 0xf0 && s[0] <= 0xf4 ? 4 : s[0] >= 0xe0 ? 3 : s[0] >= 0xc2 ? 2 : 0;
+    if (s[0] >= 0xf5 || k == 0 || k > n)
+        return 0;
+    for (size_t i = 1; i < k; i++)
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    if (k == 2 && s[0] == 0xc2 && s[1] < 0xa0)
+        return 0; /* C1 control */
+    if ((k == 3 && s[0] == 0xe0 && s[1] < 0xa0) || (k == 4 && s[0] == 0xf0 && s[1] < 0x90) ||
+        (k == 4 && s[0] == 0xf4 && s[1] >= 0x90) || (k == 3 && s[0] == 0xed && s[1] >= 0xa0))
+        return 0; /* overlong, past U+10FFFF, or a surrogate */
+    return k;
+}
+
+void config_escape(const char *text, size_t n, size_t max, char *buf, size_t len)
+{
+    const unsigned char *s = (const unsigned char *)text;
+    size_t used = 0, i = 0;
+    if (len == 0)
+        return;
+    buf[0] = '\0';
+    while (i < n && i < max) {
+        size_t k = s[i] >= 0x80 ? utf8_length(s + i, n - i) : 0;
+        if (k > 0) {
+            if (used + k < len) {
+                memcpy(buf + used, s + i, k);
+                used += k;
+                buf[used] = '\0';
+            }
+            i += k;
+        } else {
+            put_escaped(s[i++], buf, len, &used);
+        }
+    }
+    if (i < n)
+        snprintf(buf + used, len - used, "...");
+}
+
+void config_quote(const char *value, size_t n, char *buf, size_t len)
+{
+    char text[4 * CONFIG_QUOTE_MAX + 8];
+    config_escape(value, n, CONFIG_QUOTE_MAX, text, sizeof text);
+    if (n <= CONFIG_QUOTE_MAX)
+        snprintf(buf, len, "'%s'", text);
+    else
+        snprintf(buf, len, "'%s' (%zu characters)", text, n);
+}
