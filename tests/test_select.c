@@ -145,16 +145,46 @@ static void toggle_lands_on_a_mass(void **state)
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         struct selection s = {FOCUS_CONTROLS, CTL_DAMPING, cases[i].from};
-        select_toggle_focus(&s, m);
+        select_toggle_focus(&s, m, false);
         assert_int_equal(s.focus, FOCUS_CHAIN);
         if (s.elem != cases[i].to)
             fail_msg("from element %d: landed on %d, expected %d", cases[i].from, s.elem,
                      cases[i].to);
-        select_toggle_focus(&s, m);
+        select_toggle_focus(&s, m, false);
         assert_int_equal(s.focus, FOCUS_CONTROLS);
         assert_int_equal(s.control, CTL_DAMPING);
         assert_int_equal(s.elem, cases[i].to);
     }
+    model_free(m);
+}
+
+/* With the modes view shown, Tab goes controls, chain, modes and round; the arrows move
+ * the mode, wrapping, and a smaller chain keeps it one that exists. */
+static void modes_in_the_round(void **state)
+{
+    (void)state;
+    struct model *m = chain(3, BOUNDARY_WALL);
+    struct selection s = {FOCUS_CONTROLS, CTL_DAMPING, 1, 0};
+    assert_int_equal(select_mode(&s), -1);
+    select_toggle_focus(&s, m, true);
+    assert_int_equal(s.focus, FOCUS_CHAIN);
+    select_toggle_focus(&s, m, true);
+    assert_int_equal(s.focus, FOCUS_MODES);
+    assert_int_equal(select_mass(&s), -1);
+    select_move(&s, -1, CTL_COUNT, m);
+    assert_int_equal(select_mode(&s), 2);
+    select_move(&s, 1, CTL_COUNT, m);
+    assert_int_equal(select_mode(&s), 0);
+    select_move(&s, 1, CTL_COUNT, m);
+    select_move(&s, 1, CTL_COUNT, m);
+    assert_int_equal(select_mode(&s), 2);
+    assert_int_equal(s.control, CTL_DAMPING); /* the controls' selection kept */
+    struct model *two = chain(2, BOUNDARY_WALL);
+    select_clamp(&s, two);
+    assert_int_equal(select_mode(&s), 0);
+    select_toggle_focus(&s, two, true);
+    assert_int_equal(s.focus, FOCUS_CONTROLS);
+    model_free(two);
     model_free(m);
 }
 
@@ -166,6 +196,7 @@ int main(void)
         cmocka_unit_test(clamp_after_the_chain_shrinks),
         cmocka_unit_test(moves_wrap_both_ways),
         cmocka_unit_test(toggle_lands_on_a_mass),
+        cmocka_unit_test(modes_in_the_round),
     };
     return cmocka_run_group_tests_name("select", tests, NULL, NULL);
 }

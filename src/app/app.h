@@ -27,6 +27,7 @@
 #define APP_FMIN 0.1         /* the frequency control's range (Hz) */
 #define APP_FMAX 5.0
 #define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */
+#define APP_MODE_AMPLITUDE 0.5 /* largest |x| when the chain starts in a mode (m) */
 
 /* What an action changed: bits of the unsigned it returns. */
 enum app_change {
@@ -158,6 +159,11 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
 
 /* Sets the motor frequency to the natural frequency nearest to it. */
 unsigned app_nearest_mode(struct app *app);
+
+/* Starts the chain in mode j (0 the lowest): displacements along its shape, the largest
+ * APP_MODE_AMPLITUDE (less where two masses would come close), at rest, from t = 0,
+ * running. With the modes unknown, 0 and a message. */
+unsigned app_start_mode(struct app *app, int j);
 
 /* Starts (or stops, if running) the sine-sweep experiment across the modes. */
 unsigned app_toggle_sweep(struct app *app);

@@ -387,6 +387,46 @@ unsigned app_nearest_mode(struct app *app)
                           app->modes[j]);
 }
 
+/* The largest amplitude up to APP_MODE_AMPLITUDE at which shape phi moves no two
+ * neighbours (nor a mass and the wall or the right end) closer than a fifth of the gap
+ * between them at rest. */
+static double mode_amplitude(const struct model *m, const double *phi)
+{
+    double w = model_block_width(m), amp = APP_MODE_AMPLITUDE;
+    for (int i = 0; i <= m->n; i++) {
+        if (i == m->n && m->boundary == BOUNDARY_FREE)
+            break;
+        double left = i > 0 ? model_equilibrium(m, i - 1) + 0.5 * w : 0.0;
+        double right = i < m->n ? model_equilibrium(m, i) - 0.5 * w : MODEL_LENGTH;
+        double rel = fabs((i < m->n ? phi[i] : 0.0) - (i > 0 ? phi[i - 1] : 0.0));
+        if (rel > 0.0)
+            amp = fmin(amp, 0.8 * (right - left) / rel);
+    }
+    return amp;
+}
+
+unsigned app_start_mode(struct app *app, int j)
+{
+    const struct model *m = app->model;
+    int n = m->n;
+    if (!app->modes_ok || j < 0 || j >= n)
+        return app_say(app, true, "the modes of this chain are not known"), 0u;
+    const double *phi = app->shapes + (size_t)j * n;
+    double amp = mode_amplitude(m, phi);
+    for (int i = 0; i < n; i++) {
+        app->cfg.x0.v[i] = amp * phi[i];
+        app->cfg.v0.v[i] = 0.0;
+    }
+    app->cfg.x0.count = app->cfg.v0.count = n;
+    app->cfg.random = false;
+    unsigned what = app_reset(app) | app_set_running(app, true);
+    bool driven = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+    return what | app_say(app, false, "started in mode %d (%.3f Hz), largest |x| %.2f m%s", j + 1,
+                          app->modes[j], amp,
+                          driven ? "; the motor still drives (Amplitude 0 leaves it alone)"
+                                 : amp < APP_MODE_AMPLITUDE ? ", so no two masses touch" : "");
+}
+
 void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len)
 {
     const struct model *m = app->model;

@@ -16,10 +16,17 @@ int select_spring(const struct selection *s)
     return s->focus == FOCUS_CHAIN && s->elem % 2 == 0 ? s->elem / 2 : -1;
 }
 
+int select_mode(const struct selection *s)
+{
+    return s->focus == FOCUS_MODES ? s->mode : -1;
+}
+
 void select_clamp(struct selection *s, const struct model *m)
 {
     if (s->elem < 0 || s->elem >= select_elements(m))
         s->elem = 1;
+    if (s->mode < 0 || s->mode >= m->n)
+        s->mode = 0;
 }
 
 void select_move(struct selection *s, int dir, int ncontrols, const struct model *m)
@@ -27,14 +34,22 @@ void select_move(struct selection *s, int dir, int ncontrols, const struct model
     if (s->focus == FOCUS_CHAIN) {
         int n = select_elements(m);
         s->elem = ((s->elem + dir) % n + n) % n;
+    } else if (s->focus == FOCUS_MODES) {
+        s->mode = ((s->mode + dir) % m->n + m->n) % m->n;
     } else {
         s->control = ((s->control + dir) % ncontrols + ncontrols) % ncontrols;
     }
 }
 
-void select_toggle_focus(struct selection *s, const struct model *m)
+void select_toggle_focus(struct selection *s, const struct model *m, bool modes_shown)
 {
-    s->focus = s->focus == FOCUS_CHAIN ? FOCUS_CONTROLS : FOCUS_CHAIN;
+    if (s->focus == FOCUS_CONTROLS)
+        s->focus = FOCUS_CHAIN;
+    else if (s->focus == FOCUS_CHAIN && modes_shown)
+        s->focus = FOCUS_MODES;
+    else
+        s->focus = FOCUS_CONTROLS;
     if (s->elem >= select_elements(m) || s->elem % 2 == 0)
         s->elem = 1; /* mass 1 */
+    select_clamp(s, m);
 }

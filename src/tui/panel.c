@@ -141,6 +141,11 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     struct hint hints[16];
     int n = 0;
     hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
+    if (h->modes) {
+        hints[n++] = (struct hint){term_utf8() ? "↑↓" : "arrows", "choose a mode"};
+        hints[n++] = (struct hint){"Enter", "start the chain in it"};
+        hints[n++] = (struct hint){"Tab", "controls"};
+    }
     hints[n++] = (struct hint){".", "step"};
     if (h->view)
         hints[n++] = (struct hint){"m f e F", "views (again: plots)"};
@@ -155,9 +160,11 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
         hints[n++] = (struct hint){",", "back"};
     hints[n++] = (struct hint){"r", "reset"};
     hints[n++] = (struct hint){"p", "presets"};
-    hints[n++] = (struct hint){term_utf8() ? "↑↓←→" : "arrows", "controls"};
-    hints[n++] = (struct hint){"Enter", "type"};
-    hints[n++] = (struct hint){"Tab", "masses"};
+    if (!h->modes) {
+        hints[n++] = (struct hint){term_utf8() ? "↑↓←→" : "arrows", "controls"};
+        hints[n++] = (struct hint){"Enter", "type"};
+        hints[n++] = (struct hint){"Tab", "masses"};
+    }
     hints[n++] = (struct hint){"?", "help"};
     int x = 1;
     for (int i = 0; i < n; i++) {

@@ -108,9 +108,10 @@ static double draw(struct tui *t, bool refresh)
         if (t->views.shown == VIEW_PLOTS)
             plots_draw(&t->plots, l, &t->app, refresh);
         else
-            views_draw(&t->views, &t->app, refresh);
+            views_draw(&t->views, &t->app, &t->sel, refresh);
         panel_controls(l, &t->app, &t->sel);
-        struct hint_state h = {t->enlarged, t->views.shown != VIEW_PLOTS};
+        struct hint_state h = {t->enlarged, t->views.shown != VIEW_PLOTS,
+                               t->sel.focus == FOCUS_MODES};
         panel_hints(l, &t->app, &h);
         overlay_draw(&t->overlay, l, &t->sel);
     }
@@ -120,9 +121,14 @@ static double draw(struct tui *t, bool refresh)
     return now_s() - start;
 }
 
-/* An arrow's adjustment: +-1, fine or coarse, on the control or the chain's mass. */
+/* An arrow's adjustment: +-1, fine or coarse, on the control or the chain's mass; in
+ * the modes view, the next or the previous mode. */
 static unsigned adjust(struct tui *t, int dir, bool coarse)
 {
+    if (t->sel.focus == FOCUS_MODES) {
+        select_move(&t->sel, dir, CTL_COUNT, t->app.model);
+        return 0;
+    }
     if (t->sel.focus != FOCUS_CHAIN)
         return app_adjust(&t->app, (enum control)t->sel.control, dir, coarse);
     int i = select_mass(&t->sel);
@@ -132,10 +138,15 @@ static unsigned adjust(struct tui *t, int dir, bool coarse)
     return APP_CHANGED_MESSAGE;
 }
 
-/* Shows analysis view v (or the plots again) and lays the area out for it. */
+/* Shows analysis view v (or the plots again) and lays the area out for it. The modes
+ * view takes the arrows (a mode to choose); leaving it gives them back to the controls. */
 static void toggle_view(struct tui *t, enum view v)
 {
     views_toggle(&t->views, v);
+    if (t->views.shown == VIEW_MODES)
+        t->sel.focus = FOCUS_MODES;
+    else if (t->sel.focus == FOCUS_MODES)
+        t->sel.focus = FOCUS_CONTROLS;
     relayout(t);
 }
 
@@ -144,6 +155,8 @@ static void enlarge(struct tui *t, int p)
 {
     t->enlarged = p < 0 || p == t->enlarged ? -1 : p;
     t->views.shown = VIEW_PLOTS;
+    if (t->sel.focus == FOCUS_MODES)
+        t->sel.focus = FOCUS_CONTROLS;
     relayout(t);
 }
 
@@ -192,7 +205,9 @@ static bool on_action(struct tui *t, enum action a, int ch)
                          a == ACT_LEFT_BIG || a == ACT_RIGHT_BIG);
         break;
     case ACT_ENTER:
-        if (t->sel.focus == FOCUS_CHAIN)
+        if (t->sel.focus == FOCUS_MODES)
+            changed = app_start_mode(app, t->sel.mode);
+        else if (t->sel.focus == FOCUS_CHAIN)
             overlay_edit(&t->overlay, select_mass(&t->sel) >= 0 ? EDIT_MASS : EDIT_SPRING);
         else if (t->sel.control == CTL_PRESET)
             overlay_presets(&t->overlay, app);
@@ -208,7 +223,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
             app_say(app, false, "select a mass in the chain first (Tab, then ↑↓)");
         break;
     case ACT_FOCUS:
-        select_toggle_focus(&t->sel, app->model);
+        select_toggle_focus(&t->sel, app->model, t->views.shown == VIEW_MODES);
         break;
     case ACT_MODES:
         toggle_view(t, VIEW_MODES);
@@ -460,8 +475,10 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         double now = now_s();
         advance(&t, &debt, now - last);
         last = now;
-        /* Plots refresh at plot_hz() while running, at once after anything else. */
-        bool refresh = t.plots_dirty || (t.app.running && now >= t.plot_due);
+        /* Plots refresh at plot_hz() while running (the modes view's shapes swing even
+         * while paused), at once after anything else. */
+        bool moving = t.app.running || t.views.shown == VIEW_MODES;
+        bool refresh = t.plots_dirty || (moving && now >= t.plot_due);
         if (refresh) {
             t.plot_due = now + 1.0 / plot_hz(&t);
             t.plots_dirty = false;

@@ -1,7 +1,6 @@
-/* views.h: the analysis views that can take the plot area: the modes (every natural
- * frequency with its shape), the frequency response (theory on log-log axes with the
- * sine-sweep experiment's measured peaks over it), the energy balance and the spectrum
- * (view_spectrum.h). Each view keeps its own state here. */
+/* views.h: the analysis views that can take the plot area: the modes (view_modes.h),
+ * the frequency response with its phase (view_response.h), the energy balance and the
+ * spectrum (view_spectrum.h). Each view keeps its own state in its own struct. */
 #ifndef SPRINGSIM_VIEWS_H
 #define SPRINGSIM_VIEWS_H
 
@@ -9,20 +8,13 @@
 
 #include "../app/app.h"
 #include "../app/layout.h"
+#include "../app/select.h"
 #include "chart.h"
+#include "view_modes.h"
+#include "view_response.h"
 #include "view_spectrum.h"
 
 enum view { VIEW_PLOTS, VIEW_MODES, VIEW_RESPONSE, VIEW_ENERGY, VIEW_SPECTRUM };
-
-/* The response view's theory curve, solved again only when the chain or the width
- * changes. */
-struct response_view {
-    struct chart chart;
-    unsigned version;   /* app version the curve belongs to (0: none) */
-    int width;          /* dot columns it was solved for */
-    double top;         /* its largest finite amplitude */
-    double *curve;      /* width x N amplitudes */
-};
 
 struct energy_view {
     struct chart chart;
@@ -31,7 +23,7 @@ struct energy_view {
 
 struct views {
     enum view shown;
-    struct chart modes;        /* the modes view's frame */
+    struct modes_view modes;
     struct response_view response;
     struct energy_view energy;
     struct spectrum_view spectrum; /* view_spectrum.c */
@@ -47,7 +39,8 @@ void views_free(struct views *v);
 void views_toggle(struct views *v, enum view w);
 
 /* Draws the view shown (nothing for VIEW_PLOTS); with refresh, it first takes the newest
- * data. */
-void views_draw(struct views *v, const struct app *app, bool refresh);
+ * data (and the modes view's animation moves on). sel says the mode selected. */
+void views_draw(struct views *v, const struct app *app, const struct selection *sel,
+                bool refresh);
 
 #endif

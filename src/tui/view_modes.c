@@ -1,0 +1,237 @@
+/* view_modes.c: the modes view, alive (view_modes.h): a grid of cells, one per mode, each
+ * with its numbers, its energy bar and its shape swinging. */
+#include "view_modes.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "../core/modes.h"
+#include "draw.h"
+#include "term.h"
+
+#define CELL_TEXT_ROWS 3 /* title, numbers, energy bar */
+#define CELL_MIN_COLS 26 /* what the numbers need to read */
+#define AT_REST 1e-12    /* J: below this the chain is at rest and has no shares */
+
+static double wall_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+bool modes_view_place(struct modes_view *v, struct rect area)
+{
+    chart_free(&v->chart);
+    v->chart.frame = area;
+    canvas_free(v->canvas);
+    v->canvas = NULL;
+    if (v->clock0 == 0.0)
+        v->clock0 = wall_s();
+    return true;
+}
+
+void modes_view_free(struct modes_view *v)
+{
+    chart_free(&v->chart);
+    canvas_free(v->canvas);
+    v->canvas = NULL;
+}
+
+/* The factor every mode is slowed by so the fastest swings at most MODES_VIEW_FASTEST
+ * times a second on screen (1: real speed). */
+static double slowing(const struct app *app)
+{
+    double top = 0.0;
+    for (int j = 0; j < app->model->n; j++)
+        top = fmax(top, app->modes[j]);
+    return top > MODES_VIEW_FASTEST ? MODES_VIEW_FASTEST / top : 1.0;
+}
+
+/* Mode j's damping in words that fit w columns: zeta, Q = 1/(2 zeta), the -3 dB
+ * bandwidth 2 zeta f and the damped frequency, or as much of it as fits. */
+static void damping_text(const struct app *app, int j, int w, char *buf, size_t len)
+{
+    bool u = term_utf8();
+    const char *zeta = u ? "ζ" : "zeta";
+    double z = app->damping_ratio[j], f = app->modes[j];
+    if (!app->damping_ok) {
+        snprintf(buf, len, "damping not known");
+        return;
+    }
+    if (z >= 1.0) {
+        snprintf(buf, len, "%s %.3g  overdamped: no resonance", zeta, z);
+        if (draw_width(buf) > w)
+            snprintf(buf, len, "%s %.3g overdamped", zeta, z);
+        return;
+    }
+    char q[24];
+    if (z > 0.0)
+        snprintf(q, sizeof q, "%.3g", 0.5 / z);
+    else
+        snprintf(q, sizeof q, "%s", u ? "∞" : "inf");
+    const char *forms[3] = {"%s %.3g  Q %s  -3 dB %.3g Hz  fd %.4g Hz", "%s %.3g  Q %s  -3 dB %.3g Hz",
+                            "%s %.3g  Q %s"};
+    for (int k = 0; k < 3; k++) {
+        snprintf(buf, len, forms[k], zeta, z, q, 2.0 * z * f, app->damped_hz[j]);
+        if (draw_width(buf) <= w)
+            return;
+    }
+}
+
+/* The energy bar: "E ████▌     87 %" in w columns at row y. */
+static void draw_bar(const struct modes_view *v, int j, int y, int x, int w)
+{
+    if (w < 8)
+        return;
+    if (v->total < AT_REST) {
+        draw_text(y, x, w, "E  at rest: no motion to share");
+        return;
+    }
+    double share = v->share[j];
+    char pct[16];
+    snprintf(pct, sizeof pct, " %3.0f %%", 100.0 * share);
+    int cells = w - 2 - (int)strlen(pct);
+    draw_text_attr(y, x, 2, A_BOLD, "E ");
+    if (cells < 1)
+        return;
+    double fill = share * cells;
+    int whole = (int)floor(fill);
+    static const char *const eighths[8] = {"", "▏", "▎", "▍", "▌", "▋", "▊", "▉"};
+    bool u = term_utf8();
+    attr_t on = term_attr(PAIR_TITLE) | A_BOLD, off = term_attr(PAIR_GRID);
+    for (int k = 0; k < cells; k++) {
+        if (k < whole)
+            draw_text_attr(y, x + 2 + k, 1, on, u ? "█" : "#");
+        else if (k == whole && u && (int)((fill - whole) * 8.0) > 0)
+            draw_text_attr(y, x + 2 + k, 1, on, eighths[(int)((fill - whole) * 8.0)]);
+        else
+            draw_text_attr(y, x + 2 + k, 1, off, u ? "·" : ".");
+    }
+    draw_text_attr(y, x + 2 + cells, (int)strlen(pct), A_BOLD, pct);
+}
+
+/* Mode j's shape at this instant of the animation, in the rows of r below the text. */
+static void draw_shape(struct modes_view *v, const struct app *app, int j, struct rect r)
+{
+    const struct model *m = app->model;
+    int n = m->n, dw = r.w - 2, dh = r.h - CELL_TEXT_ROWS;
+    if (dh < 1 || dw < 4)
+        return;
+    if (!v->canvas || v->canvas->cols != dw || v->canvas->rows != dh) {
+        canvas_free(v->canvas);
+        v->canvas = canvas_new(dw, dh);
+        if (!v->canvas)
+            return;
+    }
+    struct canvas *c = v->canvas;
+    canvas_clear(c);
+    const double *phi = app->shapes + (size_t)j * n;
+    double swing = cos(2.0 * M_PI * app->modes[j] * v->shown_t);
+    int H = 4 * dh, W = 2 * dw, mark = dh >= 2 ? 2 : 1;
+    double mid = 0.5 * (H - 1), amp = 0.5 * (H - 1) - mark;
+    int top = r.y + CELL_TEXT_ROWS;
+    attron(term_attr(PAIR_GRID));
+    mvhline(top + (int)lround(mid) / 4, r.x + 1, term_utf8() ? ACS_HLINE : '-', dw);
+    attroff(term_attr(PAIR_GRID));
+    int x0 = 0, y0 = (int)lround(mid);
+    for (int i = 0; i <= n; i++) {
+        if (i == n && m->boundary == BOUNDARY_FREE)
+            break;
+        int x = i < n ? (int)lround((double)(i + 1) * (W - 1) / (n + 1)) : W - 1;
+        int y = (int)lround(mid - amp * swing * (i < n ? phi[i] : 0.0));
+        canvas_line(c, x0, y0, x, y, 0);
+        x0 = x, y0 = y;
+    }
+    for (int i = 0; i < n; i++) {
+        int x = (int)lround((double)(i + 1) * (W - 1) / (n + 1));
+        int y = (int)lround(mid - amp * swing * phi[i]);
+        for (int dx = -mark; dx <= mark; dx++)
+            for (int dy = -mark; dy <= mark; dy++)
+                canvas_set(c, x + dx, y + dy, (uint8_t)(PAIR_MASS + i % 10));
+    }
+    draw_canvas(c, top, r.x + 1);
+}
+
+/* One mode's cell: title, damping, energy bar, then the shape. */
+static void draw_cell(struct modes_view *v, const struct app *app, int j, struct rect r,
+                      bool driven, bool selected)
+{
+    char title[80];
+    const char *mark = !selected ? "" : term_utf8() ? "▸ " : "> ";
+    int len = snprintf(title, sizeof title, "%smode %d  %.4g Hz", mark, j + 1, app->modes[j]);
+    if (driven)
+        snprintf(title + len, sizeof title - (size_t)len, "%s",
+                 len + 11 <= r.w - 2 ? (term_utf8() ? "  ◆ driven" : "  * driven")
+                                     : (term_utf8() ? " ◆" : " *"));
+    attr_t a = A_BOLD | (selected ? A_REVERSE : 0) | (driven ? term_attr(PAIR_MOTOR) : 0);
+    draw_text_attr(r.y, r.x + 1, r.w - 2, a, title);
+    char line[96];
+    if (r.h >= 3) {
+        damping_text(app, j, r.w - 2, line, sizeof line);
+        draw_text(r.y + 1, r.x + 1, r.w - 2, line);
+    }
+    if (r.h >= 2)
+        draw_bar(v, j, r.y + (r.h >= 3 ? 2 : 1), r.x + 1, r.w - 2);
+    draw_shape(v, app, j, r);
+}
+
+/* Takes the energies of the motion now and moves the animation on. */
+static void take_now(struct modes_view *v, const struct app *app)
+{
+    int n = app->model->n;
+    double e[APP_MAX_MASSES];
+    modes_energy(app->model, app->modes, app->shapes, sim_x(app->sim), sim_v(app->sim), e);
+    v->total = 0.0;
+    for (int j = 0; j < n; j++)
+        v->total += e[j];
+    for (int j = 0; j < n; j++)
+        v->share[j] = v->total >= AT_REST ? e[j] / v->total : 0.0;
+    v->shown_t = (wall_s() - v->clock0) * slowing(app);
+}
+
+void modes_view_draw(struct modes_view *v, const struct app *app, int selected, bool refresh)
+{
+    const struct model *m = app->model;
+    int n = m->n;
+    char title[120];
+    double slow = app->modes_ok ? slowing(app) : 1.0;
+    if (slow < 1.0)
+        snprintf(title, sizeof title, "Modes: shapes swinging at 1/%.3g speed, damping, energy "
+                 "share (Enter starts one)", 1.0 / slow);
+    else
+        snprintf(title, sizeof title, "Modes: shapes swinging, damping, energy share (Enter "
+                 "starts one)");
+    chart_draw(&v->chart, title, "Modes", NULL, NULL, 0);
+    struct rect f = v->chart.frame, in = {f.y + 1, f.x + 1, f.h - 2, f.w - 2};
+    if (!app->modes_ok) {
+        draw_text(in.y, in.x + 1, in.w - 2, "the eigenvalue solver failed for these values");
+        return;
+    }
+    if (refresh || v->shown_t == 0.0)
+        take_now(v, app);
+    /* The grid that gives each shape the most room, cells wide enough for the numbers. */
+    int best_cols = 1;
+    double best = -1.0;
+    for (int cols = 1; cols <= n; cols++) {
+        int rows = (n + cols - 1) / cols, cw = in.w / cols, ch = in.h / rows;
+        if (cols > 1 && cw < CELL_MIN_COLS)
+            break;
+        double score = fmin((double)cw / 4.0, (double)(ch - CELL_TEXT_ROWS + 1));
+        if (score > best)
+            best = score, best_cols = cols;
+    }
+    int cols = best_cols, rows = (n + cols - 1) / cols;
+    int cw = in.w / cols, ch = in.h / rows;
+    int driven = modes_nearest(app->modes, n, m->motor.frequency);
+    bool on_mode = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0 &&
+                   fabs(m->motor.frequency - app->modes[driven]) <= 0.02 * app->modes[driven];
+    for (int j = 0; j < n; j++) {
+        struct rect r = {in.y + (j / cols) * ch, in.x + (j % cols) * cw, ch, cw};
+        if (ch < 1 || r.y >= in.y + in.h)
+            continue;
+        draw_cell(v, app, j, r, on_mode && j == driven, j == selected);
+    }
+}

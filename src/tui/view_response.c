@@ -1,0 +1,273 @@
+/* view_response.c: the frequency response view (view_response.h): two charts on one
+ * log frequency axis, amplitude above and phase below. */
+#include "view_response.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "../core/modes.h"
+#include "draw.h"
+#include "term.h"
+
+static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5",
+                                          "━6", "━7", "━8", "━9", "━10"};
+
+bool response_view_place(struct response_view *rv, struct rect area)
+{
+    struct rect amp = area, ph = {0, 0, 0, 0};
+    if (area.h >= RESPONSE_PHASE_MIN_ROWS) {
+        ph = area;
+        ph.h = area.h * 2 / 5;
+        amp.h = area.h - ph.h;
+        ph.y = area.y + amp.h;
+    }
+    bool ok = chart_place(&rv->chart, amp, 0);
+    if (ph.h > 0)
+        ok &= chart_place(&rv->phase, ph, 0);
+    else
+        chart_free(&rv->phase), rv->phase.frame = ph;
+    rv->version = 0;
+    return ok;
+}
+
+void response_view_free(struct response_view *rv)
+{
+    chart_free(&rv->chart);
+    chart_free(&rv->phase);
+    free(rv->curve);
+    free(rv->phase_curve);
+    rv->curve = rv->phase_curve = NULL;
+}
+
+/* Solves the theory curves for the chain as it is, one solve per dot column. */
+static void solve_curves(struct response_view *rv, const struct app *app, int width)
+{
+    const struct model *m = app->model;
+    int n = m->n;
+    double amp[APP_MAX_MASSES], ph[APP_MAX_MASSES];
+    double *curve = realloc(rv->curve, (size_t)width * n * sizeof *curve);
+    if (curve)
+        rv->curve = curve;
+    double *phase = realloc(rv->phase_curve, (size_t)width * n * sizeof *phase);
+    if (phase)
+        rv->phase_curve = phase;
+    if (!curve || !phase)
+        return;
+    rv->top = 0.0;
+    for (int x = 0; x < width; x++) {
+        double f = APP_FMIN * pow(APP_FMAX / APP_FMIN, (double)x / (width > 1 ? width - 1 : 1));
+        bool ok = modes_response_phase(m, f, amp, ph) == 0;
+        for (int i = 0; i < n; i++) {
+            curve[(size_t)x * n + i] = ok ? amp[i] : INFINITY;
+            phase[(size_t)x * n + i] = ok ? ph[i] : NAN;
+            if (ok && isfinite(amp[i]))
+                rv->top = fmax(rv->top, amp[i]);
+        }
+    }
+    rv->version = app->version;
+    rv->width = width;
+}
+
+/* The frequency ticks of the control's log range on the columns of c. */
+static void frequency_ticks(struct chart *c)
+{
+    static const double ticks[] = {0.1, 0.2, 0.5, 1.0, 2.0, 5.0};
+    static const char *const labels[] = {"0.1", "0.2", "0.5", "1", "2", "5"};
+    c->xt.n = 0;
+    for (size_t k = 0; k < sizeof ticks / sizeof *ticks; k++) {
+        c->xt.cell[c->xt.n] = (int)lround(app_freq_fraction(ticks[k]) * (c->area.w - 1));
+        snprintf(c->xt.label[c->xt.n++], sizeof c->xt.label[0], "%s", labels[k]);
+    }
+}
+
+/* Lays the decades on the rows and the frequency ticks on the columns. */
+static void amplitude_axes(struct chart *c, double top)
+{
+    int h = c->area.h > 1 ? c->area.h : 1;
+    double hi = ceil(log10(top) - 1e-9);
+    int decades = h >= 9 ? 4 : h >= 5 ? 2 : 1;
+    int spacing = (h - 1) / decades > 0 ? (h - 1) / decades : 1;
+    c->ya = (struct axis){.lo = hi - decades, .step = 1.0, .intervals = decades,
+                          .first = (h - 1 - decades * spacing) / 2, .spacing = spacing,
+                          .cells = h, .dpc = 4};
+    c->yt.n = 0;
+    for (int k = 0; k <= decades && k < CHART_MAX_TICKS; k++) {
+        c->yt.cell[c->yt.n] = c->ya.first + k * spacing;
+        snprintf(c->yt.label[c->yt.n++], sizeof c->yt.label[0], "1e%d", (int)(hi - decades + k));
+    }
+    frequency_ticks(c);
+}
+
+/* -180 to 180 degrees on the rows: every 90 where there is room, else every 180. */
+static void phase_axes(struct chart *c)
+{
+    int h = c->area.h > 1 ? c->area.h : 1;
+    int intervals = h >= 9 ? 4 : 2;
+    int spacing = (h - 1) / intervals > 0 ? (h - 1) / intervals : 1;
+    c->ya = (struct axis){.lo = -180.0, .step = 360.0 / intervals, .intervals = intervals,
+                          .first = (h - 1 - intervals * spacing) / 2, .spacing = spacing,
+                          .cells = h, .dpc = 4};
+    chart_ticks_from_axis(&c->yt, &c->ya);
+    frequency_ticks(c);
+}
+
+/* Dot row of amplitude a (log scale), H when below the axis. */
+static int amp_dot(const struct chart *c, double a)
+{
+    if (!(a > 0) || !isfinite(a))
+        return 0;
+    int y = chart_dot_y(c, log10(a));
+    return y >= 4 * c->area.h ? 4 * c->area.h : y;
+}
+
+/* Dot row of phase p (degrees), H when it is not known. */
+static int phase_dot(const struct chart *c, double p)
+{
+    int y = isfinite(p) ? chart_dot_y(c, p) : 4 * c->area.h;
+    return y < 0 ? 0 : y > 4 * c->area.h ? 4 * c->area.h : y;
+}
+
+/* The natural frequencies as dotted verticals, the drive's as a solid one. */
+static void mark_frequencies(struct canvas *cv, const struct app *app)
+{
+    int W = 2 * cv->cols, H = 4 * cv->rows;
+    for (int j = 0; j < app->model->n && app->modes_ok; j++)
+        for (int y = 0; y < H; y += 3)
+            canvas_set(cv, (int)lround(app_freq_fraction(app->modes[j]) * (W - 1)), y, 0);
+    canvas_vspan(cv, (int)lround(app_freq_fraction(app->model->motor.frequency) * (W - 1)), 0,
+                 H - 1, PAIR_MOTOR);
+}
+
+/* A measured point: a 3 x 3 square of dots. */
+static void mark_point(struct canvas *cv, int x, int y, int color)
+{
+    for (int dx = -1; dx <= 1 && y < 4 * cv->rows; dx++)
+        for (int dy = -1; dy <= 1; dy++)
+            canvas_set(cv, x + dx, y + dy, (uint8_t)color);
+}
+
+static void draw_amplitude(struct response_view *rv, const struct app *app)
+{
+    const struct sweep *sw = app->sweep;
+    struct chart *c = &rv->chart;
+    int n = app->model->n, W = 2 * c->canvas->cols, H = 4 * c->canvas->rows;
+    double top = rv->top;
+    for (int p = 0; p < sweep_measured(sw); p++)
+        for (int i = 0; i < n; i++)
+            if (isfinite(sw->peak[p * n + i]))
+                top = fmax(top, sw->peak[p * n + i]);
+    amplitude_axes(c, top > 0.0 ? top : 1.0);
+    canvas_clear(c->canvas);
+    mark_frequencies(c->canvas, app);
+    for (int i = n - 1; i >= 0; i--) {
+        int py = H;
+        for (int x = 0; x < rv->width; x++) {
+            int y = amp_dot(c, rv->curve[(size_t)x * n + i]);
+            if (py < H && y < H)
+                canvas_line(c->canvas, x - 1, py, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            else if (y < H)
+                canvas_set(c->canvas, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            py = y;
+        }
+    }
+    for (int p = 0; p < sweep_measured(sw); p++)
+        for (int i = 0; i < n; i++)
+            mark_point(c->canvas, (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1)),
+                       amp_dot(c, sw->peak[p * n + i]), PAIR_MASS + i % 10);
+}
+
+/* The phase curves; a jump across +-180 degrees is not joined. */
+static void draw_phase(struct response_view *rv, const struct app *app)
+{
+    const struct sweep *sw = app->sweep;
+    struct chart *c = &rv->phase;
+    int n = app->model->n, W = 2 * c->canvas->cols, H = 4 * c->canvas->rows;
+    phase_axes(c);
+    canvas_clear(c->canvas);
+    mark_frequencies(c->canvas, app);
+    for (int i = n - 1; i >= 0; i--) {
+        int py = H;
+        double pp = NAN;
+        for (int x = 0; x < W && x < rv->width; x++) {
+            double p = rv->phase_curve[(size_t)x * n + i];
+            int y = phase_dot(c, p);
+            if (py < H && y < H && fabs(p - pp) < 180.0)
+                canvas_line(c->canvas, x - 1, py, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            else if (y < H)
+                canvas_set(c->canvas, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            py = y, pp = p;
+        }
+    }
+    for (int p = 0; p < sweep_measured(sw); p++)
+        for (int i = 0; i < n; i++)
+            mark_point(c->canvas, (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1)),
+                       phase_dot(c, sw->phase[p * n + i]), PAIR_MASS + i % 10);
+}
+
+/* The drive's phase in words for the phase panel's legend: each mass's lag now. */
+static void phase_now(const struct app *app, char *buf, size_t len)
+{
+    double amp[APP_MAX_MASSES], ph[APP_MAX_MASSES];
+    const struct model *m = app->model;
+    if (modes_response_phase(m, m->motor.frequency, amp, ph) != 0) {
+        snprintf(buf, len, "phase not known");
+        return;
+    }
+    int k = snprintf(buf, len, "at %.3f Hz:", m->motor.frequency);
+    for (int i = 0; i < m->n && k > 0 && (size_t)k < len; i++)
+        k += snprintf(buf + k, len - (size_t)k, " %+.0f%s", ph[i], term_utf8() ? "°" : "");
+}
+
+void response_view_draw(struct response_view *rv, const struct app *app, bool fresh)
+{
+    const struct model *m = app->model;
+    const struct sweep *sw = app->sweep;
+    struct chart *c = &rv->chart;
+    int n = m->n;
+    const char *title = "Frequency response: steady-state amplitude (m) against frequency, log-log";
+    if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude <= 0.0 || !c->canvas) {
+        chart_draw(c, title, "Response", NULL, NULL, 0);
+        struct rect f = c->frame;
+        bool end = m->boundary != BOUNDARY_MOTOR;
+        draw_text(f.y + 2, f.x + 3, f.w - 6, end ? "The right end does not drive the chain:"
+                                                  : "The motor's amplitude is 0:");
+        draw_text(f.y + 3, f.x + 3, f.w - 6, end ? "choose Right end = motor to see its response."
+                                                  : "raise the Amplitude to see its response.");
+        if (rv->phase.frame.h > 0)
+            draw_frame(rv->phase.frame, "Phase", true);
+        return;
+    }
+    int W = 2 * c->canvas->cols;
+    if (rv->version != app->version || rv->width != W) {
+        solve_curves(rv, app, W);
+        fresh = true;
+    }
+    if (fresh && rv->curve && rv->phase_curve) {
+        draw_amplitude(rv, app);
+        if (rv->phase.canvas)
+            draw_phase(rv, app);
+    }
+    char state[120];
+    if (sw->active)
+        snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz (w stops)", sw->index + 1,
+                 sw->points, sweep_frequency(sw));
+    else if (sweep_measured(sw))
+        snprintf(state, sizeof state, "■ measured: %d points (w sweeps again)",
+                 sweep_measured(sw));
+    else
+        snprintf(state, sizeof state, "┃ drive %.3f Hz  ┊ modes  w: sweep", m->motor.frequency);
+    struct legend_item legend[11];
+    int k = 0;
+    for (int i = 0; i < n && i < 10; i++)
+        legend[k++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
+    legend[k++] = (struct legend_item){state, PAIR_MOTOR};
+    chart_draw(c, title, "Response (m) against Hz", "Hz", legend, k);
+    if (rv->phase.frame.h > 0) {
+        char now[160];
+        phase_now(app, now, sizeof now);
+        struct legend_item pl[1] = {{now, PAIR_MOTOR}};
+        chart_draw(&rv->phase, "Phase of each mass to the drive (degrees; a lag is negative)",
+                   "Phase (deg)", "Hz", pl, 1);
+    }
+}

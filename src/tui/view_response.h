@@ -1,0 +1,36 @@
+/* view_response.h: the frequency response view: each mass's steady-state amplitude
+ * against the drive's frequency on log-log axes, and under it, on the same frequency
+ * axis, its phase to the drive in degrees (a lag is negative), with the natural
+ * frequencies and the drive marked and the sine-sweep experiment's measured amplitudes
+ * and phases over the theory. */
+#ifndef SPRINGSIM_VIEW_RESPONSE_H
+#define SPRINGSIM_VIEW_RESPONSE_H
+
+#include <stdbool.h>
+
+#include "../app/app.h"
+#include "chart.h"
+
+#define RESPONSE_PHASE_MIN_ROWS 16 /* the view's height from which the phase panel shows */
+
+/* The theory curves, solved again only when the chain or the width changes. */
+struct response_view {
+    struct chart chart;  /* amplitude */
+    struct chart phase;  /* phase, below it; its frame is empty where there is no room */
+    unsigned version;    /* app version the curves belong to (0: none) */
+    int width;           /* dot columns they were solved for */
+    double top;          /* the largest finite amplitude */
+    double *curve;       /* width x N amplitudes (m) */
+    double *phase_curve; /* width x N phases (degrees, (-180, 180]) */
+};
+
+/* Places the view in area; false on no memory. */
+bool response_view_place(struct response_view *rv, struct rect area);
+
+/* Frees what it holds. */
+void response_view_free(struct response_view *rv);
+
+/* Draws it; fresh redraws the curves from the newest data. */
+void response_view_draw(struct response_view *rv, const struct app *app, bool fresh);
+
+#endif
