@@ -74,6 +74,8 @@ static void parts_swap(struct app *app, struct parts *p)
 static void compute_modes(struct app *app)
 {
     app->modes_ok = modes_compute(app->model, app->modes, app->shapes) == 0;
+    app->damping_ok = app->modes_ok && modes_damped(app->model, app->shapes, app->damping_ratio,
+                                                    app->damped_hz) == 0;
     app->limits_ok = limits_modes(app->model, app->limit_modes) == 0;
 }
 

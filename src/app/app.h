@@ -102,6 +102,9 @@ struct app {
     double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
     bool modes_ok;           /* modes[] and shapes[] are those of the model */
+    double damping_ratio[APP_MAX_MASSES]; /* each mode's damping ratio zeta */
+    double damped_hz[APP_MAX_MASSES];     /* each mode's damped frequency (Hz, 0: overdamped) */
+    bool damping_ok;         /* damping_ratio[] and damped_hz[] are those of the model */
     unsigned version;        /* counts changes of the chain's or the drive's parameters
                               * (never 0): what is computed from the model is stale when
                               * it moves */

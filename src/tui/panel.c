@@ -142,15 +142,16 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     int n = 0;
     hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
     if (h->modes) {
-        hints[n++] = (struct hint){term_utf8() ? "↑↓" : "arrows", "choose a mode"};
-        hints[n++] = (struct hint){"Enter", "start the chain in it"};
-        hints[n++] = (struct hint){"Tab", "controls"};
+        hints[n++] = (struct hint){term_utf8() ? "↑↓" : "arrows", "mode"};
+        hints[n++] = (struct hint){"Enter", "start in it"};
     }
     hints[n++] = (struct hint){".", "step"};
     if (h->view)
         hints[n++] = (struct hint){"m f e F", "views (again: plots)"};
     else
         hints[n++] = (struct hint){"m f e F", "views"};
+    if (h->modes)
+        hints[n++] = (struct hint){"Tab", "controls"};
     if (h->enlarged >= 0)
         hints[n++] = (struct hint){"0", "all plots"};
     else if (!h->view)

@@ -72,12 +72,15 @@ static void damping_text(const struct app *app, int j, int w, char *buf, size_t 
         snprintf(q, sizeof q, "%.3g", 0.5 / z);
     else
         snprintf(q, sizeof q, "%s", u ? "∞" : "inf");
-    const char *forms[3] = {"%s %.3g  Q %s  -3 dB %.3g Hz  fd %.4g Hz", "%s %.3g  Q %s  -3 dB %.3g Hz",
-                            "%s %.3g  Q %s"};
-    for (int k = 0; k < 3; k++) {
-        snprintf(buf, len, forms[k], zeta, z, q, 2.0 * z * f, app->damped_hz[j]);
-        if (draw_width(buf) <= w)
-            return;
+    /* The longest form that fits: with the damped frequency, the bandwidth, or neither. */
+    int k = snprintf(buf, len, "%s %.3g  Q %s", zeta, z, q);
+    char more[64];
+    snprintf(more, sizeof more, "  -3 dB %.3g Hz", 2.0 * z * f);
+    if (k > 0 && draw_width(buf) + draw_width(more) <= w && (size_t)k < len) {
+        k += snprintf(buf + k, len - (size_t)k, "%s", more);
+        snprintf(more, sizeof more, "  fd %.4g Hz", app->damped_hz[j]);
+        if (draw_width(buf) + draw_width(more) <= w && (size_t)k < len)
+            snprintf(buf + k, len - (size_t)k, "%s", more);
     }
 }
 
@@ -161,7 +164,7 @@ static void draw_cell(struct modes_view *v, const struct app *app, int j, struct
 {
     char title[80];
     const char *mark = !selected ? "" : term_utf8() ? "▸ " : "> ";
-    int len = snprintf(title, sizeof title, "%smode %d  %.4g Hz", mark, j + 1, app->modes[j]);
+    int len = snprintf(title, sizeof title, "%smode %d  %.3f Hz", mark, j + 1, app->modes[j]);
     if (driven)
         snprintf(title + len, sizeof title - (size_t)len, "%s",
                  len + 11 <= r.w - 2 ? (term_utf8() ? "  ◆ driven" : "  * driven")

@@ -18,7 +18,7 @@ bool response_view_place(struct response_view *rv, struct rect area)
     struct rect amp = area, ph = {0, 0, 0, 0};
     if (area.h >= RESPONSE_PHASE_MIN_ROWS) {
         ph = area;
-        ph.h = area.h * 2 / 5;
+        ph.h = area.h * 2 / 5 > RESPONSE_PHASE_ROWS ? area.h * 2 / 5 : RESPONSE_PHASE_ROWS;
         amp.h = area.h - ph.h;
         ph.y = area.y + amp.h;
     }
@@ -108,7 +108,11 @@ static void phase_axes(struct chart *c)
     c->ya = (struct axis){.lo = -180.0, .step = 360.0 / intervals, .intervals = intervals,
                           .first = (h - 1 - intervals * spacing) / 2, .spacing = spacing,
                           .cells = h, .dpc = 4};
-    chart_ticks_from_axis(&c->yt, &c->ya);
+    c->yt.n = 0;
+    for (int k = 0; k <= intervals; k++) {
+        c->yt.cell[c->yt.n] = c->ya.first + k * spacing;
+        snprintf(c->yt.label[c->yt.n++], sizeof c->yt.label[0], "%d", -180 + k * 360 / intervals);
+    }
     frequency_ticks(c);
 }
 
@@ -205,18 +209,24 @@ static void draw_phase(struct response_view *rv, const struct app *app)
                        phase_dot(c, sw->phase[p * n + i]), PAIR_MASS + i % 10);
 }
 
-/* The drive's phase in words for the phase panel's legend: each mass's lag now. */
-static void phase_now(const struct app *app, char *buf, size_t len)
+/* The phase panel's legend: each mass's phase at the drive's frequency, in its colour,
+ * into text[] (n + 1 entries of 24 bytes); returns the entries. */
+static int phase_legend(const struct app *app, char (*text)[24], struct legend_item *items)
 {
     double amp[APP_MAX_MASSES], ph[APP_MAX_MASSES];
     const struct model *m = app->model;
-    if (modes_response_phase(m, m->motor.frequency, amp, ph) != 0) {
-        snprintf(buf, len, "phase not known");
-        return;
+    if (modes_response_phase(m, m->motor.frequency, amp, ph) != 0)
+        return 0;
+    int k = 0;
+    snprintf(text[k], sizeof text[k], "at %.3f Hz", m->motor.frequency);
+    items[k] = (struct legend_item){text[k], PAIR_MOTOR}, k++;
+    for (int i = 0; i < m->n; i++, k++) {
+        double deg = round(ph[i]);
+        snprintf(text[k], sizeof text[k], "%d %.0f%s", i + 1, deg == 0.0 ? 0.0 : deg,
+                 term_utf8() ? "°" : "");
+        items[k] = (struct legend_item){text[k], PAIR_MASS + i % 10};
     }
-    int k = snprintf(buf, len, "at %.3f Hz:", m->motor.frequency);
-    for (int i = 0; i < m->n && k > 0 && (size_t)k < len; i++)
-        k += snprintf(buf + k, len - (size_t)k, " %+.0f%s", ph[i], term_utf8() ? "°" : "");
+    return k;
 }
 
 void response_view_draw(struct response_view *rv, const struct app *app, bool fresh)
@@ -264,10 +274,10 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     legend[k++] = (struct legend_item){state, PAIR_MOTOR};
     chart_draw(c, title, "Response (m) against Hz", "Hz", legend, k);
     if (rv->phase.frame.h > 0) {
-        char now[160];
-        phase_now(app, now, sizeof now);
-        struct legend_item pl[1] = {{now, PAIR_MOTOR}};
+        char text[APP_MAX_MASSES + 1][24];
+        struct legend_item pl[APP_MAX_MASSES + 1];
+        int np = phase_legend(app, text, pl);
         chart_draw(&rv->phase, "Phase of each mass to the drive (degrees; a lag is negative)",
-                   "Phase (deg)", "Hz", pl, 1);
+                   "Phase (deg)", "Hz", pl, np);
     }
 }

@@ -11,7 +11,8 @@
 #include "../app/app.h"
 #include "chart.h"
 
-#define RESPONSE_PHASE_MIN_ROWS 16 /* the view's height from which the phase panel shows */
+#define RESPONSE_PHASE_MIN_ROWS 17 /* the view's height from which the phase panel shows */
+#define RESPONSE_PHASE_ROWS 8      /* the phase panel's height at least (4 rows of data) */
 
 /* The theory curves, solved again only when the chain or the width changes. */
 struct response_view {

@@ -1,0 +1,108 @@
+#!/bin/sh
+# tests/tui-modes.sh: the live modes view and the response view's phase panel in a real
+# terminal (tmux), checked against closed forms where there are some:
+# - m: every mode's damping ratio and Q; with equal masses and dampers the damping is
+#   proportional, so zeta_j = c / (2 m w_j) and Q = 1 / (2 zeta) exactly;
+# - the shapes swing while paused (two frames differ), and stop being drawn the same;
+# - Enter on mode 2 starts the chain in it: mode 2 has 100 % of the energy, the others 0 %;
+# - f: the phase panel, -180..180 degrees, and one mass driven below, at and above its
+#   natural frequency lags by atan2(c w, k1 + k2 - m w^2): about 0, 90 and 180 degrees.
+# Run from the repository root as `sh tests/tui-modes.sh`, SPRINGSIM naming the binary.
+# Ends with "tui-modes: N passed, M failed".
+NAME=tui-modes
+. "$(dirname "$0")/lib/check.sh"
+. "$(dirname "$0")/lib/tmux.sh"
+
+start zeta 120 40 -- -p 3-mass-chain --damping 0.3
+start enter 120 40 -- -p 3-mass-chain --amplitude 0
+start below 120 40 -- -n 1 --frequency 0.3
+start at 120 40 -- -n 1 --frequency 0.7118
+start above 120 40 -- -n 1 --frequency 2
+start small 80 24 -- -p 3-mass-chain
+sessions="zeta enter below at above small"
+
+# ---- m: zeta and Q against the closed form ----
+if up zeta; then
+    keys m
+    if wait_re 'Q [0-9]' 3; then
+        # The titles "mode J  F Hz" and the rows "ζ Z  Q Q" come in the same order (row
+        # by row, left to right): the k-th of each belong to one mode.
+        grep -oE 'mode [0-9]+  [0-9.]+ Hz' "$scr" | awk '{ print $3 }' >"$tmp/zeta.f"
+        grep -oE 'ζ [0-9.e-]+  Q [0-9.]+' "$scr" | awk '{ print $2, $4 }' >"$tmp/zeta.z"
+        bad=$(paste -d ' ' "$tmp/zeta.f" "$tmp/zeta.z" | awk -v c=0.3 -v m=1 '
+            function off(a, b) { return (a - b) / b > 0.01 || (b - a) / b > 0.01 }
+            {
+                pi = atan2(0, -1); want = c / (2 * m * 2 * pi * $1); seen++
+                if (NF != 3 || off($2, want) || off($3, 0.5 / want))
+                    printf "mode at %s Hz: zeta %s Q %s, expected zeta %.4g Q %.4g; ", $1, $2, $3, want, 0.5 / want
+            }
+            END { if (seen != 3) printf "found %d modes with zeta and Q, expected 3", seen }')
+        if [ -z "$bad" ]; then pass; else fail "modes view zeta/Q: $bad; screen: $(brief "$scr" 'mode|ζ')"; fi
+        # The shapes swing while paused: the picture changes from one refresh to another.
+        cp "$scr" "$tmp/zeta.a"
+        sleep 0.7
+        cap
+        if has Paused && ! cmp -s "$tmp/zeta.a" "$scr"; then pass; else
+            fail "modes view: the shapes should swing while paused; two frames 0.7 s apart are the same"
+        fi
+    else
+        fail "modes view: m should show each mode's Q; screen: $(brief)"
+    fi
+fi
+
+# ---- Enter: the chain started in mode 2 is all mode 2 ----
+if up enter; then
+    keys m Down Enter
+    if wait_re 'started in mode 2' 3 && wait_t 2 && wait_re '100 %' 3; then
+        shares=$(grep -oE '[0-9]+ %' "$scr" | tr -d ' %' | tr '\n' ' ')
+        rows=$(awk '/mode 2  0\.712 Hz/ { print NR }' "$scr")
+        # the 100 % bar is in mode 2's cell (its row, two below its title), the others are 0
+        if [ "$shares" = "0 100 0 " ] && [ -n "$rows" ] &&
+            sed -n "$((rows + 2))p" "$scr" | grep -qE '100 %'; then pass; else
+            fail "Enter on mode 2: expected shares 0 100 0 with 100 % under mode 2, got '$shares'; screen: $(brief "$scr" 'mode|%')"
+        fi
+        if has Running; then pass; else fail "Enter on a mode should start the chain running"; fi
+    else
+        fail "Enter on mode 2 (m Down Enter): expected 'started in mode 2' and a 100 % bar; screen: $(brief)"
+    fi
+fi
+
+# ---- f: the phase panel ----
+# phase_is SESSION DEG: the legend names mass 1's phase within 2 degrees of DEG.
+phase_is() {
+    got=$(sed -n 's/.*at [0-9.]* Hz─1 \(-\{0,1\}[0-9]*\)°.*/\1/p' "$scr" | head -n 1)
+    awk -v g="$got" -v w="$2" 'BEGIN { d = g - w; exit !(g != "" && d <= 2 && d >= -2) }' ||
+        { fail "phase ($1): mass 1 should lag by about $2 degrees, legend says '$got'; screen: $(brief "$scr" 'Phase|at ')"; return; }
+    pass
+}
+for s in below at above; do
+    if up $s; then
+        keys f
+        if wait_for 'Phase of each mass to the drive' 3; then
+            for label in 180 90 0 -90 -180; do
+                if has_re "│ +$label┤"; then pass; else fail "phase ($s): no tick label $label; screen: $(brief "$scr" 'Phase|┤')"; fi
+            done
+            # atan2(-c w, k1 + k2 - m w^2) with c = 0.1, k = 10, m = 1
+            want=$(awk -v f="$(case $s in below) echo 0.3 ;; at) echo 0.7118 ;; *) echo 2 ;; esac)" \
+                'BEGIN { pi = atan2(0, -1); w = 2 * pi * f; printf "%.0f", atan2(-0.1 * w, 20 - w * w) * 180 / pi }')
+            phase_is $s "$want"
+        else
+            fail "f ($s): expected the phase panel under the response; screen: $(brief)"
+        fi
+    fi
+done
+
+# ---- 80x24: both views still show what matters ----
+if up small; then
+    keys m
+    if wait_re 'mode 3  0\.930 Hz' 3 && has_re 'Q [0-9]'; then pass; else
+        fail "modes view at 80x24: all three modes with Q; screen: $(brief)"
+    fi
+    keys m f
+    if wait_re 'Phase' 3 && has_re '│ +-180┤'; then pass; else
+        fail "response at 80x24: the phase panel should show; screen: $(brief)"
+    fi
+fi
+
+all_alive $sessions
+summary
