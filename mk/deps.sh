@@ -1,13 +1,15 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka,
-# tmux, and bash, zsh and fish for the completions), deb (dpkg-dev, debhelper, lintian,
-# build-essential), bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed with
-# apt-get; otherwise the one apt-get line to run is printed and the step stops.
+# tmux, bash, zsh and fish for the completions, numpy and pandas for --meta's CSV), deb
+# (dpkg-dev, debhelper, lintian, build-essential), bench (GSL), valgrind, fuzz (clang with
+# libFuzzer). As root the missing ones are installed with apt-get; otherwise the one
+# apt-get line to run is printed and the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
 want_pc() { has_pc "$1" || need="$need $2"; }
 want_bin() { command -v "$1" >/dev/null 2>&1 || need="$need $2"; }
+want_py() { /usr/bin/python3 -c "import $1" 2>/dev/null || need="$need $2"; }
 
 for group in "$@"; do
     case $group in
@@ -26,6 +28,8 @@ for group in "$@"; do
         want_bin bash bash
         want_bin zsh zsh
         want_bin fish fish
+        want_py numpy python3-numpy
+        want_py pandas python3-pandas
         ;;
     bench)
         want_pc gsl libgsl-dev

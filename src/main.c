@@ -131,6 +131,20 @@ static int close_output(struct output *o, const struct config *c, int status)
     return status;
 }
 
+/* --meta: '#' lines before the CSV header, which pandas (comment='#'), numpy (loadtxt's
+ * comments) and gnuplot skip: the version, and the command line that repeats the run (the
+ * mode, then every setting from the table; the seed --random chose is among them). */
+static void write_meta(FILE *fp, const struct config *c, const char *mode, const char *arg)
+{
+    if (!c->meta)
+        return;
+    fprintf(fp, "# springsim %s\n# springsim --%s", VERSION, mode);
+    if (arg)
+        fprintf(fp, " %s", arg);
+    config_write_args(fp, c);
+    fputc('\n', fp);
+}
+
 static int run_headless(const struct config *c, const struct model *m)
 {
     int n = m->n, status = EXIT_SUCCESS;
@@ -168,6 +182,7 @@ static int run_headless(const struct config *c, const struct model *m)
     double stride = c->sample > 0.0 ? round(c->sample / c->dt) : 1.0;
     if (stride < 1.0)
         stride = 1.0;
+    write_meta(o.fp, c, "headless", NULL);
     output_csv_header(o.fp, n, c->energy);
     output_csv_row(o.fp, s, c->energy, x + 2 * n);
     double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
@@ -221,6 +236,7 @@ static int run_modes(const struct config *c, const struct model *m)
         return EXIT_FAILURE;
     }
     if (open_output(&o, c) == 0) {
+        write_meta(o.fp, c, "modes", NULL);
         fputs("mode,frequency_hz", o.fp);
         for (int i = 1; i <= n; i++)
             fprintf(o.fp, ",x%d", i);
@@ -299,6 +315,7 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
         free(amp);
         return EXIT_FAILURE;
     }
+    write_meta(o.fp, c, "sweep", spec);
     fputs("frequency_hz", o.fp);
     for (int i = 1; i <= n; i++)
         fprintf(o.fp, ",amp%d", i);
@@ -402,8 +419,14 @@ int main(int argc, char **argv)
         model_free(m);
         return EXIT_USAGE;
     }
-    if (c.random && !c.seed_set)
+    if (c.random && !c.seed_set) {
         c.seed = (uint64_t)time(NULL) ^ ((uint64_t)getpid() << 32);
+        /* Said so that the run can be repeated (the interactive program's status line
+         * says it there). */
+        if (cli.mode == MODE_HEADLESS)
+            options_say("--random: seed %llu (--seed %llu repeats this run)",
+                        (unsigned long long)c.seed, (unsigned long long)c.seed);
+    }
     if (cli.mode == MODE_HEADLESS || cli.mode == MODE_MODES || cli.mode == MODE_SWEEP)
         catch_terminate();
     switch (cli.mode) {

@@ -3,7 +3,8 @@
  * user's frequency back, but goes on through its own retunes and ends by itself; the
  * modes are computed once per change; a new chain is built whole or not at all (the
  * allocations are made to fail one by one, through tests/app_fixture.c); a refused input
- * or preset changes nothing. Every test starts from its own fresh app. */
+ * or preset changes nothing; a random start says its seed. Every test starts from its own
+ * fresh app. */
 #include "app_fixture.h"
 
 #include <stdlib.h>
@@ -472,6 +473,32 @@ static void starts_along_a_mode(void **state)
     assert_memory_equal(app.cfg.x0.v, want, sizeof want);
 }
 
+/* The seed of random positions chosen for the user is said in the status line, at the
+ * start (--random without --seed) and on 'r', and it is the seed the positions came from. */
+static void random_seed_said(void **state)
+{
+    (void)state;
+    static struct app a;
+    double x[APP_MAX_MASSES];
+    struct config c = app.cfg;
+    c.random = true;
+    c.seed_set = false;
+    c.seed = 1234567890123ULL;
+    c.x0.count = 0;
+    assert_int_equal(app_init(&a, &c, SRCDIR), 0);
+    assert_non_null(strstr(a.message, "seed 1234567890123 "));
+    config_random_positions(a.model, 1234567890123ULL, x);
+    assert_memory_equal(sim_x(a.sim), x, (size_t)a.model->n * sizeof *x);
+    app_free(&a);
+
+    app_random(&app);
+    char want[64];
+    snprintf(want, sizeof want, "(seed %llu)", (unsigned long long)app.cfg.seed);
+    assert_non_null(strstr(app.message, want));
+    config_random_positions(app.model, app.cfg.seed, x);
+    assert_memory_equal(sim_x(app.sim), x, (size_t)app.model->n * sizeof *x);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
@@ -485,6 +512,7 @@ int main(void)
         T(refused_input_changes_nothing),
         T(preset_out_of_range),
         T(starts_along_a_mode),
+        T(random_seed_said),
     };
 #undef T
     return cmocka_run_group_tests_name("app rules", tests, NULL, NULL);

@@ -4,6 +4,7 @@
 #include "testutil.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/config.h"
@@ -131,6 +132,106 @@ static void escaping(void **state)
     assert_non_null(config_parse_number("1\n", &v));
 }
 
+/* Reads back a command line as config_write_args writes it (" --name value" or " --name"
+ * for a flag, no blank inside a value) into c, which starts at the defaults. */
+static void read_args(char *line, struct config *c)
+{
+    char err[256];
+    config_init(c);
+    for (char *w = strtok(line, " "); w; w = strtok(NULL, " ")) {
+        assert_true(w[0] == '-' && w[1] == '-');
+        int k = config_find(w + 2);
+        assert_true(k >= 0);
+        const char *value = config_takes_value(k) ? strtok(NULL, " ") : NULL;
+        if (config_set(c, k, value, err, sizeof err) != 0)
+            fail_msg("--%s %s: %s", w + 2, value ? value : "", err);
+    }
+}
+
+/* The two configurations make the same run: the same chain, drive, start and settings. */
+static void assert_same_run(const struct config *a, const struct config *b)
+{
+    int bad;
+    char err[256];
+    struct model *ma = config_model(a, &bad, err, sizeof err);
+    struct model *mb = config_model(b, &bad, err, sizeof err);
+    assert_non_null(ma);
+    assert_non_null(mb);
+    int n = ma->n;
+    assert_int_equal(mb->n, n);
+    for (int i = 0; i <= n; i++) {
+        assert_true(ma->k[i] == mb->k[i]);
+        if (i < n)
+            assert_true(ma->m[i] == mb->m[i] && ma->c[i] == mb->c[i]);
+    }
+    assert_int_equal(ma->boundary, mb->boundary);
+    assert_int_equal(ma->collisions, mb->collisions);
+    assert_int_equal(ma->motor.wave, mb->motor.wave);
+    assert_true(ma->motor.amplitude == mb->motor.amplitude);
+    assert_true(ma->motor.frequency == mb->motor.frequency);
+    double xa[2 * 8], xb[2 * 8];
+    assert_true(n <= 8);
+    config_initial(a, ma, xa, xa + n);
+    config_initial(b, mb, xb, xb + n);
+    assert_memory_equal(xa, xb, 2 * (size_t)n * sizeof *xa);
+    assert_true(a->dt == b->dt && a->duration == b->duration && a->sample == b->sample);
+    assert_int_equal(a->integrator, b->integrator);
+    assert_int_equal(a->energy, b->energy);
+    assert_int_equal(a->fps, b->fps);
+    assert_int_equal(a->low_bandwidth, b->low_bandwidth);
+    assert_int_equal(a->random, b->random);
+    if (a->random)
+        assert_true(a->seed == b->seed);
+    model_free(ma);
+    model_free(mb);
+}
+
+/* --meta's command line: written from the table, read back by the options it names, it
+ * makes the same run (numbers exact to the last bit, random positions from the same seed),
+ * and it never names the preset, the output or a mode. */
+static void args_round_trip(void **state)
+{
+    (void)state;
+    static const char *const cases[][2 * 12 + 1] = {
+        {NULL},
+        {"masses", "3", "mass", "1,2.5,0.1", "spring", "7.3", "damping", "0,0.3333333333333333,1e-300",
+         "dt", "0.003", "integrator", "exact", "boundary", "free", "wave", "sawtooth",
+         "amplitude", "0.1", "frequency", "1e-7", "x0", "-0.5,0.25,0.1", "v0", "2", NULL},
+        {"masses", "2", "random", NULL, "seed", "18446744073709551615", "no-collisions", NULL,
+         "duration", "12.5", "sample", "0.1", "energy", NULL, "fps", "12", "low-bandwidth", NULL,
+         "spring", "1,2,3", "v0", "-1,1", NULL},
+        {"masses", "4", "x0", "0.3", "random", NULL, NULL}, /* random after x0: random */
+        {"masses", "4", "random", NULL, "x0", "0.3", NULL}, /* x0 after random: x0 */
+    };
+    for (size_t t = 0; t < sizeof cases / sizeof *cases; t++) {
+        static struct config a, b;
+        char err[256];
+        config_init(&a);
+        for (int i = 0; cases[t][i]; i += 2) {
+            int k = config_find(cases[t][i]);
+            assert_true(k >= 0);
+            if (config_set(&a, k, cases[t][i + 1], err, sizeof err) != 0)
+                fail_msg("%s: %s", cases[t][i], err);
+        }
+        if (a.random && !a.seed_set)
+            a.seed = 987654321; /* what main chooses */
+        a.output = "out.csv";
+        char *line = NULL;
+        size_t size = 0;
+        FILE *mem = open_memstream(&line, &size);
+        assert_non_null(mem);
+        assert_int_equal(config_write_args(mem, &a), 0);
+        assert_int_equal(fclose(mem), 0);
+        assert_null(strstr(line, "--output"));
+        assert_null(strstr(line, "--preset"));
+        assert_null(strstr(line, "--headless"));
+        assert_null(strchr(line, '\n'));
+        read_args(line, &b);
+        assert_same_run(&a, &b);
+        free(line);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -139,6 +240,7 @@ int main(void)
         cmocka_unit_test(interactive_limits),
         cmocka_unit_test(run_length),
         cmocka_unit_test(escaping),
+        cmocka_unit_test(args_round_trip),
     };
     return cmocka_run_group_tests_name("config", tests, NULL, NULL);
 }

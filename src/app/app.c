@@ -318,7 +318,13 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
     snprintf(app->preset, sizeof app->preset, "%s", cfg->name);
     struct config next = *cfg;
     unsigned changed;
-    return app_change(app, &next, CHANGE_REBUILD, NULL, &changed);
+    if (app_change(app, &next, CHANGE_REBUILD, NULL, &changed) != 0)
+        return -1;
+    /* The seed --random chose, so that the start can be repeated. */
+    if (cfg->random && !cfg->seed_set && app->message[0] == '\0')
+        app_say(app, false, "random positions from seed %llu (--seed repeats them); space starts",
+                (unsigned long long)cfg->seed);
+    return 0;
 }
 
 void app_free(struct app *app)
@@ -469,7 +475,8 @@ unsigned app_random(struct app *app)
     for (int i = 0; i < app->model->n; i++)
         app->cfg.v0.v[i] = 0.0;
     unsigned what = app_reset(app);
-    return what | app_say(app, false, "random initial positions");
+    return what | app_say(app, false, "random initial positions (seed %llu)",
+                          (unsigned long long)seed);
 }
 
 unsigned app_place_mass(struct app *app, int i, double X)

@@ -101,6 +101,9 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_ENERGY] = {.name = "energy", .section = "run", .kind = CONFIG_FLAG,
                     .help = "headless CSV gains kinetic,potential,dissipated,motor_work,contact",
                     .offset = AT(energy)},
+    [CFG_META] = {.name = "meta", .kind = CONFIG_FLAG, .offset = AT(meta),
+                  .help = "headless/modes/sweep CSV begins with '#' lines: the version and the "
+                          "command line that repeats the run"},
     [CFG_FPS] = {.name = "fps", .section = "run", .kind = CONFIG_WHOLE, .arg = "N",
                  .help = "interactive frames per second", .symbol = "fps", .lo = 1, .hi = 60,
                  .def = 30, .offset = AT(fps)},

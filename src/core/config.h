@@ -7,6 +7,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "integrator.h"
 #include "model.h"
@@ -35,6 +36,7 @@ enum config_key {
     CFG_SAMPLE,
     CFG_OUTPUT,
     CFG_ENERGY,
+    CFG_META,
     CFG_FPS,
     CFG_LOW_BANDWIDTH,
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
@@ -126,6 +128,7 @@ struct config {
     double sample;                      /* headless output interval (s), 0 = every step */
     const char *output;                 /* output file, NULL for standard output */
     bool energy;                        /* energy columns in the headless CSV */
+    bool meta;                          /* '#' lines before a CSV: version, command line */
     int fps;                            /* interactive frames per second */
     bool low_bandwidth;                 /* interactive: keep terminal output small */
     char name[64];                      /* preset's display name */
@@ -171,6 +174,14 @@ void config_init(struct config *c);
 
 /* The key with this long name, or -1. */
 int config_find(const char *name);
+
+/* The shortest text that reads back (strtod) as exactly v. */
+void config_format_exact(double v, char *buf, size_t len);
+
+/* Writes c's settings (every row with a preset section, in the table's order) as command
+ * line options, each preceded by a space: " --masses 2 --mass 1 ... --seed 7". Read back
+ * by the command line they give c's settings again. 0, or -1 on a write error. */
+int config_write_args(FILE *out, const struct config *c);
 
 /* Whether key's option takes a value on the command line (a flag and a mode without an
  * argument do not). */

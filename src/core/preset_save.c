@@ -6,16 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Shortest text that reads back as exactly v. */
-static void format_exact(double v, char *buf, size_t len)
-{
-    for (int digits = 6; digits <= 17; digits++) {
-        snprintf(buf, len, "%.*g", digits, v);
-        if (strtod(buf, NULL) == v)
-            return;
-    }
-}
-
 /* key = list, one value if all are equal, long lists wrapped onto indented lines. */
 static void write_list(FILE *out, const char *key, const double *v, int n)
 {
@@ -25,7 +15,7 @@ static void write_list(FILE *out, const char *key, const double *v, int n)
     int col = fprintf(out, "%s =", key);
     for (int i = 0; i < (same ? 1 : n); i++) {
         char num[32];
-        format_exact(v[i], num, sizeof num);
+        config_format_exact(v[i], num, sizeof num);
         if (col + (int)strlen(num) + 2 > 78) {
             fputs(i ? ",\n   " : "\n   ", out);
             col = 3;
@@ -41,7 +31,7 @@ static void write_list(FILE *out, const char *key, const double *v, int n)
 static void write_number(FILE *out, const char *key, double v)
 {
     char num[32];
-    format_exact(v, num, sizeof num);
+    config_format_exact(v, num, sizeof num);
     fprintf(out, "%s = %s\n", key, num);
 }
 
