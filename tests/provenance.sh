@@ -64,6 +64,7 @@ check_meta() {
 check_meta headless --headless -p collisions --duration 3 --sample 0.05 --energy
 check_meta headless-every-step --headless -n 3 --mass 1,0.3333333333333333,2 --x0 -0.5,0,0.5 \
     --wave triangle --integrator verlet --dt 0.007 --duration 0.5 --no-collisions
+check_meta start-mode --headless -n 3 --mass 1,2,0.5 --start-mode 2:0.3 --duration 1 --sample 0.1
 check_meta modes --modes -p 3-mass-chain --damping 0.2,0,0.1
 check_meta sweep -p 3-mass-chain --sweep 0.1:2:25
 check_meta sweep-springs --sweep 0.2:3:7 -n 2 --spring 10,20,30

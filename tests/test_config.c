@@ -180,6 +180,9 @@ static void assert_same_run(const struct config *a, const struct config *b)
     assert_int_equal(a->fps, b->fps);
     assert_int_equal(a->low_bandwidth, b->low_bandwidth);
     assert_int_equal(a->random, b->random);
+    assert_int_equal(a->start_mode, b->start_mode);
+    if (a->start_mode)
+        assert_true(a->start_amp == b->start_amp);
     if (a->random)
         assert_true(a->seed == b->seed);
     model_free(ma);
@@ -202,6 +205,8 @@ static void args_round_trip(void **state)
          "spring", "1,2,3", "v0", "-1,1", NULL},
         {"masses", "4", "x0", "0.3", "random", NULL, NULL}, /* random after x0: random */
         {"masses", "4", "random", NULL, "x0", "0.3", NULL}, /* x0 after random: x0 */
+        {"masses", "3", "mass", "1,2,0.5", "random", NULL, "start-mode", "2:0.3", NULL},
+        {"masses", "3", "start-mode", "3", "v0", "0.1", NULL}, /* v0 after it: v0 */
     };
     for (size_t t = 0; t < sizeof cases / sizeof *cases; t++) {
         static struct config a, b;

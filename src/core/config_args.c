@@ -91,6 +91,15 @@ int config_write_args(FILE *out, const struct config *c)
             break;
         }
         case CONFIG_TEXT: {
+            if (k == CFG_START_MODE) {
+                /* Read into a mode and an amplitude; written after x0 and v0, so it wins
+                 * over them as it did. */
+                if (c->start_mode > 0) {
+                    fprintf(out, " --start-mode %d:", c->start_mode);
+                    write_number(out, c->start_amp);
+                }
+                break;
+            }
             const char *s;
             memcpy(&s, at, sizeof s);
             if (s) {

@@ -57,7 +57,7 @@ int preset_write(FILE *out, const struct config *c, const struct model *m)
     fprintf(out, "\n[initial]\n");
     if (c->start_mode > 0) {
         char amp[32];
-        format_exact(c->start_amp, amp, sizeof amp);
+        config_format_exact(c->start_amp, amp, sizeof amp);
         fprintf(out, "start-mode = %d:%s\n", c->start_mode, amp);
     } else if (c->random) {
         fprintf(out, "random = true\nseed = %llu\n", (unsigned long long)c->seed);
