@@ -56,6 +56,15 @@ int options_finish_stdout(bool close)
     return EXIT_FAILURE;
 }
 
+/* Help-type output is held whole until options_finish_stdout flushes it, so that a failed
+ * write (a full disk) happens there, with its reason, and not half-way through the text,
+ * whose reason the later writes lose. */
+static void hold_stdout(void)
+{
+    static char buf[1 << 16];
+    setvbuf(stdout, buf, _IOFBF, sizeof buf);
+}
+
 /* Writes text from column indent, words wrapped before column width, later lines indented. */
 static void wrap(FILE *out, const char *text, int indent, int width)
 {
@@ -180,6 +189,8 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     optind = 0;
     while ((ch = getopt_long(argc, argv, shortopts, lo, NULL)) != -1) {
         int k = option_index(ch);
+        if (k == CFG_HELP || k == CFG_VERSION || k == CFG_KEYS)
+            hold_stdout();
         if (k == CFG_HELP) {
             usage(stdout);
             return options_finish_stdout(false);
