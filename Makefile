@@ -127,8 +127,8 @@ $(COMPLETIONS): $(BUILD)/mk/completions
 # The app (no curses) is unit-tested like the core: every test links it.
 $(TEST_BIN): $(APP_OBJ)
 $(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
-# test_app, test_app_rules and test_ghost share a fixture that makes the chain's allocations fail on
-# demand and counts the modes' computations (tests/app_fixture.c wraps them).
+# test_app, test_app_rules and test_ghost share a fixture that makes the chain's allocations
+# fail on demand and counts the modes' computations (tests/app_fixture.c wraps them).
 APP_WRAPPED = config_model sim_new history_new trail_new sweep_new modes_compute limits_modes
 APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules $(BUILD)/tests/test_ghost
 APP_FIXTURE = $(BUILD)/tests/app_fixture.o
@@ -204,7 +204,8 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@echo
 	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"
 	@echo "CPU < 3 %, output < 100 KB/s, first frame < 50 ms, RSS < 10 MB; also < 100 KB/s at"
-	@echo "200x60, with a plot enlarged and in the spectrum view; low bandwidth < 20 KB/s)"
+	@echo "200x60, with a plot enlarged and in the spectrum view; also < 3 % and < 100 KB/s"
+	@echo "with the ghost on (g) parting from the chain; low bandwidth < 20 KB/s)"
 	@echo
 	@echo "| run | size | CPU | output | first frame | peak RSS |"
 	@echo "| --- | --- | --- | --- | --- | --- |"
@@ -215,6 +216,8 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@BENCH_KEYS='F ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'spectrum view (F)' ./$(BIN)
 	@BENCH_KEYS='F]]]] ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
 	    'spectrum view, 10x (a 60 s record)' ./$(BIN)
+	@BENCH_KEYS='gjjjjLLLLL ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
+	    'ghost (g), damping 0.1 to 0.6' ./$(BIN)
 	@$(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 
