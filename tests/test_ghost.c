@@ -292,6 +292,34 @@ static void ghost_blowing_up_is_dropped(void **state)
     run(100);
 }
 
+/* The span of a trail's records (s). */
+static double span(const struct trail *tr)
+{
+    const double *r = trail_first(tr);
+    return r[(size_t)(tr->count - 1) * tr->width + TRAIL_T] - r[TRAIL_T];
+}
+
+/* The ghost's samples, sized for its own dt, cover every time window as the live chain's
+ * do: 10 s from the fine ones, 60 s from the coarse ones, the same trail chosen. */
+static void ghost_samples_cover_the_windows(void **state)
+{
+    (void)state;
+    for (int k = 0; k < 2; k++) {
+        app_set_text(&app, CTL_DT, k ? "0.001" : "0.01");
+        app_reset(&app);
+        make_ghost();
+        run((int)lround(70.0 / app.cfg.dt));
+        assert_true(span(app.ghost->trail) >= 10.0);
+        assert_true(span(app.ghost->coarse) >= 60.0);
+        assert_true(span(app.ghost->trail) >= fmin(span(app.trail), 10.0 + 3 * app.cfg.dt));
+        assert_ptr_equal(app_ghost_trail(&app), app.ghost->trail);
+        app_window_step(&app, 3); /* 60 s */
+        assert_ptr_equal(app_ghost_trail(&app), app.ghost->coarse);
+        app_window_step(&app, -3);
+        app_toggle_ghost(&app);
+    }
+}
+
 /* Nothing is allocated while the ghost runs, steps back or resets. */
 static void no_allocation_per_step(void **state)
 {
@@ -318,7 +346,7 @@ int main(void)
         T(ghost_keeps_the_old_parameters),    T(ghost_keeps_its_dt),
         T(stepping_back_moves_both),          T(reset_takes_each_to_its_start),
         T(ghost_dropped),                     T(ghost_blowing_up_is_dropped),
-        T(no_allocation_per_step),
+        T(ghost_samples_cover_the_windows), T(no_allocation_per_step),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,6 +3,7 @@
  * nothing of app.c's. */
 #include "ghost.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,6 +21,15 @@ static void ghost_free(struct ghost *g)
     free(g);
 }
 
+/* Records of a trail sampled every `every` steps of dt that span what the app's trail of
+ * capacity records spaced at least spacing apart spans, at most that capacity: the
+ * ghost's dt never changes, so at dt = 0.01 its fine samples need a quarter of the room. */
+static int records(int capacity, double spacing, int every, double dt)
+{
+    double need = ceil(capacity * spacing / (every * dt)) + 1.0;
+    return need < capacity ? (int)need : capacity;
+}
+
 /* A ghost of the app's chain as it is now, or NULL on no memory (nothing kept). */
 static struct ghost *ghost_new(const struct app *app)
 {
@@ -31,8 +41,11 @@ static struct ghost *ghost_new(const struct app *app)
     g->model = model_new(live->n);
     g->sim = g->model ? sim_new(live, sim_dt(app->sim)) : NULL;
     g->hist = g->sim ? history_new(g->sim, HISTORY_DEPTH) : NULL;
-    g->trail = trail_new(live->n, TRAIL_FINE_RECORDS);
-    g->coarse = trail_new(live->n, TRAIL_COARSE_RECORDS);
+    double dt = sim_dt(app->sim);
+    g->trail = trail_new(live->n, records(TRAIL_FINE_RECORDS, TRAIL_FINE_SPACING,
+                                          app->sample_every, dt));
+    g->coarse = trail_new(live->n, records(TRAIL_COARSE_RECORDS, TRAIL_COARSE_SPACING,
+                                           app->coarse_every, dt));
     /* Everything the live chain carries from step to step, so the two step alike. */
     if (!g->hist || !g->trail || !g->coarse || sim_copy(g->sim, app->sim) != 0) {
         ghost_free(g);
