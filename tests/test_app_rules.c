@@ -474,7 +474,8 @@ static void starts_along_a_mode(void **state)
 }
 
 /* The seed of random positions chosen for the user is said in the status line, at the
- * start (--random without --seed) and on 'r', and it is the seed the positions came from. */
+ * start (--random without --seed), on 'R' and on loading a preset with random positions,
+ * and it is the seed the positions came from. */
 static void random_seed_said(void **state)
 {
     (void)state;
@@ -497,6 +498,23 @@ static void random_seed_said(void **state)
     assert_non_null(strstr(app.message, want));
     config_random_positions(app.model, app.cfg.seed, x);
     assert_memory_equal(sim_x(app.sim), x, (size_t)app.model->n * sizeof *x);
+
+    /* A preset asking for random positions without a seed. */
+    char dir[] = "/tmp/springsim-rnd-XXXXXX", path[512];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/r.ini", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("[system]\nmasses = 3\n[initial]\nrandom = true\n", f);
+    fclose(f);
+    assert_true(app_load_preset(&app, path, "r") != 0);
+    snprintf(want, sizeof want, "(random positions, seed %llu)",
+             (unsigned long long)app.cfg.seed);
+    assert_non_null(strstr(app.message, want));
+    config_random_positions(app.model, app.cfg.seed, x);
+    assert_memory_equal(sim_x(app.sim), x, (size_t)app.model->n * sizeof *x);
+    unlink(path);
+    rmdir(dir);
 }
 
 int main(void)

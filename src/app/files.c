@@ -35,6 +35,9 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
         return 0;
     }
     snprintf(app->preset, sizeof app->preset, "%s", next.name[0] ? next.name : name);
+    if (next.random && !next.seed_set) /* the seed chosen, so the start can be repeated */
+        return what | app_say(app, false, "preset %s (random positions, seed %llu): %s",
+                              app->preset, (unsigned long long)next.seed, next.description);
     return what | app_say(app, false, "preset %s: %s", app->preset, next.description);
 }
 
