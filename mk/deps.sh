@@ -1,10 +1,11 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka,
-# tmux, bash, zsh and fish for the completions, numpy and pandas for --meta's CSV), deb
-# (dpkg-dev, debhelper, lintian, build-essential), bench (GSL), valgrind, fuzz (clang with
-# libFuzzer). As root the missing ones are installed with apt-get; otherwise the one
-# apt-get line to run is printed and the step stops.
+# tmux, bash, zsh and fish for the completions, numpy and pandas for --meta's CSV, GNU
+# parallel for the --summary study), deb (dpkg-dev, debhelper, lintian, build-essential),
+# bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are
+# installed with apt-get; otherwise the one apt-get line to run is printed and the step
+# stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
 want_pc() { has_pc "$1" || need="$need $2"; }
@@ -30,6 +31,7 @@ for group in "$@"; do
         want_bin fish fish
         want_py numpy python3-numpy
         want_py pandas python3-pandas
+        want_bin parallel parallel
         ;;
     bench)
         want_pc gsl libgsl-dev

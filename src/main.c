@@ -20,6 +20,7 @@
 #include "core/output.h"
 #include "core/preset.h"
 #include "core/sim.h"
+#include "core/summary.h"
 #include "options.h"
 #include "tui/tui.h"
 
@@ -150,11 +151,13 @@ static int run_headless(const struct config *c, const struct model *m)
     int n = m->n, status = EXIT_SUCCESS;
     double *x = malloc((size_t)(3 * n) * sizeof *x);
     struct sim *s = sim_new(m, c->dt);
+    struct summary *sum = c->summary ? summary_new(n) : NULL;
     struct output o;
-    if (!x || !s) {
+    if (!x || !s || (c->summary && !sum)) {
         options_say("out of memory");
         free(x);
         sim_free(s);
+        summary_free(sum);
         return EXIT_FAILURE;
     }
     struct limits l;
@@ -168,12 +171,14 @@ static int run_headless(const struct config *c, const struct model *m)
                     "(LAPACK failed, or the numbers overflow)", c->start_mode);
         free(x);
         sim_free(s);
+        summary_free(sum);
         return EXIT_FAILURE;
     }
     sim_reset(s, x, x + n);
     if (open_output(&o, c)) {
         free(x);
         sim_free(s);
+        summary_free(sum);
         return EXIT_FAILURE;
     }
     /* Steps between rows and steps in all, kept in doubles: whole numbers up to 2^53,
@@ -182,9 +187,13 @@ static int run_headless(const struct config *c, const struct model *m)
     double stride = c->sample > 0.0 ? round(c->sample / c->dt) : 1.0;
     if (stride < 1.0)
         stride = 1.0;
-    write_meta(o.fp, c, "headless", NULL);
-    output_csv_header(o.fp, n, c->energy);
-    output_csv_row(o.fp, s, c->energy, x + 2 * n);
+    write_meta(o.fp, c, sum ? "summary" : "headless", NULL);
+    if (sum) {
+        summary_add(sum, s, 0.0, total);
+    } else {
+        output_csv_header(o.fp, n, c->energy);
+        output_csv_row(o.fp, s, c->energy, x + 2 * n);
+    }
     double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
     for (double step = 1; step <= total; step++) {
         /* Past the stability limit a capped velocity means the numbers are running away:
@@ -200,11 +209,17 @@ static int run_headless(const struct config *c, const struct model *m)
                 first_cap = sim_time(s);
             capped += sim_last_capped(s);
         }
-        if (fmod(step, stride) == 0.0) {
+        if (sum) {
+            summary_add(sum, s, step, total);
+        } else if (fmod(step, stride) == 0.0) {
             output_csv_row(o.fp, s, c->energy, x + 2 * n);
             if (ferror(o.fp))
                 break;
         }
+    }
+    if (sum && status == EXIT_SUCCESS) {
+        summary_header(o.fp, n);
+        summary_row(o.fp, sum, s);
     }
     status = close_output(&o, c, status);
     if (capped > 0.0) {
@@ -215,6 +230,7 @@ static int run_headless(const struct config *c, const struct model *m)
     }
     free(x);
     sim_free(s);
+    summary_free(sum);
     return status;
 }
 

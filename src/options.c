@@ -229,6 +229,7 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     /* Second pass: everything else, in order; the first bad one is reported. */
     optind = 0;
     int modes = 0;
+    char mode_option[32] = ""; /* the option that chose the mode */
     for (;;) {
         int before = optind ? optind : 1;
         ch = getopt_long(argc, argv, shortopts, lo, NULL);
@@ -294,7 +295,16 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                 return EXIT_USAGE;
             }
             cli->mode = m;
+            snprintf(mode_option, sizeof mode_option, "--%s", config_options[k].name);
         }
+    }
+    /* --summary is a headless run's: alone it asks for one. */
+    if (c->summary && cli->mode == MODE_INTERACTIVE)
+        cli->mode = MODE_HEADLESS;
+    if (c->summary && cli->mode != MODE_HEADLESS) {
+        options_say("--summary: summarises a --headless run, but %s was given too (expected "
+                    "--headless or no other mode)", mode_option);
+        return EXIT_USAGE;
     }
     if (optind < argc) {
         written(argv, optind, q, sizeof q);

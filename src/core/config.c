@@ -110,6 +110,9 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_LOW_BANDWIDTH] = {.name = "low-bandwidth", .section = "run", .kind = CONFIG_FLAG,
                            .help = "interactive: fewer frames and plot refreshes (slow links)",
                            .offset = AT(low_bandwidth)},
+    [CFG_SUMMARY] = {.name = "summary", .kind = CONFIG_FLAG, .offset = AT(summary),
+                     .help = "headless (implied): a header and one row of settings and per-run "
+                             "figures instead of the series"},
     [CFG_HEADLESS] = {.name = "headless", .kind = CONFIG_MODE,
                       .help = "run without a terminal; CSV to standard output"},
     [CFG_MODES] = {.name = "modes", .kind = CONFIG_MODE,

@@ -39,6 +39,7 @@ enum config_key {
     CFG_META,
     CFG_FPS,
     CFG_LOW_BANDWIDTH,
+    CFG_SUMMARY,
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
     CFG_MODES,
     CFG_SWEEP,
@@ -131,6 +132,7 @@ struct config {
     bool meta;                          /* '#' lines before a CSV: version, command line */
     int fps;                            /* interactive frames per second */
     bool low_bandwidth;                 /* interactive: keep terminal output small */
+    bool summary;                       /* headless: one row of figures, not the series */
     char name[64];                      /* preset's display name */
     char description[256];              /* preset's description */
     struct config_origin origin[CFG_KEY_COUNT]; /* where each key was set */

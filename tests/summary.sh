@@ -1,0 +1,179 @@
+#!/bin/sh
+# tests/summary.sh: --summary end to end (issue 13): a single undamped mass's closed forms,
+# the dampers' books against the energy lost, the contacts against a count from the
+# --headless time series of the same run, -o, the errors, and the README's GNU parallel
+# study run exactly as README.md writes it (taken from the file, so the two cannot drift).
+# Prints one line per failing case, then "summary: N passed, M failed".
+
+NAME=summary
+. "$(dirname "$0")/lib/check.sh"
+trap 'exit 1' HUP INT TERM
+plain_env
+out=$tmp/stdout
+err=$tmp/stderr
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+# run ARGS...: stdout in $out, stderr in $err, status in $rc, the command in $cmd.
+run() {
+    cmd="springsim $*"
+    "$SPRINGSIM" "$@" >"$out" 2>"$err"
+    rc=$?
+}
+
+# col NAME [FILE]: the value of column NAME in the row of a summary (quoted lists, which
+# hold commas, blanked first).
+col() {
+    sed 's/"[^"]*"/L/g' "${2:-$out}" | awk -F, -v name="$1" '
+        NR == 1 { for (i = 1; i <= NF; i++) if ($i == name) c = i; next }
+        NR == 2 && c { print $c }'
+}
+
+# near WHAT GOT WANT TOL: |GOT - WANT| <= TOL.
+near() {
+    if awk -v g="$2" -v w="$3" -v t="$4" 'BEGIN { d = g - w; exit !(g != "" && d <= t && -d <= t) }'
+    then pass; else fail "$1: got '$2', expected $3 within $4"; fi
+}
+
+# ok: the last run exited 0, quietly, with a header and one row.
+ok() {
+    if [ "$rc" -eq 0 ] && ! [ -s "$err" ] && [ "$(awk 'END { print NR }' "$out")" = 2 ]; then
+        pass
+        return 0
+    fi
+    fail "$cmd: exit $rc, $(awk 'END { print NR }' "$out") lines, stderr: $(head -c 200 "$err")"
+    return 1
+}
+
+# usage_error NEEDLE... -- ARGS...: exit 2, one line on stderr naming each NEEDLE, no output.
+usage_error() {
+    needles=
+    while [ "$1" != -- ]; do needles="$needles $1"; shift; done
+    shift
+    run "$@"
+    bad=
+    [ "$rc" -eq 2 ] || bad="$bad exit $rc;"
+    [ -s "$out" ] && bad="$bad output on stdout;"
+    [ "$(awk 'END { print NR }' "$err")" = 1 ] || bad="$bad not one line on stderr;"
+    for n in $needles; do grep -qe "$n" "$err" || bad="$bad does not name $n;"; done
+    if [ -z "$bad" ]; then pass; else fail "$cmd:$bad $(head -c 200 "$err")"; fi
+}
+
+# A single undamped mass between two 10 N/m springs, from x0 = -0.5 at rest: w = sqrt(20),
+# 1000 steps a period, 6 periods, so the rms is taken over 3 whole periods. Closed forms:
+# max |x| = 0.5 (the start), rms x = 0.5/sqrt(2), max |v| = 0.5 w; nothing dissipated,
+# no work, no contact.
+dt=$(awk 'BEGIN { printf "%.17g", 2 * atan2(0, -1) / sqrt(20) / 1000 }')
+T=$(awk -v dt="$dt" 'BEGIN { printf "%.17g", 6000 * dt }')
+run --summary -n 1 --boundary wall --damping 0 --x0 -0.5 --dt "$dt" --duration "$T"
+if ok; then
+    near "max_abs_x1" "$(col max_abs_x1)" 0.5 0
+    near "rms_x1" "$(col rms_x1)" "$(awk 'BEGIN { printf "%.17g", 0.5 / sqrt(2) }')" 1e-9
+    near "max_abs_v1" "$(col max_abs_v1)" "$(awk 'BEGIN { printf "%.17g", 0.5 * sqrt(20) }')" 1e-9
+    near "contacts" "$(col contacts)" 0 0
+    near "dissipated" "$(col dissipated)" 0 0
+    near "motor_work" "$(col motor_work)" 0 0
+fi
+
+# Damping and no drive: the dampers took what the mechanical energy lost, E0 - E(T), with
+# E(T) from the last row of the same run's time series (1/2 m v^2 + 2 * 1/2 k x^2).
+set -- -n 1 --boundary wall --damping 0.7 --x0 0.5 --v0 1.5 --no-collisions --dt 0.001 --duration 5
+run --summary "$@"
+if ok; then
+    lost=$("$SPRINGSIM" --headless "$@" | awk -F, 'END { printf "%.17g", 0.5 * 1.5 ^ 2 + 10 * 0.5 ^ 2 - (0.5 * $3 ^ 2 + 10 * $2 ^ 2) }')
+    near "dissipated against the energy lost" "$(col dissipated)" "$lost" 1e-8
+    near "no work without a drive" "$(col motor_work)" 0 0
+    # The peaks over the whole series and the rms over its rows with t > T/2 (2.5 s),
+    # computed from the time series: the amplitude decays, so the window shows.
+    "$SPRINGSIM" --headless "$@" | awk -F, 'NR > 1 {
+            if ($2 * $2 > xx) xx = $2 * $2
+            if ($3 * $3 > vv) vv = $3 * $3
+            if ($1 > 2.5) { s += $2 * $2; n++ } }
+        END { printf "%.17g %.17g %.17g\n", sqrt(xx), sqrt(s / n), sqrt(vv) }' >"$tmp/series"
+    read -r mx rms mv <"$tmp/series"
+    near "max_abs_x1 against the series" "$(col max_abs_x1)" "$mx" 1e-11
+    near "rms_x1 over the last half of the series" "$(col rms_x1)" "$rms" 1e-11
+    near "max_abs_v1 against the series" "$(col max_abs_v1)" "$mv" 1e-11
+fi
+
+# The collisions preset for 120 s: the contacts are the steps at which the time series'
+# contact column (the energy restitution took) went up, in the same run.
+run --summary -p collisions --duration 120
+if ok; then
+    bounces=$("$SPRINGSIM" --headless --energy -p collisions --duration 120 | awk -F, '
+        NR == 1 { for (i = 1; i <= NF; i++) if ($i == "contact") c = i; next }
+        NR > 2 && $c > last { n++ }
+        { last = $c }
+        END { print n + 0 }')
+    near "contacts against the series ($bounces bounces)" "$(col contacts)" "$bounces" 0
+    [ "$bounces" -gt 20 ] && pass || fail "the collisions preset bounced only $bounces times"
+    cp "$out" "$tmp/collisions.csv"
+fi
+
+# -o: the same two lines in the file, nothing on standard output, no temporary left.
+run --summary -p collisions --duration 120 -o "$tmp/study.csv"
+if [ "$rc" -eq 0 ] && ! [ -s "$out" ] && cmp -s "$tmp/study.csv" "$tmp/collisions.csv" &&
+    [ "$(ls "$tmp" | grep -c tmp)" = 0 ]; then
+    pass
+else
+    fail "$cmd: exit $rc, or the file differs from standard output's row"
+fi
+
+# --summary is a headless run whether or not --headless is given.
+run --headless --summary -p collisions --duration 120
+cmp -s "$out" "$tmp/collisions.csv" && pass || fail "$cmd: differs from --summary alone"
+
+usage_error --summary --modes -- --summary --modes
+usage_error --summary --sweep -- --sweep 0.1:1:3 --summary
+usage_error --summary --list-presets -- --list-presets --summary
+usage_error --summary -- --summary=yes
+
+# A run that blows up writes no row and exits 1.
+run --summary --integrator euler --dt 0.05 --spring 1000 --no-collisions --duration 100
+if [ "$rc" -eq 1 ] && ! [ -s "$out" ] && grep -q 'blew up' "$err"; then pass; else
+    fail "$cmd: exit $rc (expected 1), stdout $(wc -c <"$out") bytes (expected none)"
+fi
+
+# The README's study, exactly as written there: the block that starts "parallel -k",
+# its continuation lines joined, run by sh with springsim on the PATH.
+study=$(awk '/^    parallel -k / { on = 1 } on { sub(/^    /, ""); print } on && !/\\$/ { exit }' \
+    "$root/README.md")
+if ! command -v parallel >/dev/null 2>&1; then
+    fail "GNU parallel is not installed (mk/deps.sh test installs it); the README's study did not run"
+elif [ -z "$study" ]; then
+    fail "README.md has no study starting 'parallel -k'"
+else
+    mkdir -p "$tmp/bin" "$tmp/study"
+    ln -s "$SPRINGSIM" "$tmp/bin/springsim"
+    (cd "$tmp/study" && PATH=$tmp/bin:$PATH HOME=$tmp sh -c "$study") >"$out" 2>"$err"
+    rc=$?
+    table=$tmp/study/$(printf '%s\n' "$study" | sed -n 's/.*> *\([^ ]*\) *$/\1/p' | tail -n 1)
+    # The grid the command asks for: the values after its two ':::'.
+    grid=$(printf '%s\n' "$study" | tr -d '\\\n' | sed 's/|.*//' | awk -F':::' '{
+        n1 = split($2, a, " "); n2 = split($3, b, " ")
+        for (i = 1; i <= n1; i++) for (j = 1; j <= n2; j++) print a[i] "," b[j] }')
+    if [ "$rc" -ne 0 ] || ! [ -s "$table" ]; then
+        fail "the README's study: exit $rc, no table; stderr: $(head -c 300 "$err")"
+    else
+        headers=$(grep -c '^masses,' "$table")
+        rows=$(grep -vc '^masses,' "$table")
+        want=$(printf '%s\n' "$grid" | awk 'END { print NR }')
+        [ "$headers" = 1 ] && [ "$(head -n 1 "$table" | cut -c1-7)" = masses, ] && pass ||
+            fail "the study's table has $headers headers (expected one, first)"
+        [ "$rows" = "$want" ] && [ "$want" -ge 4 ] && pass ||
+            fail "the study's table has $rows rows (expected $want, one per run)"
+        # Each row's damping and frequency, in the grid's order (-k), and each row the one
+        # a run of those values alone gives.
+        got=$(sed 's/"[^"]*"/L/g' "$table" | awk -F, 'NR > 1 { print $4 "," $5 }')
+        [ "$got" = "$grid" ] && pass || fail "the study's damping,frequency: $(echo $got) (expected $(echo $grid))"
+        one=$(printf '%s\n' "$study" | tr -d '\\\n' | sed 's/^parallel -k //; s/ *:::.*//')
+        same=0
+        for pair in $grid; do
+            job=$(printf '%s\n' "$one" | sed "s/{1}/${pair%,*}/; s/{2}/${pair#*,}/")
+            PATH=$tmp/bin:$PATH sh -c "$job" | sed -n 2p >"$tmp/one"
+            grep -qxF -f "$tmp/one" "$table" && same=$((same + 1))
+        done
+        [ "$same" = "$want" ] && pass || fail "only $same of the study's rows are what a run alone gives"
+    fi
+fi
+
+summary
