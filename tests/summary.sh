@@ -122,6 +122,19 @@ fi
 run --headless --summary -p collisions --duration 120
 cmp -s "$out" "$tmp/collisions.csv" && pass || fail "$cmd: differs from --summary alone"
 
+# --meta: its '#' lines first, then the same two lines; the command line it gives repeats
+# the row.
+run --summary --meta -p collisions --duration 120
+again=$(sed -n 's/^# springsim --summary /--summary /p' "$out")
+grep -v '^#' "$out" >"$tmp/meta-row"
+if [ "$rc" -eq 0 ] && [ "$(cut -c1 "$out" | head -n 2)" = "$(printf '#\n#')" ] &&
+    cmp -s "$tmp/meta-row" "$tmp/collisions.csv" && [ -n "$again" ] &&
+    (set -f; "$SPRINGSIM" $again | cmp -s - "$tmp/collisions.csv"); then
+    pass
+else
+    fail "$cmd: not the '#' lines then the row, or '$again' does not repeat it"
+fi
+
 usage_error --summary --modes -- --summary --modes
 usage_error --summary --sweep -- --sweep 0.1:1:3 --summary
 usage_error --summary --list-presets -- --list-presets --summary
