@@ -292,6 +292,27 @@ static void ghost_blowing_up_is_dropped(void **state)
     run(100);
 }
 
+/* Out of memory for any part of the ghost: no ghost, the reason said, nothing kept (the
+ * sanitizers see a leak), the live chain going on. */
+static void ghost_out_of_memory(void **state)
+{
+    (void)state;
+    run(10);
+    for (int k = 1; k <= 4; k++) { /* its sim, history and two trails */
+        fail_allocation(k);
+        unsigned w = app_toggle_ghost(&app);
+        fail_allocation(0);
+        assert_null(app.ghost);
+        assert_false(w & APP_CHANGED_GHOST);
+        assert_true(app.message_is_error);
+        assert_non_null(strstr(app.message, "out of memory"));
+        run(10);
+    }
+    make_ghost();
+    run(10);
+    assert_true(ghost_is_live());
+}
+
 /* The span of a trail's records (s). */
 static double span(const struct trail *tr)
 {
@@ -346,7 +367,8 @@ int main(void)
         T(ghost_keeps_the_old_parameters),    T(ghost_keeps_its_dt),
         T(stepping_back_moves_both),          T(reset_takes_each_to_its_start),
         T(ghost_dropped),                     T(ghost_blowing_up_is_dropped),
-        T(ghost_samples_cover_the_windows), T(no_allocation_per_step),
+        T(ghost_out_of_memory),               T(ghost_samples_cover_the_windows),
+        T(no_allocation_per_step),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

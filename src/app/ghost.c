@@ -34,14 +34,14 @@ static int records(int capacity, double spacing, int every, double dt)
 static struct ghost *ghost_new(const struct app *app)
 {
     const struct model *live = sim_model(app->sim);
+    double dt = sim_dt(app->sim);
     struct ghost *g = calloc(1, sizeof *g);
     if (!g)
         return NULL;
     g->cfg = app->cfg;
     g->model = model_new(live->n);
-    g->sim = g->model ? sim_new(live, sim_dt(app->sim)) : NULL;
+    g->sim = g->model ? sim_new(live, dt) : NULL;
     g->hist = g->sim ? history_new(g->sim, HISTORY_DEPTH) : NULL;
-    double dt = sim_dt(app->sim);
     g->trail = trail_new(live->n, records(TRAIL_FINE_RECORDS, TRAIL_FINE_SPACING,
                                           app->sample_every, dt));
     g->coarse = trail_new(live->n, records(TRAIL_COARSE_RECORDS, TRAIL_COARSE_SPACING,
