@@ -7,7 +7,8 @@
 # `springsim --modes` gives them); the highest point of the curve is at the line that
 # should dominate: the 3rd harmonic on mode 1 for -p square-wave, the drive for
 # -p low-frequency; -p beating shows two peaks, at 0.62 and 0.712 Hz. Tab and ↓ pick the
-# mass; F again brings the plots back; 80x24 in ASCII without colour keeps every label.
+# mass; a ghost (g) is named in the legend; F again brings the plots back; 80x24 in ASCII
+# without colour keeps every label.
 # Run from the repository root as `sh tests/tui-spectrum.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-spectrum: N passed, M failed".
 NAME=tui-spectrum
@@ -123,6 +124,15 @@ if spectrum square; then
     keys Tab
     if wait_re "┌─+ Spectrum of mass 2's" 3 && has Controls; then pass; else
         fail "square: back to the controls (Tab), the spectrum should stay on mass 2; screen: $(brief "$scr" 'Spectrum')"
+    fi
+    # a ghost: named in the legend while there is one
+    keys g
+    if wait_re '└─━ mass 2─peak [^─]*─┄ghost─┃ drive' 3; then pass; else
+        fail "square: with a ghost (g) the legend should name it after the peak, '┄ghost'; screen: $(brief "$scr" '└─━')"
+    fi
+    keys g
+    if wait_re '└─━ mass 2─peak [^─]*─┃ drive' 3 && lacks '┄ghost'; then pass; else
+        fail "square: g again should drop the ghost and its legend; screen: $(brief "$scr" '└─━')"
     fi
     keys F
     if wait_for '1 Displacement (m)' 3 && lacks "$TITLE"; then pass; else

@@ -7,13 +7,16 @@
  * higher (never past the Nyquist frequency). The natural frequencies are dotted
  * verticals labelled f1, f2, ...; the drive's harmonics that its waveform has (sine: the
  * fundamental; square and triangle: the odd ones; sawtooth: all) dashed ones labelled
- * 1×, 3×, .... Nothing is allocated at a refresh unless the transform's length changes,
- * which it does only while the record grows to 60 s, or when dt changes. */
+ * 1×, 3×, .... With a ghost (g), its spectrum is drawn dashed under the live one, from
+ * its own record through a transform of its own. Nothing is allocated at a refresh
+ * unless a transform's length changes, which it does only while the record grows to
+ * 60 s, or when dt changes. */
 #include "view_spectrum.h"
 
 #include <math.h>
 #include <stdio.h>
 
+#include "../app/ghost.h"
 #include "../core/motor.h"
 #include "draw.h"
 #include "term.h"
@@ -33,8 +36,9 @@ void spectrum_view_free(struct spectrum_view *sv)
 {
     chart_free(&sv->chart);
     spectrum_free(sv->fft);
-    sv->fft = NULL;
-    sv->size = 0;
+    spectrum_free(sv->ghost_fft);
+    sv->fft = sv->ghost_fft = NULL;
+    sv->size = sv->ghost_size = 0;
 }
 
 /* True when the motor drives the chain. */
@@ -99,13 +103,39 @@ static int uniform_run(const struct trail *tr, const double **first, double *ste
     return last - i + 1;
 }
 
-/* The level shown at dot column x: the highest bin the column covers, or between bins
- * (closer than the dots) the straight line through the two nearest. */
-static double column_level(const struct spectrum_view *sv, int x, double bin_hz)
+/* One record's spectrum: the selected mass's newest uniform run of samples in tr through
+ * *fft, kept at *size points (a length is kept while the samples still fit it twice, so
+ * a run that wavers about a power of two does not plan again at every refresh). Sets
+ * *step to the samples' spacing and returns how many there were, 0 when too few, -1 on no
+ * memory. */
+static int transform(struct spectrum **fft, int *size, const struct trail *tr, int mass,
+                     double *step)
 {
-    const struct chart *c = &sv->chart;
-    const double *level = spectrum_db(sv->fft);
-    int bins = spectrum_bins(sv->fft);
+    const double *first;
+    int count = uniform_run(tr, &first, step);
+    if (count < 4)
+        return 0;
+    int want = spectrum_length(count, PAD);
+    int n = *size >= want && *size <= 2 * want ? *size : want;
+    if (!*fft)
+        *fft = spectrum_new();
+    if (!*fft || spectrum_compute(*fft, first + TRAIL_X(tr, mass), count, (size_t)tr->width,
+                                  n) != 0) {
+        *size = 0;
+        return -1;
+    }
+    *size = n;
+    return count;
+}
+
+/* The level of spectrum fft (bins bin_hz apart) at dot column x: the highest bin the
+ * column covers, or between bins (closer than the dots) the straight line through the
+ * two nearest. */
+static double column_level(const struct chart *c, const struct spectrum *fft, int x,
+                           double bin_hz)
+{
+    const double *level = spectrum_db(fft);
+    int bins = spectrum_bins(fft);
     double lo = axis_value(&c->xa, x - 0.5) / bin_hz, hi = axis_value(&c->xa, x + 0.5) / bin_hz;
     int kl = (int)ceil(fmax(lo, 0.0)), kh = (int)floor(fmin(hi, bins - 1.0));
     if (kl <= kh) {
@@ -121,16 +151,30 @@ static double column_level(const struct spectrum_view *sv, int x, double bin_hz)
     return level[k0] + (k - k0) * (level[k0 + 1] - level[k0]);
 }
 
-/* The dot row of the spectrum at dot column x, held to the canvas; -1 where it has
- * none (below 0 Hz, past the last bin). */
-static int trace_dot(const struct spectrum_view *sv, int x, double bin_hz)
+/* The dot row of spectrum fft at dot column x, held to the canvas; -1 where it has none
+ * (below 0 Hz, past the last bin). */
+static int trace_dot(const struct chart *c, const struct spectrum *fft, int x, double bin_hz)
 {
-    const struct chart *c = &sv->chart;
-    double v = column_level(sv, x, bin_hz);
+    double v = column_level(c, fft, x, bin_hz);
     if (!isfinite(v))
         return -1;
     int y = chart_dot_y(c, v), H = 4 * c->canvas->rows;
     return y < 0 ? 0 : y >= H ? H - 1 : y;
+}
+
+/* Spectrum fft as a line, each dot column joined to the one before; dashed (the
+ * ghost's) or solid. */
+static void draw_trace(struct chart *c, const struct spectrum *fft, double bin_hz, uint8_t color,
+                  bool dash)
+{
+    for (int x = 0, py = -1; x < 2 * c->canvas->cols; x++) {
+        int y = trace_dot(c, fft, x, bin_hz);
+        if (y >= 0 && py >= 0)
+            canvas_dashed_line(c->canvas, x - 1, py, x, y, color, dash);
+        else if (y >= 0 && !(dash && x / 2 % 2))
+            canvas_set(c->canvas, x, y, color);
+        py = y;
+    }
 }
 
 /* A marker at dot column x: a stem from the spectrum down to the floor, every dot of
@@ -138,7 +182,7 @@ static int trace_dot(const struct spectrum_view *sv, int x, double bin_hz)
 static void stem(struct spectrum_view *sv, int x, double bin_hz, int period, int on, int pair)
 {
     struct canvas *cv = sv->chart.canvas;
-    int top = trace_dot(sv, x, bin_hz);
+    int top = trace_dot(&sv->chart, sv->fft, x, bin_hz);
     if (top < 0 || x >= 2 * cv->cols)
         return;
     for (int y = top + 1; y < 4 * cv->rows; y++)
@@ -169,60 +213,59 @@ static void draw_markers(struct spectrum_view *sv, const struct app *app, double
     }
 }
 
-/* Takes the newest samples: the spectrum, the axes, the canvas. */
-static void take_samples(struct spectrum_view *sv, const struct app *app)
+/* The highest level of fft from 0 Hz to the axis's right end (bins bin_hz apart); *hz
+ * gets its frequency. */
+static double peak(const struct chart *c, const struct spectrum *fft, double bin_hz, double *hz)
 {
-    struct chart *c = &sv->chart;
-    const struct trail *tr = app->coarse;
-    int mass = sv->mass < app->model->n ? sv->mass : 0;
-    const double *first;
-    double step;
-    int count = uniform_run(tr, &first, &step);
-    sv->shown = -1;
-    if (count < 4 || !c->canvas)
-        return;
-    int want = spectrum_length(count, PAD);
-    int size = sv->size >= want && sv->size <= 2 * want ? sv->size : want;
-    if (!sv->fft)
-        sv->fft = spectrum_new();
-    sv->no_memory = !sv->fft || spectrum_compute(sv->fft, first + TRAIL_X(tr, mass), count,
-                                                 (size_t)tr->width, size) != 0;
-    if (sv->no_memory) {
-        sv->size = 0;
-        return;
-    }
-    sv->size = size;
-    sv->shown = mass;
-    sv->span = (count - 1) * step;
-    double bin_hz = spectrum_bin_hz(sv->fft, 1, step);
-    double fend = top_frequency(app, 0.5 / step);
-    chart_fix_x(c, 0.0, fend);
-    /* The peak within the axis, and the axis's top: a multiple of 10 dB above it that
-     * moves only when the peak passes it or falls 20 dB below it. */
-    const double *level = spectrum_db(sv->fft);
+    const double *level = spectrum_db(fft);
     double right = axis_value(&c->xa, 2 * c->canvas->cols - 0.5);
-    int kmax = (int)fmin(spectrum_bins(sv->fft) - 1.0, floor(right / bin_hz));
+    int kmax = (int)fmin(spectrum_bins(fft) - 1.0, floor(right / bin_hz));
     int kp = 0;
     for (int k = 1; k <= kmax; k++)
         if (level[k] > level[kp])
             kp = k;
-    sv->peak_hz = kp * bin_hz;
-    sv->peak_db = level[kp];
-    if (sv->peak_db > sv->top || sv->peak_db < sv->top - 20.0)
-        sv->top = 10.0 * ceil(fmax(sv->peak_db, -250.0) / 10.0);
+    *hz = kp * bin_hz;
+    return level[kp];
+}
+
+/* Takes the newest samples: the spectrum (and the ghost's), the axes, the canvas. */
+static void take_samples(struct spectrum_view *sv, const struct app *app)
+{
+    struct chart *c = &sv->chart;
+    int mass = sv->mass < app->model->n ? sv->mass : 0;
+    double step, gstep = 0.0;
+    sv->shown = -1;
+    if (!c->canvas)
+        return;
+    int count = transform(&sv->fft, &sv->size, app->coarse, mass, &step);
+    sv->no_memory = count < 0;
+    if (count <= 0)
+        return;
+    sv->shown = mass;
+    sv->span = (count - 1) * step;
+    /* The ghost's own record: its dt, and so its spacing, may differ. */
+    sv->ghost_shown = app->ghost &&
+                      transform(&sv->ghost_fft, &sv->ghost_size, app->ghost->coarse, mass,
+                                &gstep) > 0;
+    double bin_hz = spectrum_bin_hz(sv->fft, 1, step);
+    double gbin_hz = sv->ghost_shown ? spectrum_bin_hz(sv->ghost_fft, 1, gstep) : 0.0;
+    double fend = top_frequency(app, 0.5 / step);
+    chart_fix_x(c, 0.0, fend);
+    /* The axis's top: a multiple of 10 dB above the highest peak, live or ghost, that
+     * moves only when a peak passes it or they all fall 20 dB below it. */
+    sv->peak_db = peak(c, sv->fft, bin_hz, &sv->peak_hz);
+    double hz, top = sv->peak_db;
+    if (sv->ghost_shown)
+        top = fmax(top, peak(c, sv->ghost_fft, gbin_hz, &hz));
+    if (top > sv->top || top < sv->top - 20.0)
+        sv->top = 10.0 * ceil(fmax(top, -250.0) / 10.0);
     chart_fix_y(c, sv->top - SPECTRUM_VIEW_RANGE_DB, sv->top);
     canvas_clear(c->canvas);
     draw_markers(sv, app, fend, bin_hz);
-    /* The spectrum over the markers, each column joined to the one before. */
     uint8_t color = (uint8_t)(PAIR_MASS + mass % 10);
-    for (int x = 0, py = -1; x < 2 * c->canvas->cols; x++) {
-        int y = trace_dot(sv, x, bin_hz);
-        if (y >= 0 && py >= 0)
-            canvas_line(c->canvas, x - 1, py, x, y, color);
-        else if (y >= 0)
-            canvas_set(c->canvas, x, y, color);
-        py = y;
-    }
+    if (sv->ghost_shown)
+        draw_trace(c, sv->ghost_fft, gbin_hz, color, true);
+    draw_trace(c, sv->fft, bin_hz, color, false);
 }
 
 /* A label centred on dot column x of the drawing area, in row y, if it fits after
@@ -294,9 +337,9 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
                                                           : "not enough samples yet: space runs");
         return;
     }
-    char mass_key[24], peak[48], drive[64], modes[32];
+    char mass_key[24], peak_text[48], drive[64], modes[32];
     snprintf(mass_key, sizeof mass_key, "━ mass %d", mass);
-    snprintf(peak, sizeof peak, "peak %.3f Hz %.1f dB", sv->peak_hz, sv->peak_db);
+    snprintf(peak_text, sizeof peak_text, "peak %.3f Hz %.1f dB", sv->peak_hz, sv->peak_db);
     int next = next_harmonic(m, 1);
     snprintf(drive, sizeof drive, "┃ drive %.3f Hz%s", m->motor.frequency,
              next == 3 ? ", odd harmonics" : next == 2 ? ", all harmonics" : "");
@@ -304,10 +347,12 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
         snprintf(modes, sizeof modes, "┊ natural f1..f%d", m->n);
     else
         snprintf(modes, sizeof modes, "┊ natural f1");
-    struct legend_item legend[4];
+    struct legend_item legend[5];
     int k = 0;
     legend[k++] = (struct legend_item){mass_key, PAIR_MASS + sv->shown % 10};
-    legend[k++] = (struct legend_item){peak, 0};
+    legend[k++] = (struct legend_item){peak_text, 0};
+    if (sv->ghost_shown && app->ghost)
+        legend[k++] = (struct legend_item){"┄ghost", PAIR_TITLE};
     if (driven(m))
         legend[k++] = (struct legend_item){drive, PAIR_MOTOR};
     if (app->modes_ok)

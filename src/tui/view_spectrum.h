@@ -1,6 +1,7 @@
 /* view_spectrum.h: the spectrum view (key F): the amplitude spectrum in dB of one mass's
  * displacement over the last 60 s, Hann-windowed, against frequency in Hz, with the
- * natural frequencies and the drive's harmonics marked. */
+ * natural frequencies and the drive's harmonics marked, and the ghost's spectrum dashed
+ * when there is one. */
 #ifndef SPRINGSIM_VIEW_SPECTRUM_H
 #define SPRINGSIM_VIEW_SPECTRUM_H
 
@@ -18,6 +19,9 @@ struct spectrum_view {
     struct chart chart;
     struct spectrum *fft; /* the transform, planned again only when its length changes */
     int size;             /* its length (0: none yet) */
+    struct spectrum *ghost_fft; /* the ghost's, with its own length (its dt may differ) */
+    int ghost_size;
+    bool ghost_shown;     /* the canvas shows the ghost's spectrum too, dashed */
     int mass;             /* the mass to analyse: the last one selected in the chain */
     int shown;            /* the mass the canvas shows (-1: nothing computed) */
     double span;          /* seconds the samples shown cover */
