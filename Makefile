@@ -205,7 +205,8 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"
 	@echo "CPU < 3 %, output < 100 KB/s, first frame < 50 ms, RSS < 10 MB; also < 100 KB/s at"
 	@echo "200x60, with a plot enlarged and in the spectrum view; also < 3 % and < 100 KB/s"
-	@echo "with the ghost on (g) parting from the chain; low bandwidth < 20 KB/s)"
+	@echo "with the ghost on (g) parting from the chain and in the modes and response views;"
+	@echo "low bandwidth < 20 KB/s)"
 	@echo
 	@echo "| run | size | CPU | output | first frame | peak RSS |"
 	@echo "| --- | --- | --- | --- | --- | --- |"
@@ -218,6 +219,10 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	    'spectrum view, 10x (a 60 s record)' ./$(BIN)
 	@BENCH_KEYS='gjjjjLLLLL ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
 	    'ghost (g), damping 0.1 to 0.6' ./$(BIN)
+	@BENCH_KEYS='m ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'modes view (m), swinging' \
+	    ./$(BIN)
+	@BENCH_KEYS='f ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'response view (f), phase' \
+	    ./$(BIN)
 	@$(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 
