@@ -1,5 +1,6 @@
 /* test_braille.c: the dot canvas against the Unicode braille layout (dots 1-8 as
- * bits 0-7: 1 4 / 2 5 / 3 6 / 7 8) and the drawille cell mapping. */
+ * bits 0-7: 1 4 / 2 5 / 3 6 / 7 8), the drawille cell mapping, and the quadrant blocks
+ * that stand in for braille. */
 #include "testutil.h"
 
 #include <string.h>
@@ -46,6 +47,58 @@ static void glyphs(void **state)
     assert_int_equal(braille_ascii(0x01), '\'');
 }
 
+/* Every pattern of a cell's eight dots, set by position: the block glyph fills exactly the
+ * quadrants (2x2 dots each) that hold a dot. The glyphs' quadrants are read off their
+ * Unicode names. */
+static void quadrants(void **state)
+{
+    (void)state;
+    enum { UL = 1, UR = 2, LL = 4, LR = 8 };
+    static const struct {
+        unsigned cp;
+        int filled;
+    } names[] = {
+        {0x2598, UL},           /* QUADRANT UPPER LEFT */
+        {0x259D, UR},           /* QUADRANT UPPER RIGHT */
+        {0x2596, LL},           /* QUADRANT LOWER LEFT */
+        {0x2597, LR},           /* QUADRANT LOWER RIGHT */
+        {0x2580, UL | UR},      /* UPPER HALF BLOCK */
+        {0x2584, LL | LR},      /* LOWER HALF BLOCK */
+        {0x258C, UL | LL},      /* LEFT HALF BLOCK */
+        {0x2590, UR | LR},      /* RIGHT HALF BLOCK */
+        {0x259A, UL | LR},      /* QUADRANT UPPER LEFT AND LOWER RIGHT */
+        {0x259E, UR | LL},      /* QUADRANT UPPER RIGHT AND LOWER LEFT */
+        {0x259B, UL | UR | LL}, /* QUADRANT UPPER LEFT AND UPPER RIGHT AND LOWER LEFT */
+        {0x259C, UL | UR | LR}, /* QUADRANT UPPER LEFT AND UPPER RIGHT AND LOWER RIGHT */
+        {0x2599, UL | LL | LR}, /* QUADRANT UPPER LEFT AND LOWER LEFT AND LOWER RIGHT */
+        {0x259F, UR | LL | LR}, /* QUADRANT UPPER RIGHT AND LOWER LEFT AND LOWER RIGHT */
+        {0x2588, UL | UR | LL | LR}, /* FULL BLOCK */
+    };
+    struct canvas *c = canvas_new(1, 1);
+    for (int pattern = 0; pattern < 256; pattern++) {
+        canvas_clear(c);
+        int want = 0;
+        for (int d = 0; d < 8; d++) {
+            if (!(pattern >> d & 1))
+                continue;
+            int x = d % 2, y = d / 2;
+            canvas_set(c, x, y, 1);
+            want |= (y < 2 ? (x ? UR : UL) : (x ? LR : LL));
+        }
+        unsigned got = braille_quadrant(canvas_bits(c, 0, 0));
+        if (!want) {
+            assert_int_equal(got, 0);
+            continue;
+        }
+        size_t i = 0;
+        while (i < sizeof names / sizeof *names && names[i].cp != got)
+            i++;
+        assert_true(i < sizeof names / sizeof *names);
+        assert_int_equal(names[i].filled, want);
+    }
+    canvas_free(c);
+}
+
 static void lines_and_spans(void **state)
 {
     (void)state;
@@ -70,6 +123,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(dot_bits),
         cmocka_unit_test(glyphs),
+        cmocka_unit_test(quadrants),
         cmocka_unit_test(lines_and_spans),
     };
     return cmocka_run_group_tests_name("braille", tests, NULL, NULL);

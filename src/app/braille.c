@@ -145,3 +145,17 @@ char braille_ascii(uint8_t bits)
         return top ? '\'' : '-';
     return bottom ? '.' : '-';
 }
+
+unsigned braille_quadrant(uint8_t bits)
+{
+    /* Indexed by the quadrants filled: 1 upper left, 2 upper right, 4 lower left, 8
+     * lower right. */
+    static const unsigned block[16] = {0,      0x2598, 0x259D, 0x2580, 0x2596, 0x258C,
+                                       0x259E, 0x259B, 0x2597, 0x259A, 0x2590, 0x259C,
+                                       0x2584, 0x2599, 0x259F, 0x2588};
+    int q = ((bits & (dot_bit[0][0] | dot_bit[1][0])) != 0) |
+            ((bits & (dot_bit[0][1] | dot_bit[1][1])) != 0) << 1 |
+            ((bits & (dot_bit[2][0] | dot_bit[3][0])) != 0) << 2 |
+            ((bits & (dot_bit[2][1] | dot_bit[3][1])) != 0) << 3;
+    return block[q];
+}

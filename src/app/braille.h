@@ -1,5 +1,5 @@
-/* braille.h: a dot canvas drawn with Unicode braille (2x4 dots a cell), with an ASCII
- * fallback; pure, no curses, so it is unit-tested on its own. */
+/* braille.h: a dot canvas drawn with Unicode braille (2x4 dots a cell), with quadrant
+ * block and ASCII fallbacks; pure, no curses, so it is unit-tested on its own. */
 #ifndef SPRINGSIM_BRAILLE_H
 #define SPRINGSIM_BRAILLE_H
 
@@ -47,5 +47,10 @@ void braille_utf8(uint8_t bits, char out[5]);
 
 /* An ASCII character that reads like the dots: '.', ':', '\'', '|' and so on. */
 char braille_ascii(uint8_t bits);
+
+/* The Unicode block element (U+2580..U+259F, quadrants: 2x2 a cell) that covers the
+ * dots: a quadrant is filled where any of its four dots is set; 0 for no dot. For
+ * terminals whose fonts lack braille (--glyphs blocks). */
+unsigned braille_quadrant(uint8_t bits);
 
 #endif

@@ -28,6 +28,9 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
         next.fps = app->cfg.fps;
     if (!next.origin[CFG_LOW_BANDWIDTH].line)
         next.low_bandwidth = app->cfg.low_bandwidth;
+    /* The terminal was set up once, at start. */
+    next.color = app->cfg.color;
+    next.glyphs = app->cfg.glyphs;
     unsigned what = 0;
     if (app_change(app, &next, CHANGE_REBUILD | CHANGE_SETS_FREQUENCY, "the preset", &what)) {
         snprintf(err, sizeof err, "%s", app->message);

@@ -15,6 +15,16 @@
 static const char *integrator_choice(int i) { return integrator_name((enum integrator)i); }
 static const char *boundary_choice(int i) { return model_boundary_name((enum boundary)i); }
 static const char *wave_choice(int i) { return motor_wave_name((enum wave)i); }
+static const char *color_choice(int i)
+{
+    static const char *const names[CONFIG_COLOR_COUNT] = {"auto", "always", "never"};
+    return names[i];
+}
+static const char *glyphs_choice(int i)
+{
+    static const char *const names[CONFIG_GLYPHS_COUNT] = {"braille", "blocks", "ascii"};
+    return names[i];
+}
 
 #define AT(field) offsetof(struct config, field)
 
@@ -110,6 +120,18 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_LOW_BANDWIDTH] = {.name = "low-bandwidth", .section = "run", .kind = CONFIG_FLAG,
                            .help = "interactive: fewer frames and plot refreshes (slow links)",
                            .offset = AT(low_bandwidth)},
+    [CFG_COLOR] = {.name = "color", .section = "run", .kind = CONFIG_CHOICE,
+                   .help = "interactive: colour (auto: unless NO_COLOR is set or the terminal "
+                           "has none; always: even with NO_COLOR)",
+                   .def = CONFIG_COLOR_AUTO, .choice_name = color_choice,
+                   .choices = CONFIG_COLOR_COUNT, .symbol = "a colour setting",
+                   .offset = AT(color)},
+    [CFG_GLYPHS] = {.name = "glyphs", .section = "run", .kind = CONFIG_CHOICE,
+                    .help = "interactive: braille plots and box drawing (ASCII without a "
+                            "UTF-8 locale), block characters instead of braille, or ASCII only",
+                    .def = CONFIG_GLYPHS_BRAILLE, .choice_name = glyphs_choice,
+                    .choices = CONFIG_GLYPHS_COUNT, .symbol = "a glyph set",
+                    .offset = AT(glyphs)},
     [CFG_SUMMARY] = {.name = "summary", .kind = CONFIG_FLAG, .offset = AT(summary),
                      .help = "headless (implied): a header and one row of settings and per-run "
                              "figures instead of the series"},

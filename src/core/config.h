@@ -39,6 +39,8 @@ enum config_key {
     CFG_META,
     CFG_FPS,
     CFG_LOW_BANDWIDTH,
+    CFG_COLOR,
+    CFG_GLYPHS,
     CFG_SUMMARY,
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
     CFG_MODES,
@@ -59,6 +61,19 @@ enum config_kind {
     CONFIG_LIST,   /* one number for all, or one per mass (or per spring) */
     CONFIG_CHOICE, /* one of the names choice_name(0 .. choices-1) */
     CONFIG_MODE    /* what to do (--headless, --help, ...), no value */
+};
+
+/* --color: colour where the terminal has it and NO_COLOR is not set, wherever the
+ * terminal has it, or never. */
+enum config_color { CONFIG_COLOR_AUTO, CONFIG_COLOR_ALWAYS, CONFIG_COLOR_NEVER, CONFIG_COLOR_COUNT };
+
+/* --glyphs: braille dots and box drawing (ASCII where the locale is not UTF-8), block
+ * characters in place of braille, or ASCII only. */
+enum config_glyphs {
+    CONFIG_GLYPHS_BRAILLE,
+    CONFIG_GLYPHS_BLOCKS,
+    CONFIG_GLYPHS_ASCII,
+    CONFIG_GLYPHS_COUNT
 };
 
 #define CONFIG_PER_MASS 0   /* a list of N values */
@@ -132,6 +147,8 @@ struct config {
     bool meta;                          /* '#' lines before a CSV: version, command line */
     int fps;                            /* interactive frames per second */
     bool low_bandwidth;                 /* interactive: keep terminal output small */
+    enum config_color color;            /* interactive: when to use colour */
+    enum config_glyphs glyphs;          /* interactive: which characters draw */
     bool summary;                       /* headless: one row of figures, not the series */
     char name[64];                      /* preset's display name */
     char description[256];              /* preset's description */

@@ -149,7 +149,7 @@ void draw_canvas(const struct canvas *c, int y, int x)
 {
     if (!c)
         return;
-    bool utf8 = term_utf8();
+    bool utf8 = term_utf8(), blocks = term_blocks();
     for (int cy = 0; cy < c->rows; cy++) {
         for (int cx = 0; cx < c->cols; cx++) {
             uint8_t bits = canvas_bits(c, cx, cy);
@@ -158,7 +158,7 @@ void draw_canvas(const struct canvas *c, int y, int x)
             attr_t a = term_attr(c->color[(size_t)cy * c->cols + cx]);
             if (utf8) {
                 /* The wide character itself: no multibyte decoding per cell. */
-                wchar_t wc[2] = {(wchar_t)(0x2800 + bits), 0};
+                wchar_t wc[2] = {(wchar_t)(blocks ? braille_quadrant(bits) : 0x2800u + bits), 0};
                 cchar_t cc;
                 setcchar(&cc, wc, a & ~A_COLOR, (short)PAIR_NUMBER(a), NULL);
                 mvadd_wch(y + cy, x + cx, &cc);

@@ -25,13 +25,19 @@ static bool have_shell_modes;
 static char restore_seq[256]; /* what endwin() sends, for the forced way out */
 static size_t restore_len;
 static bool curses_on;
-static bool utf8;
+static bool utf8;   /* UTF-8 glyphs: the locale has them and --glyphs is not ascii */
+static bool blocks; /* block characters in place of braille (--glyphs blocks) */
 static bool color;
 static bool rich; /* 256 colours */
 
 bool term_utf8(void)
 {
     return utf8;
+}
+
+bool term_blocks(void)
+{
+    return blocks;
 }
 
 int term_quit_signal(void)
@@ -197,10 +203,12 @@ static void install_signals(void)
  * black or light grey for anything that carries information. 256 colours: blue, green,
  * orange, red, purple, teal, ochre, magenta, brown, slate. 8 colours have no mid tones:
  * the hues that read on both backgrounds come first, yellow and cyan last. */
-static void init_colors(void)
+static void init_colors(enum config_color want)
 {
     const char *no_color = getenv("NO_COLOR");
-    color = has_colors() && !(no_color && *no_color);
+    bool refused = want == CONFIG_COLOR_NEVER ||
+                   (want == CONFIG_COLOR_AUTO && no_color && *no_color);
+    color = has_colors() && !refused;
     if (!color)
         return;
     start_color();
@@ -250,9 +258,12 @@ static attr_t eight_color_boost(int p)
                : 0;
 }
 
-bool term_start(void)
+bool term_start(enum config_color want_color, enum config_glyphs glyphs)
 {
-    utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    /* The one place the characters are chosen: every drawing asks term_utf8() and
+     * term_blocks(). */
+    utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0 && glyphs != CONFIG_GLYPHS_ASCII;
+    blocks = utf8 && glyphs == CONFIG_GLYPHS_BLOCKS;
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
         fprintf(stderr, "springsim: the interactive program needs a terminal; use --headless, "
                         "--modes or --sweep for scripts\n");
@@ -298,6 +309,6 @@ bool term_start(void)
               ,
               NULL);
     mouseinterval(0);
-    init_colors();
+    init_colors(want_color);
     return true;
 }

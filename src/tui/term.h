@@ -7,6 +7,8 @@
 
 #include <curses.h>
 
+#include "../core/config.h"
+
 /* Colour pairs. Information is never drawn in a grey or with A_DIM alone: every pair
  * reads on dark and light backgrounds, with 8 or 256 colours. */
 enum pair {
@@ -21,14 +23,21 @@ enum pair {
     PAIR_COUNT
 };
 
-/* Starts curses on the terminal; false (with the reason on stderr) when it cannot. */
-bool term_start(void);
+/* Starts curses on the terminal with colour as want_color says (auto: unless NO_COLOR
+ * is set and not empty) and the glyphs asked for; false (with the reason on stderr) when
+ * it cannot. */
+bool term_start(enum config_color want_color, enum config_glyphs glyphs);
 
 /* Gives the terminal back (safe to call twice, and from atexit). */
 void term_stop(void);
 
-/* True where the locale is UTF-8: braille, box drawing and symbols allowed. */
+/* True where the locale is UTF-8 and --glyphs is not ascii: braille, box drawing and
+ * symbols allowed. */
 bool term_utf8(void);
+
+/* True where canvases draw in quadrant blocks instead of braille (--glyphs blocks in a
+ * UTF-8 locale). */
+bool term_blocks(void);
 
 /* Attribute for colour pair p, or its mono stand-in. */
 attr_t term_attr(int p);

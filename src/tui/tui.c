@@ -461,7 +461,7 @@ int tui_run(const struct config *cfg, const char *exe_dir)
         return EXIT_FAILURE;
     }
     t.sel.elem = 1;
-    if (!term_start()) {
+    if (!term_start(cfg->color, cfg->glyphs)) {
         app_free(&t.app);
         return EXIT_FAILURE;
     }
