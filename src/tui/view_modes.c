@@ -167,7 +167,7 @@ static void draw_cell(struct modes_view *v, const struct app *app, int j, struct
     int len = snprintf(title, sizeof title, "%smode %d  %.3f Hz", mark, j + 1, app->modes[j]);
     if (driven)
         snprintf(title + len, sizeof title - (size_t)len, "%s",
-                 len + 11 <= r.w - 2 ? (term_utf8() ? "  ◆ driven" : "  * driven")
+                 len + 11 + (r.h < 2 ? 7 : 0) <= r.w - 2 ? (term_utf8() ? "  ◆ driven" : "  * driven")
                                      : (term_utf8() ? " ◆" : " *"));
     attr_t a = A_BOLD | (selected ? A_REVERSE : 0) | (driven ? term_attr(PAIR_MOTOR) : 0);
     draw_text_attr(r.y, r.x + 1, r.w - 2, a, title);
@@ -176,8 +176,15 @@ static void draw_cell(struct modes_view *v, const struct app *app, int j, struct
         damping_text(app, j, r.w - 2, line, sizeof line);
         draw_text(r.y + 1, r.x + 1, r.w - 2, line);
     }
-    if (r.h >= 2)
+    if (r.h >= 2) {
         draw_bar(v, j, r.y + (r.h >= 3 ? 2 : 1), r.x + 1, r.w - 2);
+    } else if (v->total >= AT_REST) {
+        /* One row: the share at the row's end, where the title leaves room. */
+        char pct[16];
+        int plen = snprintf(pct, sizeof pct, "%3.0f %%", 100.0 * v->share[j]);
+        if (draw_width(title) + plen + 2 <= r.w - 2)
+            draw_text_attr(r.y, r.x + r.w - 1 - plen, plen, A_BOLD, pct);
+    }
     draw_shape(v, app, j, r);
 }
 
