@@ -137,12 +137,17 @@ static void preset_keeps_playback(void **state)
     snprintf(path, sizeof path, "%s/p.ini", dir);
     FILE *f = fopen(path, "w");
     assert_non_null(f);
-    fputs("[run]\nfps = 20\n", f);
+    fputs("[run]\nfps = 20\ncolor = never\nglyphs = ascii\n", f);
     fclose(f);
+    app.cfg.color = CONFIG_COLOR_ALWAYS;
+    app.cfg.glyphs = CONFIG_GLYPHS_BLOCKS;
     w = app_load_preset(&app, path, "p");
     assert_true(w & APP_CHANGED_PLAYBACK);
     assert_int_equal(app.cfg.fps, 20);
     assert_true(app.cfg.low_bandwidth);
+    /* The terminal was set up at start: its colour and glyphs stay as they were. */
+    assert_int_equal(app.cfg.color, CONFIG_COLOR_ALWAYS);
+    assert_int_equal(app.cfg.glyphs, CONFIG_GLYPHS_BLOCKS);
     unlink(path);
     rmdir(dir);
 }
