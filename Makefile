@@ -41,6 +41,8 @@ APP_SRC = $(wildcard src/app/*.c)
 APP_OBJ = $(APP_SRC:src/%.c=$(BUILD)/%.o)
 TUI_SRC = $(wildcard src/tui/*.c)
 TUI_OBJ = $(TUI_SRC:src/%.c=$(BUILD)/%.o)
+PLAIN_SRC = $(wildcard src/plain/*.c)
+PLAIN_OBJ = $(PLAIN_SRC:src/%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -68,13 +70,14 @@ $(BUILD)/.deps-test: | $(BUILD)/.deps-build
 deps: $(BUILD)/.deps-build
 deps-test: $(BUILD)/.deps-test
 
-# The core and the app never see curses: this fails the build if one of their files
-# includes it (or a tui header), and both are compiled without the ncurses flags and
-# their tests linked without -lncursesw.
-$(BUILD)/.core-pure: $(wildcard src/core/*.[ch] src/app/*.[ch]) | $(BUILD)/.deps-build
+# The core, the app and the plain mode never see curses: this fails the build if one of
+# their files includes it (or a tui header), and they are compiled without the ncurses
+# flags and the tests linked without -lncursesw.
+$(BUILD)/.core-pure: $(wildcard src/core/*.[ch] src/app/*.[ch] src/plain/*.[ch]) \
+    | $(BUILD)/.deps-build
 	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h|\.\./tui/)' \
-	    src/core/*.[ch] src/app/*.[ch]; then \
-	    echo "error: src/core and src/app must not include curses" >&2; exit 1; fi
+	    src/core/*.[ch] src/app/*.[ch] src/plain/*.[ch]; then \
+	    echo "error: src/core, src/app and src/plain must not include curses" >&2; exit 1; fi
 	@touch $@
 
 $(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
@@ -82,6 +85,10 @@ $(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/app/%.o: src/app/%.c | $(BUILD)/.core-pure
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+
+$(BUILD)/plain/%.o: src/plain/%.c | $(BUILD)/.core-pure
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
 
@@ -105,9 +112,9 @@ $(CORE_LIB): $(CORE_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(APP_OBJ) $(CORE_LIB) $(UI_LIBS) \
-	    $(CORE_LIBS)
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(APP_OBJ) $(CORE_LIB)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(APP_OBJ) $(CORE_LIB) \
+	    $(UI_LIBS) $(CORE_LIBS)
 
 # The shell completions are written from the option table by a build tool on the core.
 completions: $(COMPLETIONS)
@@ -292,4 +299,4 @@ deb: | $(BUILD)/.deps-build
 clean:
 	rm -rf $(BUILD) springsim
 
--include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TUI_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)
+-include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TUI_OBJ:.o=.d) $(PLAIN_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)

@@ -1,5 +1,6 @@
 /* main.c: reads the command line (options.c) and runs one of the modes: the
- * interactive program, --headless, --modes, --sweep, --list-presets (SPEC section 2).
+ * interactive program (or its plain mode), --headless, --modes, --sweep, --list-presets
+ * (SPEC section 2).
  * This is the only file that knows both the core and the terminal front end. */
 #include <errno.h>
 #include <getopt.h>
@@ -22,6 +23,7 @@
 #include "core/sim.h"
 #include "core/summary.h"
 #include "options.h"
+#include "plain/plain.h"
 #include "tui/tui.h"
 
 #define SWEEP_MAX 1000000 /* rows a sweep may ask for */
@@ -456,8 +458,11 @@ int main(int argc, char **argv)
         status = run_sweep(&c, m, cli.sweep);
         break;
     default:
+        /* A terminal that cannot place the cursor gets the plain mode. */
         status = interactive_limits(&c);
-        if (status == EXIT_SUCCESS)
+        if (status == EXIT_SUCCESS && (cli.mode == MODE_PLAIN || tui_dumb_terminal()))
+            status = plain_run(&c, exe_dir);
+        else if (status == EXIT_SUCCESS)
             status = tui_run(&c, exe_dir);
         break;
     }

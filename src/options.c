@@ -99,6 +99,9 @@ static void usage(FILE *out)
             "       springsim --sweep FMIN:FMAX:COUNT [OPTIONS]\n"
             "                                               steady-state amplitude and phase, "
             "CSV\n"
+            "       springsim --plain [OPTIONS]             the interactive program as lines, "
+            "commands\n"
+            "                                               on standard input\n"
             "       springsim --list-presets | --keys | --help | --version\n\n"
             "A chain of masses joined by springs, with damping, driven at its right end by "
             "a\nlinear motor. A preset is applied first; every other option overrides it.\n\n"
@@ -285,13 +288,16 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         case CFG_LIST_PRESETS:
             m = MODE_LIST;
             break;
+        case CFG_PLAIN:
+            m = MODE_PLAIN;
+            break;
         default:
             break;
         }
         if (m != MODE_INTERACTIVE) {
             if (modes++ && cli->mode != m) {
-                options_say("%s: give only one of --headless, --modes, --sweep and --list-presets",
-                    written(argv, before, q, sizeof q));
+                options_say("%s: give only one of --headless, --modes, --sweep, --list-presets "
+                            "and --plain", written(argv, before, q, sizeof q));
                 return EXIT_USAGE;
             }
             cli->mode = m;

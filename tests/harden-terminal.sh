@@ -4,8 +4,8 @@
 # later, ends the program within a second (status 129 or 1) instead of leaving it
 # spinning; SIGQUIT (Ctrl-\) and the other terminating signals give the terminal back;
 # SIGTERM and SIGINT end it within a second or two while its output is blocked (Ctrl-S, a
-# stalled link), the terminal given back; TERM=dumb and an unknown TERM are refused with
-# one line, exit 1. Run from the repository root as `sh tests/harden-terminal.sh`,
+# stalled link), the terminal given back; an unknown TERM is refused with one line, exit
+# 1; TERM=dumb gets the plain mode, which leaves the terminal as it was. Run from the repository root as `sh tests/harden-terminal.sh`,
 # SPRINGSIM naming the binary. Ends with "harden-terminal: N passed, M failed".
 NAME=harden-terminal
 . "$(dirname "$0")/lib/check.sh"
@@ -327,8 +327,9 @@ else
     echo "note: the stalled-link helper did not build: $(head -n 1 "$tmp/cc.err")"
 fi
 
-# 7. TERM=dumb cannot place the cursor; an unknown TERM has no description: one line on
-# the terminal, exit 1, the terminal as it was.
+# 7. TERM=dumb cannot place the cursor: the plain mode (lines, commands typed), which
+# quits with 0 and leaves the terminal as it was; an unknown TERM has no description: one
+# line on the terminal, exit 1, the terminal as it was.
 # one_line_then_exit NAME NEEDLE: the screen holds one line with NEEDLE, then the exit
 one_line_then_exit() {
     S=$1
@@ -341,7 +342,18 @@ one_line_then_exit() {
         fail "$1: expected one line with '$2', EXITED 1 and TERMINAL SAME; $n lines: $(brief "$scr" 'EXITED|TERMINAL')"
     fi
 }
-one_line_then_exit term-dumb "springsim: this terminal (TERM=dumb) cannot move the cursor"
+S=term-dumb
+if wait_for 'ready: 2 masses' 5; then
+    text quit
+    keys Enter
+    if wait_for 'TERMINAL ' 5 && has 'EXITED 0' && has 'TERMINAL SAME' && has 'ok quit at t = 0.00 s'; then
+        pass
+    else
+        fail "TERM=dumb: quit should end the plain mode with EXITED 0, TERMINAL SAME; screen: $(brief)"
+    fi
+else
+    fail "TERM=dumb: expected the plain mode's first line 'event t=0.00 ready: 2 masses'; screen: $(brief)"
+fi
 one_line_then_exit term-unknown "springsim: cannot use this terminal (TERM=unknown-terminal)"
 
 summary

@@ -42,9 +42,11 @@ enum config_key {
     CFG_COLOR,
     CFG_GLYPHS,
     CFG_SUMMARY,
+    CFG_PLAIN_EVERY,
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
     CFG_MODES,
     CFG_SWEEP,
+    CFG_PLAIN,
     CFG_LIST_PRESETS,
     CFG_KEYS,
     CFG_HELP,
@@ -150,6 +152,7 @@ struct config {
     enum config_color color;            /* interactive: when to use colour */
     enum config_glyphs glyphs;          /* interactive: which characters draw */
     bool summary;                       /* headless: one row of figures, not the series */
+    double plain_every;                 /* --plain: simulated seconds between status lines */
     char name[64];                      /* preset's display name */
     char description[256];              /* preset's description */
     struct config_origin origin[CFG_KEY_COUNT]; /* where each key was set */

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../app/spell.h"
 #include "term.h"
 
 chtype draw_line(enum line l)
@@ -42,14 +43,6 @@ int draw_width(const char *s)
     return n;
 }
 
-/* Our own non-ASCII characters, spelled in ASCII for a terminal without UTF-8. */
-static const char *const fancy[][2] = {
-    {"◆", "*"}, {"■", "#"}, {"┃", "|"}, {"┊", ":"}, {"━", "-"}, {"┅", ":"}, {"┄", "~"}, {"–", "-"},
-    {"│", "|"}, {"▸", ">"}, {"×", "x"}, {"·", "."}, {"²", "^2"}, {"←", "Left"},
-    {"→", "Right"}, {"↑", "Up"}, {"↓", "Down"}, {"●", "o"}, {"…", "..."}, {"▲", "^"},
-    {"▼", "v"}, {"−", "-"},
-};
-
 /* s spelled in ASCII into out. */
 static const char *ascii(const char *s, char *out, size_t len)
 {
@@ -59,13 +52,12 @@ static const char *ascii(const char *s, char *out, size_t len)
             out[o++] = *s++;
             continue;
         }
-        size_t f = 0, n = sizeof fancy / sizeof *fancy;
-        while (f < n && strncmp(s, fancy[f][0], strlen(fancy[f][0])) != 0)
-            f++;
-        if (f < n) {
-            for (const char *a = fancy[f][1]; *a; a++)
+        size_t n;
+        const char *spelt = spell_ascii(s, &n);
+        if (spelt) {
+            for (const char *a = spelt; *a; a++)
                 out[o++] = *a;
-            s += strlen(fancy[f][0]);
+            s += n;
         } else {
             out[o++] = '?';
             s++;

@@ -258,6 +258,27 @@ static attr_t eight_color_boost(int p)
                : 0;
 }
 
+/* 1 when the terminal on standard output can place the cursor, 0 when it cannot, -1
+ * when there is no description of it. */
+static int cursor_addressable(void)
+{
+    int err;
+    if (setupterm(NULL, STDOUT_FILENO, &err) != OK)
+        return -1;
+    const char *cup = tigetstr("cup");
+    bool addressable = cup != NULL && cup != (char *)-1;
+    del_curterm(cur_term);
+    return addressable;
+}
+
+bool term_dumb(void)
+{
+    const char *term = getenv("TERM");
+    if (term && strcmp(term, "dumb") == 0)
+        return true;
+    return isatty(STDIN_FILENO) && isatty(STDOUT_FILENO) && cursor_addressable() == 0;
+}
+
 bool term_start(enum config_color want_color, enum config_glyphs glyphs)
 {
     /* The one place the characters are chosen: every drawing asks term_utf8() and
@@ -265,22 +286,19 @@ bool term_start(enum config_color want_color, enum config_glyphs glyphs)
     utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0 && glyphs != CONFIG_GLYPHS_ASCII;
     blocks = utf8 && glyphs == CONFIG_GLYPHS_BLOCKS;
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
-        fprintf(stderr, "springsim: the interactive program needs a terminal; use --headless, "
-                        "--modes or --sweep for scripts\n");
+        fprintf(stderr, "springsim: the interactive program needs a terminal; use --plain, "
+                        "--headless, --modes or --sweep for scripts\n");
         return false;
     }
     /* The terminal's description is looked at before curses starts: newterm() would leak
      * its screen when there is none, and curses has nothing to do on a terminal that
      * cannot place the cursor (TERM=dumb would show one garbled line). */
     const char *term = getenv("TERM") ? getenv("TERM") : "unset";
-    int err;
-    if (setupterm(NULL, STDOUT_FILENO, &err) != OK) {
+    int addressable = cursor_addressable();
+    if (addressable < 0) {
         fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n", term);
         return false;
     }
-    const char *cup = tigetstr("cup");
-    bool addressable = cup != NULL && cup != (char *)-1;
-    del_curterm(cur_term);
     if (!addressable) {
         fprintf(stderr, "springsim: this terminal (TERM=%s) cannot move the cursor; the "
                         "interactive program needs one (use --headless, --modes or --sweep)\n",

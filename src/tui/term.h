@@ -23,6 +23,10 @@ enum pair {
     PAIR_COUNT
 };
 
+/* True for a terminal that cannot place the cursor (TERM=dumb, or a description without
+ * one): the plain mode serves it instead of curses. */
+bool term_dumb(void);
+
 /* Starts curses on the terminal with colour as want_color says (auto: unless NO_COLOR
  * is set and not empty) and the glyphs asked for; false (with the reason on stderr) when
  * it cannot. */

@@ -451,6 +451,11 @@ static void tui_free(struct tui *t)
     app_free(&t->app);
 }
 
+bool tui_dumb_terminal(void)
+{
+    return term_dumb();
+}
+
 int tui_run(const struct config *cfg, const char *exe_dir)
 {
     static struct tui t;

@@ -1,0 +1,401 @@
+/* command.c: the plain mode's commands, one row each, named after the key table's
+ * actions (tui/input.c binds the keys; this names what they do in words). */
+#include "command.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/preset.h"
+#include "app.h"
+
+const struct command commands[CMD_COUNT] = {
+    [CMD_START] = {"start", ACT_RUN, "", "start the simulation; time follows the clock at the "
+                                         "Speed control's rate"},
+    [CMD_PAUSE] = {"pause", ACT_RUN, "", "pause it"},
+    [CMD_STEP] = {"step", ACT_STEP, "", "one step of dt forward (pauses)"},
+    [CMD_BACK] = {"back", ACT_BACK, "", "one step back (paused; up to 500 states)"},
+    [CMD_RESET] = {"reset", ACT_RESET, "", "back to the initial conditions, t = 0"},
+    [CMD_RANDOM] = {"random", ACT_RANDOM, "", "random initial positions, and a reset"},
+    [CMD_SET] = {"set", ACT_ENTER, "CONTROL VALUE",
+                 "set a control as typed in the interactive program (controls lists them)"},
+    [CMD_PRESET] = {"preset", ACT_PRESETS, "NAME", "load a preset by name or file"},
+    [CMD_PRESETS] = {"presets", ACT_PRESETS, "", "the presets' names"},
+    [CMD_MODES] = {"modes", ACT_MODES, "", "each natural frequency with its damping ratio and Q"},
+    [CMD_MODE] = {"mode", ACT_ENTER, "K", "start the chain in mode K, at rest, running"},
+    [CMD_NEAREST] = {"nearest", ACT_NEAREST, "", "drive at the nearest natural frequency"},
+    [CMD_SWEEP] = {"sweep", ACT_SWEEP, "", "start / stop a sine-sweep experiment"},
+    [CMD_FASTER] = {"faster", ACT_FASTER, "", "playback faster"},
+    [CMD_SLOWER] = {"slower", ACT_SLOWER, "", "playback slower"},
+    [CMD_SAVE] = {"save", ACT_SAVE, "NAME", "save the set-up as a user preset"},
+    [CMD_EXPORT] = {"export", ACT_EXPORT, "", "export the recorded samples as CSV"},
+    [CMD_RUN] = {"run", ACT_NONE, "SECONDS",
+                 "run SECONDS of simulated time at once (not in real time), then pause"},
+    [CMD_STATUS] = {"status", ACT_NONE, "", "the status line now"},
+    [CMD_CONTROLS] = {"controls", ACT_NONE, "", "every control, its name for set and its value"},
+    [CMD_HELP] = {"help", ACT_HELP, "[COMMAND]", "the commands, or what one does"},
+    [CMD_QUIT] = {"quit", ACT_QUIT, "", "quit (so does the end of input)"},
+};
+
+int command_find(const char *name, size_t n)
+{
+    for (int i = 0; i < CMD_COUNT; i++)
+        if (strlen(commands[i].name) == n && strncmp(commands[i].name, name, n) == 0)
+            return i;
+    return -1;
+}
+
+/* The names set takes, one per control (the settings' names where there is one). */
+static const char *const control_names[CTL_COUNT] = {
+    [CTL_PRESET] = "preset",       [CTL_MASSES] = "masses",       [CTL_DT] = "dt",
+    [CTL_INTEGRATOR] = "integrator", [CTL_DAMPING] = "damping",   [CTL_SPRING] = "spring",
+    [CTL_MASS] = "mass",           [CTL_BOUNDARY] = "boundary",   [CTL_WAVE] = "wave",
+    [CTL_AMPLITUDE] = "amplitude", [CTL_FREQUENCY] = "frequency", [CTL_SPEED] = "speed",
+    [CTL_BANDWIDTH] = "bandwidth",
+};
+
+#define RUN_MAX 1000.0 /* simulated seconds one run may take */
+
+const char *command_control_name(int ctl)
+{
+    return ctl >= 0 && ctl < CTL_COUNT ? control_names[ctl] : "";
+}
+
+/* The control named by word (its name, or its label in lower case with '-' for a
+ * blank: "right-end"), or -1. */
+static int find_control(const char *word)
+{
+    for (int c = 0; c < CTL_COUNT; c++) {
+        const char *l = app_control_label((enum control)c);
+        char label[32];
+        size_t i;
+        for (i = 0; l[i] && i < sizeof label - 1; i++)
+            label[i] = l[i] == ' ' ? '-' : (char)tolower((unsigned char)l[i]);
+        label[i] = '\0';
+        if (strcmp(word, control_names[c]) == 0 || strcmp(word, label) == 0)
+            return c;
+    }
+    return -1;
+}
+
+/* The commands' names with their arguments, "start, pause, ..., set CONTROL VALUE, ...". */
+static void command_list(char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < CMD_COUNT && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s%s%s", i ? ", " : "",
+                                 commands[i].name, commands[i].args[0] ? " " : "",
+                                 commands[i].args);
+}
+
+/* The controls' names, "preset, masses, ..., bandwidth". */
+static void control_list(char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int c = 0; c < CTL_COUNT && used < len; c++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s", c ? ", " : "",
+                                 control_names[c]);
+}
+
+void command_status(const struct app *app, char *buf, size_t len)
+{
+    const struct sim *s = app->sim;
+    const double *x = sim_x(s), *v = sim_v(s);
+    size_t used = (size_t)snprintf(buf, len, "t=%.*f", app_time_decimals(sim_dt(s)), sim_time(s));
+    for (int i = 0; i < sim_model(s)->n && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, " x%d=%.4f v%d=%.4f", i + 1,
+                                 x[i] + 0.0, i + 1, v[i] + 0.0);
+    if (used < len)
+        snprintf(buf + used, len - used, " drive=%.4f", sim_end_position(s) + 0.0);
+}
+
+/* The modes in one line: frequency, damping ratio and Q = 1/(2 zeta) of each. */
+static enum command_reply say_modes(const struct app *app, char *answer, size_t len)
+{
+    if (!app->modes_ok) {
+        snprintf(answer, len, "modes: the modes of this chain are not known");
+        return REPLY_ERROR;
+    }
+    size_t used = (size_t)snprintf(answer, len, "modes:");
+    for (int j = 0; j < app->model->n && used < len; j++) {
+        double z = app->damping_ratio[j];
+        char damping[64] = "";
+        if (!app->damping_ok)
+            snprintf(damping, sizeof damping, ", damping not known");
+        else if (z >= 1.0)
+            snprintf(damping, sizeof damping, ", damping ratio %.3g, overdamped", z);
+        else if (z > 0.0)
+            snprintf(damping, sizeof damping, ", damping ratio %.3g, Q %.3g", z, 0.5 / z);
+        else
+            snprintf(damping, sizeof damping, ", damping ratio 0, Q inf");
+        used += (size_t)snprintf(answer + used, len - used, "%s %d: %.4g Hz%s", j ? ";" : "",
+                                 j + 1, app->modes[j], damping);
+    }
+    return REPLY_OK;
+}
+
+/* Every control with its name for set and its value, in one line. */
+static enum command_reply say_controls(const struct app *app, char *answer, size_t len)
+{
+    size_t used = 0;
+    answer[0] = '\0';
+    for (int c = 0; c < CTL_COUNT && used < len; c++) {
+        char value[96];
+        app_control_value(app, (enum control)c, value, sizeof value);
+        used += (size_t)snprintf(answer + used, len - used, "%s%s %s", c ? "; " : "controls: ",
+                                 control_names[c], value);
+    }
+    return REPLY_OK;
+}
+
+/* The presets' names in one line. */
+static enum command_reply say_presets(const struct app *app, char *answer, size_t len)
+{
+    struct preset_entry *list = NULL;
+    int n = preset_scan(app->exe_dir, &list);
+    size_t used = (size_t)snprintf(answer, len, "presets:");
+    for (int i = 0; i < n && used < len; i++)
+        used += (size_t)snprintf(answer + used, len - used, "%s %s", i ? "," : "", list[i].name);
+    if (n == 0)
+        snprintf(answer + used, len - used, " none found");
+    free(list);
+    return REPLY_OK;
+}
+
+/* The answer an app action left in its message: an error if it says so or did nothing. */
+static enum command_reply from_message(const struct app *app, unsigned changed, char *answer,
+                                       size_t len)
+{
+    snprintf(answer, len, "%s", app->message[0] ? app->message : "nothing changed");
+    return app->message_is_error || (!changed && !app->message[0]) ? REPLY_ERROR : REPLY_OK;
+}
+
+/* t now, as the status line writes it. */
+static double now_t(const struct app *app, int *decimals)
+{
+    *decimals = app_time_decimals(sim_dt(app->sim));
+    return sim_time(app->sim);
+}
+
+static enum command_reply load_preset(struct app *app, const char *name, char *answer, size_t len)
+{
+    char path[4400];
+    if (preset_find(name, app->exe_dir, path, sizeof path) != PRESET_OK) {
+        snprintf(answer, len, "preset: %s", path);
+        return REPLY_ERROR;
+    }
+    return from_message(app, app_load_preset(app, path, name), answer, len);
+}
+
+static enum command_reply set_control(struct app *app, const char *name, const char *value,
+                                      char *answer, size_t len)
+{
+    char q[4 * CONFIG_QUOTE_MAX + 48], names[200];
+    control_list(names, sizeof names);
+    int c = find_control(name);
+    if (c < 0 || !*value) {
+        config_quote(name, strlen(name), q, sizeof q);
+        if (!*name)
+            snprintf(answer, len, "set: needs a control and a value (controls: %s)", names);
+        else if (c < 0)
+            snprintf(answer, len, "set: %s is not a control (expected %s)", q, names);
+        else
+            snprintf(answer, len, "set: %s needs a value", q);
+        return REPLY_ERROR;
+    }
+    if (c == CTL_PRESET)
+        return load_preset(app, value, answer, len);
+    return from_message(app, app_set_text(app, (enum control)c, value), answer, len);
+}
+
+/* A whole number from 1 to hi, or 0. */
+static int whole(const char *text, int hi)
+{
+    double v;
+    if (config_parse_number(text, &v) || v != floor(v) || v < 1 || v > hi)
+        return 0;
+    return (int)v;
+}
+
+enum command_reply command_do(struct app *app, const char *line, char *answer, size_t len,
+                              double *seconds)
+{
+    char buf[1024], q[4 * CONFIG_QUOTE_MAX + 48], list[600];
+    snprintf(buf, sizeof buf, "%s", line);
+    char *word = buf + strspn(buf, " \t");
+    char *rest = word + strcspn(word, " \t");
+    if (*rest)
+        *rest++ = '\0';
+    rest += strspn(rest, " \t");
+    for (char *end = rest + strlen(rest); end > rest && (end[-1] == ' ' || end[-1] == '\t');)
+        *--end = '\0';
+    if (!*word)
+        return REPLY_NONE;
+    int cmd = command_find(word, strlen(word));
+    if (cmd < 0) {
+        command_list(list, sizeof list);
+        config_quote(word, strlen(word), q, sizeof q);
+        snprintf(answer, len, "%s is not a command (expected %s)", q, list);
+        return REPLY_ERROR;
+    }
+    const struct command *c = &commands[cmd];
+    bool wants = c->args[0] && c->args[0] != '[';
+    if (cmd == CMD_SET && !*rest)
+        return set_control(app, "", "", answer, len);
+    if (wants && !*rest) {
+        snprintf(answer, len, "%s: needs %s", c->name, c->args);
+        return REPLY_ERROR;
+    }
+    if (!c->args[0] && *rest) {
+        config_quote(rest, strlen(rest), q, sizeof q);
+        snprintf(answer, len, "%s: takes nothing, but was given %s", c->name, q);
+        return REPLY_ERROR;
+    }
+    app->message[0] = '\0';
+    app->message_is_error = false;
+    int d;
+    double t;
+    unsigned changed;
+    switch ((enum command_id)cmd) {
+    case CMD_START:
+    case CMD_PAUSE: {
+        bool run = cmd == CMD_START;
+        bool was = app->running;
+        app_set_running(app, run);
+        t = now_t(app, &d);
+        snprintf(answer, len, "%s at t = %.*f s", was == run ? run ? "running already" :
+                 "paused already" : run ? "started" : "paused", d, t);
+        return REPLY_OK;
+    }
+    case CMD_STEP:
+        app_set_running(app, false);
+        if (!app_step(app))
+            return from_message(app, 0, answer, len);
+        t = now_t(app, &d);
+        snprintf(answer, len, "stepped to t = %.*f s, paused", d, t);
+        return REPLY_OK;
+    case CMD_BACK:
+        if (!app_back(app))
+            return snprintf(answer, len, "back: %s", app->message), REPLY_ERROR;
+        t = now_t(app, &d);
+        snprintf(answer, len, "back to t = %.*f s", d, t);
+        return REPLY_OK;
+    case CMD_RESET:
+        app_reset(app);
+        snprintf(answer, len, "reset to t = 0, at the initial conditions");
+        return REPLY_OK;
+    case CMD_RANDOM:
+        return from_message(app, app_random(app), answer, len);
+    case CMD_SET: {
+        char *value = rest + strcspn(rest, " \t");
+        if (*value)
+            *value++ = '\0';
+        value += strspn(value, " \t");
+        return set_control(app, rest, value, answer, len);
+    }
+    case CMD_PRESET:
+        return load_preset(app, rest, answer, len);
+    case CMD_PRESETS:
+        return say_presets(app, answer, len);
+    case CMD_MODES:
+        return say_modes(app, answer, len);
+    case CMD_MODE: {
+        int k = whole(rest, app->model->n);
+        if (!k) {
+            config_quote(rest, strlen(rest), q, sizeof q);
+            snprintf(answer, len, "mode: %s is not a mode of this chain (expected 1 <= K <= %d)",
+                     q, app->model->n);
+            return REPLY_ERROR;
+        }
+        return from_message(app, app_start_mode(app, k - 1), answer, len);
+    }
+    case CMD_NEAREST:
+        changed = app_nearest_mode(app);
+        if (!changed && !app->message[0])
+            snprintf(app->message, sizeof app->message, "nearest: the modes are not known");
+        return from_message(app, changed, answer, len);
+    case CMD_SWEEP:
+        return from_message(app, app_toggle_sweep(app), answer, len);
+    case CMD_FASTER:
+    case CMD_SLOWER: {
+        changed = app_adjust(app, CTL_SPEED, cmd == CMD_FASTER ? 1 : -1, false);
+        char value[32];
+        app_control_value(app, CTL_SPEED, value, sizeof value);
+        snprintf(answer, len, "Speed %s%s", value,
+                 changed ? "" : cmd == CMD_FASTER ? " (the fastest)" : " (the slowest)");
+        return REPLY_OK;
+    }
+    case CMD_SAVE: {
+        char *how = rest + strcspn(rest, " \t");
+        if (*how)
+            *how++ = '\0';
+        how += strspn(how, " \t");
+        if (*how && strcmp(how, "replace") != 0) {
+            config_quote(how, strlen(how), q, sizeof q);
+            snprintf(answer, len, "save: %s is not 'replace' (expected save NAME [replace])", q);
+            return REPLY_ERROR;
+        }
+        enum app_save st = app_save(app, rest, *how != '\0');
+        if (st == SAVE_EXISTS) {
+            snprintf(answer, len, "save: preset %s exists (save %s replace replaces it)", rest,
+                     rest);
+            return REPLY_ERROR;
+        }
+        snprintf(answer, len, "%s", app->message);
+        return st == SAVE_OK ? REPLY_OK : REPLY_ERROR;
+    }
+    case CMD_EXPORT: {
+        char path[4200];
+        return from_message(app, app_export(app, NULL, path, sizeof path), answer, len);
+    }
+    case CMD_RUN: {
+        const char *why = config_parse_number(rest, seconds);
+        if (why || !(*seconds > 0.0 && *seconds <= RUN_MAX)) {
+            config_quote(rest, strlen(rest), q, sizeof q);
+            snprintf(answer, len, "run: %s %s (expected 0 < SECONDS <= %g)", q,
+                     why ? why : "is out of range", RUN_MAX);
+            return REPLY_ERROR;
+        }
+        return REPLY_RUN;
+    }
+    case CMD_STATUS:
+        command_status(app, answer, len);
+        return REPLY_OK;
+    case CMD_CONTROLS:
+        return say_controls(app, answer, len);
+    case CMD_HELP: {
+        if (!*rest) {
+            command_list(list, sizeof list);
+            snprintf(answer, len, "commands: %s (help COMMAND says what one does)", list);
+            return REPLY_OK;
+        }
+        int h = command_find(rest, strlen(rest));
+        if (h < 0) {
+            command_list(list, sizeof list);
+            config_quote(rest, strlen(rest), q, sizeof q);
+            snprintf(answer, len, "help: %s is not a command (expected %s)", q, list);
+            return REPLY_ERROR;
+        }
+        if (h == CMD_SET) {
+            control_list(list, sizeof list);
+            snprintf(answer, len, "set CONTROL VALUE: %s; controls: %s", commands[h].help, list);
+        } else {
+            snprintf(answer, len, "%s%s%s: %s", commands[h].name, commands[h].args[0] ? " " : "",
+                     commands[h].args, commands[h].help);
+        }
+        return REPLY_OK;
+    }
+    case CMD_QUIT:
+        t = now_t(app, &d);
+        snprintf(answer, len, "quit at t = %.*f s", d, t);
+        return REPLY_QUIT;
+    case CMD_COUNT:
+        break;
+    }
+    return REPLY_NONE;
+}

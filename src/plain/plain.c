@@ -1,0 +1,368 @@
+/* plain.c: the plain mode's loop. The same struct app as the terminal program, driven
+ * by commands read line by line from standard input (app/command.c) and told in lines:
+ *
+ *   status t=T x1=X v1=V ... drive=U   every --plain-every simulated seconds
+ *   event t=T WHAT                     as it happens (app/watch.h says which)
+ *   ok WHAT / error WHAT               one answer to each command
+ *
+ * Simulated time follows the wall clock at the Speed control's rate, as in the terminal
+ * program; `run SECONDS` runs at once instead. It waits in poll() on standard input, with
+ * a timeout only while running. Nothing it writes holds an escape sequence: control
+ * bytes are escaped and, without a UTF-8 locale, so is every byte >= 0x80 (the program's
+ * own symbols are spelled in ASCII always). */
+#include "plain.h"
+
+#include <errno.h>
+#include <langinfo.h>
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../app/app.h"
+#include "../app/command.h"
+#include "../app/spell.h"
+#include "../app/watch.h"
+
+#define TICK_MS 20       /* while running: how often time is brought up to the clock */
+#define LINE_MAX_IN 1024 /* longest command line read; longer ones are refused */
+#define STEP_BUDGET 0.05 /* wall seconds of stepping before input is looked at again */
+
+struct plain {
+    struct app app;
+    struct watch watch;
+    double every;              /* seconds of simulated time between status lines */
+    double next_status;        /* simulated time of the next status line */
+    bool utf8;                 /* the locale is UTF-8: valid UTF-8 text may pass */
+    bool closed;               /* standard output has gone */
+    char seen[sizeof ((struct app *)0)->message]; /* the app's message already told */
+    char in[LINE_MAX_IN + 1];  /* the command line being read */
+    size_t used;               /* bytes of it */
+    bool too_long;             /* the line being read is too long: skipped to its end */
+};
+
+static volatile sig_atomic_t quit_signal;
+
+static void on_signal(int sig)
+{
+    quit_signal = sig;
+}
+
+/* SIGINT, SIGTERM and SIGHUP end the loop with a last line (unless they were ignored
+ * when the program started: those stay ignored). */
+static void catch_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
+        struct sigaction old, sa = {.sa_handler = on_signal};
+        sigemptyset(&sa.sa_mask);
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+            sigaction(sigs[i], &sa, NULL);
+    }
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* text made safe to print into out: control bytes and invalid UTF-8 escaped, the
+ * program's own symbols in ASCII, other UTF-8 kept in a UTF-8 locale and escaped byte by
+ * byte in any other. */
+static void make_plain(const char *text, bool utf8, char *out, size_t len)
+{
+    char esc[4 * 2048 + 8];
+    config_escape(text, strlen(text), 2048, esc, sizeof esc);
+    size_t o = 0;
+    for (const char *s = esc; *s && o + 8 < len;) {
+        size_t n;
+        const char *spelt;
+        if ((unsigned char)*s < 0x80) {
+            out[o++] = *s++;
+        } else if (strncmp(s, "◆ f", strlen("◆ f")) == 0) {
+            /* "Frequency 0.712 Hz ◆ f1": the drive is on natural frequency 1 */
+            o += (size_t)snprintf(out + o, len - o, "= f");
+            s += strlen("◆ f");
+        } else if ((spelt = spell_ascii(s, &n)) != NULL) {
+            o += (size_t)snprintf(out + o, len - o, "%s", spelt);
+            s += n;
+        } else if (utf8) {
+            do
+                out[o++] = *s++;
+            while (((unsigned char)*s & 0xc0) == 0x80 && o + 1 < len);
+        } else {
+            o += (size_t)snprintf(out + o, len - o, "\\x%02x", (unsigned char)*s++);
+        }
+    }
+    out[o < len ? o : len - 1] = '\0';
+}
+
+/* Writes one line "KIND text"; a failed write means standard output has gone. */
+static void put(struct plain *p, const char *kind, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static void put(struct plain *p, const char *kind, const char *fmt, ...)
+{
+    char text[2048], safe[4 * sizeof text];
+    va_list ap;
+    if (p->closed)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    make_plain(text, p->utf8, safe, sizeof safe);
+    if (printf("%s %s\n", kind, safe) < 0 || fflush(stdout) != 0)
+        p->closed = true;
+}
+
+/* t as the status line writes it. */
+static void put_event(struct plain *p, const char *what)
+{
+    const struct sim *s = p->app.sim;
+    put(p, "event", "t=%.*f %s", app_time_decimals(sim_dt(s)), sim_time(s), what);
+}
+
+static void on_event(void *ctx, const char *what)
+{
+    put_event(ctx, what);
+}
+
+static void put_status(struct plain *p)
+{
+    char line[1024];
+    command_status(&p->app, line, sizeof line);
+    put(p, "status", "%s", line);
+}
+
+/* The first status time after t. */
+static void plan_status(struct plain *p)
+{
+    double t = sim_time(p->app.sim);
+    p->next_status = (floor(t / p->every + 1e-9) + 1.0) * p->every;
+}
+
+/* A message of the app not told yet (a note of the velocity cap, the sweep's end), as an
+ * event. */
+static void tell_message(struct plain *p)
+{
+    if (p->app.message[0] && strcmp(p->app.message, p->seen) != 0)
+        put_event(p, p->app.message);
+    memcpy(p->seen, p->app.message, sizeof p->seen);
+}
+
+/* One step and what it brought: its events, the status line when its time has come. A
+ * blow-up (app_step's non-finite handling) pauses the chain; false then. */
+static bool step(struct plain *p)
+{
+    struct app *app = &p->app;
+    if (!app_step(app)) {
+        char line[sizeof app->message + 16];
+        snprintf(line, sizeof line, "blow-up: %s", app->message);
+        put_event(p, line);
+        memcpy(p->seen, app->message, sizeof p->seen);
+        watch_look(&p->watch, app, on_event, p);
+        return false;
+    }
+    watch_step(&p->watch, app, on_event, p);
+    tell_message(p);
+    if (sim_time(app->sim) >= p->next_status - 1e-9 * p->every) {
+        put_status(p);
+        plan_status(p);
+    }
+    return true;
+}
+
+/* Brings simulated time up to the clock times the playback speed, spending at most
+ * STEP_BUDGET at a time: a chain too slow to follow falls behind rather than stop
+ * listening. */
+static void advance(struct plain *p, double *debt, double elapsed)
+{
+    struct app *app = &p->app;
+    if (!app->running) {
+        *debt = 0.0;
+        return;
+    }
+    *debt += elapsed * app->speed;
+    double start = now_s();
+    while (*debt >= app->cfg.dt && app->running && !quit_signal && !p->closed) {
+        if (!step(p))
+            break;
+        *debt -= app->cfg.dt;
+        if (now_s() - start > STEP_BUDGET) {
+            if (*debt > 0.25 * app->speed)
+                *debt = 0.0;
+            return;
+        }
+    }
+}
+
+/* run SECONDS: steps at once to that much later, then pauses. */
+static void run_for(struct plain *p, double seconds, char *answer, size_t len)
+{
+    struct app *app = &p->app;
+    double end = sim_time(app->sim) + seconds;
+    app->running = true;
+    while (sim_time(app->sim) < end - 1e-9 * app->cfg.dt && !quit_signal && !p->closed)
+        if (!step(p))
+            break;
+    bool blew = !app->running;
+    app_set_running(app, false);
+    snprintf(answer, len, "%s to t = %.*f s, paused", blew ? "stopped by the blow-up" :
+             quit_signal ? "interrupted" : "ran", app_time_decimals(sim_dt(app->sim)),
+             sim_time(app->sim));
+}
+
+/* One command line; false to quit. */
+static bool command(struct plain *p, const char *line)
+{
+    struct app *app = &p->app;
+    char answer[2048];
+    double seconds = 0.0;
+    double t0 = sim_time(app->sim);
+    enum command_reply r = command_do(app, line, answer, sizeof answer, &seconds);
+    if (r == REPLY_NONE)
+        return true;
+    if (r == REPLY_RUN)
+        run_for(p, seconds, answer, sizeof answer);
+    if (r == REPLY_QUIT)
+        put_status(p);
+    put(p, r == REPLY_ERROR ? "error" : "ok", "%s", answer);
+    memcpy(p->seen, app->message, sizeof p->seen);
+    watch_look(&p->watch, app, on_event, p);
+    if (sim_time(app->sim) != t0 && r != REPLY_RUN) {
+        /* step, back, reset, a restart: the status follows the jump */
+        if (sim_time(app->sim) >= p->next_status - 1e-9 * p->every ||
+            sim_time(app->sim) < t0)
+            plan_status(p);
+    }
+    return r != REPLY_QUIT;
+}
+
+/* Reads what standard input has; each whole line is a command. False to quit: a quit
+ * command, or the end of input (a last line without a newline is still a command). */
+static bool read_input(struct plain *p)
+{
+    char buf[4096];
+    ssize_t got = read(STDIN_FILENO, buf, sizeof buf);
+    if (got < 0)
+        return errno == EINTR || errno == EAGAIN;
+    if (got == 0) {
+        bool go = true;
+        if (p->used && !p->too_long) {
+            p->in[p->used] = '\0';
+            go = command(p, p->in);
+        }
+        p->used = 0;
+        if (go) {
+            put_status(p);
+            put_event(p, "end of input: quit");
+        }
+        return false;
+    }
+    for (ssize_t i = 0; i < got; i++) {
+        if (buf[i] != '\n') {
+            if (p->used < LINE_MAX_IN)
+                p->in[p->used++] = buf[i];
+            else
+                p->too_long = true;
+            continue;
+        }
+        bool too_long = p->too_long;
+        p->in[p->used] = '\0';
+        p->used = 0;
+        p->too_long = false;
+        if (too_long) {
+            put(p, "error", "a line of more than %d bytes is not a command", LINE_MAX_IN);
+            continue;
+        }
+        size_t n = strlen(p->in);
+        if (n && p->in[n - 1] == '\r')
+            p->in[n - 1] = '\0'; /* a CRLF line */
+        if (!command(p, p->in))
+            return false;
+    }
+    return true;
+}
+
+/* The line that opens the session. */
+static void put_ready(struct plain *p)
+{
+    const struct app *app = &p->app;
+    const struct model *m = app->model;
+    char drive[160];
+    if (m->boundary == BOUNDARY_MOTOR)
+        snprintf(drive, sizeof drive, "%s drive, %.4g m at %.4g Hz", motor_wave_name(m->motor.wave),
+                 m->motor.amplitude, m->motor.frequency);
+    else
+        snprintf(drive, sizeof drive, "right end %s", model_boundary_name(m->boundary));
+    int j = watch_on_mode(app);
+    char on[64] = "";
+    if (j >= 0)
+        snprintf(on, sizeof on, " (on natural frequency %d)", j + 1);
+    char line[600];
+    snprintf(line, sizeof line, "ready: %s%s%s%d mass%s, %s%s, paused; help lists the commands",
+             app->preset[0] ? "preset " : "", app->preset, app->preset[0] ? ", " : "", m->n,
+             m->n == 1 ? "" : "es", drive, on);
+    put_event(p, line);
+}
+
+int plain_run(const struct config *cfg, const char *exe_dir)
+{
+    static struct plain p;
+    memset(&p, 0, sizeof p);
+    if (app_init(&p.app, cfg, exe_dir) != 0) {
+        fprintf(stderr, "springsim: out of memory\n");
+        return EXIT_FAILURE;
+    }
+    p.utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    p.every = cfg->plain_every;
+    catch_signals();
+    watch_init(&p.watch, &p.app);
+    put_ready(&p);
+    tell_message(&p);
+    put_status(&p);
+    plan_status(&p);
+    double last = now_s(), debt = 0.0;
+    bool go = true;
+    while (go && !quit_signal && !p.closed) {
+        double now = now_s();
+        advance(&p, &debt, now - last);
+        last = now;
+        /* Standard output is watched too: a reader that went (POLLERR on a pipe) ends
+         * the session even while nothing is being written. */
+        struct pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {STDOUT_FILENO, 0, 0}};
+        int n = poll(fds, 2, p.app.running ? TICK_MS : -1);
+        if (n < 0)
+            continue; /* EINTR: a signal, looked at above */
+        if (fds[1].revents & (POLLERR | POLLHUP | POLLNVAL))
+            p.closed = true;
+        else if (fds[0].revents & (POLLIN | POLLHUP | POLLERR | POLLNVAL))
+            go = read_input(&p);
+    }
+    if (quit_signal && !p.closed) {
+        put_status(&p);
+        char line[64];
+        snprintf(line, sizeof line, "%s: quit", quit_signal == SIGINT    ? "SIGINT"
+                                                : quit_signal == SIGTERM ? "SIGTERM"
+                                                                         : "SIGHUP");
+        put_event(&p, line);
+    }
+    app_free(&p.app);
+    /* Die of the signal, as the terminal program does; a closed output ends as a write to
+     * it would have (SIGPIPE, or status 1 where SIGPIPE is ignored). */
+    int sig = quit_signal ? quit_signal : p.closed ? SIGPIPE : 0;
+    if (sig == SIGPIPE)
+        raise(sig);
+    else if (sig) {
+        signal(sig, SIG_DFL);
+        raise(sig);
+    }
+    return p.closed ? EXIT_FAILURE : EXIT_SUCCESS;
+}

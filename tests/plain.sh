@@ -1,0 +1,241 @@
+#!/bin/sh
+# tests/plain.sh: the plain mode (--plain, and TERM=dumb) end to end, through pipes: its
+# lines hold no escape sequence and, in the C locale, no byte >= 0x80; every command is
+# answered with one line, bad ones with one line saying what is allowed; status lines come
+# every --plain-every simulated seconds; contacts, peaks and the drive on a natural
+# frequency are told when they happen, at the times and values physics says; the end of
+# input, a closed standard output and SIGTERM end it. Run from the repository root as
+# `sh tests/plain.sh`, SPRINGSIM naming the binary. Ends with "plain: N passed, M failed".
+NAME=plain
+. "$(dirname "$0")/lib/check.sh"
+trap 'exit 1' HUP INT TERM
+plain_env
+out=$tmp/out
+
+# plain ARGS... <input: the plain mode, its lines in $out and its exit status in $rc;
+# feed TEXT ARGS...: the same with input TEXT (printf's escapes).
+plain() {
+    cmd="springsim --plain $*"
+    "$SPRINGSIM" --plain "$@" >"$out" 2>"$tmp/err"
+    rc=$?
+}
+feed() {
+    printf "$1" >"$tmp/in"
+    shift
+    plain "$@" <"$tmp/in"
+}
+show() { head -c 400 "$1" | tr '\n' '|'; }
+# bytes of $1 other than printable ASCII and newline
+odd_bytes() { LC_ALL=C tr -d '\012\040-\176' <"$1" | wc -c | tr -d ' '; }
+answers() { grep -cE '^(ok|error) ' "$out"; }
+# status_times: the t of each status line
+status_times() { sed -n 's/^status t=\([0-9.]*\) .*/\1/p' "$out"; }
+
+# ---- the issue's done-when: plain lines, the status and the answers, exit 0 ----
+feed 'start\nset frequency 0.712\nquit\n' -p resonance
+if [ "$rc" -eq 0 ] && [ "$(odd_bytes "$out")" -eq 0 ] && [ ! -s "$tmp/err" ]; then pass; else
+    fail "$cmd: expected exit 0, only printable ASCII, nothing on stderr; exit $rc, $(odd_bytes "$out") other bytes: $(show "$out")"
+fi
+if grep -q '^status t=0.00 x1=0.0000 v1=0.0000 drive=0.0000$' "$out" &&
+    grep -q '^ok started at t = 0.00 s$' "$out" && grep -q '^ok Frequency 0.712 Hz' "$out" &&
+    grep -q '^ok quit at t = ' "$out" && [ "$(answers)" -eq 3 ]; then pass; else
+    fail "$cmd: expected a status line, three answers (started, Frequency 0.712 Hz, quit): $(show "$out")"
+fi
+
+# ---- what is echoed is escaped: an escape sequence and UTF-8 typed in a command ----
+feed 'x\033[31mred\nset wave caf\303\251\n'
+if [ "$(odd_bytes "$out")" -eq 0 ] && grep -qF "'x\\x1b[31mred' is not a command" "$out" &&
+    grep -qF "'caf\\xc3\\xa9' is not" "$out"; then pass; else
+    fail "C locale: escape and UTF-8 bytes typed should come back escaped as \\xNN: $(show "$out")"
+fi
+feed 'set damping 0.5\n'
+if [ "$(odd_bytes "$out")" -eq 0 ] && grep -q '^ok Damping 0.50 N.s/m$' "$out"; then pass; else
+    fail "the program's own symbols (N·s/m) should be spelled in ASCII: $(show "$out")"
+fi
+
+# ---- each command answered with one line, in order; bad ones say what is allowed ----
+cat >"$tmp/cmds" <<'EOF'
+help
+help set
+status
+controls
+modes
+presets
+step
+back
+back
+reset
+random
+set amplitude 0.2
+set right-end wall
+set boundary motor
+faster
+slower
+nearest
+mode 1
+pause
+sweep
+sweep
+preset beating
+set preset resonance
+bogus
+set
+set nosuch 1
+set frequency abc
+set frequency 0
+set dt 0.2
+set masses 11
+mode 9
+run -1
+start now
+help bogus
+save
+quit
+EOF
+plain <"$tmp/cmds"
+kinds=$(grep -E '^(ok|error) ' "$out" | cut -d' ' -f1 | tr '\n' ' ')
+want="ok ok ok ok ok ok ok ok error ok ok ok ok ok ok ok ok ok ok ok ok ok ok error error error error error error error error error error error error ok "
+if [ "$kinds" = "$want" ] && [ "$rc" -eq 0 ]; then pass; else
+    fail "36 commands: expected one answer each, in order, '$want'; got '$kinds' (exit $rc)"
+fi
+# expect_error NEEDLE...: the error lines of $out hold a line with every NEEDLE
+expect_error() {
+    line=$(grep '^error ' "$out" | grep -F -- "$1" | head -n 1)
+    for n in "$@"; do
+        case $line in *"$n"*) ;; *) fail "expected an error line with '$*'; errors: $(grep '^error' "$out" | tr '\n' '|')"; return ;; esac
+    done
+    pass
+}
+expect_error "'bogus' is not a command" "expected start, pause" "quit"
+expect_error "set: needs a control and a value" "frequency"
+expect_error "'nosuch' is not a control" "expected preset, masses"
+expect_error "frequency: 'abc' is not a number" "0 < frequency <= 1e6"
+expect_error "frequency: '0' is out of range" "0 < frequency"
+expect_error "dt: '0.2'" "dt <= 0.05"
+expect_error "masses: '11'" "1 <= N <= 10"
+expect_error "mode: '9' is not a mode" "1 <= K <= 1"
+expect_error "run: '-1'" "0 < SECONDS"
+expect_error "start: takes nothing" "'now'"
+expect_error "save: needs NAME"
+expect_error "back: at t = 0: nothing before it"
+# help lists every command, and says what each does
+list=$(sed -n 's/^ok commands: \(.*\) (help COMMAND.*/\1/p' "$out" | tr ',' '\n' | awk '{ print $1 }')
+n=0
+for c in $list; do
+    feed "help $c\n"
+    if grep -q "^ok $c" "$out"; then n=$((n + 1)); else fail "help $c: $(show "$out")"; fi
+done
+if [ "$n" -ge 20 ]; then pass; else fail "help listed $n commands, expected 20 or more"; fi
+
+# ---- status lines every --plain-every seconds of simulated time ----
+for every in 0.5 0.25 2; do
+    feed 'run 4\n' -p resonance --plain-every $every
+    got=$(status_times | sed '1d;$d' | tr '\n' ' ')
+    want=$(awk -v e=$every 'BEGIN { for (t = e; t <= 4 + 1e-9; t += e) printf "%.2f ", t }')
+    if [ "$got" = "$want" ]; then pass; else
+        fail "--plain-every $every over 4 s: status at '$want', got '$got'"
+    fi
+done
+feed 'quit\n' --plain-every 0
+if [ "$rc" -eq 2 ] && grep -q "plain-every: '0' is out of range" "$tmp/err"; then pass; else
+    fail "--plain-every 0: expected exit 2 and a one-line reason, got $rc: $(show "$tmp/err")"
+fi
+
+# ---- events: a contact, at the instant mass 1 reaches the wall ----
+# -p collisions: 2 masses, spacing L/3 = 3.333 m, blocks 0.4 m wide, so mass 1 touches
+# the wall at x1 = -(10/3 - 0.2) m. The headless CSV of the same run must show it there.
+feed 'run 10\n' -p collisions
+tc=$(sed -n 's/^event t=\([0-9.]*\) contact: mass 1 and the left wall$/\1/p' "$out" | head -n 1)
+"$SPRINGSIM" --headless -p collisions --duration 10 >"$tmp/csv"
+check=$(awk -F, -v tc="$tc" 'NR > 1 {
+        near = $2 < -(10 / 3 - 0.2) + 0.03
+        if (near && $1 < tc - 0.05) early = early " " $1
+        if (near && $1 >= tc - 0.02 && $1 <= tc + 0.02) found = 1
+    } END { print (found ? "" : "x1 is not at the wall at " tc) (early ? " x1 at the wall before, at" early : "") }' "$tmp/csv")
+if [ -n "$tc" ] && [ -z "$check" ]; then pass; else
+    fail "-p collisions: expected 'contact: mass 1 and the left wall' when x1 reaches -3.133 m: t='$tc' $check; $(grep contact "$out" | head -n 3 | tr '\n' '|')"
+fi
+if [ "$(grep -c 'contact:' "$out")" -le 10 ]; then pass; else
+    fail "-p collisions, 10 s: $(grep -c 'contact:' "$out") contacts told, one a bounce expected (a few)"
+fi
+
+# ---- a peak: free vibration of one undamped mass from x0 = 0.3 m ----
+# f = sqrt(2k/m)/2pi = 0.7118 Hz: the first turning point is at T/2 = 0.7025 s with
+# |x| = 0.3 m; every later one is no larger, so it is the only peak.
+feed 'run 10\n' -n 1 --damping 0 --amplitude 0 --x0 0.3
+peaks=$(grep -c 'peak:' "$out")
+line=$(grep 'peak:' "$out")
+ok=$(echo "$line" | awk '{ t = substr($2, 3); a = $8 } /mass 1 \|x\| = / && t >= 0.69 && t <= 0.72 && a >= 0.2999 && a <= 0.3000 { print "yes" }')
+if [ "$peaks" -eq 1 ] && [ "$ok" = yes ]; then pass; else
+    fail "free vibration from 0.3 m: expected one peak, mass 1 |x| = 0.3000 m at t = 0.70; got $peaks: $line"
+fi
+
+# ---- the drive coming onto a natural frequency (within 2 %, as the modes view) ----
+# one mass between two springs: f1 = sqrt(2 * 10 / 1) / 2pi = 0.7118 Hz
+feed 'set frequency 0.75\nset frequency 0.70\nset frequency 0.705\n' -p resonance --frequency 0.5
+n=$(grep -c 'resonance:' "$out")
+if [ "$n" -eq 1 ] && grep -q 'event t=0.00 resonance: the drive at 0.7 Hz is on natural frequency 1 (0.7118 Hz' "$out"; then
+    pass
+else
+    fail "0.75 Hz (5 % off f1) is not on it, 0.70 (1.7 % off) is, 0.705 stays on it: one event expected, got $n: $(grep resonance "$out" | tr '\n' '|')"
+fi
+
+# ---- simulated time follows the clock; the end of input quits with 0 ----
+# background ARGS...: the plain mode reading the fifo $tmp/fifo (held open on fd 3), its
+# lines in $out, its pid in $pid; finish waits for it, its status in $rc.
+background() {
+    rm -f "$tmp/fifo"
+    mkfifo "$tmp/fifo"
+    "$SPRINGSIM" --plain "$@" <"$tmp/fifo" >"$out" 2>"$tmp/err" &
+    pid=$!
+    exec 3>"$tmp/fifo"
+}
+finish() {
+    wait "$pid" 2>/dev/null # (dash says "Terminated" of a job a signal ended)
+    rc=$?
+}
+background
+echo start >&3
+sleep 1.5
+echo pause >&3
+exec 3>&-
+finish
+t=$(sed -n 's/^ok paused at t = \([0-9.]*\) s$/\1/p' "$out")
+if [ "$rc" -eq 0 ] && awk -v t="$t" 'BEGIN { exit !(t != "" && t >= 1.2 && t <= 2.5) }' &&
+    tail -n 1 "$out" | grep -q '^event t=.* end of input: quit$'; then pass; else
+    fail "start, 1.5 s, pause, end of input: expected t near 1.5 s, exit 0, 'end of input' last; t='$t', exit $rc: $(tail -n 2 "$out" | tr '\n' '|')"
+fi
+plain </dev/null
+if [ "$rc" -eq 0 ] && [ "$(answers)" -eq 0 ]; then pass; else fail "empty input: exit $rc: $(show "$out")"; fi
+
+# ---- TERM=dumb starts the plain mode ----
+printf 'quit\n' | TERM=dumb "$SPRINGSIM" -p resonance >"$out" 2>"$tmp/err"
+rc=$?
+if [ "$rc" -eq 0 ] && grep -q '^event t=0.00 ready: preset Resonance' "$out" &&
+    grep -q '^ok quit' "$out" && [ "$(odd_bytes "$out")" -eq 0 ]; then pass; else
+    fail "TERM=dumb: expected the plain mode (ready ... ok quit), exit 0; exit $rc: $(show "$out") $(show "$tmp/err")"
+fi
+
+# ---- a closed standard output ends it at once, running or paused ----
+for input in '' start; do
+    rm -f "$tmp/closed"
+    ( { [ -n "$input" ] && echo "$input"; sleep 3; } |
+        { "$SPRINGSIM" --plain; echo $? >"$tmp/closed"; } | head -n 1 >/dev/null ) &
+    i=0
+    while [ ! -s "$tmp/closed" ] && [ $i -lt 20 ]; do sleep 0.1; i=$((i + 1)); done
+    st=$(cat "$tmp/closed" 2>/dev/null)
+    case $st in 141 | 1) pass ;; *) fail "stdout closed (${input:-paused}): expected an end within 2 s, status 141 (SIGPIPE) or 1; got '${st:-still running}'" ;; esac
+done
+
+# ---- SIGTERM: a last line, then it dies of the signal ----
+background
+echo start >&3
+sleep 0.5
+kill -TERM "$pid"
+finish
+exec 3>&-
+if [ "$rc" -eq 143 ] && tail -n 1 "$out" | grep -q '^event t=[0-9.]* SIGTERM: quit$'; then pass; else
+    fail "SIGTERM: expected 'SIGTERM: quit' last and status 143; status $rc: $(tail -n 2 "$out" | tr '\n' '|')"
+fi
+
+summary
