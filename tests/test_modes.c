@@ -356,6 +356,32 @@ static void damped_two_dof_general(void **state)
     model_free(md);
 }
 
+/* No dampers: every eigenvalue is +-i w_j, so every ratio is exactly 0 (Q infinite, not
+ * 1/(2 * rounding)) and the damped frequencies are the natural ones, for every end and
+ * chains of unequal masses and springs. */
+static void damped_none(void **state)
+{
+    (void)state;
+    const int sizes[] = {1, 2, 3, 10};
+    for (int s = 0; s < 4; s++)
+        for (int b = 0; b < 3; b++) {
+            int n = sizes[s];
+            struct model *md = model_new(n);
+            md->boundary = b == 0 ? BOUNDARY_MOTOR : b == 1 ? BOUNDARY_WALL : BOUNDARY_FREE;
+            for (int i = 0; i < n; i++)
+                md->m[i] = 0.3 + 0.7 * (i % 3), md->c[i] = 0.0;
+            for (int j = 0; j <= n; j++)
+                md->k[j] = 4.0 + 5.0 * (j % 4);
+            double f[10], ratio[10], hz[10];
+            damped(md, f, ratio, hz);
+            for (int j = 0; j < n; j++) {
+                assert_true(ratio[j] == 0.0);
+                assert_close(hz[j], f[j], 1e-12 * f[j]);
+            }
+            model_free(md);
+        }
+}
+
 /* ---- phase ---- */
 
 /* One mass between k1 (wall) and k2 (motor): X / U = k2 / (k1 + k2 - m w^2 + i c w), so
@@ -550,6 +576,7 @@ int main(void)
         cmocka_unit_test(damped_one_dof),
         cmocka_unit_test(damped_proportional),
         cmocka_unit_test(damped_two_dof_general),
+        cmocka_unit_test(damped_none),
         cmocka_unit_test(phase_one_dof),
         cmocka_unit_test(phase_two_dof),
         cmocka_unit_test(energy_sums),

@@ -14,7 +14,9 @@
  *   |(lambda^2 M + lambda C + K) psi| / ((|lambda|^2 |M| + |lambda| |C| + |K|) |psi|)
  * (infinity norms, |K| bounded by twice its largest diagonal entry), is below
  * TRUST_ERROR. Masses 1e70 apart make |A| so large that the slow modes' eigenvalues
- * drown in its rounding. */
+ * drown in its rounding. A chain without dampers takes the modal route too: C = 0 is
+ * diagonal in the modes, so its ratios are exactly 0 (Q infinite), where dgeev's real
+ * parts would be rounding (~1e-17, Q ~1e16). */
 #include "modes.h"
 
 #include <complex.h>
@@ -174,7 +176,10 @@ static void conclude(int n, int units, const bool *pair, const int *owner, const
 int modes_damped(const struct model *m, const double *shapes, double *ratio, double *damped_hz)
 {
     int n = m->n, n2 = 2 * n;
-    if (n > LIMITS_DGEEV_MAX)
+    bool undamped = true;
+    for (int i = 0; i < n; i++)
+        undamped &= m->c[i] == 0.0;
+    if (n > LIMITS_DGEEV_MAX || undamped)
         return modal_damping(m, ratio, damped_hz);
     size_t nn = (size_t)n2 * (size_t)n2;
     double *a = malloc(2 * nn * sizeof *a);
