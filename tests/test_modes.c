@@ -514,6 +514,10 @@ static void start_along_a_mode(void **state)
                 top = x[i];
         }
         assert_close(top, 0.25, 1e-12);
+        /* Amplitude 0 is the chain at rest: every x is +0 (a -0 would print as "-0"). */
+        assert_int_equal(modes_start(md, mode, 0.0, x), 0);
+        for (int i = 0; i < n; i++)
+            assert_true(x[i] == 0.0 && !signbit(x[i]));
     }
     assert_int_equal(modes_start(md, 0, 0.25, x), -2);
     assert_int_equal(modes_start(md, n + 1, 0.25, x), -2);

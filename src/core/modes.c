@@ -185,7 +185,7 @@ int modes_start(const struct model *m, int k, double amp, double *x0)
         return -1;
     int e = modes_compute(m, buf, buf + n);
     for (int i = 0; e == 0 && i < n; i++)
-        x0[i] = amp * buf[n + (size_t)(k - 1) * n + i];
+        x0[i] = amp * buf[n + (size_t)(k - 1) * n + i] + 0.0; /* + 0.0: amp 0 gives no -0 */
     free(buf);
     return e;
 }
