@@ -98,6 +98,10 @@ want="ok ok ok ok ok ok ok ok error ok ok ok ok ok ok ok ok ok ok ok ok ok ok er
 if [ "$kinds" = "$want" ] && [ "$rc" -eq 0 ]; then pass; else
     fail "36 commands: expected one answer each, in order, '$want'; got '$kinds' (exit $rc)"
 fi
+# sweep starts the chain (paused just before) without a start command: said as an event
+if grep -A1 '^ok sweeping ' "$out" | grep -q '^event t=0.00 started$'; then pass; else
+    fail "sweep: expected 'event t=0.00 started' after its answer: $(grep -A1 '^ok sweeping' "$out" | tr '\n' '|')"
+fi
 # expect_error NEEDLE...: the error lines of $out hold a line with every NEEDLE
 expect_error() {
     line=$(grep '^error ' "$out" | grep -F -- "$1" | head -n 1)

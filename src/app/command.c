@@ -225,7 +225,7 @@ static int whole(const char *text, int hi)
 enum command_reply command_do(struct app *app, const char *line, char *answer, size_t len,
                               double *seconds)
 {
-    char buf[1024], q[4 * CONFIG_QUOTE_MAX + 48], list[600];
+    char buf[2048], q[4 * CONFIG_QUOTE_MAX + 48], list[600];
     snprintf(buf, sizeof buf, "%s", line);
     char *word = buf + strspn(buf, " \t");
     char *rest = word + strcspn(word, " \t");

@@ -226,6 +226,7 @@ static bool command(struct plain *p, const char *line)
     char answer[2048];
     double seconds = 0.0;
     double t0 = sim_time(app->sim);
+    bool was_running = app->running;
     enum command_reply r = command_do(app, line, answer, sizeof answer, &seconds);
     if (r == REPLY_NONE)
         return true;
@@ -234,6 +235,9 @@ static bool command(struct plain *p, const char *line)
     if (r == REPLY_QUIT)
         put_status(p);
     put(p, r == REPLY_ERROR ? "error" : "ok", "%s", answer);
+    /* Started or paused as a side effect (a mode started, a sweep): said as an event. */
+    if (app->running != was_running && !strstr(answer, app->running ? "started" : "paused"))
+        put_event(p, app->running ? "started" : "paused");
     memcpy(p->seen, app->message, sizeof p->seen);
     watch_look(&p->watch, app, on_event, p);
     if (sim_time(app->sim) != t0 && r != REPLY_RUN) {

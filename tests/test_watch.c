@@ -1,0 +1,214 @@
+/* test_watch.c: the plain mode's events (app/watch.c) against closed forms. One undamped
+ * mass between two springs (k = 10 N/m each, m = 1 kg) swings at w = sqrt(2k/m): from
+ * x0 = 0.3 m at rest its one peak is 0.3 m at T/2; thrown at the left wall it touches it
+ * when (v0/w) sin(wt) = -(L/2 - b/2); driven at resonance with damping c, its swing grows
+ * to kA/(cw) and the peaks told stop growing there; the drive is on the natural frequency
+ * within 2 % and not at 3 %. And the commands of the plain mode (app/command.c): a refused
+ * one changes nothing and says why in one line. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "app/app.h"
+#include "app/command.h"
+#include "app/watch.h"
+#include "core/collision.h"
+
+#define K 10.0
+#define M 1.0
+#define OMEGA sqrt(2.0 * K / M)
+
+/* What the events said. */
+struct heard {
+    int peaks, contacts, resonances;
+    double peak_t[64], peak_x[64];
+    double contact_t[16];
+    char contact[16][80];
+    char last[200];
+    const struct app *app;
+};
+
+static void hear(void *ctx, const char *event)
+{
+    struct heard *h = ctx;
+    double t = sim_time(h->app->sim);
+    snprintf(h->last, sizeof h->last, "%s", event);
+    double x;
+    if (sscanf(event, "peak: mass 1 |x| = %lf m", &x) == 1 && h->peaks < 64) {
+        h->peak_t[h->peaks] = t;
+        h->peak_x[h->peaks++] = x;
+    } else if (strncmp(event, "contact: ", 9) == 0 && h->contacts < 16) {
+        h->contact_t[h->contacts] = t;
+        snprintf(h->contact[h->contacts++], sizeof h->contact[0], "%s", event + 9);
+    } else if (strncmp(event, "resonance: ", 11) == 0) {
+        h->resonances++;
+    }
+}
+
+/* One mass, k = 10 on both sides, m = 1, at dt 0.01; set up by the caller's options. */
+static void one_mass(struct app *app, const char *const *opts)
+{
+    struct config c;
+    char err[300];
+    config_init(&c);
+    for (const char *const *o = opts; *o; o += 2)
+        assert_int_equal(config_set(&c, config_find(o[0]), o[1], err, sizeof err), 0);
+    assert_int_equal(app_init(app, &c, SRCDIR), 0);
+}
+
+static void run(struct app *app, struct watch *w, struct heard *h, double seconds)
+{
+    double end = sim_time(app->sim) + seconds;
+    while (sim_time(app->sim) < end - 1e-9) {
+        assert_true(app_step(app) != 0);
+        watch_step(w, app, hear, h);
+    }
+}
+
+static void one_peak_in_free_vibration(void **state)
+{
+    (void)state;
+    static struct app app;
+    static const char *const opts[] = {"masses", "1", "damping", "0", "amplitude", "0",
+                                       "x0", "0.3", "no-collisions", NULL, NULL};
+    one_mass(&app, opts);
+    struct watch w;
+    struct heard h = {.app = &app};
+    watch_init(&w, &app);
+    run(&app, &w, &h, 10.0);
+    assert_int_equal(h.peaks, 1);
+    double half = M_PI / OMEGA; /* T/2 = 0.7025 s */
+    assert_true(h.peak_t[0] >= half && h.peak_t[0] <= half + 0.01 + 1e-9);
+    /* the larger |x| of the two steps around the turn: within 0.3 (1 - cos(w dt / 2)) */
+    assert_true(fabs(h.peak_x[0] - 0.3) <= 0.3 * (1.0 - cos(OMEGA * 0.005)) + 5e-5);
+    /* a reset forgets it: the same peak is told again */
+    app_reset(&app);
+    watch_look(&w, &app, hear, &h);
+    run(&app, &w, &h, 1.0);
+    assert_int_equal(h.peaks, 2);
+    app_free(&app);
+}
+
+static void peaks_grow_to_the_steady_state_and_stop(void **state)
+{
+    (void)state;
+    static struct app app;
+    char f[32];
+    snprintf(f, sizeof f, "%.17g", OMEGA / (2.0 * M_PI));
+    const char *const opts[] = {"masses", "1", "damping", "0.1", "amplitude", "0.1",
+                                "frequency", f, NULL, NULL};
+    one_mass(&app, opts);
+    struct watch w;
+    struct heard h = {.app = &app};
+    watch_init(&w, &app);
+    run(&app, &w, &h, 200.0);
+    /* |X| = k A / |2k - m w^2 + i c w| = k A / (c w) at resonance: 2.236 m */
+    double steady = K * 0.1 / (0.1 * OMEGA);
+    assert_true(h.peaks >= 10);
+    for (int i = 0; i < h.peaks; i++) {
+        assert_true(h.peak_x[i] <= steady * 1.001);
+        if (i > 0) {
+            assert_true(h.peak_x[i] >= 1.05 * h.peak_x[i - 1] - 5e-5);
+            assert_true(h.peak_t[i] - h.peak_t[i - 1] >= 0.5 * M_PI / OMEGA);
+        }
+    }
+    /* 1 - exp(-t zeta w) of the way there: at 7 time constants the last step of 5 % is
+     * behind, so the last 60 s tell nothing */
+    assert_true(h.peak_t[h.peaks - 1] < 140.0);
+    assert_true(h.peak_x[h.peaks - 1] >= steady / 1.05 - 1e-3);
+    app_free(&app);
+}
+
+static void contact_with_the_left_wall_when_it_is_reached(void **state)
+{
+    (void)state;
+    static struct app app;
+    static const char *const opts[] = {"masses", "1", "damping", "0", "boundary", "wall",
+                                       "v0", "-25", NULL, NULL};
+    one_mass(&app, opts);
+    struct watch w;
+    struct heard h = {.app = &app};
+    watch_init(&w, &app);
+    run(&app, &w, &h, 1.5);
+    assert_true(h.contacts >= 2);
+    /* x = (v0/w) sin(wt) reaches -(L/2 - b/2) = -4.8 m */
+    double reach = MODEL_LENGTH / 2.0 - 0.5 * model_block_width(app.model);
+    double t1 = asin(reach / (25.0 / OMEGA)) / OMEGA;
+    assert_string_equal(h.contact[0], "mass 1 and the left wall");
+    assert_true(h.contact_t[0] >= t1 && h.contact_t[0] <= t1 + 0.01 + 1e-9);
+    /* bounced at 0.8 of the speed, it still has the energy to reach the right wall */
+    assert_string_equal(h.contact[1], "mass 1 and the right wall");
+    app_free(&app);
+}
+
+static void drive_on_a_mode_within_two_percent(void **state)
+{
+    (void)state;
+    static struct app app;
+    static const char *const opts[] = {"masses", "1", "frequency", "0.5", NULL, NULL};
+    one_mass(&app, opts);
+    struct watch w;
+    struct heard h = {.app = &app};
+    double f1 = OMEGA / (2.0 * M_PI);
+    char text[32];
+    watch_init(&w, &app);
+    const double at[] = {1.03, 0.985, 1.01, 0.9, 1.019};
+    const int told[] = {0, 1, 1, 1, 2};
+    for (int i = 0; i < 5; i++) {
+        snprintf(text, sizeof text, "%.6f", at[i] * f1);
+        assert_true(app_set_text(&app, CTL_FREQUENCY, text) != 0);
+        watch_look(&w, &app, hear, &h);
+        assert_int_equal(h.resonances, told[i]);
+    }
+    assert_non_null(strstr(h.last, "natural frequency 1 (0.7118 Hz"));
+    app_free(&app);
+}
+
+static void refused_commands_change_nothing(void **state)
+{
+    (void)state;
+    static struct app app;
+    static struct config before;
+    static const char *const opts[] = {"masses", "2", NULL, NULL};
+    one_mass(&app, opts);
+    const char *const bad[] = {"bogus", "set", "set nosuch 1", "set frequency abc",
+                               "set frequency 0", "set dt 0.2", "set masses 11", "mode 3",
+                               "run 0", "run 1001", "start now", "help bogus", "preset nosuch",
+                               "back", "save"};
+    char answer[2048];
+    double seconds;
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        memcpy(&before, &app.cfg, sizeof before);
+        double t = sim_time(app.sim);
+        assert_int_equal(command_do(&app, bad[i], answer, sizeof answer, &seconds), REPLY_ERROR);
+        assert_memory_equal(&before, &app.cfg, sizeof before);
+        assert_true(sim_time(app.sim) == t);
+        assert_null(strchr(answer, '\n'));
+        assert_true(strlen(answer) > 10);
+    }
+    assert_int_equal(command_do(&app, "set frequency 0.712", answer, sizeof answer, &seconds),
+                     REPLY_OK);
+    assert_true(app.model->motor.frequency == 0.712);
+    assert_int_equal(command_do(&app, "  ", answer, sizeof answer, &seconds), REPLY_NONE);
+    assert_int_equal(command_do(&app, "run 2.5", answer, sizeof answer, &seconds), REPLY_RUN);
+    assert_true(seconds == 2.5);
+    assert_int_equal(command_do(&app, "quit", answer, sizeof answer, &seconds), REPLY_QUIT);
+    app_free(&app);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(one_peak_in_free_vibration),
+        cmocka_unit_test(peaks_grow_to_the_steady_state_and_stop),
+        cmocka_unit_test(contact_with_the_left_wall_when_it_is_reached),
+        cmocka_unit_test(drive_on_a_mode_within_two_percent),
+        cmocka_unit_test(refused_commands_change_nothing),
+    };
+    return cmocka_run_group_tests_name("watch", tests, NULL, NULL);
+}
