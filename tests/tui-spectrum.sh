@@ -8,7 +8,9 @@
 # should dominate: the 3rd harmonic on mode 1 for -p square-wave, the drive for
 # -p low-frequency; -p beating shows two peaks, at 0.62 and 0.712 Hz. Tab and ↓ pick the
 # mass; a ghost (g) is named in the legend; F again brings the plots back; 80x24 in ASCII
-# without colour keeps every label.
+# without colour keeps every label. A record too short for the axis (a few steps: its
+# bins 1/(count dt) wider than the axis) says how much it needs, no curve, no peak; a mass
+# that has not moved (amplitude 0) says so, no floor at -300 dB.
 # Run from the repository root as `sh tests/tui-spectrum.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-spectrum: N passed, M failed".
 NAME=tui-spectrum
@@ -19,12 +21,15 @@ start square 120 40 -- -p square-wave
 start low 120 40 -- -p low-frequency
 start beat 120 40 -- -p beating
 start ascii 80 24 LANG=C LC_ALL=C NO_COLOR=1 -- -p square-wave
+start early 120 40
+start still 120 40 -- --amplitude 0
 sessions="square low beat ascii"
 
 # Run each at 10x (space, then ] four times: 1, 2, 4, 5, 10x).
 for s in $sessions; do
     if up $s; then keys Space ] ] ] ]; fi
 done
+sessions="$sessions early still" # these two at 1x, paused
 
 TITLE="Spectrum of mass"
 
@@ -204,6 +209,30 @@ if wait_t 40 30; then
     fi
 else
     fail "ascii: the run should reach t = 40 s at 10x; screen: $(brief)"
+fi
+
+# ---- too few samples, no motion: said in words, no curve or peak drawn ----
+S=early
+if up early; then
+    # 0.06 s: the unpadded bins 16.7 Hz apart against an axis to 2 Hz (twice f2)
+    keys F . . . . . .
+    if wait_t 0.06 3 && wait_re '│ needs [0-9.]+ s of samples: 0\.[0-9] s so far' 3 && lacks 'peak' &&
+        lacks '-300'; then pass; else
+        fail "early: 6 steps should say 'needs .. s of samples: .. s so far', no peak, no -300 dB floor; screen: $(brief "$scr" 'Spectrum|needs|peak')"
+    fi
+    # once the record holds 8 bins of the axis (4 s for an axis to 2 Hz) the spectrum is drawn
+    keys Space
+    if wait_t 4.2 10 && wait_re '└─━ mass 1─peak 0\.[0-9]+ Hz' 3 && lacks 'needs'; then pass; else
+        fail "early: after 4 s the spectrum and its peak should be drawn; screen: $(brief "$scr" 'Spectrum|needs|peak')"
+    fi
+fi
+S=still
+if up still; then
+    keys F Space
+    if wait_t 5 10 && wait_for 'mass 1 has not moved: no spectrum to show' 3 && lacks 'peak' &&
+        lacks '-300'; then pass; else
+        fail "still: with amplitude 0 the view should say 'mass 1 has not moved', no peak, no -300 dB; screen: $(brief "$scr" 'Spectrum|moved|peak')"
+    fi
 fi
 
 all_alive $sessions

@@ -4,7 +4,10 @@
  * selected mass's displacement, and shows its Hann-windowed spectrum (src/core/spectrum.c,
  * zero-padded twice for a smoother curve) in dB, from the top level down 80 dB, against
  * frequency from 0 to twice the highest natural frequency or the drive's, whichever is
- * higher (never past the Nyquist frequency). The natural frequencies are dotted
+ * higher (never past the Nyquist frequency). It waits for a record of MIN_BINS / that
+ * end at least (its resolution 1 / record an eighth of the axis: 4 s for the default axis to 2 Hz), as a
+ * shorter one has too few bins on the axis to show a line or its peak; a mass that has
+ * not moved (every level at SPECTRUM_FLOOR_DB) is said so, not drawn as a floor. The natural frequencies are dotted
  * verticals labelled f1, f2, ...; the drive's harmonics that its waveform has (sine: the
  * fundamental; square and triangle: the odd ones; sawtooth: all) dashed ones labelled
  * 1×, 3×, .... With a ghost (g), its spectrum is drawn dashed under the live one, from
@@ -15,6 +18,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "../app/ghost.h"
 #include "../core/motor.h"
@@ -24,6 +28,7 @@
 #define HEADER_ROWS 2 /* the marker labels: the natural frequencies, then the harmonics */
 #define PAD 2         /* zero padding: the transform is twice the samples' power of two */
 #define MIN_GAP 2     /* columns between two markers of the harmonics, at least */
+#define MIN_BINS 8    /* resolution widths across the axis, at least */
 
 bool spectrum_view_place(struct spectrum_view *sv, struct rect area)
 {
@@ -239,17 +244,22 @@ static void take_samples(struct spectrum_view *sv, const struct app *app)
         return;
     int count = transform(&sv->fft, &sv->size, app->coarse, mass, &step);
     sv->no_memory = count < 0;
+    sv->still = false;
+    sv->need = sv->span = 0.0;
     if (count <= 0)
         return;
-    sv->shown = mass;
+    double fend = top_frequency(app, 0.5 / step);
     sv->span = (count - 1) * step;
+    if (count * step < MIN_BINS / fend) {
+        sv->need = MIN_BINS / fend;
+        return;
+    }
     /* The ghost's own record: its dt, and so its spacing, may differ. */
     sv->ghost_shown = app->ghost &&
                       transform(&sv->ghost_fft, &sv->ghost_size, app->ghost->coarse, mass,
                                 &gstep) > 0;
     double bin_hz = spectrum_bin_hz(sv->fft, 1, step);
     double gbin_hz = sv->ghost_shown ? spectrum_bin_hz(sv->ghost_fft, 1, gstep) : 0.0;
-    double fend = top_frequency(app, 0.5 / step);
     chart_fix_x(c, 0.0, fend);
     /* The axis's top: a multiple of 10 dB above the highest peak, live or ghost, that
      * moves only when a peak passes it or they all fall 20 dB below it. */
@@ -257,6 +267,11 @@ static void take_samples(struct spectrum_view *sv, const struct app *app)
     double hz, top = sv->peak_db;
     if (sv->ghost_shown)
         top = fmax(top, peak(c, sv->ghost_fft, gbin_hz, &hz));
+    if (top <= SPECTRUM_FLOOR_DB) {
+        sv->still = true;
+        return;
+    }
+    sv->shown = mass;
     if (top > sv->top || top < sv->top - 20.0)
         sv->top = 10.0 * ceil(fmax(top, -250.0) / 10.0);
     chart_fix_y(c, sv->top - SPECTRUM_VIEW_RANGE_DB, sv->top);
@@ -319,7 +334,7 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
         take_samples(sv, app);
     int mass = (sv->shown >= 0 ? sv->shown : sv->mass) + 1;
     char title[120], brief[60], span[24];
-    if (sv->shown >= 0 && sv->span < SPECTRUM_VIEW_SECONDS - 0.5)
+    if (sv->span < SPECTRUM_VIEW_SECONDS - 0.5)
         snprintf(span, sizeof span, "%.0f s so far", sv->span);
     else
         snprintf(span, sizeof span, "the last %.0f s", SPECTRUM_VIEW_SECONDS);
@@ -333,8 +348,21 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
             canvas_clear(c->canvas);
         chart_draw(c, title, brief, NULL, NULL, 0);
         struct rect f = c->frame;
-        draw_text(f.y + 1, f.x + 2, f.w - 4, sv->no_memory ? "no memory for the transform"
-                                                          : "not enough samples yet: space runs");
+        /* The reason, shortened to the words before its ':' where it does not fit. */
+        char why[96];
+        if (sv->no_memory)
+            snprintf(why, sizeof why, "no memory for the transform");
+        else if (sv->still)
+            snprintf(why, sizeof why, "mass %d has not moved: no spectrum to show", mass);
+        else if (sv->need > 0.0)
+            snprintf(why, sizeof why, "needs %.1f s of samples: %.1f s so far", sv->need,
+                     sv->span);
+        else
+            snprintf(why, sizeof why, "not enough samples yet: space runs");
+        char *colon = strchr(why, ':');
+        if (draw_width(why) > f.w - 4 && colon)
+            *colon = '\0';
+        draw_text(f.y + 1, f.x + 2, f.w - 4, why);
         return;
     }
     char mass_key[24], peak_text[48], drive[64], modes[32];

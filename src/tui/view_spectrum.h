@@ -28,6 +28,8 @@ struct spectrum_view {
     double top;           /* dB at the top of the axis */
     double peak_hz, peak_db; /* the highest level on the axis */
     bool no_memory;       /* the transform could not be made */
+    bool still;           /* the mass has not moved: every level at the floor */
+    double need;          /* seconds of record the axis needs, while there are fewer */
 };
 
 /* Places the view in the plot area; false on no memory. */
