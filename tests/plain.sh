@@ -53,6 +53,13 @@ if [ "$(odd_bytes "$out")" -eq 0 ] && grep -q '^ok Damping 0.50 N.s/m$' "$out"; 
     fail "the program's own symbols (N·s/m) should be spelled in ASCII: $(show "$out")"
 fi
 
+# the terminal program's key hints are said in commands: no "(space)", no "] runs faster"
+feed 'start\nback\npause\nsweep\n' -n 1
+if grep -q '^error back: pause first to step back$' "$out" &&
+    grep -q '^ok sweeping .*; faster runs it faster, sweep stops it$' "$out"; then pass; else
+    fail "key hints in messages should name commands: $(grep -E '^(ok|error)' "$out" | tr '\n' '|')"
+fi
+
 # ---- each command answered with one line, in order; bad ones say what is allowed ----
 cat >"$tmp/cmds" <<'EOF'
 help

@@ -55,12 +55,13 @@ static void on_signal(int sig)
 }
 
 /* SIGINT, SIGTERM and SIGHUP end the loop with a last line (unless they were ignored
- * when the program started: those stay ignored). */
+ * when the program started: those stay ignored). A write they interrupt goes on (poll()
+ * returns at once all the same). */
 static void catch_signals(void)
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
-        struct sigaction old, sa = {.sa_handler = on_signal};
+        struct sigaction old, sa = {.sa_handler = on_signal, .sa_flags = SA_RESTART};
         sigemptyset(&sa.sa_mask);
         if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
             sigaction(sigs[i], &sa, NULL);
@@ -72,6 +73,32 @@ static double now_s(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The terminal program's key hints in its messages, in the plain mode's words. */
+static const char *const hints[][2] = {
+    {" (space)", ""},
+    {"; space starts", "; start starts it"},
+    {" (f shows them)", ""},
+    {"; ] runs faster, w stops", "; faster runs it faster, sweep stops it"},
+};
+
+/* text with the key hints reworded, into out. */
+static void reword(const char *text, char *out, size_t len)
+{
+    size_t o = 0;
+    while (*text && o + 1 < len) {
+        size_t h = 0, n = sizeof hints / sizeof *hints;
+        while (h < n && strncmp(text, hints[h][0], strlen(hints[h][0])) != 0)
+            h++;
+        if (h < n) {
+            o += (size_t)snprintf(out + o, len - o, "%s", hints[h][1]);
+            text += strlen(hints[h][0]);
+        } else {
+            out[o++] = *text++;
+        }
+    }
+    out[o < len ? o : len - 1] = '\0';
 }
 
 /* text made safe to print into out: control bytes and invalid UTF-8 escaped, the
@@ -110,14 +137,15 @@ static void put(struct plain *p, const char *kind, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 static void put(struct plain *p, const char *kind, const char *fmt, ...)
 {
-    char text[2048], safe[4 * sizeof text];
+    char text[2048], words[2048], safe[4 * sizeof text];
     va_list ap;
     if (p->closed)
         return;
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    make_plain(text, p->utf8, safe, sizeof safe);
+    reword(text, words, sizeof words);
+    make_plain(words, p->utf8, safe, sizeof safe);
     if (printf("%s %s\n", kind, safe) < 0 || fflush(stdout) != 0)
         p->closed = true;
 }
