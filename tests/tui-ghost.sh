@@ -5,7 +5,9 @@
 # plots (dropping it changes no dot); after the live damping changes and the chain runs,
 # the status names the ghost's damping, its outlined blocks show in the scene and its
 # dashed traces in the plots (dropping it changes the plots); g again removes it from the
-# status, legends, scene and plots. At 80x24 without UTF-8 or colour, the same names.
+# status, legends, scene and plots. At 80x24 without UTF-8 or colour, the same names. At
+# 60x20, where the status has no room for the ghost's details, it names the ghost whole
+# or not at all: never cut mid-word ("│ gho") or mid-number.
 # Run from the repository root as `sh tests/tui-ghost.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-ghost: N passed, M failed".
 NAME=tui-ghost
@@ -14,6 +16,7 @@ NAME=tui-ghost
 
 start ghost 120 40 -- -p 3-mass-chain
 start ascii 80 24 LANG=C LC_ALL=C NO_COLOR=1 -- -p 3-mass-chain
+start narrow 60 20
 
 # The preset's damping, which the ghost keeps.
 c_old=$(sed -n 's/^damping *= *//p' presets/3-mass-chain.ini)
@@ -96,6 +99,20 @@ if up ascii; then
     keys g
     if wait_re '\| ghost = live' && has '~ghost' && lacks '┄'; then pass; else
         fail "g at 80x24 without UTF-8: the status should say '| ghost = live' and a legend '~ghost'; screen: $(brief "$scr" 'ghost')"
+    fi
+fi
+
+# narrow_status: the status line (trailing blanks off) ends in whole words: the history
+# count, "│ ghost", or the ghost's full details
+narrow_status() {
+    sed -n '1{s/ *$//;p;}' "$scr" | grep -qE '(history [0-9]+|│ ghost|│ ghost dt 0\.01)$'
+}
+S=narrow
+if up narrow; then
+    # the live dt one step up (0.011 s): the ghost's own 0.01 is a detail to name
+    keys g Down Down Right Space
+    if wait_t 10 20 && wait_re '│ history 500' 3 && poll 2 narrow_status; then pass; else
+        fail "60x20: with a ghost the status should end in whole words (history N, '│ ghost' or '│ ghost dt 0.01'), not a cut word or number; screen: $(brief "$scr" 'history')"
     fi
 fi
 

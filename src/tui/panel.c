@@ -34,10 +34,16 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
              "history %d%s%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
              motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, bar, history_count(app->hist),
              speed, ghost);
-    if (draw_width(line) > l->cols) {
-        if (m->boundary == BOUNDARY_MOTOR)
-            snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
-                     m->motor.frequency);
+    if (draw_width(line) > l->cols && m->boundary == BOUNDARY_MOTOR)
+        snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
+                 m->motor.frequency);
+    /* The short form: the ghost by its name alone, then not at all (the plots' legends
+     * still name it), rather than cut mid-word at the edge. */
+    for (int form = 0; form < 3 && draw_width(line) > l->cols; form++) {
+        if (form == 1 && app->ghost)
+            snprintf(ghost, sizeof ghost, " %s ghost", bar);
+        else if (form == 2)
+            ghost[0] = '\0';
         snprintf(line, sizeof line, " %s t = %.*f s %s %s %s history %d%s%s",
                  app->running ? "Running" : "Paused", d, sim_time(app->sim), bar, motor, bar,
                  history_count(app->hist), speed, ghost);
