@@ -65,14 +65,6 @@ const char *app_control_label(enum control ctl)
     return (unsigned)ctl < CTL_COUNT ? labels[ctl] : "";
 }
 
-int app_time_decimals(double dt)
-{
-    int d = 2;
-    while (d < 6 && fabs(dt * pow(10.0, d) - round(dt * pow(10.0, d))) > 1e-6)
-        d++;
-    return d;
-}
-
 double app_freq_fraction(double f)
 {
     return log(f / APP_FMIN) / log(APP_FMAX / APP_FMIN);

@@ -1,6 +1,8 @@
-/* say.c: the status message, the one line every part of the app says what happened on. */
+/* say.c: the status message, the one line every part of the app says what happened on,
+ * and the digits its times are given with. */
 #include "app.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,4 +18,12 @@ unsigned app_say(struct app *app, bool error, const char *fmt, ...)
     config_escape(line, strlen(line), sizeof line, app->message, sizeof app->message);
     app->message_is_error = error;
     return APP_CHANGED_MESSAGE;
+}
+
+int app_time_decimals(double dt)
+{
+    int d = 2;
+    while (d < 6 && fabs(dt * pow(10.0, d) - round(dt * pow(10.0, d))) > 1e-6)
+        d++;
+    return d;
 }
