@@ -99,6 +99,11 @@ static void write_bash(FILE *out)
           "    elif [[ $cur == --*=* ]]; then\n"
           "        prev=${cur%%=*} pre=${cur%%=*}= cur=${cur#*=}\n"
           "    fi\n"
+          "    # After \"--\" springsim takes nothing: not an option, not a file.\n"
+          "    local i\n"
+          "    for ((i = 1; i < COMP_CWORD; i++)); do\n"
+          "        [[ ${COMP_WORDS[i]} == -- ]] && return 0\n"
+          "    done\n"
           "    case $prev in\n",
           out);
     for (int k = 0; k < CFG_KEY_COUNT; k++) {
@@ -233,10 +238,12 @@ static void write_fish(FILE *out)
     fprintf(out, "# fish completion for %s\n", header);
     fputs("function __springsim_presets\n"
           "    set -l cmd (commandline -opc)[1]\n"
-          "    command $cmd --list-presets 2>/dev/null | string replace -r '^(\\S+)\\s+' "
+          "    command -q -- $cmd\n"
+          "    and command $cmd --list-presets 2>/dev/null | string replace -r '^(\\S+)\\s+' "
           "'$1\\t'\n"
-          "    # A preset file: directories on the way to it, and .ini files.\n"
-          "    set -l cur (commandline -ct)\n"
+          "    # A preset file: directories on the way to it, and .ini files; the word as typed\n"
+          "    # (\"dir\\ x/\", 'dir x/) without its quotes and backslashes.\n"
+          "    set -l cur (commandline -ct | string unescape)\n"
           "    for f in $cur*/ $cur*.ini\n"
           "        printf '%s\\tpreset file\\n' $f\n"
           "    end\n"

@@ -85,6 +85,9 @@ expect_bash "mine.ini notes.txt run.csv sub" -o ""
 expect_bash "run.csv" --output r
 expect_bash "" --masses ""
 expect_bash "" --frequency 0.7
+# springsim takes no arguments: after "--" nothing is offered, not even an option.
+expect_bash "" -- --w
+expect_bash "" --wave sine -- ""
 
 # Every option --help lists, short and long, and no other.
 options=$(words $("$SPRINGSIM" --help | sed -n '/^Options:/,/^$/p' |
@@ -110,6 +113,15 @@ else
         [ "$got" = "${c#*|}" ] && ! [ -s "$tmp/fish.err" ] && pass ||
             fail "fish: springsim ${c%%|*}<TAB>: expected '${c#*|}', got '$got' $(head -c 200 "$tmp/fish.err")"
     done
+    # A preset file in a directory with a blank, its name typed escaped or in quotes.
+    mkdir -p "$tmp/work/my presets" && touch "$tmp/work/my presets/mass 2.ini"
+    for typed in 'my\ presets/m' '"my presets/m' "'my presets/m"; do
+        got=$(cd "$tmp/work" && fish --no-config -c 'source $argv[1]; complete -C "$argv[2] -p $argv[3]"' \
+            "$COMPLETIONS/springsim.fish" "$SPRINGSIM" "$typed" 2>"$tmp/fish.err" | cut -f1)
+        [ "$got" = "my presets/mass 2.ini" ] && ! [ -s "$tmp/fish.err" ] && pass ||
+            fail "fish: springsim -p $typed<TAB>: expected 'my presets/mass 2.ini', got '$got' $(head -c 200 "$tmp/fish.err")"
+    done
+    rm -r "$tmp/work/my presets"
 fi
 
 # zsh: its parser, loading it where compinit runs, then Tab in a real zsh in tmux.
