@@ -37,9 +37,20 @@ chtype draw_line(enum line l)
 
 int draw_width(const char *s)
 {
+    /* Without UTF-8 the text is drawn spelled in ASCII (draw_text): "m/s²" takes 5. */
+    bool spell = !term_utf8();
     int n = 0;
-    for (; *s; s++)
+    while (*s) {
+        size_t len;
+        const char *spelt;
+        if (spell && (unsigned char)*s >= 0x80 && (spelt = spell_ascii(s, &len)) != NULL) {
+            n += (int)strlen(spelt);
+            s += len;
+            continue;
+        }
         n += (*s & 0xC0) != 0x80;
+        s++;
+    }
     return n;
 }
 

@@ -16,7 +16,8 @@ enum line { L_H, L_V, L_UL, L_UR, L_LL, L_LR, L_RTEE, L_TTEE, L_PLUS };
 /* A line-drawing character. */
 chtype draw_line(enum line l);
 
-/* Columns that UTF-8 text s takes (each character one column). */
+/* Columns that UTF-8 text s takes as draw_text draws it (each character one column, or
+ * its ASCII spelling's length where the terminal has no UTF-8: "²" takes 2). */
 int draw_width(const char *s);
 
 /* Writes at most w columns of UTF-8 text s at (y, x); our few symbols are spelled in
