@@ -7,7 +7,8 @@
 # dashed traces in the plots (dropping it changes the plots); g again removes it from the
 # status, legends, scene and plots. At 80x24 without UTF-8 or colour, the same names. At
 # 60x20, where the status has no room for the ghost's details, it names the ghost whole
-# or not at all: never cut mid-word ("│ gho") or mid-number.
+# or not at all: never cut mid-word ("│ gho") or mid-number. A new chain (Masses applied,
+# a preset) drops the ghost and the message says so.
 # Run from the repository root as `sh tests/tui-ghost.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-ghost: N passed, M failed".
 NAME=tui-ghost
@@ -113,6 +114,15 @@ if up narrow; then
     keys g Down Down Right Space
     if wait_t 10 20 && wait_re '│ history 500' 3 && poll 2 narrow_status; then pass; else
         fail "60x20: with a ghost the status should end in whole words (history N, '│ ghost' or '│ ghost dt 0.01'), not a cut word or number; screen: $(brief "$scr" 'history')"
+    fi
+    # a new chain (Masses applied, a preset loaded) drops the ghost and says so
+    keys Space Up Right Enter
+    if wait_for '3 masses, at rest; ghost dropped' 3 && lacks '│ ghost'; then pass; else
+        fail "60x20: applying 3 masses should say '3 masses, at rest; ghost dropped ...' and the status lose it; screen: $(brief "$scr" 'mass|ghost')"
+    fi
+    keys g p Enter
+    if wait_re 'preset .+ \(ghost dropped\): ' 3 && lacks '│ ghost'; then pass; else
+        fail "60x20: loading a preset should say 'preset NAME (ghost dropped): ...'; screen: $(brief "$scr" 'preset|ghost')"
     fi
 fi
 

@@ -178,10 +178,12 @@ static int new_masses(struct app *app, int n, unsigned *what)
     next.masses = n;
     next.x0.count = next.v0.count = 0;
     next.random = false;
+    bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
     if (app_change(app, &next, CHANGE_REBUILD, whys[CTL_MASSES], what) != 0)
         return -1;
     *what |= APP_CHANGED_PENDING |
-             app_say(app, false, "%d mass%s, at rest", n, n == 1 ? "" : "es");
+             app_say(app, false, "%d mass%s, at rest%s", n, n == 1 ? "" : "es",
+                     ghost ? "; ghost dropped with the old chain" : "");
     return 0;
 }
 

@@ -32,16 +32,20 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
     next.color = app->cfg.color;
     next.glyphs = app->cfg.glyphs;
     unsigned what = 0;
+    bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
     if (app_change(app, &next, CHANGE_REBUILD | CHANGE_SETS_FREQUENCY, "the preset", &what)) {
         snprintf(err, sizeof err, "%s", app->message);
         app_say(app, true, "%s: %s", path, err);
         return 0;
     }
     snprintf(app->preset, sizeof app->preset, "%s", next.name[0] ? next.name : name);
+    const char *dropped = ghost ? ", ghost dropped" : "";
     if (next.random && !next.seed_set) /* the seed chosen, so the start can be repeated */
-        return what | app_say(app, false, "preset %s (random positions, seed %llu): %s",
-                              app->preset, (unsigned long long)next.seed, next.description);
-    return what | app_say(app, false, "preset %s: %s", app->preset, next.description);
+        return what | app_say(app, false, "preset %s (random positions, seed %llu%s): %s",
+                              app->preset, (unsigned long long)next.seed, dropped,
+                              next.description);
+    return what | app_say(app, false, "preset %s%s: %s", app->preset,
+                          ghost ? " (ghost dropped)" : "", next.description);
 }
 
 /* A preset name: ASCII letters, digits, '-', '_' and '.', not starting with '.', at most
