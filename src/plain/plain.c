@@ -45,6 +45,7 @@ struct plain {
     char in[LINE_MAX_IN + 1];  /* the command line being read */
     size_t used;               /* bytes of it */
     bool too_long;             /* the line being read is too long: skipped to its end */
+    bool nul;                  /* the line being read holds a NUL byte: refused whole */
 };
 
 static volatile sig_atomic_t quit_signal;
@@ -277,6 +278,28 @@ static bool command(struct plain *p, const char *line)
     return r != REPLY_QUIT;
 }
 
+/* The line read so far, ended (by its newline, or the end of input): refused when too
+ * long or holding a NUL, else a command. False to quit. */
+static bool end_line(struct plain *p)
+{
+    bool too_long = p->too_long, nul = p->nul;
+    p->in[p->used] = '\0';
+    p->used = 0;
+    p->too_long = p->nul = false;
+    if (too_long) {
+        put(p, "error", "a line of more than %d bytes is not a command", LINE_MAX_IN);
+        return true;
+    }
+    if (nul) {
+        put(p, "error", "a line holding a NUL byte (\\x00) is not a command");
+        return true;
+    }
+    size_t n = strlen(p->in);
+    if (n && p->in[n - 1] == '\r')
+        p->in[n - 1] = '\0'; /* a CRLF line */
+    return command(p, p->in);
+}
+
 /* Reads what standard input has; each whole line is a command. False to quit: a quit
  * command, or the end of input (a last line without a newline is still a command). */
 static bool read_input(struct plain *p)
@@ -286,12 +309,7 @@ static bool read_input(struct plain *p)
     if (got < 0)
         return errno == EINTR || errno == EAGAIN;
     if (got == 0) {
-        bool go = true;
-        if (p->used && !p->too_long) {
-            p->in[p->used] = '\0';
-            go = command(p, p->in);
-        }
-        p->used = 0;
+        bool go = !(p->used || p->too_long) || end_line(p);
         if (go) {
             put_status(p);
             put_event(p, "end of input: quit");
@@ -300,24 +318,16 @@ static bool read_input(struct plain *p)
     }
     for (ssize_t i = 0; i < got; i++) {
         if (buf[i] != '\n') {
+            /* A NUL would end the command where it stands: "quit\0x" is not quit. */
+            if (buf[i] == '\0')
+                p->nul = true;
             if (p->used < LINE_MAX_IN)
                 p->in[p->used++] = buf[i];
             else
                 p->too_long = true;
             continue;
         }
-        bool too_long = p->too_long;
-        p->in[p->used] = '\0';
-        p->used = 0;
-        p->too_long = false;
-        if (too_long) {
-            put(p, "error", "a line of more than %d bytes is not a command", LINE_MAX_IN);
-            continue;
-        }
-        size_t n = strlen(p->in);
-        if (n && p->in[n - 1] == '\r')
-            p->in[n - 1] = '\0'; /* a CRLF line */
-        if (!command(p, p->in))
+        if (!end_line(p))
             return false;
     }
     return true;
