@@ -147,6 +147,19 @@ for c in $list; do
     grep -qE "^\| \`$c[ \`]|, \`$c[ \`]" "$tmp/readme" || missing="$missing README:$c"
 done
 if [ -z "$missing" ]; then pass; else fail "commands not documented:$missing"; fi
+# a NUL byte does not end a command where it stands ("quit\0x" is not quit), with or
+# without a newline after it; a CRLF line is its command
+feed 'quit\000x\nstatus\r\nsta\000tus'
+if [ "$(grep -c '^error a line holding a NUL byte' "$out")" -eq 2 ] && grep -q '^ok t=0.00 ' "$out" &&
+    grep -q '^event t=0.00 end of input: quit$' "$out"; then pass; else
+    fail "lines with a NUL byte should be refused whole, not cut at it: $(show "$out")"
+fi
+# a preset without a description is named alone, no ': ' left hanging
+printf '[system]\nmasses = 1\n' >"$tmp/bare preset.ini"
+feed "preset $tmp/bare preset.ini\n"
+if grep -qx "ok preset $tmp/bare preset.ini" "$out"; then pass; else
+    fail "preset without a description: expected 'ok preset $tmp/bare preset.ini': $(grep '^ok' "$out")"
+fi
 
 # ---- status lines every --plain-every seconds of simulated time ----
 for every in 0.5 0.25 2; do

@@ -40,12 +40,13 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
     }
     snprintf(app->preset, sizeof app->preset, "%s", next.name[0] ? next.name : name);
     const char *dropped = ghost ? ", ghost dropped" : "";
+    const char *sep = next.description[0] ? ": " : ""; /* a preset may have none */
     if (next.random && !next.seed_set) /* the seed chosen, so the start can be repeated */
-        return what | app_say(app, false, "preset %s (random positions, seed %llu%s): %s",
-                              app->preset, (unsigned long long)next.seed, dropped,
+        return what | app_say(app, false, "preset %s (random positions, seed %llu%s)%s%s",
+                              app->preset, (unsigned long long)next.seed, dropped, sep,
                               next.description);
-    return what | app_say(app, false, "preset %s%s: %s", app->preset,
-                          ghost ? " (ghost dropped)" : "", next.description);
+    return what | app_say(app, false, "preset %s%s%s%s", app->preset,
+                          ghost ? " (ghost dropped)" : "", sep, next.description);
 }
 
 /* A preset name: ASCII letters, digits, '-', '_' and '.', not starting with '.', at most
