@@ -261,6 +261,19 @@ for input in '' start; do
     case $st in 141 | 1) pass ;; *) fail "stdout closed (${input:-paused}): expected an end within 2 s, status 141 (SIGPIPE) or 1; got '${st:-still running}'" ;; esac
 done
 
+# ---- an output that fails otherwise (a full disk), or no standard input: said, status 1 ----
+if [ -w /dev/full ]; then
+    "$SPRINGSIM" --plain </dev/null >/dev/full 2>"$tmp/err"
+    rc=$?
+    [ "$rc" -eq 1 ] && grep -qx 'springsim: standard output: No space left on device' "$tmp/err" &&
+        pass || fail "stdout /dev/full: expected status 1 and the reason on stderr; got $rc, '$(head -c 200 "$tmp/err")'"
+fi
+"$SPRINGSIM" --plain <&- >"$out" 2>"$tmp/err"
+rc=$?
+[ "$rc" -eq 1 ] && grep -q '^springsim: standard input: ' "$tmp/err" &&
+    grep -q '^event t=0.00 standard input: .*: quit$' "$out" && pass ||
+    fail "stdin closed: expected status 1, the reason on stderr and as the last event; got $rc, '$(head -c 200 "$tmp/err")', $(show "$out")"
+
 # ---- SIGTERM: a last line, then it dies of the signal ----
 background
 echo start >&3

@@ -41,6 +41,8 @@ struct plain {
     double next_status;        /* simulated time of the next status line */
     bool utf8;                 /* the locale is UTF-8: valid UTF-8 text may pass */
     bool closed;               /* standard output has gone */
+    int out_error;             /* why a write failed (EPIPE: the reader went), or 0 */
+    int in_error;              /* why reading standard input failed, or 0 */
     char seen[sizeof ((struct app *)0)->message]; /* the app's message already told */
     char in[LINE_MAX_IN + 1];  /* the command line being read */
     size_t used;               /* bytes of it */
@@ -147,8 +149,11 @@ static void put(struct plain *p, const char *kind, const char *fmt, ...)
     va_end(ap);
     reword(text, words, sizeof words);
     make_plain(words, p->utf8, safe, sizeof safe);
-    if (printf("%s %s\n", kind, safe) < 0 || fflush(stdout) != 0)
+    errno = 0;
+    if (printf("%s %s\n", kind, safe) < 0 || fflush(stdout) != 0) {
         p->closed = true;
+        p->out_error = errno ? errno : EIO;
+    }
 }
 
 /* t as the status line writes it. */
@@ -306,8 +311,17 @@ static bool read_input(struct plain *p)
 {
     char buf[4096];
     ssize_t got = read(STDIN_FILENO, buf, sizeof buf);
-    if (got < 0)
-        return errno == EINTR || errno == EAGAIN;
+    if (got < 0 && (errno == EINTR || errno == EAGAIN))
+        return true;
+    if (got < 0) {
+        /* Standard input closed or unreadable: the end of input, said with its reason. */
+        char why[160];
+        p->in_error = errno;
+        snprintf(why, sizeof why, "standard input: %s: quit", strerror(errno));
+        put_status(p);
+        put_event(p, why);
+        return false;
+    }
     if (got == 0) {
         bool go = !(p->used || p->too_long) || end_line(p);
         if (go) {
@@ -383,8 +397,11 @@ int plain_run(const struct config *cfg, const char *exe_dir)
         int n = poll(fds, 2, p.app.running ? TICK_MS : -1);
         if (n < 0)
             continue; /* EINTR: a signal, looked at above */
-        if (fds[1].revents & (POLLERR | POLLHUP | POLLNVAL))
+        if (fds[1].revents & (POLLERR | POLLHUP | POLLNVAL)) {
             p.closed = true;
+            if (fds[1].revents & POLLNVAL)
+                p.out_error = EBADF;
+        }
         else if (fds[0].revents & (POLLIN | POLLHUP | POLLERR | POLLNVAL))
             go = read_input(&p);
     }
@@ -397,7 +414,15 @@ int plain_run(const struct config *cfg, const char *exe_dir)
         put_event(&p, line);
     }
     app_free(&p.app);
-    /* Die of the signal, as the terminal program does; a closed output ends as a write to
+    /* A write that failed for another reason than a reader gone (a full disk, a closed
+     * descriptor), or standard input unreadable: said, status 1. */
+    int e = p.out_error && p.out_error != EPIPE ? p.out_error : 0;
+    if (!quit_signal && (e || p.in_error)) {
+        fprintf(stderr, "springsim: standard %s: %s\n", e ? "output" : "input",
+                strerror(e ? e : p.in_error));
+        return EXIT_FAILURE;
+    }
+    /* Die of the signal, as the terminal program does; a reader gone ends as a write to
      * it would have (SIGPIPE, or status 1 where SIGPIPE is ignored). */
     int sig = quit_signal ? quit_signal : p.closed ? SIGPIPE : 0;
     if (sig == SIGPIPE)
