@@ -2,7 +2,8 @@
 # tests/tui-views.sh: the analysis views of the interactive program in a real terminal
 # (tmux): m the modes view, n drive at the nearest mode, f the frequency response, w the
 # sine sweep (and its end on every route of a frequency change: the arrow keys, n, a
-# typed frequency), e the energy view (its legend and balance above the data, at 120x40
+# typed frequency; the response of a chain changed to a wall end is cleared, not left
+# standing under the message), e the energy view (its legend and balance above the data, at 120x40
 # and 80x24, the balance and drift small, kinetic + potential constant without damping).
 # Run from the repository root as `sh tests/tui-views.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-views: N passed, M failed".
@@ -18,11 +19,12 @@ start modes80 80 24 -- -p 3-mass-chain
 start near 120 40 -- -p 3-mass-chain --frequency 0.9
 start resp 120 40 -- -p 3-mass-chain
 start wall 120 40 -- -p 3-mass-chain --boundary wall
+start to-wall 120 40 -- -p 3-mass-chain
 start sweep 120 40 -- -p 3-mass-chain
 start sweep-arrow 120 40 -- -p 3-mass-chain
 start sweep-n 120 40 -- -p 3-mass-chain
 start sweep-typed 120 40 -- -p 3-mass-chain
-sessions="energy energy80 nodamp modes modes80 near resp wall sweep sweep-arrow sweep-n sweep-typed"
+sessions="energy energy80 nodamp modes modes80 near resp wall to-wall sweep sweep-arrow sweep-n sweep-typed"
 
 # the long runs first
 for s in energy energy80 nodamp; do
@@ -116,6 +118,21 @@ if up wall; then
     keys w
     if wait_for 'a sweep needs the motor' 3 && has Paused && lacks 'sweep 1/'; then pass; else
         fail "w with --boundary wall: no sweep should start, a message should say it needs the motor; screen: $(brief)"
+    fi
+fi
+# amp_frame: the response view's upper frame, from its title to the phase frame
+amp_frame() { awk '/Response|Frequency response/ { on = 1 } on && /Phase/ { exit } on' "$scr"; }
+if up to-wall; then
+    # the curves of the driven chain, then Right end (the 8th control) set to wall
+    keys f
+    if wait_re '^│ +1e0┤' 3; then
+        keys Down Down Down Down Down Down Down Right
+        if wait_for 'does not drive the chain' 3 && [ "$(amp_frame | grep -c '1e[0-9]')" = 0 ] &&
+            ! amp_frame | LC_ALL=C grep -q "$(printf '\342[\240-\243]')"; then pass; else
+            fail "response after Right end = wall: the old curves and their 1e.. axis should be cleared, not left under the message; screen: $(brief "$scr" 'drive|1e')"
+        fi
+    else
+        fail "to-wall: f should draw the response with a 1e0 tick; screen: $(brief "$scr" '1e')"
     fi
 fi
 

@@ -237,6 +237,10 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     int n = m->n;
     const char *title = "Frequency response: steady-state amplitude (m) against frequency, log-log";
     if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude <= 0.0 || !c->canvas) {
+        /* Empty axes: no curve or tick of a chain driven before is left standing. */
+        c->xt.n = c->yt.n = 0;
+        if (c->canvas)
+            canvas_clear(c->canvas);
         chart_draw(c, title, "Response", NULL, NULL, 0);
         struct rect f = c->frame;
         bool end = m->boundary != BOUNDARY_MOTOR;
