@@ -354,6 +354,6 @@ if wait_for 'ready: 2 masses' 5; then
 else
     fail "TERM=dumb: expected the plain mode's first line 'event t=0.00 ready: 2 masses'; screen: $(brief)"
 fi
-one_line_then_exit term-unknown "springsim: cannot use this terminal (TERM=unknown-terminal)"
+one_line_then_exit term-unknown "springsim: cannot use this terminal (TERM=unknown-terminal; --plain works on any terminal)"
 
 summary

@@ -296,18 +296,20 @@ bool term_start(enum config_color want_color, enum config_glyphs glyphs)
     const char *term = getenv("TERM") ? getenv("TERM") : "unset";
     int addressable = cursor_addressable();
     if (addressable < 0) {
-        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n", term);
+        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s; --plain works on "
+                        "any terminal)\n", term);
         return false;
     }
     if (!addressable) {
         fprintf(stderr, "springsim: this terminal (TERM=%s) cannot move the cursor; the "
-                        "interactive program needs one (use --headless, --modes or --sweep)\n",
+                        "interactive program needs one (--plain works on any terminal)\n",
                 term);
         return false;
     }
     have_shell_modes = tcgetattr(STDOUT_FILENO, &shell_modes) == 0;
     if (!newterm(NULL, stdout, stdin)) {
-        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s)\n", term);
+        fprintf(stderr, "springsim: cannot use this terminal (TERM=%s; --plain works on "
+                        "any terminal)\n", term);
         return false;
     }
     curses_on = true;
