@@ -10,7 +10,9 @@
 # mass; a ghost (g) is named in the legend; F again brings the plots back; 80x24 in ASCII
 # without colour keeps every label. A record too short for the axis (a few steps: its
 # bins 1/(count dt) wider than the axis) says how much it needs, no curve, no peak; a mass
-# that has not moved (amplitude 0) says so, no floor at -300 dB.
+# that has not moved (amplitude 0) says so, no floor at -300 dB. A ghost made at t = 8 s:
+# both spectra cover the time since it was made (the live one is not 60 s against the
+# ghost's few seconds, which would part two equal chains).
 # Run from the repository root as `sh tests/tui-spectrum.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-spectrum: N passed, M failed".
 NAME=tui-spectrum
@@ -23,13 +25,14 @@ start beat 120 40 -- -p beating
 start ascii 80 24 LANG=C LC_ALL=C NO_COLOR=1 -- -p square-wave
 start early 120 40
 start still 120 40 -- --amplitude 0
+start young 120 40
 sessions="square low beat ascii"
 
 # Run each at 10x (space, then ] four times: 1, 2, 4, 5, 10x).
 for s in $sessions; do
     if up $s; then keys Space ] ] ] ]; fi
 done
-sessions="$sessions early still" # these two at 1x, paused
+sessions="$sessions early still young" # these at 1x, paused
 
 TITLE="Spectrum of mass"
 
@@ -232,6 +235,26 @@ if up still; then
     if wait_t 5 10 && wait_for 'mass 1 has not moved: no spectrum to show' 3 && lacks 'peak' &&
         lacks '-300'; then pass; else
         fail "still: with amplitude 0 the view should say 'mass 1 has not moved', no peak, no -300 dB; screen: $(brief "$scr" 'Spectrum|moved|peak')"
+    fi
+fi
+S=young
+if up young; then
+    keys Space
+    if wait_t 8 15; then
+        keys g F
+        if wait_for 'since the ghost was made' 3; then pass; else
+            fail "young: right after g the spectrum should wait for samples 'since the ghost was made'; screen: $(brief "$scr" 'Spectrum|needs')"
+        fi
+        # at t >= 14 s: a span of about t - 8 s, not the live chain's 14 s
+        if wait_t 14 15 && wait_for '┄ghost' 3; then
+            t=$(sed -n '1s/.*t = \([0-9.]*\) s.*/\1/p' "$scr")
+            span=$(sed -n "s/.*Hann window over \([0-9]*\) s so far.*/\1/p" "$scr")
+            if [ -n "$span" ] && awk -v t="$t" -v s="$span" 'BEGIN { exit !(s >= t - 9.5 && s <= t - 6.5) }'; then pass; else
+                fail "young: at t = $t s with a ghost made at 8 s the spectrum should cover about $t - 8 s, covers '$span' s; screen: $(brief "$scr" 'Spectrum')"
+            fi
+        else
+            fail "young: the spectrum with its ghost should be drawn by t = 14 s; screen: $(brief "$scr" 'Spectrum|needs')"
+        fi
     fi
 fi
 

@@ -11,7 +11,8 @@
  * verticals labelled f1, f2, ...; the drive's harmonics that its waveform has (sine: the
  * fundamental; square and triangle: the odd ones; sawtooth: all) dashed ones labelled
  * 1×, 3×, .... With a ghost (g), its spectrum is drawn dashed under the live one, from
- * its own record through a transform of its own. Nothing is allocated at a refresh
+ * its own record through a transform of its own, both records cut to the span they share
+ * (since the ghost was made). Nothing is allocated at a refresh
  * unless a transform's length changes, which it does only while the record grows to
  * 60 s, or when dt changes. */
 #include "view_spectrum.h"
@@ -86,9 +87,9 @@ static int freq_dot(const struct chart *c, double f)
     return (int)lround(axis_dot(&c->xa, f));
 }
 
-/* The newest run of samples dt apart covering at most SPECTRUM_VIEW_SECONDS: a change of
- * dt ends a run. *first gets its first record, *step the spacing; returns its length. */
-static int uniform_run(const struct trail *tr, const double **first, double *step)
+/* The newest run of samples dt apart covering at most span seconds: a change of dt ends
+ * a run. *first gets its first record, *step the spacing; returns its length. */
+static int uniform_run(const struct trail *tr, double span, const double **first, double *step)
 {
     const double *rec = trail_first(tr);
     int w = tr->width, last = tr->count - 1;
@@ -99,7 +100,7 @@ static int uniform_run(const struct trail *tr, const double **first, double *ste
     int i = last - 1;
     while (i > 0) {
         double t0 = rec[(size_t)(i - 1) * w + TRAIL_T], t = rec[(size_t)i * w + TRAIL_T];
-        if (fabs(t - t0 - d) > 1e-6 * d || t1 - t0 > SPECTRUM_VIEW_SECONDS + 0.5 * d)
+        if (fabs(t - t0 - d) > 1e-6 * d || t1 - t0 > span + 0.5 * d)
             break;
         i--;
     }
@@ -108,16 +109,16 @@ static int uniform_run(const struct trail *tr, const double **first, double *ste
     return last - i + 1;
 }
 
-/* One record's spectrum: the selected mass's newest uniform run of samples in tr through
- * *fft, kept at *size points (a length is kept while the samples still fit it twice, so
- * a run that wavers about a power of two does not plan again at every refresh). Sets
- * *step to the samples' spacing and returns how many there were, 0 when too few, -1 on no
- * memory. */
+/* One record's spectrum: the selected mass's newest uniform run of samples in tr, over
+ * at most span seconds, through *fft, kept at *size points (a length is kept while the
+ * samples still fit it twice, so a run that wavers about a power of two does not plan
+ * again at every refresh). Sets *step to the samples' spacing and returns how many there
+ * were, 0 when too few, -1 on no memory. */
 static int transform(struct spectrum **fft, int *size, const struct trail *tr, int mass,
-                     double *step)
+                     double span, double *step)
 {
     const double *first;
-    int count = uniform_run(tr, &first, step);
+    int count = uniform_run(tr, span, &first, step);
     if (count < 4)
         return 0;
     int want = spectrum_length(count, PAD);
@@ -242,7 +243,20 @@ static void take_samples(struct spectrum_view *sv, const struct app *app)
     sv->shown = -1;
     if (!c->canvas)
         return;
-    int count = transform(&sv->fft, &sv->size, app->coarse, mass, &step);
+    /* With a ghost both records are cut to the span they share (the ghost's begins when
+     * it was made), so the two spectra cover the same instants and are equal until
+     * something is changed; a longer live record would differ in resolution and
+     * transients and seem to part from a ghost that has not. */
+    double span = SPECTRUM_VIEW_SECONDS;
+    sv->since_ghost = false;
+    if (app->ghost) {
+        const double *first;
+        double lstep = 0.0, gspan = (uniform_run(app->ghost->coarse, span, &first, &gstep) - 1) * gstep;
+        double lspan = (uniform_run(app->coarse, span, &first, &lstep) - 1) * lstep;
+        sv->since_ghost = gspan < lspan;
+        span = fmax(fmin(gspan, lspan), 0.0);
+    }
+    int count = transform(&sv->fft, &sv->size, app->coarse, mass, span, &step);
     sv->no_memory = count < 0;
     sv->still = false;
     sv->need = sv->span = 0.0;
@@ -257,7 +271,7 @@ static void take_samples(struct spectrum_view *sv, const struct app *app)
     /* The ghost's own record: its dt, and so its spacing, may differ. */
     sv->ghost_shown = app->ghost &&
                       transform(&sv->ghost_fft, &sv->ghost_size, app->ghost->coarse, mass,
-                                &gstep) > 0;
+                                span, &gstep) > 0;
     double bin_hz = spectrum_bin_hz(sv->fft, 1, step);
     double gbin_hz = sv->ghost_shown ? spectrum_bin_hz(sv->ghost_fft, 1, gstep) : 0.0;
     chart_fix_x(c, 0.0, fend);
@@ -355,8 +369,8 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
         else if (sv->still)
             snprintf(why, sizeof why, "mass %d has not moved: no spectrum to show", mass);
         else if (sv->need > 0.0)
-            snprintf(why, sizeof why, "needs %.1f s of samples: %.1f s so far", sv->need,
-                     sv->span);
+            snprintf(why, sizeof why, "needs %.1f s of samples: %.1f s %s", sv->need, sv->span,
+                     sv->since_ghost ? "since the ghost was made" : "so far");
         else
             snprintf(why, sizeof why, "not enough samples yet: space runs");
         char *colon = strchr(why, ':');

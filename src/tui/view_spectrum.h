@@ -30,6 +30,7 @@ struct spectrum_view {
     bool no_memory;       /* the transform could not be made */
     bool still;           /* the mass has not moved: every level at the floor */
     double need;          /* seconds of record the axis needs, while there are fewer */
+    bool since_ghost;     /* the ghost's record, younger than the live one, sets the span */
 };
 
 /* Places the view in the plot area; false on no memory. */
