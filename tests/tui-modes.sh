@@ -6,7 +6,8 @@
 # - the shapes swing while paused (two frames differ), and stop being drawn the same;
 # - Enter on mode 2 starts the chain in it: mode 2 has 100 % of the energy, the others 0 %;
 # - f: the phase panel, -180..180 degrees, and one mass driven below, at and above its
-#   natural frequency lags by atan2(c w, k1 + k2 - m w^2): about 0, 90 and 180 degrees.
+#   natural frequency lags by atan2(c w, k1 + k2 - m w^2): about 0, 90 and 180 degrees;
+# - a mode damped past zeta = 1/sqrt(2) has no resonant peak: said, and no -3 dB band.
 # Run from the repository root as `sh tests/tui-modes.sh`, SPRINGSIM naming the binary.
 # Ends with "tui-modes: N passed, M failed".
 NAME=tui-modes
@@ -19,7 +20,8 @@ start below 120 40 -- -n 1 --frequency 0.3
 start at 120 40 -- -n 1 --frequency 0.7118
 start above 120 40 -- -n 1 --frequency 2
 start small 80 24 -- -p 3-mass-chain
-sessions="zeta enter below at above small"
+start heavy 120 40 -- -n 1 --damping 7
+sessions="zeta enter below at above small heavy"
 
 # ---- m: zeta and Q against the closed form ----
 # zeta_bad: what on the screen disagrees with zeta_j = c / (2 m w_j), Q = 1 / (2 zeta)
@@ -106,6 +108,14 @@ if up small; then
     keys m f
     if wait_re 'Phase' 3 && has_re '│ +-180┤'; then pass; else
         fail "response at 80x24: the phase panel should show; screen: $(brief)"
+    fi
+fi
+
+# ---- zeta = c / (2 sqrt(k m)) = 7 / (2 sqrt(20)) = 0.783: no peak, no -3 dB band ----
+if up heavy; then
+    keys m
+    if wait_re 'ζ 0\.783  Q 0\.639  no resonant peak' 3 && lacks '-3 dB'; then pass; else
+        fail "modes view with zeta 0.783: expected 'ζ 0.783  Q 0.639  no resonant peak' and no '-3 dB'; screen: $(brief "$scr" 'ζ')"
     fi
 fi
 

@@ -51,7 +51,8 @@ static double slowing(const struct app *app)
 }
 
 /* Mode j's damping in words that fit w columns: zeta, Q = 1/(2 zeta), the -3 dB
- * bandwidth 2 zeta f and the damped frequency, or as much of it as fits. */
+ * bandwidth 2 zeta f and the damped frequency, or as much of it as fits; above
+ * zeta = 1/sqrt(2) "no resonant peak" in place of the band, from 1 "overdamped". */
 static void damping_text(const struct app *app, int j, int w, char *buf, size_t len)
 {
     bool u = term_utf8();
@@ -72,6 +73,15 @@ static void damping_text(const struct app *app, int j, int w, char *buf, size_t 
         snprintf(q, sizeof q, "%.3g", 0.5 / z);
     else
         snprintf(q, sizeof q, "%s", u ? "∞" : "inf");
+    if (z >= M_SQRT1_2) {
+        /* The response |X/F| = 1/sqrt((1 - r^2)^2 + (2 zeta r)^2) has its peak at
+         * r^2 = 1 - 2 zeta^2: from zeta = 1/sqrt(2) on there is none, and no -3 dB band
+         * about it to speak of. */
+        snprintf(buf, len, "%s %.3g  Q %s  no resonant peak", zeta, z, q);
+        if (draw_width(buf) > w)
+            snprintf(buf, len, "%s %.3g  Q %s", zeta, z, q);
+        return;
+    }
     /* The longest form that fits: with the damped frequency, the bandwidth, or neither. */
     int k = snprintf(buf, len, "%s %.3g  Q %s", zeta, z, q);
     char more[64];
