@@ -154,6 +154,15 @@ if [ "$(grep -c '^error a line holding a NUL byte' "$out")" -eq 2 ] && grep -q '
     grep -q '^event t=0.00 end of input: quit$' "$out"; then pass; else
     fail "lines with a NUL byte should be refused whole, not cut at it: $(show "$out")"
 fi
+# a change made with a warning (euler past its stability limit) is done: answered ok,
+# naming the value set and the warning, and in effect; a refused value is still an error
+feed 'set integrator euler\nset dt 0.05\ncontrols\nset dt 0.5\n'
+if [ "$(grep -c '^ok .*; warning: dt = ' "$out")" -eq 2 ] &&
+    grep -q '^ok Integrator euler; warning: ' "$out" && grep -q '^ok dt 0.050 s; warning: ' "$out" &&
+    grep -q '^ok controls: .*; dt 0.050 s; integrator euler;' "$out" &&
+    grep -q "^error dt: '0.5' is out of range" "$out"; then pass; else
+    fail "a set that warns should be ok with the value and the warning: $(grep -E '^(ok|error)' "$out" | cut -c 1-120 | tr '\n' '|')"
+fi
 # a preset without a description is named alone, no ': ' left hanging
 printf '[system]\nmasses = 1\n' >"$tmp/bare preset.ini"
 feed "preset $tmp/bare preset.ini\n"

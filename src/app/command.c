@@ -167,11 +167,21 @@ static enum command_reply say_presets(const struct app *app, char *answer, size_
     return REPLY_OK;
 }
 
-/* The answer an app action left in its message: an error if it says so or did nothing. */
+/* A change made, whose message is a warning (dt near a limit of the new chain): done. */
+static bool warned(const struct app *app, unsigned changed)
+{
+    return (changed & ~(unsigned)APP_CHANGED_MESSAGE) && app->message_is_error &&
+           strncmp(app->message, "warning: ", strlen("warning: ")) == 0;
+}
+
+/* The answer an app action left in its message: an error if it says so (not a warning of
+ * a change made) or did nothing. */
 static enum command_reply from_message(const struct app *app, unsigned changed, char *answer,
                                        size_t len)
 {
     snprintf(answer, len, "%s", app->message[0] ? app->message : "nothing changed");
+    if (warned(app, changed))
+        return REPLY_OK;
     return app->message_is_error || (!changed && !app->message[0]) ? REPLY_ERROR : REPLY_OK;
 }
 
@@ -210,7 +220,15 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     }
     if (c == CTL_PRESET)
         return load_preset(app, value, answer, len);
-    return from_message(app, app_set_text(app, (enum control)c, value), answer, len);
+    unsigned changed = app_set_text(app, (enum control)c, value);
+    if (warned(app, changed)) {
+        /* The warning took the place of the value set: both are said. */
+        char now[96];
+        app_control_value(app, (enum control)c, now, sizeof now);
+        snprintf(answer, len, "%s %s; %s", app_control_label((enum control)c), now, app->message);
+        return REPLY_OK;
+    }
+    return from_message(app, changed, answer, len);
 }
 
 /* A whole number from 1 to hi, or 0. */
