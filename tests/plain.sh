@@ -294,4 +294,22 @@ if [ "$rc" -eq 143 ] && tail -n 1 "$out" | grep -q '^event t=[0-9.]* SIGTERM: qu
     fail "SIGTERM: expected 'SIGTERM: quit' last and status 143; status $rc: $(tail -n 2 "$out" | tr '\n' '|')"
 fi
 
+# ... also when its output is a pipe nobody reads, full, the write blocked: it gives the
+# write QUIT_GRACE (2 s) and dies of the signal, not blocked for ever
+rm -f "$tmp/fifo" "$tmp/pid" "$tmp/rc"
+mkfifo "$tmp/fifo"
+{ sh -c 'echo $$ >"$1"; exec "$2" --plain --plain-every 0.01' sh "$tmp/pid" "$SPRINGSIM" \
+    <"$tmp/fifo" 2>/dev/null; echo $? >"$tmp/rc"; } | sleep 15 >/dev/null &
+reader=$!
+exec 3>"$tmp/fifo"
+printf 'start\nset speed 10\n' >&3
+sleep 2.5 # 1000 status lines a second: the 64 KB pipe is full
+kill -TERM "$(cat "$tmp/pid")"
+i=0
+while [ ! -s "$tmp/rc" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+exec 3>&-
+kill "$reader" 2>/dev/null
+[ "$(cat "$tmp/rc" 2>/dev/null)" = 143 ] && pass ||
+    fail "SIGTERM with stdout a full pipe: expected status 143 within 5 s; got '$(cat "$tmp/rc" 2>/dev/null || echo still running)'"
+
 summary

@@ -33,6 +33,7 @@
 #define TICK_MS 20       /* while running: how often time is brought up to the clock */
 #define LINE_MAX_IN 1024 /* longest command line read; longer ones are refused */
 #define STEP_BUDGET 0.05 /* wall seconds of stepping before input is looked at again */
+#define QUIT_GRACE 2     /* wall seconds a quit signal leaves a blocked write to finish */
 
 struct plain {
     struct app app;
@@ -55,11 +56,20 @@ static volatile sig_atomic_t quit_signal;
 static void on_signal(int sig)
 {
     quit_signal = sig;
+    alarm(QUIT_GRACE);
+}
+
+/* Its only work is to interrupt a write still blocked QUIT_GRACE after a quit signal. */
+static void on_alarm(int sig)
+{
+    (void)sig;
 }
 
 /* SIGINT, SIGTERM and SIGHUP end the loop with a last line (unless they were ignored
  * when the program started: those stay ignored). A write they interrupt goes on (poll()
- * returns at once all the same). */
+ * returns at once all the same), for QUIT_GRACE seconds: a reader that reads nothing
+ * (a full pipe) would block it for ever, so SIGALRM then interrupts it (EINTR), output is
+ * given up and the program dies of the signal. */
 static void catch_signals(void)
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
@@ -69,6 +79,9 @@ static void catch_signals(void)
         if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
             sigaction(sigs[i], &sa, NULL);
     }
+    struct sigaction alarm_sa = {.sa_handler = on_alarm}; /* no SA_RESTART */
+    sigemptyset(&alarm_sa.sa_mask);
+    sigaction(SIGALRM, &alarm_sa, NULL);
 }
 
 static double now_s(void)
