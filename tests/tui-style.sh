@@ -68,6 +68,7 @@ exercise() {
     wait_for '0 all plots' || fail "$1: 4 should enlarge the x-v plot; screen: $(brief)"
     keys '?'
     wait_for 'preset menu' || fail "$1: ? should show the help; screen: $(brief)"
+    cp "$scr" "$tmp/$1.help"
     keys Escape
     wait_gone 'preset menu'
     keys 0
@@ -87,6 +88,10 @@ for s in ascii preset; do
         # drawn, not cut at the frame ("3 Acceleration (m/s^2 ---").
         grep -qF 'Acceleration (m/s^2) ' "$scr" && grep -qF 'x-a (m, m/s^2) ' "$scr" && pass ||
             fail "$s: a plot title spelled in ASCII is cut: $(grep -o '[0-9] [A-Za-z-]* ([^-]*' "$scr" | tr '\n' '|')"
+        # ... and the help's keys: the column is as wide as the widest spelled in ASCII
+        grep -qF '| PgDn Shift+Left H  decrease, coarse' "$tmp/$s.help" &&
+            grep -qF '| PgUp Shift+Right L increase, coarse' "$tmp/$s.help" && pass ||
+            fail "$s: the help's keys cut in ASCII: $(grep -F 'coarse' "$tmp/$s.help" | tr '\n' '|')"
     fi
 done
 

@@ -13,7 +13,6 @@
 #define HELP_WIDTH 80 /* the help box, at most */
 
 #define HELP_MAX_ROWS 160 /* wrapped help rows, at most */
-#define KEY_COLS 14       /* the help's column of keys */
 
 /* The notes after the keys, on the mouse and typing. */
 static const char *const notes[] = {
@@ -31,6 +30,35 @@ struct help_row {
     bool note;               /* a note: across the whole box, not in the text column */
 };
 
+/* The keys of binding b and the other keys of its action, as the help shows them. */
+static void binding_keys(const struct binding *b, char *keys, size_t len)
+{
+    bool utf8 = term_utf8();
+    const char *name = utf8 ? b->name : b->ascii;
+    snprintf(keys, len, "%s", name);
+    for (const struct binding *o = b + 1; o->name && !o->help; o++) {
+        const char *other = utf8 ? o->name : o->ascii;
+        if (o->action == b->action && strcmp(other, name) != 0 && !strstr(keys, other))
+            snprintf(keys + strlen(keys), len - strlen(keys), " %s", other);
+    }
+}
+
+/* The help's column of keys: as wide as the widest binding's keys as drawn (14 columns,
+ * 17 spelled in ASCII: "PgDn Shift+Left H"). */
+static int key_cols(void)
+{
+    int cols = 0;
+    char keys[64];
+    for (const struct binding *b = input_bindings; b->name; b++) {
+        if (!b->help)
+            continue;
+        binding_keys(b, keys, sizeof keys);
+        int w = draw_width(keys);
+        cols = w > cols ? w : cols;
+    }
+    return cols;
+}
+
 /* The help laid out for a box w columns wide: each binding's text, then the notes,
  * wrapped at spaces so no line is cut. Returns the rows. */
 static int help_rows_for(int w, struct help_row *rows)
@@ -38,6 +66,7 @@ static int help_rows_for(int w, struct help_row *rows)
     int n = 0;
     const int nnotes = (int)(sizeof notes / sizeof *notes);
     const struct binding *b = input_bindings;
+    const int key_w = key_cols();
     for (int note = -1; note < nnotes && n < HELP_MAX_ROWS;) {
         const struct binding *key = NULL;
         const char *text;
@@ -49,7 +78,7 @@ static int help_rows_for(int w, struct help_row *rows)
                 note = 0;
                 continue;
             }
-            key = b, text = b->help, width = w - KEY_COLS - 5;
+            key = b, text = b->help, width = w - key_w - 5;
             b++;
         } else {
             text = notes[note++], width = w - 4;
@@ -78,33 +107,21 @@ static int help_rows_for(int w, struct help_row *rows)
     return n;
 }
 
-/* The keys of binding b and the other keys of its action, as the help shows them. */
-static void binding_keys(const struct binding *b, char *keys, size_t len)
-{
-    bool utf8 = term_utf8();
-    const char *name = utf8 ? b->name : b->ascii;
-    snprintf(keys, len, "%s", name);
-    for (const struct binding *o = b + 1; o->name && !o->help; o++) {
-        const char *other = utf8 ? o->name : o->ascii;
-        if (o->action == b->action && strcmp(other, name) != 0 && !strstr(keys, other))
-            snprintf(keys + strlen(keys), len - strlen(keys), " %s", other);
-    }
-}
-
 /* Draws help row h at row y of box r. */
 static void help_line(const struct help_row *h, int y, struct rect r)
 {
     char text[256];
     snprintf(text, sizeof text, "%.*s", h->len, h->text);
+    int key_w = key_cols();
     if (h->b) {
         char keys[64];
         binding_keys(h->b, keys, sizeof keys);
-        draw_text_attr(y, r.x + 2, KEY_COLS, A_BOLD, keys);
+        draw_text_attr(y, r.x + 2, key_w, A_BOLD, keys);
     }
     if (h->note)
         draw_text(y, r.x + 2, r.w - 4, text);
     else
-        draw_text(y, r.x + 3 + KEY_COLS, r.w - KEY_COLS - 5, text);
+        draw_text(y, r.x + 3 + key_w, r.w - key_w - 5, text);
 }
 
 /* A centred box of h x w, cleared, with a title. */
