@@ -136,7 +136,8 @@ $(TEST_BIN): $(APP_OBJ)
 $(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
 # test_app, test_app_rules and test_ghost share a fixture that makes the chain's allocations
 # fail on demand and counts the modes' computations (tests/app_fixture.c wraps them).
-APP_WRAPPED = config_model sim_new history_new trail_new sweep_new modes_compute limits_modes
+APP_WRAPPED = config_model sim_new history_new trail_new trail_new_motion sweep_new modes_compute \
+              limits_modes
 APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules $(BUILD)/tests/test_ghost
 APP_FIXTURE = $(BUILD)/tests/app_fixture.o
 $(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)

@@ -30,6 +30,8 @@ struct history *__real_history_new(const struct sim *s, int capacity);
 struct history *__wrap_history_new(const struct sim *s, int capacity);
 struct trail *__real_trail_new(int n, int capacity);
 struct trail *__wrap_trail_new(int n, int capacity);
+struct trail *__real_trail_new_motion(int n, int capacity);
+struct trail *__wrap_trail_new_motion(int n, int capacity);
 struct sweep *__real_sweep_new(int n, int points);
 struct sweep *__wrap_sweep_new(int n, int points);
 int __real_modes_compute(const struct model *m, double *freq, double *shapes);
@@ -60,6 +62,11 @@ struct history *__wrap_history_new(const struct sim *s, int capacity)
 struct trail *__wrap_trail_new(int n, int capacity)
 {
     return fail_now() ? NULL : __real_trail_new(n, capacity);
+}
+
+struct trail *__wrap_trail_new_motion(int n, int capacity)
+{
+    return fail_now() ? NULL : __real_trail_new_motion(n, capacity);
 }
 
 struct sweep *__wrap_sweep_new(int n, int points)

@@ -42,10 +42,11 @@ static struct ghost *ghost_new(const struct app *app)
     g->model = model_new(live->n);
     g->sim = g->model ? sim_new(live, dt) : NULL;
     g->hist = g->sim ? history_new(g->sim, HISTORY_DEPTH) : NULL;
-    g->trail = trail_new(live->n, records(TRAIL_FINE_RECORDS, TRAIL_FINE_SPACING,
-                                          app->sample_every, dt));
-    g->coarse = trail_new(live->n, records(TRAIL_COARSE_RECORDS, TRAIL_COARSE_SPACING,
-                                           app->coarse_every, dt));
+    /* No energy plot shows the ghost: its samples keep the motion alone. */
+    g->trail = trail_new_motion(live->n, records(TRAIL_FINE_RECORDS, TRAIL_FINE_SPACING,
+                                                 app->sample_every, dt));
+    g->coarse = trail_new_motion(live->n, records(TRAIL_COARSE_RECORDS, TRAIL_COARSE_SPACING,
+                                                  app->coarse_every, dt));
     /* Everything the live chain carries from step to step, so the two step alike. */
     if (!g->hist || !g->trail || !g->coarse || sim_copy(g->sim, app->sim) != 0) {
         ghost_free(g);

@@ -6,13 +6,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct trail *trail_new(int n, int capacity)
+/* A trail whose records take width doubles. */
+static struct trail *trail_of(int n, int capacity, int width)
 {
     struct trail *tr = calloc(1, sizeof *tr);
     if (!tr)
         return NULL;
     tr->n = n;
-    tr->width = 2 + 3 * n + TRAIL_ENERGIES;
+    tr->width = width;
     tr->capacity = capacity;
     tr->buf = malloc(2 * (size_t)capacity * (size_t)tr->width * sizeof *tr->buf);
     tr->accel = malloc((size_t)n * sizeof *tr->accel);
@@ -21,6 +22,16 @@ struct trail *trail_new(int n, int capacity)
         return NULL;
     }
     return tr;
+}
+
+struct trail *trail_new(int n, int capacity)
+{
+    return trail_of(n, capacity, 2 + 3 * n + TRAIL_ENERGIES);
+}
+
+struct trail *trail_new_motion(int n, int capacity)
+{
+    return trail_of(n, capacity, 2 + 3 * n);
 }
 
 void trail_free(struct trail *tr)
@@ -50,13 +61,15 @@ void trail_push(struct trail *tr, const struct sim *s)
         a[TRAIL_V(tr, i)] = v[i];
         a[TRAIL_A(tr, i)] = tr->accel[i];
     }
-    struct energy e;
-    sim_energy(s, &e);
-    a[TRAIL_E(tr, TRAIL_KE)] = e.kinetic;
-    a[TRAIL_E(tr, TRAIL_PE)] = e.potential;
-    a[TRAIL_E(tr, TRAIL_DISS)] = e.dissipated;
-    a[TRAIL_E(tr, TRAIL_WORK)] = e.motor_work;
-    a[TRAIL_E(tr, TRAIL_CONTACT)] = e.contact;
+    if (tr->width > TRAIL_E(tr, 0)) {
+        struct energy e;
+        sim_energy(s, &e);
+        a[TRAIL_E(tr, TRAIL_KE)] = e.kinetic;
+        a[TRAIL_E(tr, TRAIL_PE)] = e.potential;
+        a[TRAIL_E(tr, TRAIL_DISS)] = e.dissipated;
+        a[TRAIL_E(tr, TRAIL_WORK)] = e.motor_work;
+        a[TRAIL_E(tr, TRAIL_CONTACT)] = e.contact;
+    }
     memcpy(b, a, (size_t)tr->width * sizeof *a);
     tr->count++;
 }

@@ -7,7 +7,8 @@
 
 struct trail {
     int n;          /* masses */
-    int width;      /* doubles per record: t, u, x[n], v[n], a[n], 5 energies */
+    int width;      /* doubles per record: t, u, x[n], v[n], a[n], then 5 energies
+                     * unless it keeps the motion alone */
     int capacity;   /* records kept */
     int head;       /* index of the oldest record */
     int count;      /* records kept now */
@@ -36,6 +37,10 @@ enum { TRAIL_KE, TRAIL_PE, TRAIL_DISS, TRAIL_WORK, TRAIL_CONTACT, TRAIL_ENERGIES
 
 /* A trail of capacity records for n masses, or NULL on no memory. */
 struct trail *trail_new(int n, int capacity);
+
+/* As trail_new, the motion alone: records without the energies (TRAIL_E is not to be
+ * read from it), for a chain no energy plot shows (the ghost). */
+struct trail *trail_new_motion(int n, int capacity);
 
 /* Frees a trail. */
 void trail_free(struct trail *tr);
