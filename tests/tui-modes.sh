@@ -21,7 +21,10 @@ start at 120 40 -- -n 1 --frequency 0.7118
 start above 120 40 -- -n 1 --frequency 2
 start small 80 24 -- -p 3-mass-chain
 start heavy 120 40 -- -n 1 --damping 7
-sessions="zeta enter below at above small heavy"
+start six 60 20 -- -n 6
+start wallend 120 40 -- -p 3-mass-chain --boundary wall
+start sweeping 120 40 -- -p 3-mass-chain
+sessions="zeta enter below at above small heavy six wallend sweeping"
 
 # ---- m: zeta and Q against the closed form ----
 # zeta_bad: what on the screen disagrees with zeta_j = c / (2 m w_j), Q = 1 / (2 zeta)
@@ -116,6 +119,36 @@ if up heavy; then
     keys m
     if wait_re 'ζ 0\.783  Q 0\.639  no resonant peak' 3 && lacks '-3 dB'; then pass; else
         fail "modes view with zeta 0.783: expected 'ζ 0.783  Q 0.639  no resonant peak' and no '-3 dB'; screen: $(brief "$scr" 'ζ')"
+    fi
+fi
+
+# ---- 60x20, six modes on one row each: the rows left over give every mode its bar ----
+if up six; then
+    keys m Space
+    bars_ok() { [ "$(grep -cE '│ E .*%' "$scr")" -ge 5 ]; }
+    if poll 3 bars_ok; then pass; else
+        fail "modes view at 60x20 with 6 masses: each mode (but one) should get its energy bar; screen: $(brief "$scr" 'mode|E ')"
+    fi
+fi
+
+# ---- a wall end does not drive: no mode mark on the Frequency control ----
+if up wallend; then
+    keys m
+    if wait_re 'mode 3  0\.930 Hz' 3 && has_re 'Frequency +0\.712 Hz' && ! has_re 'Frequency.*◆'; then pass; else
+        fail "wall end: the Frequency control should not say it drives a mode; screen: $(brief "$scr" 'Frequency')"
+    fi
+fi
+
+# ---- Enter during a sweep says the sweep stopped ----
+if up sweeping; then
+    keys w
+    if wait_re 'sweeping' 3; then
+        keys m Down Enter
+        if wait_re 'sweep stopped; started in mode 2' 3; then pass; else
+            fail "Enter on a mode during a sweep should say the sweep stopped; screen: $(brief)"
+        fi
+    else
+        fail "w should start a sweep; screen: $(brief)"
     fi
 fi
 

@@ -413,10 +413,11 @@ unsigned app_start_mode(struct app *app, int j)
     }
     app->cfg.x0.count = app->cfg.v0.count = n;
     app->cfg.random = false;
+    bool sweeping = app->sweep->active;
     unsigned what = app_reset(app) | app_set_running(app, true);
     bool driven = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
-    return what | app_say(app, false, "started in mode %d (%.3f Hz), largest |x| %.2f m%s", j + 1,
-                          app->modes[j], amp,
+    return what | app_say(app, false, "%sstarted in mode %d (%.3f Hz), largest |x| %.2f m%s",
+                          sweeping ? "sweep stopped; " : "", j + 1, app->modes[j], amp,
                           driven ? "; the motor still drives (Amplitude 0 leaves it alone)"
                                  : amp < APP_MODE_AMPLITUDE ? ", so no two masses touch" : "");
 }
@@ -467,8 +468,8 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
     char number[32];
     format_value(v, decimals, number, sizeof number);
     snprintf(buf, len, "%s %s", number, config_options[ranges[ctl].key].unit);
-    if (ctl == CTL_FREQUENCY && app->modes_ok) {
-        /* On a natural frequency (within 0.5 %): say which. */
+    if (ctl == CTL_FREQUENCY && app->modes_ok && m->boundary == BOUNDARY_MOTOR) {
+        /* Driving on a natural frequency (within 0.5 %): say which. */
         int j = modes_nearest(app->modes, m->n, v);
         if (fabs(v - app->modes[j]) <= 0.005 * app->modes[j])
             snprintf(buf + strlen(buf), len - strlen(buf), " ◆ f%d", j + 1);

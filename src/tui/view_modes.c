@@ -168,9 +168,10 @@ static void draw_shape(struct modes_view *v, const struct app *app, int j, struc
     draw_canvas(c, top, r.x + 1);
 }
 
-/* One mode's cell: title, damping, energy bar, then the shape. */
+/* One mode's cell: title, damping, energy bar, then the shape in what is left of its
+ * first shape_rows rows. */
 static void draw_cell(struct modes_view *v, const struct app *app, int j, struct rect r,
-                      bool driven, bool selected)
+                      int shape_rows, bool driven, bool selected)
 {
     char title[80];
     const char *mark = !selected ? "" : term_utf8() ? "▸ " : "> ";
@@ -195,6 +196,7 @@ static void draw_cell(struct modes_view *v, const struct app *app, int j, struct
         if (draw_width(title) + plen + 2 <= r.w - 2)
             draw_text_attr(r.y, r.x + r.w - 1 - plen, plen, A_BOLD, pct);
     }
+    r.h = shape_rows;
     draw_shape(v, app, j, r);
 }
 
@@ -244,14 +246,18 @@ void modes_view_draw(struct modes_view *v, const struct app *app, int selected, 
             best = score, best_cols = cols;
     }
     int cols = best_cols, rows = (n + cols - 1) / cols;
+    /* Rows left over go to the cells one each, top first (their text gets the room); the
+     * shapes all take the same height, so one canvas serves them all. */
     int cw = in.w / cols, ch = in.h / rows;
     int driven = modes_nearest(app->modes, n, m->motor.frequency);
     bool on_mode = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0 &&
                    fabs(m->motor.frequency - app->modes[driven]) <= 0.02 * app->modes[driven];
     for (int j = 0; j < n; j++) {
-        struct rect r = {in.y + (j / cols) * ch, in.x + (j % cols) * cw, ch, cw};
-        if (ch < 1 || r.y >= in.y + in.h)
+        int row = j / cols, extra = in.h - rows * ch;
+        int y = in.y + row * ch + (row < extra ? row : extra);
+        struct rect r = {y, in.x + (j % cols) * cw, ch + (row < extra), cw};
+        if (r.h < 1 || r.y >= in.y + in.h)
             continue;
-        draw_cell(v, app, j, r, on_mode && j == driven, j == selected);
+        draw_cell(v, app, j, r, ch, on_mode && j == driven, j == selected);
     }
 }
