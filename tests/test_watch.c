@@ -146,6 +146,53 @@ static void contact_with_the_left_wall_when_it_is_reached(void **state)
     app_free(&app);
 }
 
+/* Contact lines and what they stand for, second by second of simulated time. */
+struct tally {
+    const struct app *app;
+    int lines[64];   /* contact lines said in second k */
+    long contacts;   /* contacts they stand for: one each, or the N of "N more" */
+};
+
+static void count_contacts(void *ctx, const char *event)
+{
+    struct tally *y = ctx;
+    if (strncmp(event, "contact: ", 9) != 0)
+        return;
+    int k = (int)floor(sim_time(y->app->sim) - 1e-9);
+    if (k >= 0 && k < 64)
+        y->lines[k]++;
+    int more;
+    y->contacts += sscanf(event, "contact: %d more", &more) == 1 ? more : 1;
+}
+
+/* Ten masses rattling against each other: every contact is accounted for (the lines one
+ * by one plus the "N more" lines add up to what a watch without a limit tells), and no
+ * second of simulated time gets more than WATCH_CONTACT_BURST + 1 lines. */
+static void a_rattling_chain_is_told_in_bursts(void **state)
+{
+    (void)state;
+    static struct app app;
+    static const char *const opts[] = {"masses", "10", "random", NULL, "seed", "4",
+                                       "amplitude", "1", NULL, NULL};
+    one_mass(&app, opts);
+    struct watch limited, all;
+    struct tally said = {.app = &app}, every = {.app = &app};
+    watch_init(&limited, &app);
+    watch_init(&all, &app);
+    all.burst = 1 << 30;
+    while (sim_time(app.sim) < 20.0 + 1e-9) {
+        assert_true(app_step(&app) != 0);
+        watch_step(&limited, &app, count_contacts, &said);
+        watch_step(&all, &app, count_contacts, &every);
+    }
+    assert_true(every.contacts > 10 * 20 / 2); /* more than the limit lets through */
+    assert_int_equal(said.contacts, every.contacts);
+    for (int k = 0; k < 20; k++)
+        if (said.lines[k] > WATCH_CONTACT_BURST + 1)
+            fail_msg("second %d: %d contact lines", k, said.lines[k]);
+    app_free(&app);
+}
+
 static void drive_on_a_mode_within_two_percent(void **state)
 {
     (void)state;
@@ -207,6 +254,7 @@ int main(void)
         cmocka_unit_test(one_peak_in_free_vibration),
         cmocka_unit_test(peaks_grow_to_the_steady_state_and_stop),
         cmocka_unit_test(contact_with_the_left_wall_when_it_is_reached),
+        cmocka_unit_test(a_rattling_chain_is_told_in_bursts),
         cmocka_unit_test(drive_on_a_mode_within_two_percent),
         cmocka_unit_test(refused_commands_change_nothing),
     };

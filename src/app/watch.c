@@ -32,12 +32,15 @@ static void take(struct watch *w, const struct app *app, bool clear)
     if (clear) {
         memset(w->peak, 0, sizeof w->peak);
         memset(w->touching, 0, sizeof w->touching);
+        w->second = w->t;
+        w->told = w->held = 0;
     }
 }
 
 void watch_init(struct watch *w, const struct app *app)
 {
     memset(w, 0, sizeof *w);
+    w->burst = WATCH_CONTACT_BURST;
     take(w, app, true);
     w->on_mode = watch_on_mode(app);
 }
@@ -56,10 +59,26 @@ static void look_drive(struct watch *w, const struct app *app, watch_say *say, v
     w->on_mode = j;
 }
 
+/* At the end of a second of simulated time: the contacts held back in it, in one line. */
+static void close_second(struct watch *w, double t, watch_say *say, void *ctx)
+{
+    if (t < w->second + 1.0)
+        return;
+    if (w->held > 0) {
+        char line[120];
+        snprintf(line, sizeof line, "contact: %d more from t = %.2f to %.2f s", w->held,
+                 w->second, w->second + 1.0);
+        say(ctx, line);
+    }
+    w->second += floor(t - w->second);
+    w->told = w->held = 0;
+}
+
 /* The constraint of a step's contacts: the one nearest to touching at its end. */
 static void look_contacts(struct watch *w, const struct app *app, watch_say *say, void *ctx)
 {
     const struct sim *s = app->sim;
+    close_second(w, sim_time(s), say, ctx);
     const struct model *m = sim_model(s);
     struct collision_limits l;
     collision_limits(&l, m);
@@ -74,7 +93,10 @@ static void look_contacts(struct watch *w, const struct app *app, watch_say *say
             now[c] = g <= 1e-9;
         }
         now[k] = true;
-        if (!w->touching[k]) {
+        if (!w->touching[k] && w->told >= w->burst) {
+            w->held++;
+        } else if (!w->touching[k]) {
+            w->told++;
             char line[120];
             if (k == 0)
                 snprintf(line, sizeof line, "contact: mass 1 and the left wall");

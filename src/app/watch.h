@@ -6,7 +6,10 @@
  * - A contact: a step in which the chain's contacts acted (sim_last_contacts beyond the
  *   velocity cap's), named by the constraint nearest to touching at its end, reported
  *   only when that constraint was not already in contact at the step before, so a mass
- *   resting against a wall or a neighbour is one contact, not one a step.
+ *   resting against a wall or a neighbour is one contact, not one a step. At most
+ *   WATCH_CONTACT_BURST are told one by one in a second of simulated time; the rest of
+ *   that second are counted and told in one line when it is over ("contact: 12 more from
+ *   t = 5.00 to 6.00 s"), so a chain of ten rattling masses does not flood a reader.
  * - A peak: at a turning point of mass i (its velocity changes sign between two steps;
  *   the larger |x_i| of the two), at least
  *   WATCH_PEAK_RISE above the last peak reported for that mass since t = 0 and at least
@@ -25,6 +28,7 @@
 #define WATCH_PEAK_RISE 0.05 /* a peak reported is this far above the last (relative) */
 #define WATCH_PEAK_MIN 1e-3  /* smaller swings make no peaks (m) */
 #define WATCH_ON_MODE 0.02   /* the drive is on a natural frequency within this (relative) */
+#define WATCH_CONTACT_BURST 3 /* contacts told one by one in a second of simulated time */
 
 struct watch {
     int n;                              /* masses when last looked at */
@@ -34,6 +38,11 @@ struct watch {
     double peak[APP_MAX_MASSES];        /* the last peak reported of each mass (m) */
     bool touching[APP_MAX_MASSES + 1];  /* constraints in contact at the last step */
     int on_mode;                        /* the natural frequency the drive is on, or -1 */
+    int burst;                          /* contacts told one by one a second (watch_init:
+                                         * WATCH_CONTACT_BURST) */
+    double second;                      /* the start of the second being counted (s) */
+    int told;                           /* contacts told one by one in it */
+    int held;                           /* contacts in it not told yet */
 };
 
 /* Receives one event, a line of text without a newline. */
