@@ -129,6 +129,26 @@ static void phase_one_mass(void **state)
     model_free(md);
 }
 
+/* Contacts are counted while a sweep runs, from zero at each start, and not otherwise. */
+static void contacts_while_sweeping(void **state)
+{
+    (void)state;
+    struct sweep *s = sweep_new(1, 2);
+    sweep_count_contacts(s, 5);
+    assert_int_equal(s->contacts, 0);
+    sweep_start(s, 1.0, 2.0, 1.0, 0.0);
+    sweep_count_contacts(s, 2);
+    sweep_count_contacts(s, 0);
+    sweep_count_contacts(s, 3);
+    assert_int_equal(s->contacts, 5);
+    sweep_stop(s);
+    sweep_count_contacts(s, 4);
+    assert_int_equal(s->contacts, 5); /* kept after it stops, for the view to say */
+    sweep_start(s, 1.0, 2.0, 1.0, 10.0);
+    assert_int_equal(s->contacts, 0);
+    sweep_free(s);
+}
+
 static void nearest_mode(void **state)
 {
     (void)state;
@@ -146,6 +166,7 @@ int main(void)
         cmocka_unit_test(matches_theory),
         cmocka_unit_test(phase_of_signals),
         cmocka_unit_test(phase_one_mass),
+        cmocka_unit_test(contacts_while_sweeping),
         cmocka_unit_test(nearest_mode),
     };
     return cmocka_run_group_tests_name("sweep", tests, NULL, NULL);

@@ -417,6 +417,7 @@ unsigned app_step(struct app *app)
     unsigned what = APP_CHANGED_STATE | note_cap(app) | ghost_follow(app);
     const struct motor *drive = &sim_model(app->sim)->motor;
     double t = sim_time(app->sim);
+    sweep_count_contacts(app->sweep, sim_last_contacts(app->sim) - sim_last_capped(app->sim));
     switch (sweep_update(app->sweep, t, sim_x(app->sim), drive->frequency * t + drive->phase)) {
     case SWEEP_RETUNE:
         what |= retune(app, sweep_frequency(app->sweep));

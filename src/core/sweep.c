@@ -56,6 +56,7 @@ void sweep_start(struct sweep *s, double fmin, double fmax, double settle, doubl
             s->peak[p * s->n + i] = s->phase[p * s->n + i] = NAN;
     }
     s->index = 0;
+    s->contacts = 0;
     s->active = true;
     s->measuring = false;
     s->t_point = t;
@@ -113,6 +114,12 @@ enum sweep_event sweep_update(struct sweep *s, double t, const double *x, double
     }
     plan_point(s);
     return SWEEP_RETUNE;
+}
+
+void sweep_count_contacts(struct sweep *s, int contacts)
+{
+    if (s->active && contacts > 0)
+        s->contacts += contacts;
 }
 
 int sweep_measured(const struct sweep *s)

@@ -29,6 +29,7 @@ struct sweep {
     double *phase;  /* points x n phase of x to the drive (degrees, (-180, 180]); NAN
                      * until measured */
     double *in, *quad; /* n sums of x sin(theta) and x cos(theta) over this point */
+    long contacts;  /* contacts while it ran: with any, the linear theory does not hold */
 };
 
 /* A sweep of up to points frequencies for n masses, or NULL on no memory. */
@@ -55,6 +56,9 @@ enum sweep_event sweep_update(struct sweep *s, double t, const double *x, double
 /* The phase in degrees, in (-180, 180], of a signal whose correlations with sin theta and
  * cos theta are in and quad: X sin(theta + phi) gives in ~ X cos phi, quad ~ X sin phi. */
 double sweep_phase_deg(double in, double quad);
+
+/* Counts the contacts a step of the running sweep made (nothing when it is not running). */
+void sweep_count_contacts(struct sweep *s, int contacts);
 
 /* Points measured so far. */
 int sweep_measured(const struct sweep *s);

@@ -263,9 +263,17 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
             draw_phase(rv, app);
     }
     char state[120];
-    if (sw->active)
+    /* Contacts during the sweep: its points are not the linear theory's to match. */
+    if (sw->active && sw->contacts > 0)
+        snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz, %ld contact%s (w stops)",
+                 sw->index + 1, sw->points, sweep_frequency(sw), sw->contacts,
+                 sw->contacts == 1 ? "" : "s");
+    else if (sw->active)
         snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz (w stops)", sw->index + 1,
                  sw->points, sweep_frequency(sw));
+    else if (sweep_measured(sw) && sw->contacts > 0)
+        snprintf(state, sizeof state, "■ %d points; %ld contact%s: off the linear theory",
+                 sweep_measured(sw), sw->contacts, sw->contacts == 1 ? "" : "s");
     else if (sweep_measured(sw))
         snprintf(state, sizeof state, "■ measured: %d points (w sweeps again)",
                  sweep_measured(sw));
