@@ -24,7 +24,8 @@ start heavy 120 40 -- -n 1 --damping 7
 start six 60 20 -- -n 6
 start wallend 120 40 -- -p 3-mass-chain --boundary wall
 start sweeping 120 40 -- -p 3-mass-chain
-sessions="zeta enter below at above small heavy six wallend sweeping"
+start amp0 120 40 -- -p 3-mass-chain --amplitude 0
+sessions="zeta enter below at above small heavy six wallend sweeping amp0"
 
 # ---- m: zeta and Q against the closed form ----
 # zeta_bad: what on the screen disagrees with zeta_j = c / (2 m w_j), Q = 1 / (2 zeta)
@@ -149,6 +150,14 @@ if up sweeping; then
         fi
     else
         fail "w should start a sweep; screen: $(brief)"
+    fi
+fi
+
+# ---- no drive: the response view says why, with no empty axes under the words ----
+if up amp0; then
+    keys f
+    if wait_for "The motor's amplitude is 0" 3 && ! has_re '1e-?[0-9]+┤|└┬|│ +-?[0-9]+┤'; then pass; else
+        fail "response view without a drive: the reason alone, no axes; screen: $(brief "$scr" 'amplitude|┤|└')"
     fi
 fi
 

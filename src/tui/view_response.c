@@ -237,12 +237,13 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     int n = m->n;
     const char *title = "Frequency response: steady-state amplitude (m) against frequency, log-log";
     if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude <= 0.0 || !c->canvas) {
-        /* Empty axes: no curve or tick of a chain driven before is left standing. */
-        c->xt.n = c->yt.n = 0;
+        /* The frame and the reason alone: no axis, curve or tick of a chain driven before
+         * is left standing, and the canvas is clean for the next drive. */
         if (c->canvas)
             canvas_clear(c->canvas);
-        chart_draw(c, title, "Response", NULL, NULL, 0);
+        rv->version = 0;
         struct rect f = c->frame;
+        draw_frame(f, draw_width(title) + 4 <= f.w ? title : "Response", true);
         bool end = m->boundary != BOUNDARY_MOTOR;
         draw_text(f.y + 2, f.x + 3, f.w - 6, end ? "The right end does not drive the chain:"
                                                   : "The motor's amplitude is 0:");
