@@ -178,6 +178,33 @@ static const char *written(char **argv, int index, char *buf, size_t len)
 }
 
 /* Parses the command line into c and cli. Returns -1 to go on, or an exit status. */
+/* Says so (one line) and returns true when an option that only the command line gives is
+ * for another mode than the one asked for: -o and --meta shape the CSV modes' output,
+ * --plain-every the plain mode's. Options a preset can set are left alone, since a preset
+ * serves every mode. */
+static bool mode_mismatch(const bool *given, enum mode mode)
+{
+    bool csv = mode == MODE_HEADLESS || mode == MODE_MODES || mode == MODE_SWEEP;
+    static const char *const names[] = {[MODE_INTERACTIVE] = "the interactive program",
+                                        [MODE_HEADLESS] = "--headless", [MODE_MODES] = "--modes",
+                                        [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
+                                        [MODE_PLAIN] = "--plain"};
+    static const int csv_only[] = {CFG_OUTPUT, CFG_META};
+    for (size_t i = 0; i < sizeof csv_only / sizeof *csv_only; i++)
+        if (given[csv_only[i]] && !csv) {
+            options_say("--%s: applies to the output of --headless, --summary, --modes or "
+                        "--sweep, not to %s (expected one of those modes)",
+                        config_options[csv_only[i]].name, names[mode]);
+            return true;
+        }
+    if (given[CFG_PLAIN_EVERY] && mode != MODE_PLAIN) {
+        options_say("--plain-every: applies to --plain's status lines, not to %s (expected "
+                    "--plain too)", names[mode]);
+        return true;
+    }
+    return false;
+}
+
 int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                   const char *exe_dir)
 {
@@ -233,6 +260,7 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     optind = 0;
     int modes = 0;
     char mode_option[32] = ""; /* the option that chose the mode */
+    bool given[CFG_KEY_COUNT] = {false}; /* the options on the command line */
     for (;;) {
         int before = optind ? optind : 1;
         ch = getopt_long(argc, argv, shortopts, lo, NULL);
@@ -263,6 +291,7 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         int k = option_index(ch);
         if (k < 0)
             continue;
+        given[k] = true;
         if (config_options[k].kind != CONFIG_MODE) {
             if (k == CFG_PRESET)
                 continue;
@@ -312,6 +341,8 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                     "--headless or no other mode)", mode_option);
         return EXIT_USAGE;
     }
+    if (mode_mismatch(given, cli->mode))
+        return EXIT_USAGE;
     if (optind < argc) {
         written(argv, optind, q, sizeof q);
         if (optind > 1 && strcmp(argv[optind - 1], "--") == 0)

@@ -137,6 +137,12 @@ expect_equal "springsim --headless --dt abc: the message" \
     "springsim: --dt: 'abc' is not a number (expected 0 < dt <= 0.05)" "$(cat "$err")"
 
 expect_usage_error --bogus -- --headless --bogus
+# Options only the command line gives, meant for another mode: said, not ignored.
+expect_usage_error --meta --plain -- --plain --meta
+expect_usage_error --output "the interactive program" -- -o x.csv
+expect_usage_error --meta --list-presets -- --list-presets --meta
+expect_usage_error --plain-every --headless -- --headless --plain-every 2
+expect_usage_error --plain-every "the interactive program" -- --plain-every 2
 expect_usage_error --dt "'abc'" -- --headless --dt abc
 expect_usage_error --dt "'0.01x'" -- --headless --dt 0.01x
 expect_usage_error --dt "'nan'" -- --headless --dt nan
