@@ -67,7 +67,9 @@ exercise() {
     keys 4
     wait_for '0 all plots' || fail "$1: 4 should enlarge the x-v plot; screen: $(brief)"
     keys '?'
-    wait_for 'preset menu' || fail "$1: ? should show the help; screen: $(brief)"
+    # the whole help, to its coarse keys (a slow build draws it in pieces)
+    wait_for 'preset menu' && wait_for 'increase, coarse' ||
+        fail "$1: ? should show the help; screen: $(brief)"
     cp "$scr" "$tmp/$1.help"
     keys Escape
     wait_gone 'preset menu'
