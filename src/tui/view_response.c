@@ -40,12 +40,14 @@ void response_view_free(struct response_view *rv)
     rv->curve = rv->phase_curve = NULL;
 }
 
-/* Solves the theory curves for the chain as it is, one solve per dot column. */
+/* Solves the theory curves for the chain as it is, one solve per dot column, and the
+ * phases at the drive's frequency for the legend. */
 static void solve_curves(struct response_view *rv, const struct app *app, int width)
 {
     const struct model *m = app->model;
     int n = m->n;
     double amp[APP_MAX_MASSES], ph[APP_MAX_MASSES];
+    rv->drive_phase_ok = false;
     double *curve = realloc(rv->curve, (size_t)width * n * sizeof *curve);
     if (curve)
         rv->curve = curve;
@@ -65,6 +67,7 @@ static void solve_curves(struct response_view *rv, const struct app *app, int wi
                 rv->top = fmax(rv->top, amp[i]);
         }
     }
+    rv->drive_phase_ok = modes_response_phase(m, m->motor.frequency, amp, rv->drive_phase) == 0;
     rv->version = app->version;
     rv->width = width;
 }
@@ -211,11 +214,12 @@ static void draw_phase(struct response_view *rv, const struct app *app)
 
 /* The phase panel's legend: each mass's phase at the drive's frequency, in its colour,
  * into text[] (n + 1 entries of 24 bytes); returns the entries. */
-static int phase_legend(const struct app *app, char (*text)[24], struct legend_item *items)
+static int phase_legend(const struct response_view *rv, const struct app *app,
+                        char (*text)[24], struct legend_item *items)
 {
-    double amp[APP_MAX_MASSES], ph[APP_MAX_MASSES];
     const struct model *m = app->model;
-    if (modes_response_phase(m, m->motor.frequency, amp, ph) != 0)
+    const double *ph = rv->drive_phase;
+    if (!rv->drive_phase_ok)
         return 0;
     int k = 0;
     snprintf(text[k], sizeof text[k], "at %.3f Hz", m->motor.frequency);
@@ -289,7 +293,7 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     if (rv->phase.frame.h > 0) {
         char text[APP_MAX_MASSES + 1][24];
         struct legend_item pl[APP_MAX_MASSES + 1];
-        int np = phase_legend(app, text, pl);
+        int np = phase_legend(rv, app, text, pl);
         chart_draw(&rv->phase, "Phase of each mass to the drive (degrees; a lag is negative)",
                    "Phase (deg)", "Hz", pl, np);
     }

@@ -23,6 +23,8 @@ struct response_view {
     double top;          /* the largest finite amplitude */
     double *curve;       /* width x N amplitudes (m) */
     double *phase_curve; /* width x N phases (degrees, (-180, 180]) */
+    double drive_phase[APP_MAX_MASSES]; /* each mass's phase at the drive's frequency */
+    bool drive_phase_ok; /* drive_phase[] was solved */
 };
 
 /* Places the view in area; false on no memory. */
