@@ -11,16 +11,6 @@ trap 'exit 1' HUP INT TERM
 # Keep the user's own presets out of the way: an empty user preset directory, no
 # $SPRINGSIM_PRESETS. Cases that need them set them for one run.
 plain_env
-out=$tmp/stdout
-err=$tmp/stderr
-
-# run ARGS...: runs the binary; stdout in $out, stderr in $err, exit status in $rc, and
-# the command as written in $cmd for messages.
-run() {
-    cmd="springsim $*"
-    "$SPRINGSIM" "$@" >"$out" 2>"$err"
-    rc=$?
-}
 
 lines() { awk 'END { print NR }' "$1"; } # counts a last line without a newline too
 first_line() { sed -n 1p "$1" 2>/dev/null; }

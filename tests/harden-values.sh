@@ -10,20 +10,12 @@ NAME=harden-values
 
 plain_env
 
-out=$tmp/stdout
-err=$tmp/stderr
 nl='
 '
 esc=$(printf '\033')
 bel=$(printf '\007')
 vt=$(printf '\013')
 
-# run ARGS...: the binary with stdout in $out, stderr in $err, the status in $rc.
-run() {
-    cmd="springsim $*"
-    timeout 60 "$SPRINGSIM" "$@" >"$out" 2>"$err"
-    rc=$?
-}
 
 show() { head -c 300 "$1" | od -c | head -5 | tr '\n' '|'; }
 

@@ -9,14 +9,6 @@ NAME=start-mode
 . "$(dirname "$0")/lib/check.sh"
 
 plain_env
-out=$tmp/stdout
-err=$tmp/stderr
-
-run() {
-    cmd="springsim $*"
-    timeout 60 "$SPRINGSIM" "$@" >"$out" 2>"$err"
-    rc=$?
-}
 
 # refused TEXT ARGS...: exit 2, nothing on stdout, one line on stderr starting
 # "springsim: " and containing TEXT.

@@ -9,16 +9,8 @@ NAME=summary
 . "$(dirname "$0")/lib/check.sh"
 trap 'exit 1' HUP INT TERM
 plain_env
-out=$tmp/stdout
-err=$tmp/stderr
 root=$(cd "$(dirname "$0")/.." && pwd)
 
-# run ARGS...: stdout in $out, stderr in $err, status in $rc, the command in $cmd.
-run() {
-    cmd="springsim $*"
-    "$SPRINGSIM" "$@" >"$out" 2>"$err"
-    rc=$?
-}
 
 # col NAME [FILE]: the value of column NAME in the row of a summary (quoted lists, which
 # hold commas, blanked first).

@@ -1,8 +1,8 @@
 # tests/lib/check.sh: what the shell test scripts share. Source it after setting NAME:
 # it makes $SPRINGSIM absolute, a scratch directory $tmp removed at exit, pass and fail,
-# summary, which prints "NAME: N passed, M failed" and gives the exit status, and
+# summary, which prints "NAME: N passed, M failed" and gives the exit status,
 # plain_env, which keeps the user's presets out of the way (an empty user directory,
-# no $SPRINGSIM_PRESETS) in the C locale.
+# no $SPRINGSIM_PRESETS) in the C locale, and run, one run of the binary.
 SPRINGSIM=${SPRINGSIM:-./springsim}
 case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
 passed=0
@@ -23,4 +23,14 @@ plain_env() {
     unset SPRINGSIM_PRESETS
     LC_ALL=C
     export LC_ALL
+}
+
+# run ARGS...: the binary (a minute at most); stdout in $out, stderr in $err, the exit
+# status in $rc, and the command as written in $cmd for messages.
+out=$tmp/stdout
+err=$tmp/stderr
+run() {
+    cmd="springsim $*"
+    timeout 60 "$SPRINGSIM" "$@" >"$out" 2>"$err"
+    rc=$?
 }
