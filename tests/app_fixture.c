@@ -3,6 +3,9 @@
  * count the modes' computations. */
 #include "app_fixture.h"
 
+#include <stdlib.h>
+#include <unistd.h>
+
 struct app app;
 struct config cfg;
 int modes_calls;
@@ -138,4 +141,19 @@ unsigned new_n(void)
 unsigned preset(void)
 {
     return app_load_preset(&app, SRCDIR "/presets/3-mass-chain.ini", "3-mass-chain");
+}
+
+unsigned preset_text(const char *name, const char *text)
+{
+    char dir[] = "/tmp/springsim-fix-XXXXXX", path[512];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/%s.ini", dir, name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+    unsigned what = app_load_preset(&app, path, name);
+    unlink(path);
+    rmdir(dir);
+    return what;
 }

@@ -39,4 +39,7 @@ unsigned new_n(void);
 /* Loads presets/3-mass-chain.ini. */
 unsigned preset(void);
 
+/* Loads the preset text (INI) as name, from a temporary file removed after. */
+unsigned preset_text(const char *name, const char *text);
+
 #endif

@@ -132,24 +132,15 @@ static void preset_keeps_playback(void **state)
     assert_int_equal(app.cfg.fps, 12);
     assert_close(app.speed, 4.0, 0.0);
     /* One that does, changes them. */
-    char dir[] = "/tmp/springsim-pb-XXXXXX", path[512];
-    assert_non_null(mkdtemp(dir));
-    snprintf(path, sizeof path, "%s/p.ini", dir);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs("[run]\nfps = 20\ncolor = never\nglyphs = ascii\n", f);
-    fclose(f);
     app.cfg.color = CONFIG_COLOR_ALWAYS;
     app.cfg.glyphs = CONFIG_GLYPHS_BLOCKS;
-    w = app_load_preset(&app, path, "p");
+    w = preset_text("p", "[run]\nfps = 20\ncolor = never\nglyphs = ascii\n");
     assert_true(w & APP_CHANGED_PLAYBACK);
     assert_int_equal(app.cfg.fps, 20);
     assert_true(app.cfg.low_bandwidth);
     /* The terminal was set up at start: its colour and glyphs stay as they were. */
     assert_int_equal(app.cfg.color, CONFIG_COLOR_ALWAYS);
     assert_int_equal(app.cfg.glyphs, CONFIG_GLYPHS_BLOCKS);
-    unlink(path);
-    rmdir(dir);
 }
 
 /* ---- the time window and its trails ---- */

@@ -500,21 +500,12 @@ static void random_seed_said(void **state)
     assert_memory_equal(sim_x(app.sim), x, (size_t)app.model->n * sizeof *x);
 
     /* A preset asking for random positions without a seed. */
-    char dir[] = "/tmp/springsim-rnd-XXXXXX", path[512];
-    assert_non_null(mkdtemp(dir));
-    snprintf(path, sizeof path, "%s/r.ini", dir);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs("[system]\nmasses = 3\n[initial]\nrandom = true\n", f);
-    fclose(f);
-    assert_true(app_load_preset(&app, path, "r") != 0);
+    assert_true(preset_text("r", "[system]\nmasses = 3\n[initial]\nrandom = true\n") != 0);
     snprintf(want, sizeof want, "(random positions, seed %llu)",
              (unsigned long long)app.cfg.seed);
     assert_non_null(strstr(app.message, want));
     config_random_positions(app.model, app.cfg.seed, x);
     assert_memory_equal(sim_x(app.sim), x, (size_t)app.model->n * sizeof *x);
-    unlink(path);
-    rmdir(dir);
 }
 
 int main(void)
