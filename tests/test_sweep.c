@@ -33,6 +33,25 @@ static void bookkeeping(void **state)
     sweep_free(s);
 }
 
+/* Runs sweep sw on chain md in sm, as the app does: the drive at the sweep's frequency,
+ * retuned phase-continuous when it says so, for at most max steps; the last event. */
+static enum sweep_event run_sweep(struct model *md, struct sim *sm, struct sweep *sw, int max)
+{
+    md->motor.frequency = sweep_frequency(sw);
+    sim_set_model(sm, md);
+    enum sweep_event ev = SWEEP_SAME;
+    for (int n = 0; n < max && ev != SWEEP_DONE; n++) {
+        sim_step(sm);
+        ev = sweep_update(sw, sim_time(sm), sim_x(sm),
+                          md->motor.frequency * sim_time(sm) + md->motor.phase);
+        if (ev == SWEEP_RETUNE) {
+            motor_retune(&md->motor, sweep_frequency(sw), sim_time(sm));
+            sim_set_model(sm, md);
+        }
+    }
+    return ev;
+}
+
 /* A 2-mass chain with c = 1 (transients die within a few seconds): the sweep's peaks
  * are the theory's steady-state amplitudes. */
 static void matches_theory(void **state)
@@ -45,19 +64,7 @@ static void matches_theory(void **state)
     struct sim *sm = sim_new(md, 0.005);
     struct sweep *sw = sweep_new(2, 5);
     sweep_start(sw, 0.3, 1.1, 12.0, 0.0);
-    md->motor.frequency = sweep_frequency(sw);
-    sim_set_model(sm, md);
-    enum sweep_event ev = SWEEP_SAME;
-    for (int n = 0; n < 400000 && ev != SWEEP_DONE; n++) {
-        sim_step(sm);
-        ev = sweep_update(sw, sim_time(sm), sim_x(sm),
-                          md->motor.frequency * sim_time(sm) + md->motor.phase);
-        if (ev == SWEEP_RETUNE) {
-            motor_retune(&md->motor, sweep_frequency(sw), sim_time(sm));
-            sim_set_model(sm, md);
-        }
-    }
-    assert_int_equal(ev, SWEEP_DONE);
+    assert_int_equal(run_sweep(md, sm, sw, 400000), SWEEP_DONE);
     assert_int_equal(sweep_measured(sw), 5);
     for (int p = 0; p < 5; p++) {
         double amp[2];
@@ -104,19 +111,7 @@ static void phase_one_mass(void **state)
     struct sim *sm = sim_new(md, 0.002);
     struct sweep *sw = sweep_new(1, 3);
     sweep_start(sw, 0.5 * fn, 1.5 * fn, 25.0, 0.0);
-    md->motor.frequency = sweep_frequency(sw);
-    sim_set_model(sm, md);
-    enum sweep_event ev = SWEEP_SAME;
-    for (int n = 0; n < 2000000 && ev != SWEEP_DONE; n++) {
-        sim_step(sm);
-        ev = sweep_update(sw, sim_time(sm), sim_x(sm),
-                          md->motor.frequency * sim_time(sm) + md->motor.phase);
-        if (ev == SWEEP_RETUNE) {
-            motor_retune(&md->motor, sweep_frequency(sw), sim_time(sm));
-            sim_set_model(sm, md);
-        }
-    }
-    assert_int_equal(ev, SWEEP_DONE);
+    assert_int_equal(run_sweep(md, sm, sw, 2000000), SWEEP_DONE);
     for (int p = 0; p < 3; p++) {
         double w = 2.0 * M_PI * sw->freq[p];
         double want = atan2(-c * w, k1 + k2 - m * w * w) * 180.0 / M_PI;
