@@ -143,13 +143,21 @@ APP_FIXTURE = $(BUILD)/tests/app_fixture.o
 $(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
 $(APP_TESTS): TEST_EXTRA += $(APP_FIXTURE)
 $(APP_TESTS): $(APP_FIXTURE) tests/app_fixture.h
-# test_ghost counts every allocation the app and the core make while the ghost runs.
-$(BUILD)/tests/test_ghost: TEST_LDFLAGS += -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc
-
-# test_spectrum counts the allocations spectrum.c makes, to see a refresh make none.
-$(BUILD)/tests/test_spectrum: TEST_LDFLAGS = $(addprefix -Wl$(comma)--wrap=,malloc calloc \
-    fftw_malloc fftw_plan_dft_r2c_1d)
+# test_ghost counts every allocation the app and the core make while the ghost runs, and
+# test_spectrum those spectrum.c makes (FFTW's too), to see a step and a refresh make none
+# (tests/alloc_count.c counts malloc, calloc and realloc).
+ALLOC_COUNT = $(BUILD)/tests/alloc_count.o
+ALLOC_WRAPPED = $(addprefix -Wl$(comma)--wrap=,malloc calloc realloc)
 comma = ,
+$(BUILD)/tests/test_ghost $(BUILD)/tests/test_spectrum: TEST_EXTRA += $(ALLOC_COUNT)
+$(BUILD)/tests/test_ghost $(BUILD)/tests/test_spectrum: $(ALLOC_COUNT)
+$(BUILD)/tests/test_ghost: TEST_LDFLAGS += $(ALLOC_WRAPPED)
+$(BUILD)/tests/test_spectrum: TEST_LDFLAGS = $(ALLOC_WRAPPED) \
+    $(addprefix -Wl$(comma)--wrap=,fftw_malloc fftw_plan_dft_r2c_1d)
+
+$(ALLOC_COUNT): tests/alloc_count.c tests/alloc_count.h | $(BUILD)/.deps-test
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) -c -o $@ $<
 
 $(APP_FIXTURE): tests/app_fixture.c tests/app_fixture.h tests/testutil.h $(APP_OBJ) $(CORE_LIB) \
     | $(BUILD)/.deps-test

@@ -3,42 +3,14 @@
  * the live damping changes the two part, and the ghost is what an independent run of the
  * core with the old parameters gives; stepping back and resetting move both; g again, a
  * new chain and a blow-up of its own drop it; nothing is allocated while it runs. The app
- * under test comes from tests/app_fixture.c; allocations are counted here (--wrap). */
+ * under test comes from tests/app_fixture.c; allocations are counted by tests/alloc_count.c (--wrap). */
 #include "app_fixture.h"
+#include "alloc_count.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 #include "app/ghost.h"
-
-/* ---- allocations counted ---- */
-
-static long allocations; /* malloc, calloc and realloc calls in the app and the core */
-
-void *__real_malloc(size_t size);
-void *__wrap_malloc(size_t size);
-void *__real_calloc(size_t n, size_t size);
-void *__wrap_calloc(size_t n, size_t size);
-void *__real_realloc(void *p, size_t size);
-void *__wrap_realloc(void *p, size_t size);
-
-void *__wrap_malloc(size_t size)
-{
-    allocations++;
-    return __real_malloc(size);
-}
-
-void *__wrap_calloc(size_t n, size_t size)
-{
-    allocations++;
-    return __real_calloc(n, size);
-}
-
-void *__wrap_realloc(void *p, size_t size)
-{
-    allocations++;
-    return __real_realloc(p, size);
-}
 
 /* ---- helpers ---- */
 

@@ -9,30 +9,13 @@
 
 #include <fftw3.h>
 
+#include "alloc_count.h"
 #include "core/spectrum.h"
 
-static int allocations; /* calls of the allocators spectrum.c uses */
-
-void *__real_malloc(size_t size);
-void *__wrap_malloc(size_t size);
-void *__real_calloc(size_t n, size_t size);
-void *__wrap_calloc(size_t n, size_t size);
 void *__real_fftw_malloc(size_t size);
 void *__wrap_fftw_malloc(size_t size);
 fftw_plan __real_fftw_plan_dft_r2c_1d(int n, double *in, fftw_complex *out, unsigned flags);
 fftw_plan __wrap_fftw_plan_dft_r2c_1d(int n, double *in, fftw_complex *out, unsigned flags);
-
-void *__wrap_malloc(size_t size)
-{
-    allocations++;
-    return __real_malloc(size);
-}
-
-void *__wrap_calloc(size_t n, size_t size)
-{
-    allocations++;
-    return __real_calloc(n, size);
-}
 
 void *__wrap_fftw_malloc(size_t size)
 {
@@ -253,7 +236,7 @@ static void no_allocation_per_refresh(void **state)
     const double amp = 1.0, f = 1.0, phase = 0.0;
     double *x = sines(4000, 0.015, 1, &amp, &f, &phase);
     struct spectrum *s = spectrum_new();
-    int before = allocations;
+    long before = allocations;
     assert_int_equal(spectrum_compute(s, x, 4000, 1, 8192), 0);
     assert_true(allocations > before);
     for (int count = 3990; count <= 4000; count++) {
