@@ -80,14 +80,13 @@ static void look_contacts(struct watch *w, const struct app *app, watch_say *say
     const struct sim *s = app->sim;
     close_second(w, sim_time(s), say, ctx);
     const struct model *m = sim_model(s);
-    struct collision_limits l;
-    collision_limits(&l, m);
+    const struct collision_limits *l = sim_limits(s);
     bool now[APP_MAX_MASSES + 1] = {false};
-    if (l.on && sim_last_contacts(s) > sim_last_capped(s)) {
+    if (l->on && sim_last_contacts(s) > sim_last_capped(s)) {
         int k = 0;
         double least = INFINITY, u = sim_end_position(s);
-        for (int c = 0; c < l.count; c++) {
-            double g = collision_gap(&l, c, sim_x(s), u);
+        for (int c = 0; c < l->count; c++) {
+            double g = collision_gap(l, c, sim_x(s), u);
             if (g < least)
                 least = g, k = c;
             now[c] = g <= 1e-9;

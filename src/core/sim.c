@@ -468,6 +468,11 @@ int sim_last_capped(const struct sim *s)
     return s->last_capped;
 }
 
+const struct collision_limits *sim_limits(const struct sim *s)
+{
+    return &s->lim;
+}
+
 /* What a snapshot holds besides the state: a named head at the start of the buffer. */
 struct snapshot_head {
     double t_base, steps, dt; /* the time grid */

@@ -86,6 +86,11 @@ int sim_last_contacts(const struct sim *s);
 /* Velocities capped by the last step (the usual sign of a blow-up). */
 int sim_last_capped(const struct sim *s);
 
+/* The contact limits the sim works with (walls, piston, gaps between masses;
+ * collision.h). */
+struct collision_limits;
+const struct collision_limits *sim_limits(const struct sim *s);
+
 /* Number of doubles a snapshot of the state takes. */
 int sim_snapshot_size(const struct sim *s);
 
