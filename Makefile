@@ -31,6 +31,10 @@ CORE_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(CORE_PKGS))
 CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
 UI_LIBS = $(shell $(PKG_CONFIG) --libs ncursesw)
+# Figures and pixel charts: cairo draws and writes PNG, SVG and PDF; libsixel encodes sixel.
+FIG_PKGS = cairo libsixel
+FIG_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(FIG_PKGS))
+FIG_LIBS = $(shell $(PKG_CONFIG) --libs $(FIG_PKGS))
 TEST_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka)
 TEST_LIBS = $(shell $(PKG_CONFIG) --libs cmocka)
 
@@ -41,6 +45,8 @@ APP_SRC = $(wildcard src/app/*.c)
 APP_OBJ = $(APP_SRC:src/%.c=$(BUILD)/%.o)
 TUI_SRC = $(wildcard src/tui/*.c)
 TUI_OBJ = $(TUI_SRC:src/%.c=$(BUILD)/%.o)
+FIG_SRC = $(wildcard src/fig/*.c)
+FIG_OBJ = $(FIG_SRC:src/%.c=$(BUILD)/%.o)
 PLAIN_SRC = $(wildcard src/plain/*.c)
 PLAIN_OBJ = $(PLAIN_SRC:src/%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
@@ -70,14 +76,15 @@ $(BUILD)/.deps-test: | $(BUILD)/.deps-build
 deps: $(BUILD)/.deps-build
 deps-test: $(BUILD)/.deps-test
 
-# The core, the app and the plain mode never see curses: this fails the build if one of
-# their files includes it (or a tui header), and they are compiled without the ncurses
-# flags and the tests linked without -lncursesw.
-$(BUILD)/.core-pure: $(wildcard src/core/*.[ch] src/app/*.[ch] src/plain/*.[ch]) \
+# The core, the app, the figures and the plain mode never see curses: this fails the build
+# if one of their files includes it (or a tui header), and they are compiled without the
+# ncurses flags and the tests linked without -lncursesw.
+$(BUILD)/.core-pure: $(wildcard src/core/*.[ch] src/app/*.[ch] src/fig/*.[ch] src/plain/*.[ch]) \
     | $(BUILD)/.deps-build
-	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h|\.\./tui/)' \
-	    src/core/*.[ch] src/app/*.[ch] src/plain/*.[ch]; then \
-	    echo "error: src/core, src/app and src/plain must not include curses" >&2; exit 1; fi
+	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h|\.\./tui/|tui/)' \
+	    src/core/*.[ch] src/app/*.[ch] src/fig/*.[ch] src/plain/*.[ch]; then \
+	    echo "error: src/core, src/app, src/fig and src/plain must not include curses" >&2; \
+	    exit 1; fi
 	@touch $@
 
 $(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
@@ -87,6 +94,11 @@ $(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
 $(BUILD)/app/%.o: src/app/%.c | $(BUILD)/.core-pure
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+
+$(BUILD)/fig/%.o: src/fig/%.c | $(BUILD)/.core-pure
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(FIG_CFLAGS) -Isrc -MMD -MP \
+	    -c -o $@ $<
 
 $(BUILD)/plain/%.o: src/plain/%.c | $(BUILD)/.core-pure
 	@mkdir -p $(@D)
@@ -112,9 +124,9 @@ $(CORE_LIB): $(CORE_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(APP_OBJ) $(CORE_LIB)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(APP_OBJ) $(CORE_LIB) \
-	    $(UI_LIBS) $(CORE_LIBS)
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(FIG_OBJ) $(APP_OBJ) $(CORE_LIB)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(FIG_OBJ) $(APP_OBJ) \
+	    $(CORE_LIB) $(UI_LIBS) $(FIG_LIBS) $(CORE_LIBS)
 
 # The shell completions are written from the option table by a build tool on the core.
 completions: $(COMPLETIONS)
@@ -131,9 +143,9 @@ $(COMPLETIONS): $(BUILD)/mk/completions
 	@mkdir -p $(@D)
 	$(BUILD)/mk/completions $(SHELL_NAME) >$@.tmp && mv $@.tmp $@
 
-# The app (no curses) is unit-tested like the core: every test links it.
-$(TEST_BIN): $(APP_OBJ)
-$(TEST_BIN): TEST_EXTRA = $(APP_OBJ)
+# The app and the figures (no curses) are unit-tested like the core: every test links them.
+$(TEST_BIN): $(APP_OBJ) $(FIG_OBJ)
+$(TEST_BIN): TEST_EXTRA = $(APP_OBJ) $(FIG_OBJ)
 # test_app, test_app_rules and test_ghost share a fixture that makes the chain's allocations
 # fail on demand and counts the modes' computations (tests/app_fixture.c wraps them).
 APP_WRAPPED = config_model sim_new history_new trail_new trail_new_motion sweep_new modes_compute \
@@ -169,7 +181,7 @@ $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB) | $(BUILD)/.deps-t
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(TEST_CFLAGS) -Isrc \
 	    -DSRCDIR='"$(CURDIR)"' $(TEST_LDFLAGS) -o $@ $< \
-	    $(TEST_EXTRA) $(CORE_LIB) $(TEST_LIBS) $(CORE_LIBS)
+	    $(TEST_EXTRA) $(CORE_LIB) $(TEST_LIBS) $(FIG_LIBS) $(CORE_LIBS)
 
 # A terminal that stops reading, for the fault tests: not a cmocka program.
 $(BUILD)/tests/slowterm: tests/slowterm.c | $(BUILD)/.deps-build
@@ -308,4 +320,4 @@ deb: | $(BUILD)/.deps-build
 clean:
 	rm -rf $(BUILD) springsim
 
--include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TUI_OBJ:.o=.d) $(PLAIN_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)
+-include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(FIG_OBJ:.o=.d) $(TUI_OBJ:.o=.d) $(PLAIN_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)

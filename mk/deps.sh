@@ -1,8 +1,9 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
-# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3), test (cmocka,
-# tmux, bash, zsh and fish for the completions, numpy and pandas for --meta's CSV, GNU
-# parallel for the --summary study), deb (dpkg-dev, debhelper, lintian, build-essential),
+# Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3, cairo,
+# libsixel), test (cmocka, tmux, bash, zsh and fish for the completions, numpy and pandas
+# for --meta's CSV, GNU parallel for the --summary study, libsixel's tools, Xvfb, xterm,
+# ImageMagick and the DejaVu fonts for the pixel tests and screenshots), deb (dpkg-dev, debhelper, lintian, build-essential),
 # bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are
 # installed with apt-get; otherwise the one apt-get line to run is printed and the step
 # stops.
@@ -22,6 +23,8 @@ for group in "$@"; do
         want_pc lapacke liblapacke-dev
         want_pc gsl libgsl-dev
         want_pc fftw3 libfftw3-dev
+        want_pc cairo libcairo2-dev
+        want_pc libsixel libsixel-dev
         ;;
     test)
         want_pc cmocka libcmocka-dev
@@ -32,6 +35,11 @@ for group in "$@"; do
         want_py numpy python3-numpy
         want_py pandas python3-pandas
         want_bin parallel parallel
+        want_bin img2sixel libsixel-bin
+        want_bin Xvfb xvfb
+        want_bin xterm xterm
+        want_bin convert imagemagick
+        [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || need="$need fonts-dejavu-core"
         ;;
     bench)
         want_pc gsl libgsl-dev

@@ -22,6 +22,7 @@
 #include "core/preset.h"
 #include "core/sim.h"
 #include "core/summary.h"
+#include "fig/report.h"
 #include "options.h"
 #include "plain/plain.h"
 #include "tui/tui.h"
@@ -134,6 +135,36 @@ static int close_output(struct output *o, const struct config *c, int status)
     return status;
 }
 
+/* --figure: opened before the run, so that a path that cannot be written is said before
+ * any work (0, or EXIT_FAILURE after "PATH: REASON"); nothing to do without --figure. */
+static int open_figure(struct output *o, const struct config *c)
+{
+    memset(o, 0, sizeof *o);
+    if (!c->figure)
+        return 0;
+    int e = output_open(o, c->figure);
+    if (e) {
+        options_say("%s: %s", c->figure, strerror(e));
+        return EXIT_FAILURE;
+    }
+    return 0;
+}
+
+/* Finishes the figure: draws it (draw is 0, or the errno value drawing it gave) and renames
+ * it into place when the run succeeded; discards it otherwise. */
+static int close_figure(struct output *o, const struct config *c, int draw, int status)
+{
+    if (!c->figure || !o->fp)
+        return status;
+    bool ok = status == EXIT_SUCCESS && draw == 0;
+    int e = output_close(o, ok);
+    if (status == EXIT_SUCCESS && (draw || e)) {
+        options_say("%s: %s", c->figure, strerror(draw ? draw : e));
+        return EXIT_FAILURE;
+    }
+    return status;
+}
+
 /* --meta: '#' lines before the CSV header, which pandas (comment='#'), numpy (loadtxt's
  * comments) and gnuplot skip: the version, and the command line that repeats the run (the
  * mode, then every setting from the table; the seed --random chose is among them). */
@@ -146,6 +177,20 @@ static void write_meta(FILE *fp, const struct config *c, const char *mode, const
         fprintf(fp, " %s", arg);
     config_write_args(fp, c);
     fputc('\n', fp);
+}
+
+/* Adds the row just written (accelerations in a) to the figure's, if there is one. */
+static void figure_row(struct report_data *fig, double *row, const struct sim *s,
+                       const double *a)
+{
+    if (!fig)
+        return;
+    int n = sim_model(s)->n;
+    memcpy(row, sim_x(s), (size_t)n * sizeof *row);
+    memcpy(row + n, sim_v(s), (size_t)n * sizeof *row);
+    memcpy(row + 2 * n, a, (size_t)n * sizeof *row);
+    row[3 * n] = sim_end_position(s);
+    report_data_add(fig, sim_time(s), row);
 }
 
 static int run_headless(const struct config *c, const struct model *m)
@@ -177,24 +222,43 @@ static int run_headless(const struct config *c, const struct model *m)
         return EXIT_FAILURE;
     }
     sim_reset(s, x, x + n);
-    if (open_output(&o, c)) {
-        free(x);
-        sim_free(s);
-        summary_free(sum);
-        return EXIT_FAILURE;
-    }
     /* Steps between rows and steps in all, kept in doubles: whole numbers up to 2^53,
      * and huge values (--sample 1e300) stay huge instead of overflowing an integer. */
     double total = floor(c->duration / c->dt + 1e-9);
     double stride = c->sample > 0.0 ? round(c->sample / c->dt) : 1.0;
     if (stride < 1.0)
         stride = 1.0;
+    /* The figure keeps the rows the CSV gets: x1..xN, v1..vN, a1..aN, motor. */
+    struct output fo;
+    struct report_data *fig = c->figure ? report_data_new(3 * n + 1, floor(total / stride) + 1)
+                                        : NULL;
+    double *row = c->figure ? malloc((size_t)(3 * n + 1) * sizeof *row) : NULL;
+    if (c->figure && (!fig || !row))
+        options_say("out of memory");
+    if ((c->figure && (!fig || !row)) || open_output(&o, c)) {
+        free(x);
+        free(row);
+        sim_free(s);
+        summary_free(sum);
+        report_data_free(fig);
+        return EXIT_FAILURE;
+    }
+    if (open_figure(&fo, c)) {
+        output_close(&o, false);
+        free(x);
+        free(row);
+        sim_free(s);
+        summary_free(sum);
+        report_data_free(fig);
+        return EXIT_FAILURE;
+    }
     write_meta(o.fp, c, sum ? "summary" : "headless", NULL);
     if (sum) {
         summary_add(sum, s, 0.0, total);
     } else {
         output_csv_header(o.fp, n, c->energy);
         output_csv_row(o.fp, s, c->energy, x + 2 * n);
+        figure_row(fig, row, s, x + 2 * n);
     }
     double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
     for (double step = 1; step <= total; step++) {
@@ -215,6 +279,7 @@ static int run_headless(const struct config *c, const struct model *m)
             summary_add(sum, s, step, total);
         } else if (fmod(step, stride) == 0.0) {
             output_csv_row(o.fp, s, c->energy, x + 2 * n);
+            figure_row(fig, row, s, x + 2 * n);
             if (ferror(o.fp))
                 break;
         }
@@ -224,6 +289,15 @@ static int run_headless(const struct config *c, const struct model *m)
         summary_row(o.fp, sum, s);
     }
     status = close_output(&o, c, status);
+    if (fig) {
+        char settings[400];
+        report_settings(c, m, settings, sizeof settings);
+        int draw = status == EXIT_SUCCESS
+                       ? report_headless(fo.fp, fig_format_of(c->figure), fig, n,
+                                         m->boundary == BOUNDARY_MOTOR, sim_time(s), settings)
+                       : 0;
+        status = close_figure(&fo, c, draw, status);
+    }
     if (capped > 0.0) {
         char times[32];
         snprintf(times, sizeof times, capped == 1.0 ? "once" : "%.0f times", capped);
@@ -231,8 +305,10 @@ static int run_headless(const struct config *c, const struct model *m)
             "energy balance includes what it removed", MODEL_VMAX, times, first_cap);
     }
     free(x);
+    free(row);
     sim_free(s);
     summary_free(sum);
+    report_data_free(fig);
     return status;
 }
 
@@ -253,7 +329,11 @@ static int run_modes(const struct config *c, const struct model *m)
         free(shapes);
         return EXIT_FAILURE;
     }
-    if (open_output(&o, c) == 0) {
+    struct output fo;
+    if (open_output(&o, c) == 0 && open_figure(&fo, c) != 0) {
+        output_close(&o, false);
+        status = EXIT_FAILURE;
+    } else if (o.fp) {
         write_meta(o.fp, c, "modes", NULL);
         fputs("mode,frequency_hz", o.fp);
         for (int i = 1; i <= n; i++)
@@ -266,6 +346,14 @@ static int run_modes(const struct config *c, const struct model *m)
             fprintf(o.fp, ",%.12g,%.12g\n", ratio[j], damped_hz[j]);
         }
         status = close_output(&o, c, status);
+        if (c->figure) {
+            char settings[400];
+            report_settings(c, m, settings, sizeof settings);
+            int draw = status == EXIT_SUCCESS ? report_modes(fo.fp, fig_format_of(c->figure), m,
+                                                             f, shapes, settings)
+                                              : 0;
+            status = close_figure(&fo, c, draw, status);
+        }
     } else {
         status = EXIT_FAILURE;
     }
@@ -329,8 +417,22 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
         options_say("out of memory");
         return EXIT_FAILURE;
     }
+    struct output fo;
+    struct report_data *fig = c->figure ? report_data_new(2 * n, (double)count) : NULL;
+    if (c->figure && !fig) {
+        options_say("out of memory");
+        free(amp);
+        return EXIT_FAILURE;
+    }
     if (open_output(&o, c) != 0) {
         free(amp);
+        report_data_free(fig);
+        return EXIT_FAILURE;
+    }
+    if (open_figure(&fo, c) != 0) {
+        output_close(&o, false);
+        free(amp);
+        report_data_free(fig);
         return EXIT_FAILURE;
     }
     write_meta(o.fp, c, "sweep", spec);
@@ -351,10 +453,21 @@ static int run_sweep(const struct config *c, const struct model *m, const char *
         for (int i = 0; i < 2 * n; i++)
             fprintf(o.fp, isfinite(amp[i]) ? ",%.12g" : isnan(amp[i]) ? ",nan" : ",inf", amp[i]);
         fputc('\n', o.fp);
+        if (fig)
+            report_data_add(fig, f, amp);
         if (ferror(o.fp))
             break;
     }
     status = close_output(&o, c, status);
+    if (fig) {
+        char settings[400];
+        report_settings(c, m, settings, sizeof settings);
+        int draw = status == EXIT_SUCCESS
+                       ? report_sweep(fo.fp, fig_format_of(c->figure), fig, n, settings)
+                       : 0;
+        status = close_figure(&fo, c, draw, status);
+    }
+    report_data_free(fig);
     free(amp);
     return status;
 }

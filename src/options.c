@@ -189,12 +189,12 @@ static bool mode_mismatch(const bool *given, enum mode mode)
                                         [MODE_HEADLESS] = "--headless", [MODE_MODES] = "--modes",
                                         [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
                                         [MODE_PLAIN] = "--plain"};
-    static const int csv_only[] = {CFG_OUTPUT, CFG_META};
+    static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE};
     for (size_t i = 0; i < sizeof csv_only / sizeof *csv_only; i++)
         if (given[csv_only[i]] && !csv) {
-            options_say("--%s: applies to the output of --headless, --summary, --modes or "
-                        "--sweep, not to %s (expected one of those modes)",
-                        config_options[csv_only[i]].name, names[mode]);
+            options_say("--%s: applies to the output of --headless%s, --modes or --sweep, not "
+                        "to %s (expected one of those modes)", config_options[csv_only[i]].name,
+                        csv_only[i] == CFG_FIGURE ? "" : ", --summary", names[mode]);
             return true;
         }
     if (given[CFG_PLAIN_EVERY] && mode != MODE_PLAIN) {
@@ -339,6 +339,11 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     if (c->summary && cli->mode != MODE_HEADLESS) {
         options_say("--summary: summarises a --headless run, but %s was given too (expected "
                     "--headless or no other mode)", mode_option);
+        return EXIT_USAGE;
+    }
+    if (c->summary && given[CFG_FIGURE]) {
+        options_say("--figure: a --summary run has one row of figures, no series to draw "
+                    "(expected --headless without --summary)");
         return EXIT_USAGE;
     }
     if (mode_mismatch(given, cli->mode))

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 static const char *integrator_choice(int i) { return integrator_name((enum integrator)i); }
 static const char *boundary_choice(int i) { return model_boundary_name((enum boundary)i); }
@@ -114,6 +115,10 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_META] = {.name = "meta", .kind = CONFIG_FLAG, .offset = AT(meta),
                   .help = "headless/modes/sweep CSV begins with '#' lines: the version and the "
                           "command line that repeats the run"},
+    [CFG_FIGURE] = {.name = "figure", .kind = CONFIG_TEXT, .arg = "FILE", .offset = AT(figure),
+                    .expect = "a file name ending in .png, .svg or .pdf",
+                    .help = "headless/modes/sweep: also a figure of the run for a report; the "
+                            "extension chooses PNG, SVG or PDF"},
     [CFG_FPS] = {.name = "fps", .section = "run", .kind = CONFIG_WHOLE, .arg = "N",
                  .help = "interactive frames per second", .symbol = "fps", .lo = 1, .hi = 60,
                  .def = 30, .offset = AT(fps)},
@@ -479,6 +484,15 @@ static int set_start_mode(struct config *c, const char *value, char *err, size_t
     return 0;
 }
 
+/* --figure's file name ends in .png, .svg or .pdf (any case). */
+static bool figure_extension(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    return dot && !strchr(dot, '/') &&
+           (strcasecmp(dot, ".png") == 0 || strcasecmp(dot, ".svg") == 0 ||
+            strcasecmp(dot, ".pdf") == 0);
+}
+
 int config_set(struct config *c, int key, const char *value, char *err, size_t errlen)
 {
     const struct config_option *o;
@@ -503,6 +517,8 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
             return set_start_mode(c, value, err, errlen);
         if (*value == '\0')
             return fail(key, value, "is empty", err, errlen);
+        if (key == CFG_FIGURE && !figure_extension(value))
+            return fail(key, value, "has no extension that names a figure format", err, errlen);
         memcpy(at, &value, sizeof value);
         return 0;
     case CONFIG_FLAG:

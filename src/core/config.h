@@ -37,6 +37,7 @@ enum config_key {
     CFG_OUTPUT,
     CFG_ENERGY,
     CFG_META,
+    CFG_FIGURE,
     CFG_FPS,
     CFG_LOW_BANDWIDTH,
     CFG_COLOR,
@@ -147,6 +148,7 @@ struct config {
     const char *output;                 /* output file, NULL for standard output */
     bool energy;                        /* energy columns in the headless CSV */
     bool meta;                          /* '#' lines before a CSV: version, command line */
+    const char *figure;                 /* --figure: a figure of the run (.png, .svg, .pdf) */
     int fps;                            /* interactive frames per second */
     bool low_bandwidth;                 /* interactive: keep terminal output small */
     enum config_color color;            /* interactive: when to use colour */

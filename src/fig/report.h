@@ -1,0 +1,58 @@
+/* report.h: the figures of --headless (displacement, velocity and acceleration against
+ * time, the motor dashed), --modes (the shapes) and --sweep (amplitude log-log over
+ * phase), from the rows the CSV gets. */
+#ifndef SPRINGSIM_REPORT_H
+#define SPRINGSIM_REPORT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "core/config.h"
+#include "core/model.h"
+#include "figure.h"
+
+#define REPORT_POINTS 2000000 /* (x, y) pairs a run's figure keeps in all, at most */
+
+/* Series of rows kept for a figure: every row while they are few, else per bucket of
+ * consecutive rows the one with the smallest and the one with the largest y of each
+ * series (so an oscillation keeps its envelope), each a row the CSV has too. */
+struct report_data;
+
+/* Room for nseries series of rows (expected) rows: NULL on no memory. */
+struct report_data *report_data_new(int nseries, double rows);
+
+/* Adds one row: x, and y[s] for each series. */
+void report_data_add(struct report_data *d, double x, const double *y);
+
+/* Frees d. */
+void report_data_free(struct report_data *d);
+
+/* Rows a bucket takes: 1 while every row is kept. */
+long report_data_bucket(const struct report_data *d);
+
+/* After the last row: closes the last bucket and ends each series on the last row (the
+ * figures call it). */
+void report_data_finish(struct report_data *d);
+
+/* The points kept of series s: (x, y) pairs at *xy; returns how many. */
+int report_data_points(const struct report_data *d, int s, const double **xy);
+
+/* The settings of a run in one line, for a figure's second title line. */
+void report_settings(const struct config *c, const struct model *m, char *buf, size_t len);
+
+/* A --headless figure from d (series x1..xN, v1..vN, a1..aN, motor) over [0, t_end].
+ * Returns 0 or an errno value. */
+int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n,
+                    bool motor, double t_end, const char *subtitle);
+
+/* A --modes figure: the lowest modes' shapes (freq[j] Hz, shapes[j * n + i]) over the
+ * masses, the left wall's zero (and the right end's, where it is fixed) included. */
+int report_modes(FILE *fp, enum fig_format f, const struct model *m, const double *freq,
+                 const double *shapes, const char *subtitle);
+
+/* A --sweep figure from d (series amp1..ampN, phase1..phaseN against frequency). */
+int report_sweep(FILE *fp, enum fig_format f, struct report_data *d, int n,
+                 const char *subtitle);
+
+#endif

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""tests/lib/figcheck.py: reads springsim's --figure files for tests/figure.sh.
+
+  figcheck.py curves FILE.svg R,G,B        number of curves (stroked paths of more than
+                                           two points) in that colour, in document order
+  figcheck.py points FILE.svg R,G,B K      the points of the K-th such curve, "x y" lines
+  figcheck.py dashed FILE.svg R,G,B        how many of those curves are dashed
+  figcheck.py fit FILE.svg R,G,B K CSV TCOL YCOL
+      the K-th curve against the CSV's columns: each point's page x, by the line through
+      the first and last points (the first and last rows), is a row's time; page y is
+      fitted to that row's value (y = c value + d, least squares). Prints "points rows
+      max_residual c max_time_offset" (c < 0: up the page is up the axis; the offset, in
+      points of the page, from the point to its row's time: cairo keeps 1/256 point)
+  figcheck.py modefit FILE.svg R,G,B K CSV ROW
+      the K-th curve against --modes' row ROW (0: mode 1): points at 0, the masses, N+1
+      with shapes 0, x1..xN, 0; prints "points expected max_residual c max_offset" (the
+      offset in points of the page)
+  figcheck.py png FILE.png                 "WIDTH HEIGHT" from a well-formed PNG
+The SVG is parsed as XML; colours are cairo's rgb(p%,q%,r%) or rgb(r,g,b)."""
+import csv
+import re
+import struct
+import sys
+import xml.etree.ElementTree as ET
+import zlib
+
+SVG = '{http://www.w3.org/2000/svg}'
+
+
+def stroke_of(el):
+    style = el.get('style', '') + ';stroke:' + el.get('stroke', '')
+    m = re.search(r'stroke:\s*rgb\(([^)]*)\)', style)
+    if not m:
+        return None
+    parts = [p.strip() for p in m.group(1).split(',')]
+    return tuple(round(float(p[:-1]) * 2.55) if p.endswith('%') else int(p) for p in parts)
+
+
+def dashed(el):
+    return 'stroke-dasharray' in el.get('style', '') or el.get('stroke-dasharray') is not None
+
+
+def path_points(d):
+    """The points of a path's first sub-path (its line: markers come after it), of
+    absolute M, L and C commands as cairo writes them."""
+    toks = re.findall(r'[MLCZmlcz]|-?[0-9.]+(?:e-?[0-9]+)?', d)
+    pts, cmd, nums = [], None, []
+    for t in toks:
+        if t.isalpha():
+            if t == 'M' and pts:
+                break
+            cmd, nums = t, []
+            continue
+        nums.append(float(t))
+        if cmd in ('M', 'L') and len(nums) == 2:
+            pts.append(tuple(nums))
+            nums = []
+        elif cmd == 'C' and len(nums) == 6:
+            pts.append(tuple(nums[4:]))
+            nums = []
+    return pts
+
+
+def curves(path, rgb):
+    root = ET.parse(path).getroot()
+    out = []
+    for el in root.iter(SVG + 'path'):
+        if stroke_of(el) != rgb:
+            continue
+        pts = path_points(el.get('d', ''))
+        if len(pts) > 2:
+            out.append((el, pts))
+    return out
+
+
+def fit(xs, ys):
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    a = sxy / sxx
+    b = my - a * mx
+    return a, b, max(abs(a * x + b - y) for x, y in zip(xs, ys))
+
+
+def png_size(path):
+    data = open(path, 'rb').read()
+    if data[:8] != b'\x89PNG\r\n\x1a\n':
+        raise SystemExit('not a PNG')
+    pos, size, idat = 8, None, b''
+    while pos < len(data):
+        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if zlib.crc32(kind + body) != struct.unpack('>I', data[pos + 8 + n:pos + 12 + n])[0]:
+            raise SystemExit('bad CRC in ' + kind.decode())
+        if kind == b'IHDR':
+            size = struct.unpack('>II', body[:8])
+        elif kind == b'IDAT':
+            idat += body
+        elif kind == b'IEND':
+            break
+        pos += 12 + n
+    zlib.decompress(idat)  # the pixels decompress whole
+    return size
+
+
+def main():
+    cmd = sys.argv[1]
+    if cmd == 'png':
+        print('%d %d' % png_size(sys.argv[2]))
+        return
+    rgb = tuple(int(v) for v in sys.argv[3].split(','))
+    found = curves(sys.argv[2], rgb)
+    if cmd == 'curves':
+        print(len(found))
+    elif cmd == 'dashed':
+        print(sum(1 for el, _ in found if dashed(el)))
+    elif cmd == 'points':
+        for x, y in found[int(sys.argv[4])][1]:
+            print(x, y)
+    elif cmd == 'fit':
+        pts = found[int(sys.argv[4])][1]
+        with open(sys.argv[5]) as f:
+            rows = [r for r in csv.DictReader(line for line in f if not line.startswith('#'))]
+        t = [float(r[sys.argv[6]]) for r in rows]
+        v = [float(r[sys.argv[7]]) for r in rows]
+        # cairo merges a run of segments in one direction into one, so a point is a row
+        # but not every row is a point: the first and last are, and they fix the time
+        # axis; every point must then land on a row's time.
+        a = (pts[-1][0] - pts[0][0]) / (t[-1] - t[0])
+        spacing = (t[-1] - t[0]) / (len(t) - 1)
+        xs, ys, off = [], [], 0.0
+        for px, py in pts:
+            tt = t[0] + (px - pts[0][0]) / a
+            k = min(range(len(t)), key=lambda i: abs(t[i] - tt)) if len(t) < 5000 else \
+                int(round((tt - t[0]) / spacing))
+            off = max(off, abs(t[k] - tt) * abs(a))
+            xs.append(v[k])
+            ys.append(py)
+        c, _, ry = fit(xs, ys)
+        print('%d %d %.6g %.6g %.3g' % (len(pts), len(rows), ry, c, off))
+    elif cmd == 'modefit':
+        pts = found[int(sys.argv[4])][1]
+        with open(sys.argv[5]) as f:
+            rows = [r for r in csv.DictReader(line for line in f if not line.startswith('#'))]
+        row = rows[int(sys.argv[6])]
+        n = sum(1 for k in row if re.fullmatch(r'x[0-9]+', k))
+        want = [0.0] + [float(row['x%d' % (i + 1)]) for i in range(n)] + [0.0]
+        # As for fit: the first and last points are the walls, every point a mass.
+        a = (pts[-1][0] - pts[0][0]) / (n + 1)
+        idx = [(px - pts[0][0]) / a for px, _ in pts]
+        off = max(abs(i - round(i)) for i in idx) * abs(a)
+        c, _, ry = fit([want[int(round(i))] for i in idx], [p[1] for p in pts])
+        print('%d %d %.6g %.6g %.3g' % (len(pts), len(want), ry, c, off))
+
+
+main()
