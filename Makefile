@@ -32,7 +32,7 @@ CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
 UI_LIBS = $(shell $(PKG_CONFIG) --libs ncursesw)
 # Figures and pixel charts: cairo draws and writes PNG, SVG and PDF; libsixel encodes sixel.
-FIG_PKGS = cairo libsixel
+FIG_PKGS = cairo fontconfig libsixel
 FIG_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(FIG_PKGS))
 FIG_LIBS = $(shell $(PKG_CONFIG) --libs $(FIG_PKGS))
 TEST_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka)
@@ -212,6 +212,9 @@ valgrind: $(BIN) $(TEST_BIN)
 	@$(VALGRIND) ./$(BIN) --headless -p resonance --amplitude 0.6 --duration 60 --energy >/dev/null
 	@$(VALGRIND) ./$(BIN) -p 3-mass-chain --modes >/dev/null
 	@$(VALGRIND) ./$(BIN) -p 3-mass-chain --sweep 0.1:2:50 >/dev/null
+	@echo "== valgrind --figure (cairo, fontconfig)"
+	@$(VALGRIND) ./$(BIN) -p 3-mass-chain --sweep 0.1:2:50 --figure $(BUILD)/valgrind.png >/dev/null
+	@$(VALGRIND) ./$(BIN) --headless --duration 2 --figure $(BUILD)/valgrind.svg >/dev/null
 	@echo "valgrind: no errors, no definite leaks"
 
 # The long fault tests: a 1e8-step soak, a resize storm of hundreds of sizes.

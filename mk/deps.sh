@@ -1,7 +1,7 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3, cairo,
-# libsixel), test (cmocka, tmux, bash, zsh and fish for the completions, numpy and pandas
+# fontconfig, libsixel), test (cmocka, tmux, bash, zsh and fish for the completions, numpy and pandas
 # for --meta's CSV, GNU parallel for the --summary study, libsixel's tools, Xvfb, xterm,
 # ImageMagick and the DejaVu fonts for the pixel tests and screenshots), deb (dpkg-dev, debhelper, lintian, build-essential),
 # bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are
@@ -24,6 +24,7 @@ for group in "$@"; do
         want_pc gsl libgsl-dev
         want_pc fftw3 libfftw3-dev
         want_pc cairo libcairo2-dev
+        want_pc fontconfig libfontconfig-dev
         want_pc libsixel libsixel-dev
         ;;
     test)

@@ -158,6 +158,7 @@ static int close_figure(struct output *o, const struct config *c, int draw, int 
         return status;
     bool ok = status == EXIT_SUCCESS && draw == 0;
     int e = output_close(o, ok);
+    fig_done();
     if (status == EXIT_SUCCESS && (draw || e)) {
         options_say("%s: %s", c->figure, strerror(draw ? draw : e));
         return EXIT_FAILURE;

@@ -6,8 +6,8 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
-#include <ctype.h>
 #include <errno.h>
+#include <fontconfig/fontconfig.h>
 #include <math.h>
 #include <string.h>
 #include <strings.h>
@@ -405,4 +405,10 @@ int fig_write(FILE *fp, enum fig_format f, const struct fig_page *page)
         st = cairo_surface_status(s);
     cairo_surface_destroy(s);
     return status_errno(st, fp);
+}
+
+void fig_done(void)
+{
+    cairo_debug_reset_static_data();
+    FcFini();
 }

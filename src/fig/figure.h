@@ -78,4 +78,8 @@ struct fig_page {
  * or the stream's error). */
 int fig_write(FILE *fp, enum fig_format f, const struct fig_page *page);
 
+/* Frees what cairo and fontconfig keep between figures (their font caches), when no
+ * figure is being drawn: before the program exits, so that leak checkers see none. */
+void fig_done(void);
+
 #endif
