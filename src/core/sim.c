@@ -17,16 +17,20 @@
 #include <string.h>
 
 #include "collision.h"
+#include "events.h"
+#include "rest.h"
 #include "stepper.h"
 
 /* Breakpoints of the drive inside one step, handled MAX_SPLIT at a time. */
 #define MAX_SPLIT 16
-/* Contacts located inside one piece; any more are resolved at its end. */
-#define MAX_EVENTS 16
-/* Contacts closing in one piece that are located one by one; more is a pile-up. */
-#define MAX_LOCATED 3
+/* Events located inside one piece (a mass coming to rest on a wall bounces about 30
+ * times, the last ones in one step); any more are resolved at its end. */
+#define MAX_EVENTS 256
+/* Gaps closing in one piece that are located one by one in a chain longer than this;
+ * more is a pile-up. */
+#define MAX_LOCATED 12
 /* Gaps within this of zero count as touching. */
-#define TOUCH 1e-12
+#define TOUCH EVENTS_TOUCH
 
 struct sim {
     struct stepper *st;  /* the steppers, with the model's own copy */
@@ -43,6 +47,9 @@ struct sim {
     double *y0;          /* the state at the start of the step, for restoring */
     const double *ya;    /* the state at the start of the piece being stepped: y0 or ya_buf */
     double *ya_buf;      /* room for it when the piece starts inside the step */
+    struct rest *rest;   /* the contacts resting now */
+    double *work;        /* 2N of scratch for the events */
+    double *force;       /* N + 1: the resting contacts' forces */
 };
 
 struct sim *sim_new(const struct model *model, double dt)
@@ -53,8 +60,9 @@ struct sim *sim_new(const struct model *model, double dt)
     if (!s)
         return NULL;
     s->st = stepper_new(model);
-    s->y = calloc(3 * len, sizeof *s->y);
-    if (!s->st || !s->y) {
+    s->y = calloc(3 * len + (size_t)(3 * n + 1), sizeof *s->y);
+    s->rest = rest_new(n);
+    if (!s->st || !s->y || !s->rest) {
         sim_free(s);
         return NULL;
     }
@@ -62,6 +70,9 @@ struct sim *sim_new(const struct model *model, double dt)
     s->y0 = s->y + len;
     s->ya_buf = s->y0 + len;
     s->ya = s->ya_buf;
+    s->work = s->ya_buf + len;
+    s->force = s->work + 2 * n;
+    stepper_set_rest(s->st, s->rest);
     s->dt = dt;
     s->integrator = INTEGRATOR_RK4;
     sim_set_model(s, model);
@@ -80,6 +91,7 @@ int sim_copy(struct sim *dst, const struct sim *src)
     dst->contact = src->contact;
     dst->last_contacts = src->last_contacts;
     dst->last_capped = src->last_capped;
+    rest_copy(dst->rest, src->rest);
     memcpy(dst->y, src->y, (size_t)(2 * src->n + 2) * sizeof *src->y);
     return 0;
 }
@@ -89,6 +101,7 @@ void sim_free(struct sim *s)
     if (!s)
         return;
     stepper_free(s->st);
+    rest_free(s->rest);
     free(s->y);
     free(s);
 }
@@ -102,6 +115,10 @@ void sim_set_model(struct sim *s, const struct model *model)
 {
     stepper_set_model(s->st, model, s->dt);
     collision_limits(&s->lim, model);
+    /* Resting contacts stay while the same constraints exist; the next step parts any
+     * the new parameters pull apart. */
+    if (s->rest->count != s->lim.count || !s->lim.on)
+        rest_clear(s->rest, &s->lim);
 }
 
 void sim_set_integrator(struct sim *s, enum integrator i)
@@ -145,6 +162,7 @@ void sim_reset(struct sim *s, const double *x, const double *v)
     s->contact = 0.0;
     s->last_contacts = 0;
     s->last_capped = 0;
+    rest_clear(s->rest, &s->lim);
 }
 
 /* Books what contacts did: the losses, and the piston's work as the motor's. */
@@ -154,93 +172,18 @@ static void book(struct sim *s, const struct collision_books *b)
     s->y[2 * s->n + 1] += b->piston;
 }
 
-/* Position of mass i at theta in [0, 1] of a step of length h from state ya to y: the
- * cubic Hermite interpolant (Hermite, 1878) of x with x' = v at both ends. */
-static double hermite(const double *ya, const double *y, int n, int i, double h, double th)
+/* At an instant of contact on constraint k (or of a release, k < 0): the contact rule,
+ * then resting contacts made or parted. u, du: the drive then. */
+static void at_event(struct sim *s, int k, double u, double du, double ddu)
 {
-    double t2 = th * th, t3 = t2 * th;
-    double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + th, h01 = -2 * t3 + 3 * t2,
-           h11 = t3 - t2;
-    return h00 * ya[i] + h10 * h * ya[n + i] + h01 * y[i] + h11 * h * y[n + i];
-}
-
-/* Gap of constraint k at theta of the step [a, a + h] from ya to y. */
-static double gap_at(const struct sim *s, const struct drive *d, int k, double a, double h,
-                     double th)
-{
-    const double *ya = s->ya, *y = s->y;
     int n = s->n;
-    const struct collision_limits *l = &s->lim;
-    if (k == 0)
-        return l->spacing + hermite(ya, y, n, 0, h, th) - 0.5 * l->w;
-    if (k < n)
-        return l->spacing + hermite(ya, y, n, k, h, th) - hermite(ya, y, n, k - 1, h, th) -
-               l->w;
-    double u, du;
-    drive_eval(d, a + th * h, &u, &du);
-    return MODEL_LENGTH + u - 0.5 * l->w - (n * l->spacing + hermite(ya, y, n, n - 1, h, th));
-}
-
-/* The first theta in (0, 1] at which constraint k's gap closes along the step, given that
- * it is violated at its end: a coarse scan for the first sign change, then regula falsi
- * (Illinois) to the root. */
-static double closing_time(const struct sim *s, const struct drive *d, int k, double a,
-                           double h)
-{
-    enum { SCAN = 8 };
-    double lo = 0.0, glo = gap_at(s, d, k, a, h, 0.0);
-    if (glo <= 0.0)
-        return 0.0;
-    double hi = 1.0, ghi = gap_at(s, d, k, a, h, 1.0);
-    for (int j = 1; j < SCAN; j++) {
-        double th = (double)j / SCAN, g = gap_at(s, d, k, a, h, th);
-        if (g < 0.0) {
-            hi = th, ghi = g;
-            break;
-        }
-        lo = th, glo = g;
-    }
-    int side = 0;
-    for (int it = 0; it < 100 && hi - lo > 1e-15; it++) {
-        double th = (lo * ghi - hi * glo) / (ghi - glo);
-        double g = gap_at(s, d, k, a, h, th);
-        if (g > 0.0) {
-            lo = th, glo = g;
-            if (side == -1)
-                ghi *= 0.5;
-            side = -1;
-        } else {
-            hi = th, ghi = g;
-            if (side == 1)
-                glo *= 0.5;
-            side = 1;
-        }
-        if (fabs(g) < 1e-15)
-            return th;
-    }
-    return hi;
-}
-
-/* At an instant of contact: every touching constraint that is closing gets the contact
- * rule; what is still closing after three sweeps is a cluster, which moves as one.
- * Returns the contacts. */
-static int hit_touching(struct sim *s, double u, double du)
-{
-    int n = s->n, hits = 0;
-    struct collision_books b = {0.0, 0.0};
     const struct model *m = sim_model(s);
-    int found = 1;
-    for (int sweep = 0; sweep < 3 && found; sweep++) {
-        found = 0;
-        for (int k = 0; k < s->lim.count; k++)
-            if (collision_gap(&s->lim, k, s->y, u) <= TOUCH)
-                found += collision_hit(&s->lim, m, k, s->y + n, du, &b);
-        hits += found;
+    if (k >= 0) {
+        struct collision_books b = {0.0, 0.0};
+        s->last_contacts += events_hit(&s->lim, m, s->rest, k, s->y, s->y + n, u, du, &b);
+        book(s, &b);
     }
-    if (found) /* still closing after three sweeps: a cluster, which moves as one */
-        hits += collision_merge(&s->lim, m, s->y, s->y + n, u, du, &b);
-    book(s, &b);
-    return hits;
+    events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, ddu, s->force);
 }
 
 /* Steps the piece [a, b] on drive d with its contacts; at_start when the piece starts
@@ -249,6 +192,9 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
 {
     int n = s->n, len = 2 * n + 2;
     enum integrator integ = s->integrator;
+    const struct model *m = sim_model(s);
+    struct events_piece p = {&s->lim, m, s->rest, d, NULL, s->y, a, b - a, 0, 0, 0, 0, 0, 0};
+    p.ddu_factor = drive_ddu_factor(d);
     for (int events = 0;; events++) {
         if (events == 0 && at_start) {
             s->ya = s->y0;
@@ -260,42 +206,36 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
             return -1;
         if (!s->lim.on)
             return 0;
-        double ua, dua, ub, dub;
-        stepper_end_drive(s->st, &ub, &dub);
-        if (!collision_needed(&s->lim, s->y, s->y + n, ub))
-            return 0; /* the common step: nothing touches */
-        drive_eval(d, a, &ua, &dua);
-        /* The earliest contact in the piece, resting contacts apart. Where more than a
-         * few close in one piece, the chain is piling up: those are settled at its end,
-         * so a pile-up costs a step, not a step per contact. */
-        double first = 2.0;
-        int which = -1, closing = 0;
-        for (int k = 0; k < s->lim.count && closing <= MAX_LOCATED; k++) {
-            if (collision_gap(&s->lim, k, s->y, ub) >= -TOUCH)
-                continue;
-            if (collision_gap(&s->lim, k, s->ya, ua) <= TOUCH &&
-                fabs(collision_rate(&s->lim, k, s->ya + n, dua)) < COLLISION_V_REST)
-                continue;
-            /* A mass joining a pile (its other side already touching) is settled with
-             * the pile at the piece's end. */
-            if ((k > 0 && collision_gap(&s->lim, k - 1, s->ya, ua) <= TOUCH) ||
-                (k + 1 < s->lim.count && collision_gap(&s->lim, k + 1, s->ya, ua) <= TOUCH))
-                continue;
-            closing++;
-            double th = closing_time(s, d, k, a, b - a);
-            if (th < first)
-                first = th, which = k;
+        stepper_start_drive(s->st, &p.ua, &p.dua);
+        stepper_end_drive(s->st, &p.ub, &p.dub);
+        if (s->rest->active)
+            rest_snap(s->rest, &s->lim, m, s->y, s->y + n, p.ub, p.dub);
+        p.ya = s->ya, p.a = a, p.h = b - a;
+        p.drive_err = drive_interp_error(d, b - a);
+        /* The earliest event in the piece: a gap closing (or grazing), or a resting
+         * contact starting to pull. Where more than a few gaps close in one piece of a
+         * long chain, it is piling up: those are settled at its end, so a pile-up costs
+         * a step, not a step per contact. */
+        int which, closing, released = -1;
+        double first = events_contact(&p, &which, &closing);
+        if (s->rest->active) {
+            double th = events_release(&p, s->work, s->force, &released);
+            if (th >= 0.0 && (which < 0 || th < first))
+                first = th, which = -1;
+            else
+                released = -1;
         }
-        if (which < 0 || events >= MAX_EVENTS || closing > MAX_LOCATED)
+        if ((which < 0 && released < 0) || events >= MAX_EVENTS ||
+            (closing > MAX_LOCATED && n > MAX_LOCATED))
             break;
-        /* Step again, to the instant of contact. */
+        /* Step again, to the instant of the event. */
         double tc = a + first * (b - a);
         memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
         if (tc > a && stepper_apply(s->st, integ, d, a, tc, s->y) != 0)
             return -1;
         double uc, duc;
         drive_eval(d, tc, &uc, &duc);
-        if (integ == INTEGRATOR_EXACT) {
+        if (integ == INTEGRATOR_EXACT && which >= 0 && !s->rest->active) {
             /* On the exact solution: Newton on the gap, whose rate is known exactly. */
             for (int it = 0; it < 4; it++) {
                 double g = collision_gap(&s->lim, which, s->y, uc);
@@ -310,18 +250,22 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
                 drive_eval(d, tc, &uc, &duc);
             }
         }
-        s->last_contacts += hit_touching(s, uc, duc);
+        if (released >= 0 && s->rest->on[released]) {
+            s->rest->on[released] = false;
+            s->rest->active--;
+        }
+        at_event(s, which, uc, duc, p.ddu_factor * uc);
         if (b - tc <= 1e-12 * s->dt)
             break;
         a = tc;
     }
-    /* Resting contacts, and any beyond MAX_EVENTS, are put back at the piece's end. */
-    double ub, dub;
-    stepper_end_drive(s->st, &ub, &dub);
-    if (collision_needed(&s->lim, s->y, s->y + n, ub)) {
+    /* A pile-up, and anything left over, is put back at the piece's end. */
+    stepper_end_drive(s->st, &p.ub, &p.dub);
+    if (collision_needed(&s->lim, s->y, s->y + n, p.ub)) {
         struct collision_books bk = {0.0, 0.0};
-        s->last_contacts += collision_settle(&s->lim, sim_model(s), s->y, s->y + n, ub, dub, &bk);
+        s->last_contacts += collision_settle(&s->lim, m, s->y, s->y + n, p.ub, p.dub, &bk);
         book(s, &bk);
+        at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub);
     }
     return 0;
 }
@@ -339,13 +283,22 @@ static double jump_work(const struct sim *s, double u_from, double u_to)
  * contact if the piston jumped into the last mass. */
 static void jump(struct sim *s, double u_from, double u, double du)
 {
-    s->y[2 * s->n + 1] += jump_work(s, u_from, u);
-    if (s->lim.on && collision_gap(&s->lim, s->lim.n, s->y, u) < -TOUCH) {
+    int n = s->n;
+    s->y[2 * n + 1] += jump_work(s, u_from, u);
+    if (!s->lim.on)
+        return;
+    double gap = collision_gap(&s->lim, n, s->y, u);
+    if (s->rest->on[n] && gap > TOUCH) { /* the piston jumped away from what it carried */
+        s->rest->on[n] = false;
+        s->rest->active--;
+    }
+    if (gap < -TOUCH) {
         struct collision_books b = {0.0, 0.0};
-        s->last_contacts +=
-            collision_settle(&s->lim, sim_model(s), s->y, s->y + s->n, u, du, &b);
+        s->last_contacts += collision_settle(&s->lim, sim_model(s), s->y, s->y + n, u, du, &b);
         book(s, &b);
     }
+    if (s->rest->active || gap < -TOUCH)
+        events_settle_rest(&s->lim, sim_model(s), s->rest, s->y, s->y + n, u, du, 0.0, s->force);
 }
 
 /* Integrates from t0 to t1 in pieces split at the drive's breakpoints. */
@@ -444,7 +397,15 @@ double sim_end_position(const struct sim *s)
 
 void sim_accel(const struct sim *s, double *a)
 {
-    model_accel(sim_model(s), s->y, s->y + s->n, sim_end_position(s), a);
+    const struct model *m = sim_model(s);
+    double u = sim_end_position(s);
+    model_accel(m, s->y, s->y + s->n, u, a);
+    if (s->rest->active) {
+        /* What rests moves with what holds it: the end's acceleration for the piston's. */
+        double w = 2.0 * M_PI * m->motor.frequency;
+        bool sine = m->boundary == BOUNDARY_MOTOR && m->motor.wave == WAVE_SINE;
+        rest_project(s->rest, m, a, sine ? -w * w * u : 0.0);
+    }
 }
 
 void sim_energy(const struct sim *s, struct energy *e)
@@ -481,10 +442,13 @@ struct snapshot_head {
     double cycles;            /* the drive's angle then, in cycles in [0, 1) */
 };
 #define HEAD_DOUBLES ((int)(sizeof(struct snapshot_head) / sizeof(double)))
+/* The resting contacts follow the state, as whole numbers of REST_BITS flags each. */
+#define REST_BITS 52
+#define REST_DOUBLES(n) (((n) + REST_BITS) / REST_BITS)
 
 int sim_snapshot_size(const struct sim *s)
 {
-    return 2 * s->n + 2 + HEAD_DOUBLES;
+    return 2 * s->n + 2 + HEAD_DOUBLES + REST_DOUBLES(s->n);
 }
 
 /* The drive's angle (cycles, in [0, 1)) at time t. */
@@ -500,6 +464,15 @@ void sim_save(const struct sim *s, double *buf)
                               drive_cycles(&sim_model(s)->motor, sim_time(s))};
     memcpy(buf, &h, sizeof h);
     memcpy(buf + HEAD_DOUBLES, s->y, (size_t)(2 * s->n + 2) * sizeof *buf);
+    double *flags = buf + HEAD_DOUBLES + 2 * s->n + 2;
+    for (int j = 0; j < REST_DOUBLES(s->n); j++) {
+        double word = 0.0;
+        for (int b = REST_BITS - 1; b >= 0; b--) {
+            int k = j * REST_BITS + b;
+            word = 2.0 * word + (k <= s->n && s->rest->on[k]);
+        }
+        flags[j] = word;
+    }
 }
 
 void sim_restore(struct sim *s, const double *buf)
@@ -512,6 +485,18 @@ void sim_restore(struct sim *s, const double *buf)
     s->contact = h.contact;
     s->last_contacts = (int)h.last_contacts;
     memcpy(s->y, buf + HEAD_DOUBLES, (size_t)(2 * s->n + 2) * sizeof *buf);
+    const double *flags = buf + HEAD_DOUBLES + 2 * s->n + 2;
+    rest_clear(s->rest, &s->lim);
+    for (int j = 0; j < REST_DOUBLES(s->n); j++) {
+        double word = flags[j];
+        for (int b = 0; b < REST_BITS; b++) {
+            int k = j * REST_BITS + b;
+            bool on = fmod(word, 2.0) != 0.0;
+            word = floor(word / 2.0);
+            if (on && k < s->lim.count)
+                s->rest->on[k] = true, s->rest->active++;
+        }
+    }
     /* The drive goes on from the angle it had then, at the frequency in force now: if the
      * frequency changed since, the phase is re-anchored so the piston does not jump. */
     double p = h.cycles - sim_model(s)->motor.frequency * sim_time(s);

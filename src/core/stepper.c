@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "exact.h"
+#include "rest.h"
 
 struct stepper {
     struct model *model;   /* own copy of the parameters */
@@ -25,6 +26,9 @@ struct stepper {
     double rot_sn, rot_cs; /* sin and cos of the drive's angle there */
     int rot_carried;       /* steps since sin and cos were last taken afresh */
     double end_u, end_du;  /* the drive at the end of the last step taken */
+    double start_u, start_du; /* and at its start */
+    const struct rest *rest;  /* resting contacts held as constraints, or NULL */
+    double ddu_factor;        /* u'' = ddu_factor u on the piece being stepped */
 };
 
 void drive_at(struct drive *d, const struct model *m, double t)
@@ -38,6 +42,23 @@ void drive_at(struct drive *d, const struct model *m, double t)
         d->kind = DRIVE_PIECE;
         motor_piece_at(&m->motor, t, &d->piece);
     }
+}
+
+double drive_ddu_factor(const struct drive *d)
+{
+    if (d->kind != DRIVE_SINE)
+        return 0.0; /* constants and ramps */
+    double w = 2.0 * M_PI * d->motor->frequency;
+    return -w * w;
+}
+
+double drive_interp_error(const struct drive *d, double h)
+{
+    if (d->kind != DRIVE_SINE)
+        return 0.0;
+    /* The cubic Hermite interpolant's error bound, max |u''''| h^4 / 384. */
+    double wh = 2.0 * M_PI * d->motor->frequency * h;
+    return d->motor->amplitude * wh * wh * wh * wh / 384.0;
 }
 
 void drive_eval(const struct drive *d, double t, double *u, double *du)
@@ -111,6 +132,17 @@ void stepper_end_drive(const struct stepper *st, double *u, double *du)
     *du = st->end_du;
 }
 
+void stepper_start_drive(const struct stepper *st, double *u, double *du)
+{
+    *u = st->start_u;
+    *du = st->start_du;
+}
+
+void stepper_set_rest(struct stepper *st, const struct rest *r)
+{
+    st->rest = r;
+}
+
 int stepper_copy(struct stepper *dst, const struct stepper *src)
 {
     if (src->exact && !dst->exact && !(dst->exact = exact_new(src->n)))
@@ -125,6 +157,7 @@ int stepper_copy(struct stepper *dst, const struct stepper *src)
     dst->rot_sn = src->rot_sn, dst->rot_cs = src->rot_cs;
     dst->rot_carried = src->rot_carried;
     dst->end_u = src->end_u, dst->end_du = src->end_du;
+    dst->start_u = src->start_u, dst->start_du = src->start_du;
     return 0;
 }
 
@@ -138,6 +171,15 @@ const double *stepper_inv_m(const struct stepper *st)
     return st->inv_m;
 }
 
+/* Resting contacts: the accelerations dy + n made the constrained ones, and the piston's
+ * push on its cluster booked as the motor's work. */
+static void constrain(const struct stepper *st, double u, double du, double *dy)
+{
+    int n = st->n;
+    double push = rest_project(st->rest, st->model, dy + n, st->ddu_factor * u);
+    dy[2 * n + 1] -= push * du;
+}
+
 /* dy/dt at state y with the right end at u moving at du. */
 static void deriv(const struct stepper *st, const double *y, double u, double du, double *dy)
 {
@@ -145,6 +187,8 @@ static void deriv(const struct stepper *st, const double *y, double u, double du
     for (int i = 0; i < n; i++) /* a loop: for a short chain memcpy's call costs more */
         dy[i] = y[n + i];
     model_rates(st->model, st->inv_m, y, y + n, u, du, dy + n, &dy[2 * n], &dy[2 * n + 1]);
+    if (st->rest && st->rest->active)
+        constrain(st, u, du, dy);
 }
 
 /* The sine drive u = A sin(th), du = A w cos(th) at a, a + h/2 and a + h, with one
@@ -207,6 +251,7 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     double h = b - a, h2 = 0.5 * h, u[3], du[3];
     double *tmp = st->tmp, *acc = st->k1, *k = st->k2;
     drive3(st, d, a, b, u, du);
+    st->start_u = u[0], st->start_du = du[0];
     st->end_u = u[2], st->end_du = du[2];
     /* The sum k1 + 2 k2 + 2 k3 + k4 builds up in acc as the stages come, each loop also
      * making the next stage's argument: four passes over the state instead of seven. */
@@ -280,6 +325,8 @@ static void verlet(struct stepper *st, const struct drive *d, double a, double b
         y[n + i] = (vh[i] + 0.5 * h * d1[n + i]) /
                    (1.0 + 0.5 * h * st->model->c[i] * st->inv_m[i]);
     model_rates(st->model, st->inv_m, y, y + n, u1, du1, d1 + n, &d1[2 * n], &d1[2 * n + 1]);
+    if (st->rest && st->rest->active)
+        constrain(st, u1, du1, d1);
     y[2 * n] += 0.5 * h * (d0[2 * n] + d1[2 * n]);
     y[2 * n + 1] += 0.5 * h * (d0[2 * n + 1] + d1[2 * n + 1]);
 }
@@ -303,11 +350,34 @@ static int exact_step(struct stepper *st, const struct drive *d, double a, doubl
     return exact_advance(st->exact, st->model, &ed, a, b, y, y + n, &y[2 * n], &y[2 * n + 1]);
 }
 
+/* The exact stepper while contacts rest: the constrained chain is another linear system,
+ * taken here by RK4 in sub-steps short enough (the fastest rate times the sub-step at
+ * most EXACT_REST_STEP) to keep its error near 1e-12 of the motion. */
+#define EXACT_REST_STEP 0.01
+static void exact_resting(struct stepper *st, const struct drive *d, double a, double b,
+                          double *y)
+{
+    const struct model *m = st->model;
+    double rate = 0.0;
+    for (int i = 0; i < st->n; i++) {
+        /* Gershgorin: w^2 <= 2 max (k_i + k_i+1) / m_i; the damper's rate c / m. */
+        double k = m->k[i] + (i + 1 < st->n || m->boundary != BOUNDARY_FREE ? m->k[i + 1] : 0);
+        rate = fmax(rate, sqrt(2.0 * k / m->m[i]) + m->c[i] / m->m[i]);
+    }
+    int subs = (int)fmin(1e5, ceil((b - a) * rate / EXACT_REST_STEP));
+    subs = subs < 1 ? 1 : subs;
+    for (int j = 0; j < subs; j++)
+        rk4(st, d, a + (b - a) * j / subs, j + 1 == subs ? b : a + (b - a) * (j + 1) / subs, y);
+}
+
 int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, double a,
                   double b, double *y)
 {
-    if (i != INTEGRATOR_RK4)
+    st->ddu_factor = drive_ddu_factor(d);
+    if (i != INTEGRATOR_RK4) {
+        drive_eval(d, a, &st->start_u, &st->start_du);
         drive_eval(d, b, &st->end_u, &st->end_du);
+    }
     switch (i) {
     case INTEGRATOR_EULER:
         euler(st, d, a, b, y);
@@ -319,6 +389,11 @@ int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, 
         verlet(st, d, a, b, y);
         return 0;
     case INTEGRATOR_EXACT:
+        if (st->rest && st->rest->active) {
+            exact_resting(st, d, a, b, y);
+            drive_eval(d, b, &st->end_u, &st->end_du);
+            return 0;
+        }
         return exact_step(st, d, a, b, y);
     case INTEGRATOR_RK4:
     case INTEGRATOR_COUNT:

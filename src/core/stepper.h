@@ -19,6 +19,12 @@ struct drive {
  * inside the piece, not on a breakpoint). */
 void drive_at(struct drive *d, const struct model *m, double t);
 
+/* u'' on the piece is drive_ddu_factor(d) u: a sine's -w^2, 0 for constants and ramps. */
+double drive_ddu_factor(const struct drive *d);
+
+/* How far u strays from its cubic Hermite interpolant over a piece of length h (m). */
+double drive_interp_error(const struct drive *d, double h);
+
 /* u(t) and u'(t) on the piece. */
 void drive_eval(const struct drive *d, double t, double *u, double *du);
 
@@ -41,6 +47,14 @@ int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, 
 
 /* The drive (u, u') at the end of the last step taken: a sine's costs no sincos. */
 void stepper_end_drive(const struct stepper *st, double *u, double *du);
+
+/* The drive at the start of the last step taken. */
+void stepper_start_drive(const struct stepper *st, double *u, double *du);
+
+struct rest;
+/* Resting contacts to hold as constraints in every step from now on (NULL: none); the
+ * stepper reads them, the caller keeps them. */
+void stepper_set_rest(struct stepper *st, const struct rest *r);
 
 /* Sets the drive's phase (cycles) in the stepper's model; dt as for stepper_set_model. */
 void stepper_set_phase(struct stepper *st, double phase, double dt);

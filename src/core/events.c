@@ -1,0 +1,305 @@
+/* events.c: contacts located inside the step, grazes and resting contacts included.
+ *
+ * Along a piece the positions are the cubic Hermite interpolant of the two ends (the
+ * velocities are their derivatives at the ends), so every gap between masses or to the
+ * wall is a cubic in theta in [0, 1],
+ *   g(theta) = g0 + s0 theta + c2 theta^2 + c3 theta^3,
+ *   c2 = 3 (g1 - g0) - 2 s0 - s1,   c3 = s0 + s1 - 2 (g1 - g0),
+ * s = h g' at the ends; the piston's adds the drive, which strays from its own cubic by
+ * at most drive_err. The gap is split at the cubic's turning points (roots of g'), so a
+ * gap that dips below zero and comes back inside the piece is found, not only one that
+ * ends it closed. Most gaps are far from closing: g = L(theta) + theta (1 - theta)
+ * ((1 - theta) A - theta B), A = s0 - (g1 - g0), B = s1 - (g1 - g0), so
+ * g >= min(g0, g1) - max(|A|, |B|) / 4, and a gap above that bound costs a few flops.
+ *
+ * A step error of O(h^5) in the state gives a contact instant to O(h^4) on the
+ * interpolant, so the method's order survives contacts. */
+#include "events.h"
+
+#include <math.h>
+
+/* Rates below this (m/s) after a contact count as no motion: the two moved as one. */
+#define REST_RATE 1e-9
+/* A gap this small (m) may start to rest: the located instant's gap is the interpolant's
+ * error, which resting then removes. */
+#define REST_GAP 1e-6
+/* Sweeps of the contact rule at one instant before what still closes moves as one. */
+#define SWEEPS 3
+
+/* x_i at theta of the piece, and its velocity. */
+static double hermite(const struct events_piece *p, int i, double th)
+{
+    int n = p->m->n;
+    double h = p->h, t2 = th * th, t3 = t2 * th;
+    return (2 * t3 - 3 * t2 + 1) * p->ya[i] + (t3 - 2 * t2 + th) * h * p->ya[n + i] +
+           (-2 * t3 + 3 * t2) * p->y[i] + (t3 - t2) * h * p->y[n + i];
+}
+
+static double hermite_v(const struct events_piece *p, int i, double th)
+{
+    int n = p->m->n;
+    double h = p->h, t2 = th * th;
+    return (6 * t2 - 6 * th) / h * p->ya[i] + (3 * t2 - 4 * th + 1) * p->ya[n + i] +
+           (-6 * t2 + 6 * th) / h * p->y[i] + (3 * t2 - 2 * th) * p->y[n + i];
+}
+
+/* Constraint k's gap at theta, the drive taken exactly. */
+static double gap_at(const struct events_piece *p, int k, double th)
+{
+    const struct collision_limits *l = p->lim;
+    int n = l->n;
+    if (k == 0)
+        return l->spacing + hermite(p, 0, th) - 0.5 * l->w;
+    if (k < n)
+        return l->spacing + hermite(p, k, th) - hermite(p, k - 1, th) - l->w;
+    double u, du;
+    drive_eval(p->d, p->a + th * p->h, &u, &du);
+    return MODEL_LENGTH + u - 0.5 * l->w - (n * l->spacing + hermite(p, n - 1, th));
+}
+
+static double cubic(const double c[4], double th)
+{
+    return ((c[3] * th + c[2]) * th + c[1]) * th + c[0];
+}
+
+/* The root of the gap in [lo, hi], where it goes from open to closed: regula falsi
+ * (Illinois) on the gap itself, or on its cubic where the drive's straying leaves the
+ * gap without a change of sign there. */
+static double root(const struct events_piece *p, int k, const double c[4], double lo, double hi)
+{
+    bool exact = true;
+    double glo = gap_at(p, k, lo), ghi = gap_at(p, k, hi);
+    if (!(glo > 0.0 && ghi < 0.0)) {
+        exact = false;
+        glo = cubic(c, lo), ghi = cubic(c, hi);
+        if (!(glo > 0.0))
+            return lo;
+    }
+    int side = 0;
+    for (int it = 0; it < 100 && hi - lo > 1e-15; it++) {
+        double th = (lo * ghi - hi * glo) / (ghi - glo);
+        if (!(th > lo && th < hi))
+            th = 0.5 * (lo + hi);
+        double g = exact ? gap_at(p, k, th) : cubic(c, th);
+        if (g > 0.0) {
+            lo = th, glo = g;
+            if (side == -1)
+                ghi *= 0.5;
+            side = -1;
+        } else {
+            hi = th, ghi = g;
+            if (side == 1)
+                glo *= 0.5;
+            side = 1;
+        }
+        if (fabs(g) < 1e-15)
+            return th;
+    }
+    return hi;
+}
+
+/* Where constraint k, given its cubic c, first closes: theta, or -1. */
+static double first_close(const struct events_piece *p, int k, const double c[4])
+{
+    if (c[0] <= EVENTS_TOUCH && c[1] < 0.0)
+        return 0.0; /* touching and closing already */
+    /* The turning points: roots of c1 + 2 c2 theta + 3 c3 theta^2 inside (0, 1). */
+    double pts[4] = {0.0}, qa = 3.0 * c[3], qb = 2.0 * c[2], qc = c[1];
+    int np = 1;
+    if (qa != 0.0) {
+        double disc = qb * qb - 4.0 * qa * qc;
+        if (disc > 0.0) {
+            double q = -0.5 * (qb + copysign(sqrt(disc), qb));
+            double r1 = q / qa, r2 = q != 0.0 ? qc / q : r1;
+            if (r1 > r2) {
+                double t = r1;
+                r1 = r2, r2 = t;
+            }
+            if (r1 > 0.0 && r1 < 1.0)
+                pts[np++] = r1;
+            if (r2 > 0.0 && r2 < 1.0 && r2 != r1)
+                pts[np++] = r2;
+        }
+    } else if (qb != 0.0) {
+        double r = -qc / qb;
+        if (r > 0.0 && r < 1.0)
+            pts[np++] = r;
+    }
+    pts[np++] = 1.0;
+    for (int j = 0; j + 1 < np; j++) {
+        double g1 = cubic(c, pts[j + 1]);
+        if (g1 >= -EVENTS_TOUCH - p->drive_err * (k == p->lim->n))
+            continue;
+        /* The first piece that ends closed: its root, or its start if it starts closed
+         * (a turning point that never opened). */
+        return cubic(c, pts[j]) > 0.0 ? root(p, k, c, pts[j], pts[j + 1]) : pts[j];
+    }
+    return -1.0;
+}
+
+double events_contact(const struct events_piece *p, int *which, int *closing)
+{
+    const struct collision_limits *l = p->lim;
+    const double *ya = p->ya, *y = p->y;
+    int n = l->n;
+    double h = p->h, first = 2.0, sp = l->spacing, w = l->w;
+    *which = -1, *closing = 0;
+    for (int k = 0; k < l->count; k++) {
+        if (p->rest->on[k])
+            continue;
+        double g0, g1, s0, s1, err = 0.0;
+        if (k == 0) {
+            g0 = sp + ya[0] - 0.5 * w, g1 = sp + y[0] - 0.5 * w;
+            s0 = h * ya[n], s1 = h * y[n];
+        } else if (k < n) {
+            g0 = sp + ya[k] - ya[k - 1] - w, g1 = sp + y[k] - y[k - 1] - w;
+            s0 = h * (ya[n + k] - ya[n + k - 1]), s1 = h * (y[n + k] - y[n + k - 1]);
+        } else {
+            double base = MODEL_LENGTH - 0.5 * w - n * sp;
+            g0 = base + p->ua - ya[n - 1], g1 = base + p->ub - y[n - 1];
+            s0 = h * (p->dua - ya[2 * n - 1]), s1 = h * (p->dub - y[2 * n - 1]);
+            err = p->drive_err;
+        }
+        double dg = g1 - g0, A = fabs(s0 - dg), B = fabs(s1 - dg);
+        if (fmin(g0, g1) - 0.25 * (A > B ? A : B) - err > -EVENTS_TOUCH)
+            continue; /* the common case: it cannot close in this piece */
+        double c[4] = {g0, s0, 3.0 * dg - 2.0 * s0 - s1, s0 + s1 - 2.0 * dg};
+        double th = first_close(p, k, c);
+        if (th < 0.0)
+            continue;
+        ++*closing;
+        if (th < first)
+            first = th, *which = k;
+    }
+    return *which < 0 ? -1.0 : first;
+}
+
+/* The weakest resting contact's force at theta, that contact in *which. */
+static double weakest_at(const struct events_piece *p, double th, double *work, double *force,
+                         int *which)
+{
+    int n = p->m->n;
+    double u, du;
+    drive_eval(p->d, p->a + th * p->h, &u, &du);
+    for (int i = 0; i < n; i++) {
+        work[i] = hermite(p, i, th);
+        work[n + i] = hermite_v(p, i, th);
+    }
+    *which = rest_forces(p->rest, p->m, work, work + n, u, du, p->ddu_factor * u, force);
+    return *which < 0 ? INFINITY : force[*which];
+}
+
+double events_release(const struct events_piece *p, double *work, double *force, int *which)
+{
+    int k;
+    if (!(weakest_at(p, 1.0, work, force, &k) < -REST_PULL))
+        return -1.0;
+    /* The force is a smooth function of theta, >= 0 at 0 where the contact held: bisect. */
+    double lo = 0.0, hi = 1.0;
+    *which = k;
+    for (int it = 0; it < 60 && hi - lo > 1e-15; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (weakest_at(p, mid, work, force, &k) < 0.0)
+            hi = mid, *which = k;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+
+/* One side of a contact: the cluster that holds mass i, its mass (INFINITY when the wall
+ * or the piston holds it) and velocity. */
+struct body {
+    int first, last, held;
+    double mass, v;
+};
+
+static void body_of(const struct rest *r, const struct model *m, int i, const double *v,
+                    double du, struct body *b)
+{
+    b->held = rest_cluster(r, m->n, i, &b->first, &b->last);
+    double p = 0.0, mass = 0.0;
+    for (int j = b->first; j <= b->last; j++)
+        p += m->m[j] * v[j], mass += m->m[j];
+    b->mass = b->held ? INFINITY : mass;
+    b->v = b->held < 0 ? 0.0 : b->held > 0 ? du : p / mass;
+}
+
+/* The contact rule on constraint k between the bodies it joins: 1 if they were closing. */
+static int body_hit(const struct collision_limits *l, const struct model *m, const struct rest *r,
+                    int k, double *v, double du, struct collision_books *bk)
+{
+    int n = l->n;
+    if (r->on[k])
+        return 0;
+    struct body L = {0, -1, -1, INFINITY, 0.0}, R = {n, n - 1, 1, INFINITY, du};
+    if (k > 0)
+        body_of(r, m, k - 1, v, du, &L);
+    if (k < n)
+        body_of(r, m, k, v, du, &R);
+    double closing = L.v - R.v;
+    if (!(closing > 0.0) || (isinf(L.mass) && isinf(R.mass)))
+        return 0;
+    double e = closing < COLLISION_V_REST ? 0.0 : MODEL_RESTITUTION, vl, vr, mu;
+    if (isinf(L.mass)) {
+        vl = L.v, vr = L.v + e * closing, mu = R.mass;
+    } else if (isinf(R.mass)) {
+        vl = R.v - e * closing, vr = R.v, mu = L.mass;
+    } else {
+        double mt = L.mass + R.mass, p = L.mass * L.v + R.mass * R.v;
+        vl = (p - R.mass * e * closing) / mt, vr = (p + L.mass * e * closing) / mt;
+        mu = L.mass * R.mass / mt;
+    }
+    double lost = 0.5 * mu * (1.0 - e * e) * closing * closing, gain = 0.0;
+    if (!isinf(L.mass))
+        gain += 0.5 * L.mass * (vl * vl - L.v * L.v);
+    if (!isinf(R.mass))
+        gain += 0.5 * R.mass * (vr * vr - R.v * R.v);
+    for (int j = L.first; j <= L.last; j++)
+        v[j] = vl;
+    for (int j = R.first; j <= R.last; j++)
+        v[j] = vr;
+    bk->lost += lost;
+    /* The piston, moving, does all the work the contact did: the bodies' gain plus the
+     * loss. Against the wall it does none (the gain is then minus the loss). */
+    if (L.held > 0 || R.held > 0)
+        bk->piston += gain + lost;
+    return 1;
+}
+
+int events_hit(const struct collision_limits *l, const struct model *m, struct rest *r, int k,
+               const double *x, double *v, double u, double du, struct collision_books *b)
+{
+    int hits = body_hit(l, m, r, k, v, du, b), found = 1;
+    for (int sweep = 0; sweep < SWEEPS && found; sweep++) {
+        found = 0;
+        for (int j = 0; j < l->count; j++)
+            if (collision_gap(l, j, x, u) <= EVENTS_TOUCH)
+                found += body_hit(l, m, r, j, v, du, b);
+        hits += found;
+    }
+    if (found) /* still closing after the sweeps: what touches moves as one */
+        hits += collision_merge(l, m, x, v, u, du, b);
+    return hits;
+}
+
+void events_settle_rest(const struct collision_limits *l, const struct model *m, struct rest *r,
+                        double *x, double *v, double u, double du, double ddu, double *force)
+{
+    for (int k = 0; k < l->count; k++) {
+        double rate = collision_rate(l, k, v, du);
+        if (r->on[k] && rate > REST_RATE) {
+            r->on[k] = false, r->active--;
+        } else if (!r->on[k] && fabs(rate) <= REST_RATE &&
+                   fabs(collision_gap(l, k, x, u)) <= REST_GAP) {
+            r->on[k] = true, r->active++;
+        }
+    }
+    for (;;) {
+        int k = rest_forces(r, m, x, v, u, du, ddu, force);
+        if (k < 0 || force[k] >= -REST_PULL)
+            break;
+        r->on[k] = false, r->active--;
+    }
+    rest_snap(r, l, m, x, v, u, du);
+}
