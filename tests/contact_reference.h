@@ -1,5 +1,6 @@
 /* contact_reference.h: an event-driven reference solution of the chain with contacts,
- * written from SPEC section 1 alone (no code shared with src/core), for test_contact.c.
+ * written from SPEC section 1 alone (no code shared with src/core), for test_contact.c
+ * and test_campaign.c.
  *
  * Between contacts the chain is the linear ODE
  *   x' = v,  m_i v_i' = -k_i (x_i - x_{i-1}) + k_{i+1} (x_{i+1} - x_i) - c_i v_i,
@@ -14,6 +15,18 @@
  * SPEC's rule (e = 0.8, velocity relative to the wall or piston reversed and scaled;
  * neighbours by 1-D restitution, momentum kept) applied, and the run goes on.
  *
+ * Resting contacts: a contact closing slower than REF_V_REST is perfectly inelastic; if
+ * the forces then press it shut it holds as a constraint. Masses joined by held contacts
+ * are one rigid cluster (the wall's cannot move, the piston's moves with the piston), so
+ * the series is that of the constrained chain: a free cluster accelerates by its net
+ * force over its mass, the piston's by u''. The force across each held contact is a
+ * series too (Newton on the part left of it); the contact parts where it turns to a pull,
+ * found like a closing gap. A contact against a cluster is the SPEC's rule between the
+ * two rigid bodies. The square, triangle and sawtooth drives are pieces of constants and
+ * ramps (SPEC's formulas), sub-steps ending at their breakpoints; a jump of the end books
+ * the change of the end spring's energy as the motor's work, and a jump into the last mass
+ * is not this reference's business (r->error).
+ *
  * The energy books are kept exactly too: dissipated = integral of sum c v^2, motor work =
  * integral of k_N (u - x_N) u' plus the impulse times the piston's velocity at a piston
  * contact; contact = the energy restitution removes, 1/2 mu (1 - e^2) v_rel^2 (mu the
@@ -23,14 +36,18 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <string.h>
 
 #include "core/model.h"
 
-#define REF_MAXN 4        /* masses the reference takes */
+#define REF_MAXN 10       /* masses the reference takes */
 #define REF_ORDER 24      /* Taylor order */
 #define REF_HMAX 1e-3     /* longest sub-step (s) by default */
 #define REF_SAMPLES 8     /* samples of each gap per sub-step, to find its extrema */
-#define REF_MAXEVENTS 128 /* contacts logged */
+#define REF_MAXEVENTS 256 /* contacts logged (all are counted) */
+#define REF_V_REST 1e-3   /* below this approach speed a contact is inelastic (SPEC: rests) */
+#define REF_RATE 1e-9     /* relative speeds below this are none */
+#define REF_PULL 1e-9     /* a held contact parts when its force falls below -this (N) */
 #define REF_E 0.8         /* restitution, SPEC section 1 */
 #define REF_L 10.0        /* right end's base (m) */
 
@@ -43,8 +60,15 @@ struct ref_event {
     double speed;       /* approach speed, > 0 (m/s) */
 };
 
+enum ref_wave { REF_SINE, REF_SQUARE, REF_TRIANGLE, REF_SAWTOOTH };
+
 struct ref {
     int n; /* masses */
+    enum ref_wave wave;                     /* the drive's form */
+    double freq;                            /* its frequency (Hz); phase in cycles below */
+    double cycles0;                         /* the drive's phase (cycles) */
+    bool held[REF_MAXN + 1];                /* resting contacts (indexed as gaps) */
+    int count;                              /* every contact so far */
     double m[REF_MAXN], k[REF_MAXN + 1], c[REF_MAXN];
     bool motor, free_end;                   /* right end: moving piston / none */
     double amp, omega, phase;               /* u = amp sin(omega t + phase) */
@@ -78,15 +102,85 @@ static void ref_init(struct ref *r, const struct model *md, const double *x0, co
         r->amp = md->motor.amplitude;
         r->omega = 2.0 * M_PI * md->motor.frequency;
         r->phase = 2.0 * M_PI * md->motor.phase;
+        r->freq = md->motor.frequency;
+        r->cycles0 = md->motor.phase;
+        r->wave = md->motor.wave == WAVE_SQUARE     ? REF_SQUARE
+                  : md->motor.wave == WAVE_TRIANGLE ? REF_TRIANGLE
+                  : md->motor.wave == WAVE_SAWTOOTH ? REF_SAWTOOTH
+                                                    : REF_SINE;
     }
     r->w = fmin(0.4, 0.5 * REF_L / (n + 1));
+}
+
+/* The piece of a piecewise drive holding time t: its index j, the pieces being
+ * [(j + off) / per, (j + 1 + off) / per) in cycles of the drive. */
+static double ref_piece_len(const struct ref *r)
+{
+    return r->wave == REF_SAWTOOTH ? 1.0 : 0.5; /* cycles */
+}
+
+static double ref_piece_off(const struct ref *r)
+{
+    return r->wave == REF_TRIANGLE ? 0.25 : r->wave == REF_SAWTOOTH ? 0.5 : 0.0;
+}
+
+/* u and u' at time t on the piece that starts at or before t (after = 1) or the one that
+ * ends at or after it (after = 0), by the SPEC's formulas. */
+static void ref_drive_side(const struct ref *r, double t, int after, double *u, double *du)
+{
+    if (!r->motor) {
+        *u = *du = 0.0;
+        return;
+    }
+    double cyc = r->freq * t + r->cycles0, A = r->amp, w = r->omega;
+    if (r->wave == REF_SINE) {
+        *u = A * sin(2.0 * M_PI * cyc);
+        *du = A * w * cos(2.0 * M_PI * cyc);
+        return;
+    }
+    double len = ref_piece_len(r), off = ref_piece_off(r);
+    /* Within 1e-9 of a piece of a breakpoint, t is on it (the rounding of t): the piece
+     * after it, or the one before. */
+    double pos = (cyc - off) / len;
+    double j = after ? floor(pos + 1e-9) : ceil(pos - 1e-9) - 1.0;
+    double mid = (j + 0.5) * len + off; /* a cycle value inside the piece */
+    double frac = mid - floor(mid);
+    switch (r->wave) {
+    case REF_SQUARE:
+        *u = frac < 0.5 ? A : -A, *du = 0.0;
+        return;
+    case REF_TRIANGLE: {
+        /* Rising through 0 at cycle 0 with slope 4 A f; falling on the other half. */
+        double slope = (frac < 0.25 || frac > 0.75) ? 4.0 * A * r->freq : -4.0 * A * r->freq;
+        double c0 = frac < 0.25 || frac > 0.75 ? floor(mid + 0.5) : floor(mid) + 0.5;
+        *u = slope * (cyc - c0) / r->freq, *du = slope;
+        return;
+    }
+    case REF_SAWTOOTH: {
+        double c0 = floor(mid + 0.5); /* the rising zero inside this piece */
+        *u = 2.0 * A * (cyc - c0), *du = 2.0 * A * r->freq;
+        return;
+    }
+    case REF_SINE:
+        break;
+    }
 }
 
 /* u and u' at time t. */
 static void ref_drive(const struct ref *r, double t, double *u, double *du)
 {
-    *u = r->amp * sin(r->omega * t + r->phase);
-    *du = r->amp * r->omega * cos(r->omega * t + r->phase);
+    ref_drive_side(r, t, 1, u, du);
+}
+
+/* The next breakpoint of the drive after t (INFINITY for a sine or no motor). */
+static double ref_next_break(const struct ref *r, double t)
+{
+    if (!r->motor || r->wave == REF_SINE || r->amp == 0.0)
+        return INFINITY;
+    double len = ref_piece_len(r), off = ref_piece_off(r);
+    double cyc = r->freq * t + r->cycles0, j = floor((cyc - off) / len + 1e-9) + 1.0;
+    double tb = ((j * len + off) - r->cycles0) / r->freq;
+    return tb > t ? tb : ((j + 1.0) * len + off - r->cycles0) / r->freq;
 }
 
 /* Kinetic plus spring potential energy now. */
@@ -112,40 +206,80 @@ static double ref_balance(const struct ref *r)
 }
 
 /* The series at the current time: x(t + s) = sum X[p] s^p, likewise V and, for the drive,
- * U (to order REF_ORDER + 1, so u' has REF_ORDER terms too). */
+ * U (to order REF_ORDER + 1, so u' has REF_ORDER terms too); F the force across each held
+ * contact (its last term left 0). */
 struct ref_series {
     double X[REF_ORDER + 1][REF_MAXN], V[REF_ORDER + 1][REF_MAXN], U[REF_ORDER + 2];
+    double F[REF_ORDER + 1][REF_MAXN + 1];
 };
+
+/* The cluster of held contacts around mass i: [*f, *l], and -1 when the wall holds it, 1
+ * the piston, 0 nothing. */
+static int ref_cluster(const struct ref *r, int i, int *f, int *l)
+{
+    int a = i, b = i;
+    while (a > 0 && r->held[a])
+        a--;
+    while (b + 1 < r->n && r->held[b + 1])
+        b++;
+    *f = a, *l = b;
+    if (a == 0 && r->held[0])
+        return -1;
+    if (b == r->n - 1 && !r->free_end && r->held[r->n])
+        return 1;
+    return 0;
+}
 
 static void ref_expand(const struct ref *r, struct ref_series *s)
 {
     int n = r->n;
-    double sn = 0.0, cs = 0.0, fact = 1.0, wp = 1.0;
-    if (r->motor) {
-        sn = sin(r->omega * r->t + r->phase);
-        cs = cos(r->omega * r->t + r->phase);
-    }
-    for (int p = 0; p <= REF_ORDER + 1; p++) {
-        /* u^(p) = A w^p sin(theta + p pi/2): sin, cos, -sin, -cos, ... */
-        double d = (p % 4 == 0) ? sn : (p % 4 == 1) ? cs : (p % 4 == 2) ? -sn : -cs;
-        s->U[p] = r->motor ? r->amp * wp * d / fact : 0.0;
-        wp *= r->omega;
-        fact *= p + 1;
+    memset(s, 0, sizeof *s);
+    if (r->motor && r->wave == REF_SINE) {
+        double sn = sin(r->omega * r->t + r->phase), cs = cos(r->omega * r->t + r->phase);
+        double fact = 1.0, wp = 1.0;
+        for (int p = 0; p <= REF_ORDER + 1; p++) {
+            /* u^(p) = A w^p sin(theta + p pi/2): sin, cos, -sin, -cos, ... */
+            double d = (p % 4 == 0) ? sn : (p % 4 == 1) ? cs : (p % 4 == 2) ? -sn : -cs;
+            s->U[p] = r->amp * wp * d / fact;
+            wp *= r->omega;
+            fact *= p + 1;
+        }
+    } else if (r->motor) {
+        ref_drive(r, r->t, &s->U[0], &s->U[1]); /* a constant or a ramp */
     }
     for (int i = 0; i < n; i++) {
         s->X[0][i] = r->x[i];
         s->V[0][i] = r->v[i];
     }
     for (int p = 0; p < REF_ORDER; p++) {
+        double f[REF_MAXN];
         for (int i = 0; i < n; i++) {
             double xl = i > 0 ? s->X[p][i - 1] : 0.0;
-            double f = -r->k[i] * (s->X[p][i] - xl) - r->c[i] * s->V[p][i];
+            f[i] = -r->k[i] * (s->X[p][i] - xl) - r->c[i] * s->V[p][i];
             if (i < n - 1)
-                f += r->k[i + 1] * (s->X[p][i + 1] - s->X[p][i]);
+                f[i] += r->k[i + 1] * (s->X[p][i + 1] - s->X[p][i]);
             else if (!r->free_end)
-                f += r->k[n] * (s->U[p] - s->X[p][i]);
-            s->X[p + 1][i] = s->V[p][i] / (p + 1);
-            s->V[p + 1][i] = f / r->m[i] / (p + 1);
+                f[i] += r->k[n] * (s->U[p] - s->X[p][i]);
+        }
+        for (int a = 0, b; a < n; a = b + 1) {
+            int hold = ref_cluster(r, a, &a, &b);
+            double force = 0.0, mass = 0.0;
+            for (int i = a; i <= b; i++)
+                force += f[i], mass += r->m[i];
+            /* The cluster's acceleration term; u'' = sum (p+2)(p+1) U[p+2] s^p. */
+            double acc = hold < 0   ? 0.0
+                         : hold > 0 ? (p + 2) * (p + 1) * s->U[p + 2]
+                                    : force / mass;
+            double left = hold < 0 ? -force : 0.0; /* the wall's push */
+            if (hold < 0)
+                s->F[p][0] = left;
+            for (int i = a; i <= b; i++) {
+                s->X[p + 1][i] = s->V[p][i] / (p + 1);
+                s->V[p + 1][i] = acc / (p + 1);
+                left += f[i] - r->m[i] * acc;
+                if (i < b || (hold > 0 && i == n - 1))
+                    s->F[p][i + 1] = left;
+            }
         }
     }
 }
@@ -268,48 +402,116 @@ static void ref_move(struct ref *r, const struct ref_series *se, double s)
         r->v[i] = ref_poly(vs, s);
     }
     if (r->motor) {
+        /* Through the end spring k_N (u - x_N) u', and, while the piston carries a
+         * cluster, its push on it: power -F_N u' (F_N pushes the cluster left). */
         double f[REF_ORDER + 1], du[REF_ORDER + 1];
         for (int p = 0; p <= REF_ORDER; p++) {
-            f[p] = se->U[p] - se->X[p][n - 1];
+            f[p] = r->k[n] * (se->U[p] - se->X[p][n - 1]);
+            if (r->held[n])
+                f[p] -= se->F[p][n];
             du[p] = (p + 1) * se->U[p + 1];
         }
-        r->motor_work += r->k[n] * ref_integral_of_product(f, du, s);
+        r->motor_work += ref_integral_of_product(f, du, s);
     }
 }
 
-/* The SPEC's rule for the contact of gap g, with the books. */
+/* One side of a contact: a rigid cluster, its mass (INFINITY when the wall or the piston
+ * holds it) and velocity. */
+struct ref_body {
+    int f, l, hold;
+    double mass, v;
+};
+
+static void ref_body_of(const struct ref *r, int i, double du, struct ref_body *b)
+{
+    b->hold = ref_cluster(r, i, &b->f, &b->l);
+    double p = 0.0, mass = 0.0;
+    for (int j = b->f; j <= b->l; j++)
+        p += r->m[j] * r->v[j], mass += r->m[j];
+    b->mass = b->hold ? INFINITY : mass;
+    b->v = b->hold < 0 ? 0.0 : b->hold > 0 ? du : p / mass;
+}
+
+/* Held contacts' forces now (F[0] of the series): the weakest one, or -1. */
+static int ref_weakest(const struct ref *r, double *force)
+{
+    struct ref_series se;
+    ref_expand(r, &se);
+    int gaps = r->free_end ? r->n : r->n + 1, w = -1;
+    for (int g = 0; g < gaps; g++)
+        if (r->held[g] && (w < 0 || se.F[0][g] < se.F[0][w]))
+            w = g;
+    *force = w < 0 ? INFINITY : se.F[0][w];
+    return w;
+}
+
+/* The SPEC's rule for the contact of gap g between the rigid bodies it joins, with the
+ * books; inelastic below REF_V_REST, and then held while the forces press it. */
 static void ref_contact(struct ref *r, int g)
 {
     int n = r->n;
-    struct ref_event ev = {r->t, REF_PAIR, g - 1, 0.0};
-    if (g == 0 || g == n) {
-        /* A wall or the piston: the velocity relative to it reversed and scaled by e. */
-        int i = g == 0 ? 0 : n - 1;
-        double u, du;
-        ref_drive(r, r->t, &u, &du);
-        double wall_v = g == 0 ? 0.0 : du;
-        double rel = r->v[i] - wall_v;
-        double v1 = wall_v - REF_E * rel;
-        r->contact += 0.5 * r->m[i] * (1.0 - REF_E * REF_E) * rel * rel;
-        r->motor_work += r->m[i] * (v1 - r->v[i]) * wall_v; /* impulse times wall speed */
-        r->v[i] = v1;
-        ev.kind = g == 0 ? REF_LEFT : REF_RIGHT;
-        ev.i = i;
-        ev.speed = fabs(rel);
-    } else {
-        /* 1-D restitution: momentum kept, v2' - v1' = e (v1 - v2). */
-        int i = g - 1;
-        double m1 = r->m[i], m2 = r->m[i + 1], v1 = r->v[i], v2 = r->v[i + 1];
-        double p = m1 * v1 + m2 * v2, mt = m1 + m2;
-        r->v[i] = (p + m2 * REF_E * (v2 - v1)) / mt;
-        r->v[i + 1] = (p + m1 * REF_E * (v1 - v2)) / mt;
-        r->contact += 0.5 * m1 * m2 / mt * (1.0 - REF_E * REF_E) * (v1 - v2) * (v1 - v2);
-        ev.speed = v1 - v2;
+    double u, du;
+    ref_drive(r, r->t, &u, &du);
+    struct ref_body L = {0, -1, -1, INFINITY, 0.0}, R = {n, n - 1, 1, INFINITY, du};
+    if (g > 0)
+        ref_body_of(r, g - 1, du, &L);
+    if (g < n)
+        ref_body_of(r, g, du, &R);
+    double closing = L.v - R.v;
+    if (isinf(L.mass) && isinf(R.mass)) {
+        r->error = "a contact between two held bodies (the chain jammed)";
+        return;
     }
-    if (r->nev > 0 && r->t - r->ev[r->nev - 1].t < 1e-9)
+    double e = closing < REF_V_REST ? 0.0 : REF_E, mu, vl, vr;
+    if (isinf(L.mass)) {
+        mu = R.mass, vl = L.v, vr = L.v + e * closing;
+    } else if (isinf(R.mass)) {
+        mu = L.mass, vl = R.v - e * closing, vr = R.v;
+    } else {
+        double mt = L.mass + R.mass, p = L.mass * L.v + R.mass * R.v;
+        mu = L.mass * R.mass / mt;
+        vl = (p - R.mass * e * closing) / mt, vr = (p + L.mass * e * closing) / mt;
+    }
+    /* The piston's impulse on what it hits, times its speed, is its work. */
+    if (R.hold > 0)
+        for (int j = L.f; j <= L.l; j++)
+            r->motor_work += r->m[j] * (vl - r->v[j]) * du;
+    if (L.hold > 0)
+        for (int j = R.f; j <= R.l; j++)
+            r->motor_work += r->m[j] * (vr - r->v[j]) * du;
+    for (int j = L.f; j <= L.l; j++)
+        r->v[j] = vl;
+    for (int j = R.f; j <= R.l; j++)
+        r->v[j] = vr;
+    r->contact += 0.5 * mu * (1.0 - e * e) * closing * closing;
+    struct ref_event ev = {r->t, g == 0 ? REF_LEFT : g == n ? REF_RIGHT : REF_PAIR,
+                           g == 0 ? 0 : g - 1, closing};
+    if (r->nev > 0 && r->t - r->ev[(r->nev - 1) % REF_MAXEVENTS].t < 1e-9 &&
+        e != 0.0)
         r->error = "two contacts at one instant";
-    if (r->nev < REF_MAXEVENTS)
-        r->ev[r->nev++] = ev;
+    r->ev[r->nev % REF_MAXEVENTS] = ev; /* the last REF_MAXEVENTS, in a ring past that */
+    r->nev++;
+    r->count++;
+    if (e == 0.0) {
+        double force;
+        r->held[g] = true;
+        for (int w; (w = ref_weakest(r, &force)) >= 0 && force < -REF_PULL;)
+            r->held[w] = false;
+    }
+}
+
+/* The first instant in [0, h] at which a held contact's force F turns to a pull. */
+static bool ref_first_pull(struct ref *r, const double *F, double h, double *tau)
+{
+    if (ref_poly(F, 0.0) <= 0.0 && ref_dpoly(F, 0.0) < 0.0) {
+        *tau = 0.0;
+        return true;
+    }
+    const char *err = r->error;
+    double miss = r->near_miss;
+    bool found = ref_first_close(r, F, h, tau);
+    r->error = err, r->near_miss = miss; /* a force's minima are not near misses */
+    return found;
 }
 
 /* Advances the reference to time t1, contacts included. */
@@ -317,25 +519,56 @@ static void ref_advance(struct ref *r, double t1)
 {
     int gaps = r->free_end ? r->n : r->n + 1;
     while (r->t < t1 && !r->error) {
-        double h = fmin(r->hmax, t1 - r->t);
+        double tb = ref_next_break(r, r->t);
+        double end = fmin(t1, tb), h = fmin(r->hmax, end - r->t);
         struct ref_series se;
         ref_expand(r, &se);
         double tau = h;
-        int hit = -1;
+        int hit = -1, part = -1;
         for (int g = 0; g < gaps; g++) {
             double G[REF_ORDER + 1], tg;
-            ref_gap_poly(r, &se, g, G);
-            if (ref_first_close(r, G, h, &tg) && tg < tau) {
-                tau = tg;
-                hit = g;
+            if (r->held[g]) {
+                for (int p = 0; p <= REF_ORDER; p++)
+                    G[p] = se.F[p][g];
+                if (ref_first_pull(r, G, h, &tg) && tg < tau)
+                    tau = tg, part = g, hit = -1;
+                continue;
             }
+            ref_gap_poly(r, &se, g, G);
+            if (ref_first_close(r, G, h, &tg) && tg < tau)
+                tau = tg, hit = g, part = -1;
         }
         ref_move(r, &se, tau);
-        if (hit < 0) {
-            r->t = h == t1 - r->t ? t1 : r->t + h;
+        if (hit < 0 && part < 0) {
+            r->t = h == end - r->t ? end : r->t + h;
         } else {
             r->t += tau;
+        }
+        if (hit >= 0)
             ref_contact(r, hit);
+        if (part >= 0) {
+            double force;
+            r->held[part] = false;
+            for (int w; (w = ref_weakest(r, &force)) >= 0 && force < -REF_PULL;)
+                r->held[w] = false;
+        }
+        if (r->t == tb && hit < 0 && part < 0 && r->motor) {
+            /* A breakpoint: a jump of the end changes the end spring's energy, which the
+             * motor pays; the piston leaves what it carried if it jumps away from it. */
+            double u0, du0, u1, du1, x = r->x[r->n - 1];
+            ref_drive_side(r, tb, 0, &u0, &du0);
+            ref_drive_side(r, tb, 1, &u1, &du1);
+            r->motor_work += 0.5 * r->k[r->n] * ((u1 - x) * (u1 - x) - (u0 - x) * (u0 - x));
+            double gap = REF_L + u1 - 0.5 * r->w - r->xeq[r->n - 1] - x;
+            if (gap < -1e-12)
+                r->error = "the piston jumped into the last mass";
+            if (r->held[r->n] && gap > 1e-12)
+                r->held[r->n] = false;
+            if (r->held[r->n]) /* carried on: it now moves at the piston's new speed */
+                for (int j = r->n - 1; j >= 0 && (j == r->n - 1 || r->held[j + 1]); j--) {
+                    r->motor_work += 0.5 * r->m[j] * (du1 * du1 - r->v[j] * r->v[j]);
+                    r->v[j] = du1;
+                }
         }
     }
 }

@@ -226,7 +226,7 @@ static void body_of(const struct rest *r, const struct model *m, int i, const do
 }
 
 /* The contact rule on constraint k between the bodies it joins: 1 if they were closing. */
-static int body_hit(const struct collision_limits *l, const struct model *m, const struct rest *r,
+static int body_hit(const struct collision_limits *l, const struct model *m, struct rest *r,
                     int k, double *v, double du, struct collision_books *bk)
 {
     int n = l->n;
@@ -241,6 +241,7 @@ static int body_hit(const struct collision_limits *l, const struct model *m, con
     if (!(closing > 0.0) || (isinf(L.mass) && isinf(R.mass)))
         return 0;
     double e = closing < COLLISION_V_REST ? 0.0 : MODEL_RESTITUTION, vl, vr, mu;
+    r->soft[k] = e == 0.0;
     if (isinf(L.mass)) {
         vl = L.v, vr = L.v + e * closing, mu = R.mass;
     } else if (isinf(R.mass)) {
@@ -290,10 +291,11 @@ void events_settle_rest(const struct collision_limits *l, const struct model *m,
         double rate = collision_rate(l, k, v, du);
         if (r->on[k] && rate > REST_RATE) {
             r->on[k] = false, r->active--;
-        } else if (!r->on[k] && fabs(rate) <= REST_RATE &&
+        } else if (!r->on[k] && r->soft[k] && fabs(rate) <= REST_RATE &&
                    fabs(collision_gap(l, k, x, u)) <= REST_GAP) {
             r->on[k] = true, r->active++;
         }
+        r->soft[k] = false;
     }
     for (;;) {
         int k = rest_forces(r, m, x, v, u, du, ddu, force);

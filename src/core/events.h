@@ -45,9 +45,10 @@ double events_release(const struct events_piece *p, double *work, double *force,
 int events_hit(const struct collision_limits *l, const struct model *m, struct rest *r, int k,
                const double *x, double *v, double u, double du, struct collision_books *b);
 
-/* After an instant of contact or a release: contacts touching and no longer moving apart
- * rest while their force pushes, those moving apart or pulling part; the clusters are put
- * exactly on their constraints. force: count doubles of scratch. */
+/* After an instant of contact or a release: a contact just hit slower than
+ * COLLISION_V_REST (so no longer moving apart) rests while its force pushes; resting ones
+ * moving apart or pulling part; the clusters are put exactly on their constraints.
+ * force: count doubles of scratch. */
 void events_settle_rest(const struct collision_limits *l, const struct model *m, struct rest *r,
                         double *x, double *v, double u, double du, double ddu, double *force);
 

@@ -23,12 +23,13 @@ struct rest *rest_new(int n)
     struct rest *r = calloc(1, sizeof *r);
     if (!r)
         return NULL;
-    r->on = calloc((size_t)n + 1, sizeof *r->on);
+    r->on = calloc(2 * ((size_t)n + 1), sizeof *r->on);
     r->acc = calloc((size_t)n, sizeof *r->acc);
     if (!r->on || !r->acc) {
         rest_free(r);
         return NULL;
     }
+    r->soft = r->on + n + 1;
     r->n = n;
     r->count = n + 1;
     return r;
@@ -45,7 +46,7 @@ void rest_free(struct rest *r)
 
 void rest_clear(struct rest *r, const struct collision_limits *l)
 {
-    memset(r->on, 0, (size_t)r->n + 1);
+    memset(r->on, 0, 2 * ((size_t)r->n + 1));
     r->count = l->count;
     r->active = 0;
 }

@@ -21,6 +21,7 @@ struct rest {
     int count;  /* constraints, as in struct collision_limits */
     int active; /* how many hold now: 0 is the common case and costs nothing */
     bool *on;   /* count flags: constraint k rests */
+    bool *soft; /* count flags: constraint k was just hit slower than COLLISION_V_REST */
     double *acc; /* n: scratch for the chain's own accelerations */
 };
 
