@@ -79,6 +79,7 @@ struct ref {
     struct ref_event ev[REF_MAXEVENTS];     /* the contacts so far */
     int nev;
     double near_miss;  /* smallest local minimum of a gap that stayed open */
+    double near_rest;  /* smallest |approach speed - REF_V_REST| of a contact (m/s) */
     const char *error; /* an ambiguous contact (resting, simultaneous) */
 };
 
@@ -86,7 +87,7 @@ struct ref {
 static void ref_init(struct ref *r, const struct model *md, const double *x0, const double *v0)
 {
     int n = md->n;
-    *r = (struct ref){.n = n, .near_miss = INFINITY, .hmax = REF_HMAX};
+    *r = (struct ref){.n = n, .near_miss = INFINITY, .near_rest = INFINITY, .hmax = REF_HMAX};
     for (int i = 0; i < n; i++) {
         r->m[i] = md->m[i];
         r->c[i] = md->c[i];
@@ -463,6 +464,7 @@ static void ref_contact(struct ref *r, int g)
         return;
     }
     double e = closing < REF_V_REST ? 0.0 : REF_E, mu, vl, vr;
+    r->near_rest = fmin(r->near_rest, fabs(closing - REF_V_REST));
     if (isinf(L.mass)) {
         mu = R.mass, vl = L.v, vr = L.v + e * closing;
     } else if (isinf(R.mass)) {

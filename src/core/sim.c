@@ -235,16 +235,19 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
             return -1;
         double uc, duc;
         drive_eval(d, tc, &uc, &duc);
-        if (integ == INTEGRATOR_EXACT && which >= 0 && !s->rest->active) {
-            /* On the exact solution: Newton on the gap, whose rate is known exactly. */
-            for (int it = 0; it < 4; it++) {
+        if (which >= 0) {
+            /* The interpolant's instant is good to O(h^4); Newton on the gap of the stepped
+             * state itself (its rate known there) takes it to the method's own accuracy,
+             * which a graze, whose instant moves much with a small error of the gap,
+             * needs. */
+            for (int it = 0; it < 3; it++) {
                 double g = collision_gap(&s->lim, which, s->y, uc);
                 double r = collision_rate(&s->lim, which, s->y + n, duc);
                 if (fabs(g) < 1e-14 || r >= 0.0)
                     break;
                 double next = fmin(b, fmax(a, tc - g / r));
                 memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
-                if (stepper_apply(s->st, integ, d, a, next, s->y) != 0)
+                if (next > a && stepper_apply(s->st, integ, d, a, next, s->y) != 0)
                     return -1;
                 tc = next;
                 drive_eval(d, tc, &uc, &duc);
