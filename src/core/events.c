@@ -147,7 +147,7 @@ double events_contact(const struct events_piece *p, int *which, int *closing)
     for (int k = 0; k < l->count; k++) {
         if (p->rest->on[k])
             continue;
-        double g0, g1, s0, s1, err = 0.0;
+        double g0, g1, s0, s1, err = 0.0, lo;
         if (k == 0) {
             g0 = sp + ya[0] - 0.5 * w, g1 = sp + y[0] - 0.5 * w;
             s0 = h * ya[n], s1 = h * y[n];
@@ -161,7 +161,8 @@ double events_contact(const struct events_piece *p, int *which, int *closing)
             err = p->drive_err;
         }
         double dg = g1 - g0, A = fabs(s0 - dg), B = fabs(s1 - dg);
-        if (fmin(g0, g1) - 0.25 * (A > B ? A : B) - err > -EVENTS_TOUCH)
+        lo = g0 < g1 ? g0 : g1;
+        if (lo - 0.25 * (A > B ? A : B) - err > -EVENTS_TOUCH)
             continue; /* the common case: it cannot close in this piece */
         double c[4] = {g0, s0, 3.0 * dg - 2.0 * s0 - s1, s0 + s1 - 2.0 * dg};
         double th = first_close(p, k, c);
