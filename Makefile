@@ -161,9 +161,9 @@ $(APP_TESTS): $(APP_FIXTURE) tests/app_fixture.h
 ALLOC_COUNT = $(BUILD)/tests/alloc_count.o
 ALLOC_WRAPPED = $(addprefix -Wl$(comma)--wrap=,malloc calloc realloc)
 comma = ,
-$(BUILD)/tests/test_ghost $(BUILD)/tests/test_spectrum: TEST_EXTRA += $(ALLOC_COUNT)
-$(BUILD)/tests/test_ghost $(BUILD)/tests/test_spectrum: $(ALLOC_COUNT)
-$(BUILD)/tests/test_ghost: TEST_LDFLAGS += $(ALLOC_WRAPPED)
+$(BUILD)/tests/test_ghost $(BUILD)/tests/test_spectrum $(BUILD)/tests/test_measure: TEST_EXTRA += $(ALLOC_COUNT)
+$(BUILD)/tests/test_ghost $(BUILD)/tests/test_spectrum $(BUILD)/tests/test_measure: $(ALLOC_COUNT)
+$(BUILD)/tests/test_ghost $(BUILD)/tests/test_measure: TEST_LDFLAGS += $(ALLOC_WRAPPED)
 $(BUILD)/tests/test_spectrum: TEST_LDFLAGS = $(ALLOC_WRAPPED) \
     $(addprefix -Wl$(comma)--wrap=,fftw_malloc fftw_plan_dft_r2c_1d)
 

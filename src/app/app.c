@@ -151,6 +151,7 @@ static void restart(struct app *app)
     set_sampling(app);
     trail_push(app->trail, app->sim);
     trail_push(app->coarse, app->sim);
+    app->scope.back = 0.0;
     struct energy e;
     sim_energy(app->sim, &e);
     app->energy0 = e.balance;
@@ -463,6 +464,9 @@ unsigned app_set_running(struct app *app, bool running)
     if (app->running == running)
         return 0;
     app->running = running;
+    /* Running again shows the present. */
+    if (running)
+        app->scope.back = 0.0;
     return APP_CHANGED_PLAYBACK;
 }
 

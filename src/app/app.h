@@ -21,6 +21,7 @@
 #include "../core/limits.h"
 #include "../core/sim.h"
 #include "../core/sweep.h"
+#include "scope.h"
 #include "trail.h"
 
 #define APP_MAX_MASSES CONFIG_INTERACTIVE_MAX_MASSES /* the interactive program's N */
@@ -112,6 +113,7 @@ struct app {
     double sweep_from;       /* the user's frequency during a sweep, given back after */
     double energy0;          /* the energy balance at t = 0 */
     struct ghost *ghost;     /* a frozen copy run beside the chain (ghost.h), or NULL */
+    struct scope scope;      /* time cursors, scroll-back, the mass measured (scope.h) */
 };
 
 /* Sets up app from cfg (N already checked to be 1..APP_MAX_MASSES); 0, or -1 on no memory. */

@@ -112,3 +112,33 @@ const double *trail_first(const struct trail *tr)
 {
     return tr->buf + (size_t)tr->head * tr->width;
 }
+
+double trail_time(const struct trail *tr, int i)
+{
+    return trail_first(tr)[(size_t)i * tr->width + TRAIL_T];
+}
+
+int trail_index(const struct trail *tr, double t)
+{
+    int lo = 0, hi = tr->count; /* the first record at or after t is in [lo, hi] */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (trail_time(tr, mid) < t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+int trail_nearest(const struct trail *tr, double t)
+{
+    if (tr->count == 0)
+        return -1;
+    int i = trail_index(tr, t);
+    if (i == tr->count)
+        return i - 1;
+    if (i > 0 && t - trail_time(tr, i - 1) <= trail_time(tr, i) - t)
+        return i - 1;
+    return i;
+}

@@ -68,4 +68,13 @@ void trail_clear(struct trail *tr);
 /* The oldest record; the rest follow contiguously, width doubles apart. */
 const double *trail_first(const struct trail *tr);
 
+/* Index (0 the oldest) of the first record at or after time t, count if none. */
+int trail_index(const struct trail *tr, double t);
+
+/* Index of the record nearest to time t (the earlier of two as near), -1 if empty. */
+int trail_nearest(const struct trail *tr, double t);
+
+/* Time of record i (0 the oldest). */
+double trail_time(const struct trail *tr, int i);
+
 #endif

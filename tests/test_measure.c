@@ -1,0 +1,299 @@
+/* test_measure.c: the scope's measurements (app/measure.c) against closed forms, and its
+ * cursors and scroll-back (app/scope.c) on a chain the program runs. A damped 1-DOF
+ * decay x = e^(-zeta w t) cos(w_d t) has its maxima exactly 2 pi / w_d apart and each
+ * e^(-2 pi zeta / sqrt(1 - zeta^2)) times the one before, so its period and logarithmic
+ * decrement are known in closed form; one mass on a spring k with damping c has
+ * zeta = c / (2 sqrt(k m)). A cursor reads a recorded sample: the exported CSV's row at
+ * its time has the same numbers. */
+#include "testutil.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "alloc_count.h"
+#include "app/app.h"
+#include "app/measure.h"
+#include "app/scope.h"
+
+#define MAXS 20000
+
+/* Samples of e^(-zeta w t) cos(w_d t) every h seconds for span seconds, interleaved
+ * (t, x) as the trail keeps records. */
+static int decay(double *buf, double zeta, double w, double h, double span)
+{
+    double wd = w * sqrt(1.0 - zeta * zeta);
+    int n = (int)(span / h) + 1;
+    for (int k = 0; k < n; k++) {
+        double t = k * h;
+        buf[2 * k] = t;
+        buf[2 * k + 1] = exp(-zeta * w * t) * cos(wd * t);
+    }
+    return n;
+}
+
+static void closed_form_decay(void **state)
+{
+    (void)state;
+    static double buf[2 * MAXS];
+    /* The springsim default chain's mode (0.712 Hz) and slower and faster ones, lightly
+     * and more damped, sampled as the fine trail (0.01 s) and the coarse (0.02 s). */
+    const double hz[] = {0.712, 0.3, 2.0};
+    const double zetas[] = {0.005, 0.0112, 0.05};
+    const double steps[] = {0.01, 0.02};
+    for (size_t a = 0; a < 3; a++)
+        for (size_t b = 0; b < 3; b++)
+            for (size_t c = 0; c < 2; c++) {
+                double w = 2.0 * M_PI * hz[a], z = zetas[b], h = steps[c];
+                int n = decay(buf, z, w, h, 10.0);
+                struct measure m;
+                measure_series(&m, buf, buf + 1, n, 2);
+                double wd = w * sqrt(1.0 - z * z);
+                double period = 2.0 * M_PI / wd;
+                double delta = 2.0 * M_PI * z / sqrt(1.0 - z * z);
+                /* the maxima, where tan(w_d t) = -zeta / sqrt(1 - zeta^2), in (0, 10): but
+                 * one nearest to t = 10 (the last sample, no neighbour after it) */
+                double shift = atan(z / sqrt(1.0 - z * z)) / wd;
+                int want = 0;
+                while ((want + 1) * period - shift < 10.0 - 0.5 * h)
+                    want++;
+                assert_int_equal(m.peaks, want);
+                assert_close(m.period, period, 0.005 * period);
+                assert_close(m.frequency, 1.0 / period, 0.005 / period);
+                assert_close(m.delta, delta, 0.005 * delta);
+                assert_close(m.zeta, z, 0.005 * z);
+            }
+}
+
+static void zeta_of_delta_inverts_delta_of_zeta(void **state)
+{
+    (void)state;
+    for (double z = 0.001; z < 0.99; z *= 1.7) {
+        double delta = 2.0 * M_PI * z / sqrt(1.0 - z * z);
+        assert_close(measure_zeta(delta), z, 1e-12);
+    }
+}
+
+static void sine_rms_and_peak_to_peak(void **state)
+{
+    (void)state;
+    static double buf[2 * MAXS];
+    /* 2 sin(2 pi t) over 5 whole periods at 0.01 s: rms 2 / sqrt 2, peak-to-peak 4, no
+     * decay. */
+    int n = 501;
+    for (int k = 0; k < n; k++)
+        buf[2 * k] = k * 0.01, buf[2 * k + 1] = 2.0 * sin(2.0 * M_PI * k * 0.01);
+    struct measure m;
+    measure_series(&m, buf, buf + 1, n, 2);
+    assert_int_equal(m.peaks, 5);
+    assert_close(m.p2p, 4.0, 1e-9);
+    /* the sum over whole periods of sin^2 is exactly half the count but for the end
+     * sample counted twice (it is 0) */
+    assert_close(m.rms, 2.0 / sqrt(2.0) * sqrt((n - 1.0) / n), 1e-9);
+    assert_close(m.period, 1.0, 1e-6);
+    assert_close(m.delta, 0.0, 1e-6);
+}
+
+static void fewer_than_two_peaks(void **state)
+{
+    (void)state;
+    static double buf[2 * MAXS];
+    /* one hump, then a ramp, then a chain at rest */
+    for (int k = 0; k < 100; k++)
+        buf[2 * k] = k * 0.01, buf[2 * k + 1] = sin(M_PI * k / 99.0);
+    struct measure m;
+    measure_series(&m, buf, buf + 1, 100, 2);
+    assert_int_equal(m.peaks, 1);
+    assert_true(isnan(m.period) && isnan(m.frequency) && isnan(m.delta) && isnan(m.zeta));
+    for (int k = 0; k < 100; k++)
+        buf[2 * k + 1] = k;
+    measure_series(&m, buf, buf + 1, 100, 2);
+    assert_int_equal(m.peaks, 0);
+    assert_close(m.p2p, 99.0, 0.0);
+    for (int k = 0; k < 100; k++)
+        buf[2 * k + 1] = 0.0;
+    measure_series(&m, buf, buf + 1, 100, 2);
+    assert_int_equal(m.peaks, 0);
+    assert_close(m.rms, 0.0, 0.0);
+    /* peaks below 0 give a period but no decrement */
+    for (int k = 0; k < 500; k++)
+        buf[2 * k] = k * 0.01, buf[2 * k + 1] = -3.0 + cos(2.0 * M_PI * k * 0.01);
+    measure_series(&m, buf, buf + 1, 500, 2);
+    assert_int_equal(m.peaks, 4);
+    assert_close(m.period, 1.0, 1e-6);
+    assert_true(isnan(m.delta) && isnan(m.zeta));
+}
+
+/* One mass: k = 10 N/m, m = 1 kg, c = 0.1 N s/m, released from 0.5 m, no drive. */
+static void one_mass(struct app *app, const char *boundary)
+{
+    struct config c;
+    char err[300];
+    const char *const opts[] = {"masses", "1", "spring", "10", "mass", "1", "damping", "0.1",
+                                "boundary", boundary, "x0", "0.5", "no-collisions", NULL,
+                                NULL};
+    config_init(&c);
+    for (const char *const *o = opts; *o; o += 2)
+        assert_int_equal(config_set(&c, config_find(o[0]), o[1], err, sizeof err), 0);
+    assert_int_equal(app_init(app, &c, SRCDIR), 0);
+}
+
+static void run(struct app *app, double seconds)
+{
+    double end = sim_time(app->sim) + seconds;
+    while (sim_time(app->sim) < end - 1e-9)
+        assert_true(app_step(app) != 0);
+}
+
+/* zeta from the decrement on the window a lightly damped mass decays in, against
+ * c / (2 sqrt(k_eff m)): k_eff = k with a free right end, 2k between a wall and the
+ * motor's spring; and against the modes' own zeta. */
+static void zeta_of_a_simulated_decay(void **state)
+{
+    (void)state;
+    static struct app app;
+    const char *ends[] = {"free", "wall"};
+    const double keff[] = {10.0, 20.0};
+    for (int e = 0; e < 2; e++) {
+        one_mass(&app, ends[e]);
+        run(&app, 20.0);
+        struct scope_view v;
+        scope_view(&app, &v);
+        assert_close(v.end, 20.0, 1e-9);
+        assert_close(v.window, 10.0, 0.0);
+        struct measure m;
+        scope_measure(&v, 0, &m);
+        double want = 0.1 / (2.0 * sqrt(keff[e] * 1.0));
+        double fd = sqrt(keff[e]) * sqrt(1.0 - want * want) / (2.0 * M_PI);
+        assert_true(m.peaks >= 2);
+        assert_close(m.zeta, want, 0.02 * want);
+        assert_close(m.frequency, fd, 0.005 * fd);
+        int j = scope_nearest_mode(&app, m.frequency);
+        assert_int_equal(j, 0);
+        assert_close(app.damping_ratio[j], want, 1e-9);
+        app_free(&app);
+    }
+}
+
+/* The CSV row of the export at dir whose t is t, into row (t, x, v, a, u as text). */
+static bool csv_row(const char *path, double t, char fields[][40], int nf)
+{
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[1024];
+    bool found = false;
+    while (!found && fgets(line, sizeof line, f)) {
+        if (line[0] == 't' || atof(line) != t)
+            continue;
+        char *p = line;
+        for (int k = 0; k < nf; k++) {
+            size_t len = strcspn(p, ",\n");
+            snprintf(fields[k], 40, "%.*s", (int)len, p);
+            p += len + (p[len] == ',');
+        }
+        found = true;
+    }
+    fclose(f);
+    return found;
+}
+
+/* Each cursor reads a recorded sample: the exported CSV's row at its time holds the same
+ * numbers, to the CSV's digits. */
+static void readout_is_the_export(void **state)
+{
+    (void)state;
+    static struct app app;
+    one_mass(&app, "motor");
+    run(&app, 6.0);
+    scope_toggle(&app, 0);
+    scope_move(&app, -37);
+    scope_toggle(&app, -1);
+    scope_move(&app, 5);
+    char dir[] = "/tmp/springsim-measure-XXXXXX", path[4200];
+    assert_non_null(mkdtemp(dir));
+    assert_true(app_export(&app, dir, path, sizeof path) != 0);
+    struct scope_view v;
+    scope_view(&app, &v);
+    for (int k = 0; k < 2; k++) {
+        const double *r = scope_record(&app, &v, k);
+        assert_non_null(r);
+        char fields[5][40], mine[40];
+        assert_true(csv_row(path, r[TRAIL_T], fields, 5));
+        const struct trail *tr = v.trail;
+        const double want[5] = {r[TRAIL_T], r[TRAIL_X(tr, 0)], r[TRAIL_V(tr, 0)],
+                                r[TRAIL_A(tr, 0)], r[TRAIL_U]};
+        for (int f = 0; f < 5; f++) {
+            snprintf(mine, sizeof mine, "%.12g", want[f]);
+            assert_string_equal(mine, fields[f]);
+        }
+    }
+    /* the first cursor 37 samples before the window's middle; the second came a tenth of
+     * the window after it and went 5 samples on */
+    double t0 = scope_record(&app, &v, 0)[TRAIL_T], t1 = scope_record(&app, &v, 1)[TRAIL_T];
+    assert_close(t0, 6.0 - 5.0 - 0.37, 1e-9);
+    assert_close(t1 - t0, 1.0 + 0.05, 1e-9);
+    /* plain mode's cursor T reads the same sample */
+    const struct trail *tr;
+    assert_true(scope_at_time(&app, t0 + 0.004, &tr) == scope_record(&app, &v, 0));
+    assert_null(scope_at_time(&app, 6.2, &tr));
+    unlink(path);
+    rmdir(dir);
+    app_free(&app);
+}
+
+/* Paused, the window scrolls back through everything recorded, at least 60 s, making no
+ * allocation; a cursor pushed past the left edge takes the window with it; running again
+ * shows the present. */
+static void scroll_back(void **state)
+{
+    (void)state;
+    static struct app app;
+    one_mass(&app, "motor");
+    run(&app, 80.0);
+    scope_toggle(&app, 0);
+    struct scope_view v;
+    long before = allocations;
+    int pages = 0;
+    do {
+        scope_view(&app, &v);
+        pages++;
+    } while (scope_page(&app, -1) == APP_CHANGED_WINDOW && pages < 100);
+    assert_int_equal(allocations, before);
+    scope_view(&app, &v);
+    assert_true(v.start <= 80.0 - 60.0);
+    assert_close(v.start, scope_oldest(&app), 1e-9);
+    assert_true(v.count > 0 && v.rec[TRAIL_T] >= v.start - 1e-9);
+    assert_true(v.rec[(size_t)(v.count - 1) * v.trail->width + TRAIL_T] <= v.end + 1e-9);
+    assert_false(v.live);
+    /* back to the present a page at a time */
+    while (scope_page(&app, 1) == APP_CHANGED_WINDOW)
+        ;
+    scope_view(&app, &v);
+    assert_true(v.live);
+    assert_close(v.end, 80.0, 1e-9);
+    /* the cursor, from the middle, 600 samples earlier: 1 s past the left edge */
+    scope_move(&app, -600);
+    scope_view(&app, &v);
+    assert_close(v.end, 79.0, 1e-9);
+    assert_close(scope_record(&app, &v, 0)[TRAIL_T], 69.0, 1e-9);
+    /* and running again jumps back to the present */
+    app_set_running(&app, true);
+    scope_view(&app, &v);
+    assert_true(v.live);
+    assert_close(app.scope.back, 0.0, 0.0);
+    app_free(&app);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(closed_form_decay),
+        cmocka_unit_test(zeta_of_delta_inverts_delta_of_zeta),
+        cmocka_unit_test(sine_rms_and_peak_to_peak),
+        cmocka_unit_test(fewer_than_two_peaks),
+        cmocka_unit_test(zeta_of_a_simulated_decay),
+        cmocka_unit_test(readout_is_the_export),
+        cmocka_unit_test(scroll_back),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
