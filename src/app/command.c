@@ -11,6 +11,7 @@
 
 #include "../core/preset.h"
 #include "app.h"
+#include "scope_text.h"
 
 const struct command commands[CMD_COUNT] = {
     [CMD_START] = {"start", ACT_RUN, "", "start the simulation; time follows the clock at the "
@@ -32,6 +33,11 @@ const struct command commands[CMD_COUNT] = {
     [CMD_SLOWER] = {"slower", ACT_SLOWER, "", "playback slower"},
     [CMD_SAVE] = {"save", ACT_SAVE, "NAME", "save the set-up as a user preset"},
     [CMD_EXPORT] = {"export", ACT_EXPORT, "", "export the recorded samples as CSV"},
+    [CMD_CURSOR] = {"cursor", ACT_CURSOR, "T",
+                    "every mass's x, v, a and the motor at the recorded sample nearest to time T"},
+    [CMD_MEASURE] = {"measure", ACT_CURSOR, "[MASS]",
+                     "period, frequency, peak-to-peak, rms, log decrement and zeta of a mass "
+                     "over the time window"},
     [CMD_RUN] = {"run", ACT_NONE, "SECONDS",
                  "run SECONDS of simulated time at once (not in real time), then pause"},
     [CMD_STATUS] = {"status", ACT_NONE, "", "the status line now"},
@@ -371,6 +377,10 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         char path[4200];
         return from_message(app, app_export(app, NULL, path, sizeof path), answer, len);
     }
+    case CMD_CURSOR:
+        return scope_say_cursor(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;
+    case CMD_MEASURE:
+        return scope_say_measure(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;
     case CMD_RUN: {
         const char *why = config_parse_number(rest, seconds);
         if (why || !(*seconds > 0.0 && *seconds <= RUN_MAX)) {

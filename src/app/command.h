@@ -45,6 +45,16 @@ enum action {
     ACT_NARROWER,  /* shorter time window */
     ACT_WIDER,     /* longer time window */
     ACT_GHOST,     /* ghost on / off */
+    ACT_CURSOR,    /* time cursors: one, two, none */
+    ACT_CURSOR_EARLIER,     /* the cursor one sample earlier */
+    ACT_CURSOR_LATER,       /* one sample later */
+    ACT_CURSOR_EARLIER_BIG, /* a tenth of the window earlier */
+    ACT_CURSOR_LATER_BIG,   /* a tenth of the window later */
+    ACT_PAGE_EARLIER,       /* the window a window earlier (paused) */
+    ACT_PAGE_LATER,         /* a window later */
+    ACT_MEASURE_PREV,       /* measure the mass before */
+    ACT_MEASURE_NEXT,       /* measure the mass after */
+    ACT_CURSOR_OFF,         /* no cursors */
 };
 
 /* The plain mode's commands. */
@@ -66,6 +76,8 @@ enum command_id {
     CMD_SLOWER,
     CMD_SAVE,
     CMD_EXPORT,
+    CMD_CURSOR,
+    CMD_MEASURE,
     CMD_RUN,
     CMD_STATUS,
     CMD_CONTROLS,

@@ -95,6 +95,21 @@ void layout_compute(struct layout *l, int cols, int rows, int enlarged, bool vie
     l->scene_cpm = (double)(inner - LAYOUT_WALL_COLS - LAYOUT_HOUSE_COLS) / LAYOUT_SCENE_SPAN;
 }
 
+void layout_scope(struct layout *l, int enlarged)
+{
+    if (l->too_small)
+        return;
+    /* 34 columns hold a row of three 9-column numbers at 80 columns; 38 give them 10. */
+    int w = l->cols >= 110 ? 38 : 34;
+    int grow = w - l->controls.w;
+    if (grow <= 0 || l->area.w - grow < LAYOUT_LABEL_COLS + 2 + LAYOUT_MIN_PLOT_W)
+        return;
+    l->controls.x -= grow, l->controls.w += grow;
+    l->area.w -= grow;
+    if (l->nplots > 0)
+        lay_plots(l, enlarged);
+}
+
 double layout_scene_col(const struct layout *l, double X)
 {
     return l->scene_x0 + X * l->scene_cpm;

@@ -38,6 +38,10 @@ struct layout {
  * -1 for the grid; view is true when an analysis view takes the plot area. */
 void layout_compute(struct layout *l, int cols, int rows, int enlarged, bool view);
 
+/* With time cursors shown on the plots: the controls' column, wider, holds the cursors'
+ * readout instead, and the plots take what is left (call after layout_compute). */
+void layout_scope(struct layout *l, int enlarged);
+
 /* The drawing area inside a chart's frame: right of the tick labels, above the x axis. */
 struct rect layout_drawing(struct rect frame);
 

@@ -3,6 +3,7 @@
 #ifndef SPRINGSIM_INPUT_H
 #define SPRINGSIM_INPUT_H
 
+#include <stdbool.h>
 #include <stdio.h>
 
 #include "../app/command.h"
@@ -13,13 +14,16 @@ struct binding {
     const char *name; /* the key as shown, UTF-8 */
     const char *ascii; /* the key as shown without UTF-8 */
     const char *help; /* what it does; NULL for a second key of the same action */
+    bool cursor;      /* only while a time cursor is shown on the plots, and then before
+                       * the key's other binding */
 };
 
 /* The bindings, ending with {0, ACT_NONE, ...}. */
 extern const struct binding input_bindings[];
 
-/* The action of a key, or ACT_NONE. */
-enum action input_action(int key);
+/* The action of a key, or ACT_NONE; with cursor (a time cursor shown on the plots) the
+ * cursor's binding of the key comes first. */
+enum action input_action(int key, bool cursor);
 
 /* Prints the key table, one "KEY<TAB>WHAT" line per action (for --keys). */
 void input_print_keys(FILE *out);

@@ -387,7 +387,7 @@ static void help_key(struct overlay *o, const struct layout *l, int ch)
         o->help_top = n;
         break;
     default: {
-        enum action a = input_action(ch);
+        enum action a = input_action(ch, false);
         if (a == ACT_HELP || a == ACT_ESCAPE || a == ACT_QUIT)
             o->kind = OVERLAY_NONE;
         break;
@@ -415,7 +415,7 @@ unsigned overlay_key(struct overlay *o, struct app *app, const struct selection 
         help_key(o, l, ch);
         return 0;
     case OVERLAY_PRESETS:
-        return preset_key(o, app, input_action(ch));
+        return preset_key(o, app, input_action(ch, false));
     case OVERLAY_NONE:
         break;
     }

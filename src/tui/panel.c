@@ -147,6 +147,19 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     struct hint hints[16];
     int n = 0;
     hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
+    if (h->cursor) {
+        bool u = term_utf8();
+        hints[n++] = (struct hint){u ? "←→" : "Left/Right", "cursor"};
+        hints[n++] = (struct hint){"H L", "a tenth"};
+        if (!app->running)
+            hints[n++] = (struct hint){"PgUp PgDn", "scroll"};
+        hints[n++] = (struct hint){"|", app->scope.cursors == 1 ? "second" : "none"};
+        hints[n++] = (struct hint){"Esc", "none"};
+        if (app->model->n > 1)
+            hints[n++] = (struct hint){u ? "↑↓" : "Up/Down", "mass"};
+        hints[n++] = (struct hint){"?", "help"};
+        goto draw;
+    }
     if (h->modes) {
         hints[n++] = (struct hint){term_utf8() ? "↑↓" : "arrows", "mode"};
         hints[n++] = (struct hint){"Enter", "start in it"};
@@ -173,6 +186,7 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
         hints[n++] = (struct hint){"Tab", "masses"};
     }
     hints[n++] = (struct hint){"?", "help"};
+draw:;
     int x = 1;
     for (int i = 0; i < n; i++) {
         int need = draw_width(hints[i].key) + 1 + draw_width(hints[i].what);

@@ -14,6 +14,7 @@ struct hint_state {
     int enlarged;   /* the plot enlarged, or -1 */
     bool view;      /* an analysis view has the plot area */
     bool modes;     /* the arrows choose a mode in the modes view */
+    bool cursor;    /* time cursors shown: the arrows are theirs */
 };
 
 /* The status line: state, t, the drive, N, dt, history, playback. */

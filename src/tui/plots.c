@@ -5,6 +5,9 @@
 
 #include <math.h>
 
+#include "../app/ghost.h"
+#include "../app/scope.h"
+#include "draw.h"
 #include "term.h"
 
 /* What each plot shows: quantity on x (0 time, 1 x, 2 v, 3 a) and on y. */
@@ -90,20 +93,51 @@ static void traces(struct chart *c, enum plot_id id, const struct trail *tr, con
     }
 }
 
-/* Takes the newest samples: fits the axes to the live chain's and the ghost's, and
- * rasterises the ghost's dashed under the live chain's. */
+/* How many of the k records from rec are at or before t. */
+static int up_to(const struct trail *tr, const double *rec, int k, double t)
+{
+    while (k > 0 && rec[(size_t)(k - 1) * tr->width + TRAIL_T] > t + 1e-9)
+        k--;
+    return k;
+}
+
+/* The cursors on a time plot: a dotted vertical line of dots at each one's sample,
+ * drawn under the traces. */
+static void cursor_lines(struct chart *c, const struct app *app, const struct scope_view *v)
+{
+    int h = 4 * c->canvas->rows;
+    for (int k = 0; k < app->scope.cursors; k++) {
+        const double *r = scope_record(app, v, k);
+        if (!r)
+            continue;
+        int x = (int)floor(axis_dot(&c->xa, r[TRAIL_T] - v->end) + 0.5);
+        for (int y = k; y < h; y += 2)
+            canvas_set(c->canvas, x, y, PAIR_TITLE);
+    }
+}
+
+/* Takes the samples of the window shown (the present, or paused, scrolled back): fits
+ * the axes to the live chain's and the ghost's, and rasterises the ghost's dashed under
+ * the live chain's. */
 static void take_samples(struct chart *c, enum plot_id id, const struct app *app)
 {
-    const struct trail *tr = app_trail(app), *gt = app_ghost_trail(app);
+    struct scope_view v;
+    scope_view(app, &v);
+    const struct trail *tr = v.trail, *gt = NULL;
+    if (app->ghost)
+        gt = tr == app->trail ? app->ghost->trail : app->ghost->coarse;
     const struct model *m = app->model;
     int xq = kinds[id].xq, yq = kinds[id].yq;
     bool motor = id == PLOT_X && m->boundary == BOUNDARY_MOTOR;
-    double now = sim_time(app->sim), window = app_window(app);
+    double end = v.end, window = v.window;
     if (xq == 0)
         chart_fit_time(c, window);
     int k, gk = 0;
-    double t0 = now + (xq == 0 ? left_time(c) : -window);
+    double t0 = end + (xq == 0 ? left_time(c) : -window);
     const double *rec = chart_window(tr, t0, &k), *grec = gt ? chart_window(gt, t0, &gk) : NULL;
+    k = up_to(tr, rec, k, end);
+    if (gt)
+        gk = up_to(gt, grec, gk, end);
     size_t w = (size_t)tr->width;
     double ylo = INFINITY, yhi = -INFINITY, xlo = INFINITY, xhi = -INFINITY;
     scan(tr, rec, k, yq, &ylo, &yhi);
@@ -122,12 +156,38 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     if (!c->canvas)
         return;
     canvas_clear(c->canvas);
+    if (xq == 0)
+        cursor_lines(c, app, &v);
     if (gt)
-        traces(c, id, gt, grec, gk, now, true);
-    traces(c, id, tr, rec, k, now, false);
+        traces(c, id, gt, grec, gk, end, true);
+    traces(c, id, tr, rec, k, end, false);
     if (motor)
-        plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, now, &c->xa, &c->ya, true,
+        plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, end, &c->xa, &c->ya, true,
                    PAIR_MOTOR);
+}
+
+/* The cursors on a phase portrait: each mass's point at each cursor's sample, a mark in
+ * its colour (● the first cursor, ◆ the second). */
+static void cursor_points(const struct chart *c, enum plot_id id, const struct app *app)
+{
+    if (!c->canvas || app->scope.cursors == 0)
+        return;
+    struct scope_view v;
+    scope_view(app, &v);
+    const struct trail *tr = v.trail;
+    int h = 4 * c->canvas->rows;
+    for (int k = 0; k < app->scope.cursors; k++) {
+        const double *r = scope_record(app, &v, k);
+        for (int i = 0; r && i < tr->n; i++) {
+            double dx = axis_dot(&c->xa, r[field(tr, kinds[id].xq, i)]);
+            double dy = h - 1 - axis_dot(&c->ya, r[field(tr, kinds[id].yq, i)]);
+            if (!(dx > -0.5 && dx < 2 * c->canvas->cols - 0.5 && dy > -0.5 && dy < h - 0.5))
+                continue;
+            int col = (int)floor(dx + 0.5) / 2, row = (int)floor(dy + 0.5) / 4;
+            draw_text_attr(c->area.y + row, c->area.x + col, 1,
+                           term_attr(PAIR_MASS + i % 10) | A_BOLD, k == 0 ? "●" : "◆");
+        }
+    }
 }
 
 void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool fresh)
@@ -149,5 +209,7 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
             legend[items++] = (struct legend_item){"┅motor", PAIR_MOTOR};
         chart_draw(c, kinds[id].title, kinds[id].short_title, kinds[id].xq ? NULL : "s", legend,
                    items);
+        if (kinds[id].xq)
+            cursor_points(c, id, app);
     }
 }

@@ -14,12 +14,14 @@
 
 #include "../app/ghost.h"
 #include "../app/layout.h"
+#include "../app/scope.h"
 #include "../app/select.h"
 #include "draw.h"
 #include "input.h"
 #include "overlay.h"
 #include "panel.h"
 #include "plots.h"
+#include "readout.h"
 #include "scene.h"
 #include "term.h"
 #include "views.h"
@@ -54,12 +56,20 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* True while time cursors are shown on the plots: their keys come first. */
+static bool cursors_shown(const struct tui *t)
+{
+    return t->app.scope.cursors > 0 && t->views.shown == VIEW_PLOTS;
+}
+
 /* Lays the screen out again for its size and what is shown. */
 static void relayout(struct tui *t)
 {
     int rows, cols;
     getmaxyx(stdscr, rows, cols);
     layout_compute(&t->layout, cols, rows, t->enlarged, t->views.shown != VIEW_PLOTS);
+    if (cursors_shown(t))
+        layout_scope(&t->layout, t->enlarged);
     if (!t->layout.too_small) {
         scene_place(&t->scene, &t->layout);
         plots_place(&t->plots, &t->layout);
@@ -109,9 +119,12 @@ static double draw(struct tui *t, bool refresh)
             plots_draw(&t->plots, l, &t->app, refresh);
         else
             views_draw(&t->views, &t->app, &t->sel, refresh);
-        panel_controls(l, &t->app, &t->sel);
+        if (cursors_shown(t))
+            readout_draw(l, &t->app);
+        else
+            panel_controls(l, &t->app, &t->sel);
         struct hint_state h = {t->enlarged, t->views.shown != VIEW_PLOTS,
-                               t->sel.focus == FOCUS_MODES};
+                               t->sel.focus == FOCUS_MODES, cursors_shown(t)};
         panel_hints(l, &t->app, &h);
         overlay_draw(&t->overlay, l, &t->sel);
     }
@@ -158,6 +171,22 @@ static void enlarge(struct tui *t, int p)
     if (t->sel.focus == FOCUS_MODES)
         t->sel.focus = FOCUS_CONTROLS;
     relayout(t);
+}
+
+/* `|` (one cursor, two, none) and Esc (none) on the time plots. The readout takes the
+ * controls' column while a cursor is shown. */
+static unsigned cursor_action(struct tui *t, enum action a)
+{
+    struct app *app = &t->app;
+    if (t->views.shown != VIEW_PLOTS) {
+        app_say(app, false, "the cursors are on the plots: 0 shows them");
+        return APP_CHANGED_MESSAGE;
+    }
+    /* The mass measured: the one selected in the chain, else the one last measured. */
+    unsigned changed = a == ACT_CURSOR_OFF ? scope_clear(app)
+                                           : scope_toggle(app, select_mass(&t->sel));
+    relayout(t);
+    return changed;
 }
 
 /* Acts on a; false to quit. */
@@ -273,6 +302,26 @@ static bool on_action(struct tui *t, enum action a, int ch)
     case ACT_ESCAPE:
         t->sel.focus = FOCUS_CONTROLS;
         break;
+    case ACT_CURSOR:
+    case ACT_CURSOR_OFF:
+        changed = cursor_action(t, a);
+        break;
+    case ACT_CURSOR_EARLIER:
+    case ACT_CURSOR_LATER:
+        changed = scope_move(app, a == ACT_CURSOR_LATER ? 1 : -1);
+        break;
+    case ACT_CURSOR_EARLIER_BIG:
+    case ACT_CURSOR_LATER_BIG:
+        changed = scope_jump(app, a == ACT_CURSOR_LATER_BIG ? 1 : -1);
+        break;
+    case ACT_PAGE_EARLIER:
+    case ACT_PAGE_LATER:
+        changed = scope_page(app, a == ACT_PAGE_LATER ? 1 : -1);
+        break;
+    case ACT_MEASURE_PREV:
+    case ACT_MEASURE_NEXT:
+        changed = scope_select(app, a == ACT_MEASURE_NEXT ? 1 : -1);
+        break;
     case ACT_REDRAW:
         clearok(curscr, TRUE);
         break;
@@ -307,7 +356,8 @@ static void on_mouse(struct tui *t)
     if (getmouse(&ev) != OK || l->too_small)
         return;
     t->plots_dirty = true;
-    int ctl = layout_control_at(l, ev.y, ev.x, CTL_COUNT);
+    /* The readout has the controls' place while a cursor is shown. */
+    int ctl = cursors_shown(t) ? -1 : layout_control_at(l, ev.y, ev.x, CTL_COUNT);
     if (ctl >= 0) {
         t->sel.focus = FOCUS_CONTROLS;
         t->sel.control = ctl;
@@ -366,7 +416,7 @@ static bool on_key(struct tui *t, int ch)
         t->plots_dirty = true;
         return true;
     }
-    return on_action(t, input_action(ch), ch);
+    return on_action(t, input_action(ch, cursors_shown(t)), ch);
 }
 
 /* Plot refreshes a second while running: PLOT_HZ, fewer where the plots cover so many

@@ -1,0 +1,31 @@
+/* scope_text.h: the scope's readout and measurements in words, for the plain mode's
+ * `cursor T` and `measure`, and the numbers the terminal's readout panel shows. */
+#ifndef SPRINGSIM_SCOPE_TEXT_H
+#define SPRINGSIM_SCOPE_TEXT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "measure.h"
+
+struct app;
+struct scope_view;
+
+/* v in at most width columns, with as many significant digits as fit (6 at most, 2 at
+ * least: "%.*g"); NAN as "-". Returns the digits used. */
+int scope_number(char *buf, size_t len, double v, int width);
+
+/* `cursor T`: every mass's x, v, a and the motor at the recorded sample nearest to
+ * time text (the CSV's digits). false, with what was wrong and what is allowed, when T
+ * is not a number or not recorded. */
+bool scope_say_cursor(const struct app *app, const char *text, char *buf, size_t len);
+
+/* `measure [MASS]`: the measurements of mass text (empty: the one last measured) over
+ * the time plots' window. false, with what is allowed, for a mass the chain has not. */
+bool scope_say_measure(struct app *app, const char *text, char *buf, size_t len);
+
+/* The theory's damping ratio beside a measured frequency: the mode nearest to it (0-based,
+ * -1 unknown) into *mode, its zeta returned (NAN unknown). */
+double scope_theory_zeta(const struct app *app, const struct measure *m, int *mode);
+
+#endif
