@@ -134,8 +134,13 @@ if up main; then
     # ---- help opens and closes ----
     keys '?'
     if wait_for 'preset menu'; then
-        if has_re 'space {2,}start / pause' && has_re '│ q {2,}quit' && has_re 'step (forward|back)'; then pass; else
-            fail "help: expected lines for space, q quit and the steps; screen: $(brief "$scr" 'space|quit')"
+        # the first page starts with space and the steps; q quit is the last line (End)
+        if has_re 'space {2,}start / pause' && has_re 'step (forward|back)'; then pass; else
+            fail "help: expected lines for space and the steps; screen: $(brief "$scr" 'space|step')"
+        fi
+        end
+        if poll 3 has_re '│ q {2,}quit'; then pass; else
+            fail "help: End should show the line for q quit; screen: $(brief "$scr" 'quit')"
         fi
         keys '?'
         if wait_gone 'preset menu' 3; then pass; else fail "help: '?' should close it; screen: $(brief "$scr" 'preset menu')"; fi

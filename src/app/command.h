@@ -46,14 +46,10 @@ enum action {
     ACT_WIDER,     /* longer time window */
     ACT_GHOST,     /* ghost on / off */
     ACT_CURSOR,    /* time cursors: one, two, none */
-    ACT_CURSOR_EARLIER,     /* the cursor one sample earlier */
-    ACT_CURSOR_LATER,       /* one sample later */
-    ACT_CURSOR_EARLIER_BIG, /* a tenth of the window earlier */
-    ACT_CURSOR_LATER_BIG,   /* a tenth of the window later */
-    ACT_PAGE_EARLIER,       /* the window a window earlier (paused) */
-    ACT_PAGE_LATER,         /* a window later */
-    ACT_MEASURE_PREV,       /* measure the mass before */
-    ACT_MEASURE_NEXT,       /* measure the mass after */
+    ACT_CURSOR_STEP,  /* the cursor one sample earlier or later (by the key) */
+    ACT_CURSOR_JUMP,  /* a tenth of the window earlier or later */
+    ACT_CURSOR_PAGE,  /* the window a window earlier or later (paused) */
+    ACT_CURSOR_MASS,  /* measure the mass before or after */
     ACT_CURSOR_OFF,         /* no cursors */
 };
 

@@ -173,6 +173,14 @@ static void enlarge(struct tui *t, int p)
     relayout(t);
 }
 
+/* The direction of a cursor key: -1 earlier (left, back, up), +1 later. */
+static int key_direction(int ch)
+{
+    bool back = ch == 'h' || ch == 'H' || ch == 'k' || ch == KEY_LEFT || ch == KEY_SLEFT ||
+                ch == KEY_PPAGE || ch == KEY_UP;
+    return back ? -1 : 1;
+}
+
 /* `|` (one cursor, two, none) and Esc (none) on the time plots. The readout takes the
  * controls' column while a cursor is shown. */
 static unsigned cursor_action(struct tui *t, enum action a)
@@ -306,21 +314,17 @@ static bool on_action(struct tui *t, enum action a, int ch)
     case ACT_CURSOR_OFF:
         changed = cursor_action(t, a);
         break;
-    case ACT_CURSOR_EARLIER:
-    case ACT_CURSOR_LATER:
-        changed = scope_move(app, a == ACT_CURSOR_LATER ? 1 : -1);
+    case ACT_CURSOR_STEP:
+        changed = scope_move(app, key_direction(ch));
         break;
-    case ACT_CURSOR_EARLIER_BIG:
-    case ACT_CURSOR_LATER_BIG:
-        changed = scope_jump(app, a == ACT_CURSOR_LATER_BIG ? 1 : -1);
+    case ACT_CURSOR_JUMP:
+        changed = scope_jump(app, key_direction(ch));
         break;
-    case ACT_PAGE_EARLIER:
-    case ACT_PAGE_LATER:
-        changed = scope_page(app, a == ACT_PAGE_LATER ? 1 : -1);
+    case ACT_CURSOR_PAGE:
+        changed = scope_page(app, key_direction(ch));
         break;
-    case ACT_MEASURE_PREV:
-    case ACT_MEASURE_NEXT:
-        changed = scope_select(app, a == ACT_MEASURE_NEXT ? 1 : -1);
+    case ACT_CURSOR_MASS:
+        changed = scope_select(app, key_direction(ch));
         break;
     case ACT_REDRAW:
         clearok(curscr, TRUE);
