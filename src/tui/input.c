@@ -68,7 +68,7 @@ const struct binding input_bindings[] = {
     {'H', ACT_CURSOR_JUMP, "H", "H", NULL, true},
     {'L', ACT_CURSOR_JUMP, "L", "L", NULL, true},
     {KEY_PPAGE, ACT_CURSOR_PAGE, "PgUp", "PgUp",
-     "cursor shown, paused: a window back, on (the last 66 s)", true},
+     "cursor shown, paused: a window back, on (66 s or more kept)", true},
     {KEY_NPAGE, ACT_CURSOR_PAGE, "PgDn", "PgDn", NULL, true},
     {KEY_UP, ACT_CURSOR_MASS, "↑↓", "Up/Down", "cursor shown: measure the mass before, after", true},
     {KEY_DOWN, ACT_CURSOR_MASS, "↑↓", "Up/Down", NULL, true},
