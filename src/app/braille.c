@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "strokes.h"
+
 /* Unicode braille dot numbering: 1 4 / 2 5 / 3 6 / 7 8, as bits 0..7. */
 static const uint8_t dot_bit[4][2] = {{0x01, 0x08}, {0x02, 0x10}, {0x04, 0x20}, {0x40, 0x80}};
 
@@ -18,6 +20,8 @@ struct canvas *canvas_new(int cols, int rows)
     size_t cells = (size_t)cols * (size_t)rows;
     c->cols = cols;
     c->rows = rows;
+    c->strokes = NULL;
+    c->mute = 0;
     c->bits = calloc(2 * cells, 1);
     if (!c->bits) {
         free(c);
@@ -29,23 +33,47 @@ struct canvas *canvas_new(int cols, int rows)
 
 void canvas_free(struct canvas *c)
 {
-    if (c)
+    if (c) {
         free(c->bits);
+        strokes_free(c->strokes);
+    }
     free(c);
+}
+
+bool canvas_keep_strokes(struct canvas *c)
+{
+    if (!c->strokes)
+        c->strokes = strokes_new();
+    return c->strokes != NULL;
 }
 
 void canvas_clear(struct canvas *c)
 {
     memset(c->bits, 0, 2 * (size_t)c->cols * (size_t)c->rows);
+    if (c->strokes)
+        strokes_clear(c->strokes);
 }
 
-void canvas_set(struct canvas *c, int x, int y, uint8_t color)
+/* Whether what is drawn now is kept as strokes too. */
+static bool keeping(const struct canvas *c)
+{
+    return c->strokes && c->mute == 0;
+}
+
+static void set_dot(struct canvas *c, int x, int y, uint8_t color)
 {
     if (x < 0 || y < 0 || x >= 2 * c->cols || y >= 4 * c->rows)
         return;
     size_t cell = (size_t)(y / 4) * (size_t)c->cols + (size_t)(x / 2);
     c->bits[cell] |= dot_bit[y % 4][x % 2];
     c->color[cell] = color;
+}
+
+void canvas_set(struct canvas *c, int x, int y, uint8_t color)
+{
+    if (keeping(c))
+        strokes_segment(c->strokes, x, y, x, y, color, STROKE_DOTS);
+    set_dot(c, x, y, color);
 }
 
 void canvas_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color)
@@ -68,7 +96,7 @@ static void walk(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color
     for (;;) {
         bool on = run ? (*run / STROKE_DASH) % 2 == 0 : !dash || (x0 / 2) % 2 == 0;
         if (on)
-            canvas_set(c, x0, y0, color);
+            set_dot(c, x0, y0, color);
         if (x0 == x1 && y0 == y1)
             break;
         int e2 = 2 * err;
@@ -90,11 +118,15 @@ static void walk(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color
 void canvas_dashed_line(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color,
                         bool dash)
 {
+    if (keeping(c))
+        strokes_segment(c->strokes, x0, y0, x1, y1, color, dash ? STROKE_DASHED : STROKE_LINE);
     walk(c, x0, y0, x1, y1, color, dash, NULL);
 }
 
 void canvas_stroke(struct canvas *c, int x0, int y0, int x1, int y1, uint8_t color, int *run)
 {
+    if (keeping(c))
+        strokes_segment(c->strokes, x0, y0, x1, y1, color, STROKE_DASHED);
     walk(c, x0, y0, x1, y1, color, false, run);
 }
 
@@ -109,8 +141,10 @@ void canvas_vspan(struct canvas *c, int x, int y0, int y1, uint8_t color)
         y0 = 0;
     if (y1 >= 4 * c->rows)
         y1 = 4 * c->rows - 1;
+    if (keeping(c) && y0 <= y1)
+        strokes_segment(c->strokes, x, y0, x, y1, color, STROKE_LINE);
     for (int y = y0; y <= y1; y++)
-        canvas_set(c, x, y, color);
+        set_dot(c, x, y, color);
 }
 
 uint8_t canvas_bits(const struct canvas *c, int cx, int cy)

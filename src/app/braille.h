@@ -6,10 +6,14 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+struct strokes;
+
 struct canvas {
     int cols, rows;  /* size in cells; dots are 2*cols by 4*rows */
     uint8_t *bits;   /* braille dot bits per cell (U+2800 + bits) */
     uint8_t *color;  /* colour index per cell: the last dot set wins */
+    struct strokes *strokes; /* what was drawn as lines, for pixels (NULL: not kept) */
+    int mute;        /* > 0: a caller keeps the strokes itself (plot.c, at full precision) */
 };
 
 /* A blank canvas of cols x rows cells, or NULL on no memory. */
@@ -18,7 +22,11 @@ struct canvas *canvas_new(int cols, int rows);
 /* Frees a canvas. */
 void canvas_free(struct canvas *c);
 
-/* Clears every dot. */
+/* From now on also keeps what is drawn as strokes (strokes.h), for pixel output; false on
+ * no memory. */
+bool canvas_keep_strokes(struct canvas *c);
+
+/* Clears every dot (and the strokes). */
 void canvas_clear(struct canvas *c);
 
 /* Sets the dot at (x, y), y = 0 at the top; dots off the canvas are ignored. */

@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "strokes.h"
+
 /* The nice range the data [dmin, dmax] asks for. */
 static void nice_range(double dmin, double dmax, int max_ticks, double *lo, double *hi,
                        double *step)
@@ -167,12 +169,19 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
     int w = 2 * c->cols, h = 4 * c->rows;
     struct column cur = {0}, prev = {0};
     bool have_cur = false, have_prev = false;
+    /* The strokes keep every sample at full precision: pixels have room for them. */
+    struct strokes *keep = c->mute ? NULL : c->strokes;
+    if (keep)
+        strokes_begin(keep, color, dash ? STROKE_DASHED : STROKE_LINE);
+    c->mute++;
     for (int k = 0; k < count; k++) {
         double tk = t[(size_t)k * stride], yk = y[(size_t)k * stride];
         if (!isfinite(tk) || !isfinite(yk))
             continue;
         double fx = dot_clamp(axis_dot(xa, tk - t_ref));
         double fy = dot_clamp(h - 1 - axis_dot(ya, yk));
+        if (keep)
+            strokes_point(keep, fx, fy);
         /* Columns off the canvas are never drawn: all of them on a side share one. */
         int x = dot_x(fmin(fmax(fx, -2.0), w + 1.0));
         int r = dot_y(fmin(fmax(fy, -1.0), (double)h));
@@ -192,6 +201,7 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
     }
     if (have_cur)
         column_draw(c, &cur, &prev, have_prev, dash, color);
+    c->mute--;
 }
 
 /* plot_path, solid (run NULL) or dashed along its length. */
@@ -201,16 +211,25 @@ static void path(struct canvas *c, const double *x, const double *y, int count, 
     int h = 4 * c->rows;
     double px = 0.0, py = 0.0;
     bool have = false;
+    struct strokes *keep = c->mute ? NULL : c->strokes;
+    if (keep)
+        strokes_begin(keep, color, run ? STROKE_DASHED : STROKE_LINE);
+    c->mute++;
     for (int k = 0; k < count; k++) {
         double xk = x[(size_t)k * stride], yk = y[(size_t)k * stride];
         if (!isfinite(xk) || !isfinite(yk)) {
             have = false;
+            if (keep)
+                strokes_point(keep, NAN, NAN);
             continue;
         }
         double fx = dot_clamp(axis_dot(xa, xk)), fy = dot_clamp(h - 1 - axis_dot(ya, yk));
+        if (keep)
+            strokes_point(keep, fx, fy);
         segment(c, have ? px : fx, have ? py : fy, fx, fy, false, run, color);
         px = fx, py = fy, have = true;
     }
+    c->mute--;
 }
 
 void plot_path(struct canvas *c, const double *x, const double *y, int count, size_t stride,

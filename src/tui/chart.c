@@ -4,6 +4,7 @@
 #include "chart.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "draw.h"
@@ -26,7 +27,11 @@ bool chart_place(struct chart *c, struct rect frame, int header_rows)
     } else {
         canvas_free(c->canvas);
         c->canvas = a.w > 0 && a.h > 0 ? canvas_new(a.w, a.h) : NULL;
+        /* Its strokes too, for pixels; without memory for them the braille still shows. */
+        if (c->canvas)
+            canvas_keep_strokes(c->canvas);
     }
+    c->drawn = false;
     chart_fit_y(c, -1.0, 1.0);
     c->ys.set = false; /* the first real data fits at once */
     chart_fit_x(c, -1.0, 1.0);
@@ -167,24 +172,60 @@ static void draw_axes(const struct chart *c, const char *xunit)
     }
 }
 
-void chart_draw(const struct chart *c, const char *title, const char *short_title,
+void chart_draw(struct chart *c, const char *title, const char *short_title,
                 const char *xunit, const struct legend_item *legend, int nlegend)
 {
     struct rect f = c->frame;
     bool fits = draw_width(title) + 4 <= f.w || !short_title;
     draw_frame(f, fits ? title : short_title, true);
-    if (c->canvas && c->area.w >= 2 && c->area.h >= 1) {
+    snprintf(c->title, sizeof c->title, "%s", fits ? title : short_title);
+    snprintf(c->xunit, sizeof c->xunit, "%s", xunit ? xunit : "");
+    c->drawn = c->canvas && c->area.w >= 2 && c->area.h >= 1;
+    if (c->drawn) {
         draw_axes(c, xunit);
         draw_canvas(c->canvas, c->area.y, c->area.x);
     }
     /* The legend on the bottom border, as many entries as fit. */
     int x = f.x + 2, y = f.y + f.h - 1;
-    for (int i = 0; i < nlegend; i++) {
+    c->nlegend = 0;
+    for (int i = 0; i < nlegend && i < 12; i++) {
         int len = draw_width(legend[i].text);
         if (x + len + 1 > f.x + f.w - 1)
             break;
         draw_text_attr(y, x, len, term_attr(legend[i].pair) | A_BOLD, legend[i].text);
+        snprintf(c->legend[c->nlegend], sizeof c->legend[0], "%s", legend[i].text);
+        c->legend_pair[c->nlegend++] = legend[i].pair;
         x += len + 1;
+    }
+}
+
+/* Ticks t as a picture's. */
+static void picture_ticks(const struct chart_ticks *t, struct fig_ticks *out)
+{
+    out->n = t->n < FIG_VIEW_TICKS ? t->n : FIG_VIEW_TICKS;
+    for (int k = 0; k < out->n; k++) {
+        out->cell[k] = t->cell[k];
+        snprintf(out->label[k], sizeof out->label[k], "%s", t->label[k]);
+    }
+}
+
+void chart_picture(const struct chart *c, struct fig_chart *out)
+{
+    memset(out, 0, sizeof *out);
+    out->x = c->frame.x, out->y = c->frame.y, out->w = c->frame.w, out->h = c->frame.h;
+    out->ax = c->area.x, out->ay = c->area.y, out->aw = c->area.w, out->ah = c->area.h;
+    snprintf(out->title, sizeof out->title, "%s", c->title);
+    snprintf(out->xunit, sizeof out->xunit, "%s", c->xunit);
+    out->axes = c->drawn;
+    if (c->drawn) {
+        picture_ticks(&c->xt, &out->xt);
+        picture_ticks(&c->yt, &out->yt);
+        out->strokes = c->canvas->strokes;
+    }
+    out->nlegend = c->nlegend < FIG_VIEW_LEGEND ? c->nlegend : FIG_VIEW_LEGEND;
+    for (int i = 0; i < out->nlegend; i++) {
+        snprintf(out->legend[i], sizeof out->legend[i], "%s", c->legend[i]);
+        out->legend_color[i] = c->legend_pair[i];
     }
 }
 

@@ -11,6 +11,7 @@
 #include "../app/layout.h"
 #include "../app/plot.h"
 #include "../app/trail.h"
+#include "../fig/view.h"
 
 #define CHART_MAX_TICKS 16
 
@@ -34,6 +35,13 @@ struct chart {
     struct axis xa, ya;        /* the axes as last fitted */
     struct chart_ticks xt, yt; /* what the axes show */
     bool zero_line;            /* the y = 0 gridline drawn solid */
+    /* What chart_draw drew last, for a picture of the view (X) and pixel output. */
+    char title[160];           /* the title shown */
+    char xunit[16];
+    int nlegend;
+    char legend[12][24];
+    int legend_pair[12];
+    bool drawn;                /* drawn with its axes */
 };
 
 /* Places the chart in frame, header rows of text between the frame's top and the drawing
@@ -66,9 +74,13 @@ int chart_dot_y(const struct chart *c, double v);
 
 /* Draws the frame with title (short_title where the long one does not fit), the axes
  * with their ticks and labels (xunit at the left of the x labels), the gridlines, the
- * canvas and the legend on the bottom border. */
-void chart_draw(const struct chart *c, const char *title, const char *short_title,
+ * canvas and the legend on the bottom border; keeps the title, unit and legend shown. */
+void chart_draw(struct chart *c, const char *title, const char *short_title,
                 const char *xunit, const struct legend_item *legend, int nlegend);
+
+/* The chart as last drawn, for a picture of the view: frame, area, ticks, title, legend
+ * and the drawing's strokes. */
+void chart_picture(const struct chart *c, struct fig_chart *out);
 
 /* The window scan: the first record of tr at or after time t0 (records are in time
  * order); *count gets how many records follow from there, it included. */

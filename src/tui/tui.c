@@ -16,6 +16,7 @@
 #include "../app/layout.h"
 #include "../app/scope.h"
 #include "../app/select.h"
+#include "../fig/save.h"
 #include "draw.h"
 #include "input.h"
 #include "overlay.h"
@@ -197,6 +198,25 @@ static unsigned cursor_action(struct tui *t, enum action a)
     return changed;
 }
 
+/* X: the charts on the screen (the plots, or the analysis view's) as SVG and PNG. */
+static void save_view(struct tui *t)
+{
+    struct chart *charts[PLOT_COUNT];
+    struct fig_chart pics[PLOT_COUNT];
+    int n = 0;
+    if (t->views.shown == VIEW_PLOTS)
+        for (int k = 0; k < t->layout.nplots && n < PLOT_COUNT; k++)
+            charts[n++] = &t->plots.chart[t->layout.plot_id[k]];
+    else
+        n = views_charts(&t->views, charts, PLOT_COUNT);
+    for (int i = 0; i < n; i++)
+        chart_picture(charts[i], &pics[i]);
+    if (t->layout.too_small)
+        app_say(&t->app, true, "figure: the terminal is too small to show the view");
+    else
+        fig_save_view(&t->app, pics, n, NULL);
+}
+
 /* Acts on a; false to quit. */
 static bool on_action(struct tui *t, enum action a, int ch)
 {
@@ -293,6 +313,9 @@ static bool on_action(struct tui *t, enum action a, int ch)
         app_export(app, NULL, path, sizeof path);
         break;
     }
+    case ACT_FIGURE:
+        save_view(t);
+        break;
     case ACT_SLOWER:
     case ACT_FASTER:
         changed = app_adjust(app, CTL_SPEED, a == ACT_SLOWER ? -1 : 1, false);

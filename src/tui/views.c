@@ -121,3 +121,25 @@ void views_draw(struct views *v, const struct app *app, const struct selection *
         break;
     }
 }
+
+int views_charts(struct views *v, struct chart **out, int max)
+{
+    int n = 0;
+    switch (v->shown) {
+    case VIEW_RESPONSE:
+        out[n++] = &v->response.chart;
+        if (v->response.phase.frame.h > 0 && n < max)
+            out[n++] = &v->response.phase;
+        break;
+    case VIEW_ENERGY:
+        out[n++] = &v->energy.chart;
+        break;
+    case VIEW_SPECTRUM:
+        out[n++] = &v->spectrum.chart;
+        break;
+    case VIEW_MODES:
+    case VIEW_PLOTS:
+        break;
+    }
+    return n;
+}

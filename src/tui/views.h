@@ -43,4 +43,8 @@ void views_toggle(struct views *v, enum view w);
 void views_draw(struct views *v, const struct app *app, const struct selection *sel,
                 bool refresh);
 
+/* The charts of the view shown, for its picture (X): into out (room for max), how many;
+ * 0 for the modes view, whose cells are not charts. */
+int views_charts(struct views *v, struct chart **out, int max);
+
 #endif

@@ -15,6 +15,9 @@
       the K-th curve against --modes' row ROW (0: mode 1): points at 0, the masses, N+1
       with shapes 0, x1..xN, 0; prints "points expected max_residual c max_offset" (the
       offset in points of the page)
+  figcheck.py extent FILE.svg R,G,B K      "ymin ymax" of the K-th curve (page units)
+  figcheck.py gridrows FILE.svg R,G,B      the page y of every horizontal segment of the
+                                           paths in that colour (gridlines), one a line
   figcheck.py png FILE.png                 "WIDTH HEIGHT" from a well-formed PNG
 The SVG is parsed as XML; colours are cairo's rgb(p%,q%,r%) or rgb(r,g,b)."""
 import csv
@@ -61,13 +64,22 @@ def path_points(d):
     return pts
 
 
+def transformed(el, pts):
+    """pts under the element's transform="matrix(a,b,c,d,e,f)", as cairo writes it."""
+    m = re.search(r'matrix\(([^)]*)\)', el.get('transform', ''))
+    if not m:
+        return pts
+    a, b, c, d, e, f = (float(v) for v in m.group(1).split(','))
+    return [(a * x + c * y + e, b * x + d * y + f) for x, y in pts]
+
+
 def curves(path, rgb):
     root = ET.parse(path).getroot()
     out = []
     for el in root.iter(SVG + 'path'):
         if stroke_of(el) != rgb:
             continue
-        pts = path_points(el.get('d', ''))
+        pts = transformed(el, path_points(el.get('d', '')))
         if len(pts) > 2:
             out.append((el, pts))
     return out
@@ -111,10 +123,28 @@ def main():
         return
     rgb = tuple(int(v) for v in sys.argv[3].split(','))
     found = curves(sys.argv[2], rgb)
+    if cmd == 'gridrows':
+        root = ET.parse(sys.argv[2]).getroot()
+        ys = set()
+        for el in root.iter(SVG + 'path'):
+            if stroke_of(el) != rgb:
+                continue
+            toks = re.findall(r'[ML]|-?[0-9.]+', el.get('d', ''))
+            nums = [float(t) for t in toks if t not in ('M', 'L')]
+            pts = transformed(el, list(zip(nums[0::2], nums[1::2])))
+            for a, b in zip(pts[0::2], pts[1::2]):
+                if abs(a[1] - b[1]) < 1e-6 and abs(a[0] - b[0]) > 1:
+                    ys.add(round(a[1], 3))
+        for y in sorted(ys):
+            print(y)
+        return
     if cmd == 'curves':
         print(len(found))
     elif cmd == 'dashed':
         print(sum(1 for el, _ in found if dashed(el)))
+    elif cmd == 'extent':
+        pts = found[int(sys.argv[4])][1]
+        print(min(p[1] for p in pts), max(p[1] for p in pts))
     elif cmd == 'points':
         for x, y in found[int(sys.argv[4])][1]:
             print(x, y)
