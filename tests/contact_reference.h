@@ -25,7 +25,8 @@
  * two rigid bodies. The square, triangle and sawtooth drives are pieces of constants and
  * ramps (SPEC's formulas), sub-steps ending at their breakpoints; a jump of the end books
  * the change of the end spring's energy as the motor's work, and a jump into the last mass
- * is not this reference's business (r->error).
+ * puts it (its cluster) on the piston's face, the springs' change paid by the motor, and
+ * is a contact (one that pushes it into another is not this reference's business).
  *
  * The energy books are kept exactly too: dissipated = integral of sum c v^2, motor work =
  * integral of k_N (u - x_N) u' plus the impulse times the piston's velocity at a piston
@@ -562,10 +563,33 @@ static void ref_advance(struct ref *r, double t1)
             ref_drive_side(r, tb, 1, &u1, &du1);
             r->motor_work += 0.5 * r->k[r->n] * ((u1 - x) * (u1 - x) - (u0 - x) * (u0 - x));
             double gap = REF_L + u1 - 0.5 * r->w - r->xeq[r->n - 1] - x;
-            if (gap < -1e-12)
-                r->error = "the piston jumped into the last mass";
             if (r->held[r->n] && gap > 1e-12)
                 r->held[r->n] = false;
+            if (gap < -1e-12) {
+                /* Into the last mass: its cluster goes onto the face, the springs' change
+                 * paid by the motor, and that is a contact (the rule applies if it closes). */
+                int f, l, hold = ref_cluster(r, r->n - 1, &f, &l);
+                double room = f > 0 ? r->xeq[f] + r->x[f] - r->xeq[f - 1] - r->x[f - 1] - r->w
+                                    : r->xeq[0] + r->x[0] - 0.5 * r->w;
+                if (hold < 0 || room + gap < 0.0) {
+                    r->error = "the piston jumped the last mass into another";
+                    return;
+                }
+                double e0 = ref_mechanical(r);
+                for (int i = f; i <= l; i++)
+                    r->x[i] += gap;
+                r->motor_work += ref_mechanical(r) - e0;
+                if (!r->held[r->n]) {
+                    if (r->v[r->n - 1] > du1) {
+                        ref_contact(r, r->n);
+                    } else {
+                        struct ref_event ev = {r->t, REF_RIGHT, r->n - 1, 0.0};
+                        r->ev[r->nev % REF_MAXEVENTS] = ev;
+                        r->nev++;
+                        r->count++;
+                    }
+                }
+            }
             if (r->held[r->n]) /* carried on: it now moves at the piston's new speed */
                 for (int j = r->n - 1; j >= 0 && (j == r->n - 1 || r->held[j + 1]); j--) {
                     r->motor_work += 0.5 * r->m[j] * (du1 * du1 - r->v[j] * r->v[j]);

@@ -127,8 +127,11 @@ static double first_close(const struct events_piece *p, int k, const double c[4]
     }
     pts[np++] = 1.0;
     for (int j = 0; j + 1 < np; j++) {
+        /* The piece's end is the stepped state itself; inside it, the piston's gap may
+         * stray from the cubic by the drive's own straying. */
+        bool end = j + 2 == np;
         double g1 = cubic(c, pts[j + 1]);
-        if (g1 >= -EVENTS_TOUCH - p->drive_err * (k == p->lim->n))
+        if (g1 >= -EVENTS_TOUCH - (end ? 0.0 : p->drive_err * (k == p->lim->n)))
             continue;
         /* The first piece that ends closed: its root, or its start if it starts closed
          * (a turning point that never opened). */
@@ -144,8 +147,18 @@ double events_contact(const struct events_piece *p, int *which, int *closing)
     int n = l->n;
     double h = p->h, first = 2.0, sp = l->spacing, w = l->w;
     *which = -1, *closing = 0;
+    bool rests = p->rest->active > 0;
     for (int k = 0; k < l->count; k++) {
-        if (p->rest->on[k])
+        if (k > 0 && k < n) {
+            /* The pairs, the bulk of a long chain: the bound alone, inline. */
+            double g0 = sp + ya[k] - ya[k - 1] - w, g1 = sp + y[k] - y[k - 1] - w;
+            double dg = g1 - g0, s0 = h * (ya[n + k] - ya[n + k - 1]) - dg;
+            double s1 = h * (y[n + k] - y[n + k - 1]) - dg;
+            double A = s0 < 0 ? -s0 : s0, B = s1 < 0 ? -s1 : s1;
+            if ((g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B) > -EVENTS_TOUCH)
+                continue;
+        }
+        if (rests && p->rest->on[k])
             continue;
         double g0, g1, s0, s1, err = 0.0, lo;
         if (k == 0) {
@@ -193,17 +206,36 @@ static double weakest_at(const struct events_piece *p, double th, double *work, 
 double events_release(const struct events_piece *p, double *work, double *force, int *which)
 {
     int k;
-    if (!(weakest_at(p, 1.0, work, force, &k) < -REST_PULL))
+    double fhi = weakest_at(p, 1.0, work, force, &k);
+    if (!(fhi < -REST_PULL))
         return -1.0;
-    /* The force is a smooth function of theta, >= 0 at 0 where the contact held: bisect. */
-    double lo = 0.0, hi = 1.0;
+    /* The weakest force is a smooth function of theta, >= 0 at 0 where the contacts held:
+     * regula falsi (Illinois) to where it turns to a pull. */
+    double lo = 0.0, hi = 1.0, flo = weakest_at(p, 0.0, work, force, &k);
+    if (!(flo > 0.0)) {
+        *which = k;
+        return 0.0;
+    }
+    int side = 0;
     *which = k;
-    for (int it = 0; it < 60 && hi - lo > 1e-15; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (weakest_at(p, mid, work, force, &k) < 0.0)
-            hi = mid, *which = k;
-        else
-            lo = mid;
+    for (int it = 0; it < 100 && hi - lo > 1e-14; it++) {
+        double th = (lo * fhi - hi * flo) / (fhi - flo);
+        if (!(th > lo && th < hi))
+            th = 0.5 * (lo + hi);
+        double f = weakest_at(p, th, work, force, &k);
+        if (f < 0.0) {
+            hi = th, fhi = f, *which = k;
+            if (side == 1)
+                flo *= 0.5;
+            side = 1;
+        } else {
+            lo = th, flo = f;
+            if (side == -1)
+                fhi *= 0.5;
+            side = -1;
+        }
+        if (fabs(f) <= 1e-12 * (1.0 + fabs(flo - fhi)) && f < 0.0)
+            break;
     }
     return hi;
 }
@@ -242,7 +274,7 @@ static int body_hit(const struct collision_limits *l, const struct model *m, str
     if (!(closing > 0.0) || (isinf(L.mass) && isinf(R.mass)))
         return 0;
     double e = closing < COLLISION_V_REST ? 0.0 : MODEL_RESTITUTION, vl, vr, mu;
-    r->soft[k] = e == 0.0;
+    r->soft[k] = e == 0.0 && r->enabled;
     if (isinf(L.mass)) {
         vl = L.v, vr = L.v + e * closing, mu = R.mass;
     } else if (isinf(R.mass)) {
@@ -290,19 +322,18 @@ void events_settle_rest(const struct collision_limits *l, const struct model *m,
 {
     for (int k = 0; k < l->count; k++) {
         double rate = collision_rate(l, k, v, du);
-        if (r->on[k] && rate > REST_RATE) {
-            r->on[k] = false, r->active--;
-        } else if (!r->on[k] && r->soft[k] && fabs(rate) <= REST_RATE &&
-                   fabs(collision_gap(l, k, x, u)) <= REST_GAP) {
-            r->on[k] = true, r->active++;
-        }
+        if (r->on[k] && rate > REST_RATE)
+            rest_set(r, k, false);
+        else if (!r->on[k] && r->soft[k] && fabs(rate) <= REST_RATE &&
+                 fabs(collision_gap(l, k, x, u)) <= REST_GAP)
+            rest_set(r, k, true);
         r->soft[k] = false;
     }
     for (;;) {
         int k = rest_forces(r, m, x, v, u, du, ddu, force);
         if (k < 0 || force[k] >= -REST_PULL)
             break;
-        r->on[k] = false, r->active--;
+        rest_set(r, k, false);
     }
     rest_snap(r, l, m, x, v, u, du);
 }

@@ -25,11 +25,14 @@ struct rest *rest_new(int n)
         return NULL;
     r->on = calloc(2 * ((size_t)n + 1), sizeof *r->on);
     r->acc = calloc((size_t)n, sizeof *r->acc);
-    if (!r->on || !r->acc) {
+    r->first = calloc(2 * (size_t)n, sizeof *r->first);
+    r->held = calloc((size_t)n, sizeof *r->held);
+    if (!r->on || !r->acc || !r->first || !r->held) {
         rest_free(r);
         return NULL;
     }
     r->soft = r->on + n + 1;
+    r->last = r->first + n;
     r->n = n;
     r->count = n + 1;
     return r;
@@ -41,6 +44,8 @@ void rest_free(struct rest *r)
         return;
     free(r->on);
     free(r->acc);
+    free(r->first);
+    free(r->held);
     free(r);
 }
 
@@ -49,6 +54,7 @@ void rest_clear(struct rest *r, const struct collision_limits *l)
     memset(r->on, 0, 2 * ((size_t)r->n + 1));
     r->count = l->count;
     r->active = 0;
+    r->clusters = 0;
 }
 
 void rest_copy(struct rest *dst, const struct rest *src)
@@ -56,6 +62,9 @@ void rest_copy(struct rest *dst, const struct rest *src)
     memcpy(dst->on, src->on, (size_t)src->n + 1);
     dst->count = src->count;
     dst->active = src->active;
+    dst->clusters = src->clusters;
+    memcpy(dst->first, src->first, 2 * (size_t)src->n * sizeof *src->first);
+    memcpy(dst->held, src->held, (size_t)src->n * sizeof *src->held);
 }
 
 int rest_cluster(const struct rest *r, int n, int i, int *first, int *last)
@@ -71,6 +80,24 @@ int rest_cluster(const struct rest *r, int n, int i, int *first, int *last)
     if (l == n - 1 && r->count > n && r->on[n])
         return 1;
     return 0;
+}
+
+void rest_set(struct rest *r, int k, bool on)
+{
+    if (r->on[k] == on)
+        return;
+    r->on[k] = on;
+    r->active += on ? 1 : -1;
+    /* The clusters anew: every run of masses joined by resting contacts, and single
+     * masses the wall or the piston holds. */
+    r->clusters = 0;
+    for (int f = 0, l; f < r->n && r->active; f = l + 1) {
+        int held = rest_cluster(r, r->n, f, &f, &l);
+        if (f == l && !held)
+            continue;
+        r->first[r->clusters] = f, r->last[r->clusters] = l;
+        r->held[r->clusters++] = (signed char)held;
+    }
 }
 
 /* The cluster's acceleration from the chain's accelerations a over [f, l]. */
@@ -91,12 +118,9 @@ double rest_project(const struct rest *r, const struct model *m, double *a, doub
 {
     if (!r || !r->active)
         return 0.0;
-    int n = m->n;
     double push = 0.0;
-    for (int f = 0, l; f < n; f = l + 1) {
-        int held = rest_cluster(r, n, f, &f, &l);
-        if (f == l && !held)
-            continue;
+    for (int c = 0; c < r->clusters; c++) {
+        int f = r->first[c], l = r->last[c], held = r->held[c];
         double acc = cluster_accel(m, a, f, l, held, ddu);
         if (held > 0)
             for (int i = f; i <= l; i++)
@@ -111,16 +135,12 @@ int rest_forces(const struct rest *r, const struct model *m, const double *x, co
                 double u, double du, double ddu, double *force)
 {
     int n = m->n, weakest = -1;
-    for (int k = 0; k < r->count; k++)
-        force[k] = INFINITY;
     if (!r->active)
         return -1;
     double *a = r->acc;
     model_rates(m, NULL, x, v, u, du, a, NULL, NULL);
-    for (int f = 0, l; f < n; f = l + 1) {
-        int held = rest_cluster(r, n, f, &f, &l);
-        if (f == l && !held)
-            continue;
+    for (int c = 0; c < r->clusters; c++) {
+        int f = r->first[c], l = r->last[c], held = r->held[c];
         double acc = cluster_accel(m, a, f, l, held, ddu);
         /* Walking the cuts left to right: lambda_j = (forces left of j) - (mass left) A. */
         double left = 0.0;
@@ -135,9 +155,14 @@ int rest_forces(const struct rest *r, const struct model *m, const double *x, co
                 force[j] = left;
         }
     }
-    for (int k = 0; k < r->count; k++)
-        if (r->on[k] && (weakest < 0 || force[k] < force[weakest]))
-            weakest = k;
+    /* Only the resting contacts' forces are set: the weakest among them. */
+    for (int c = 0; c < r->clusters; c++) {
+        int lo = r->held[c] < 0 ? r->first[c] : r->first[c] + 1;
+        int hi = r->held[c] > 0 ? n : r->last[c];
+        for (int k = lo; k <= hi; k++)
+            if (r->on[k] && (weakest < 0 || force[k] < force[weakest]))
+                weakest = k;
+    }
     return weakest;
 }
 
@@ -150,23 +175,21 @@ void rest_snap(const struct rest *r, const struct collision_limits *l, const str
     /* Mass i's displacement when it touches the wall, its left neighbour, the piston. */
     double wall = 0.5 * l->w - l->spacing, pair = l->w - l->spacing;
     double piston = MODEL_LENGTH + u - 0.5 * l->w - n * l->spacing;
-    for (int f = 0, last; f < n; f = last + 1) {
-        int held = rest_cluster(r, n, f, &f, &last);
-        if (f == last && !held)
-            continue;
+    for (int c = 0; c < r->clusters; c++) {
+        int f = r->first[c], last = r->last[c], held = r->held[c];
         double vc, x0;
         if (held < 0) {
             vc = 0.0, x0 = wall;
         } else if (held > 0) {
             vc = du, x0 = piston - (last - f) * pair;
         } else {
-            double p = 0.0, mass = 0.0, mx = 0.0, off = 0.0;
+            double p = 0.0, mass = 0.0, mx = 0.0;
             for (int i = f; i <= last; i++) {
                 p += m->m[i] * v[i], mass += m->m[i];
                 mx += m->m[i] * (x[i] - (i - f) * pair);
             }
             vc = p / mass;
-            x0 = mx / mass + off;
+            x0 = mx / mass;
         }
         for (int i = f; i <= last; i++) {
             x[i] = x0 + (i - f) * pair;

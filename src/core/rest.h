@@ -20,10 +20,17 @@ struct rest {
     int n;      /* masses */
     int count;  /* constraints, as in struct collision_limits */
     int active; /* how many hold now: 0 is the common case and costs nothing */
+    bool enabled; /* contacts may come to rest (sim.c: not in long chains' pile-ups) */
     bool *on;   /* count flags: constraint k rests */
     bool *soft; /* count flags: constraint k was just hit slower than COLLISION_V_REST */
     double *acc; /* n: scratch for the chain's own accelerations */
+    int clusters;      /* clusters of two or more masses, or held by the wall or piston */
+    int *first, *last; /* each one's masses */
+    signed char *held; /* -1 the wall holds it, 1 the piston, 0 nothing */
 };
+
+/* Makes constraint k rest (on) or not, the clusters made anew. */
+void rest_set(struct rest *r, int k, bool on);
 
 /* A set of n masses' constraints, all open; NULL on no memory. */
 struct rest *rest_new(int n);
@@ -44,8 +51,8 @@ void rest_copy(struct rest *dst, const struct rest *src);
 double rest_project(const struct rest *r, const struct model *m, double *a, double ddu);
 
 /* The contact force of every resting constraint, at state x, v with the end at u, du,
- * ddu: force[k] >= 0 pushes, < 0 would pull (force has count values; open ones get
- * +inf). Returns the index of the weakest, or -1 when none rests. */
+ * ddu: force[k] >= 0 pushes, < 0 would pull (force has count values; only the resting
+ * ones are written). Returns the index of the weakest, or -1 when none rests. */
 int rest_forces(const struct rest *r, const struct model *m, const double *x, const double *v,
                 double u, double du, double ddu, double *force);
 

@@ -26,11 +26,12 @@
 /* Events located inside one piece (a mass coming to rest on a wall bounces about 30
  * times, the last ones in one step); any more are resolved at its end. */
 #define MAX_EVENTS 256
-/* A chain of up to MAX_LOCATED masses has every contact located. In a longer one, a piece
- * with more than LONG_CLOSING gaps closing is piling up, and at most LONG_EVENTS events
- * are located in a piece, without the Newton refinement: the rest are settled at the
- * piece's end, so a pile-up of a thousand masses costs about a step, not a step per
- * contact. */
+/* A chain of up to MAX_LOCATED masses has every contact located, and its contacts may
+ * rest. In a longer one, a piece with more than LONG_CLOSING gaps closing, or one after a
+ * step with more than LONG_CLOSING contacts, is piling up: nothing is located, everything
+ * is settled at the piece's end (each touching cluster moving as one), so a pile-up of a
+ * thousand masses costs about a step, not a step per contact. Otherwise at most
+ * LONG_EVENTS events are located in a piece, without the Newton refinement. */
 #define MAX_LOCATED 12
 #define LONG_CLOSING 3
 #define LONG_EVENTS 2
@@ -47,6 +48,7 @@ struct sim {
     enum integrator integrator;
     double contact;      /* energy removed by contacts and the cap */
     int last_contacts;   /* contacts and caps in the last step */
+    int prev_contacts;   /* and in the one before */
     int last_capped;     /* caps in the last step */
     double *y;           /* 2N+2: x, v, D (dissipated), W (motor work) */
     double *y0;          /* the state at the start of the step, for restoring */
@@ -78,6 +80,8 @@ struct sim *sim_new(const struct model *model, double dt)
     s->work = s->ya_buf + len;
     s->force = s->work + 2 * n;
     stepper_set_rest(s->st, s->rest);
+    /* A long chain's contacts do not rest: its pile-ups are settled step by step. */
+    s->rest->enabled = n <= MAX_LOCATED;
     s->dt = dt;
     s->integrator = INTEGRATOR_RK4;
     sim_set_model(s, model);
@@ -199,7 +203,10 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
     enum integrator integ = s->integrator;
     const struct model *m = sim_model(s);
     struct events_piece p = {&s->lim, m, s->rest, d, NULL, s->y, a, b - a, 0, 0, 0, 0, 0, 0};
+    bool is_long = n > MAX_LOCATED;
+    int budget = !is_long ? MAX_EVENTS : s->prev_contacts > LONG_CLOSING ? 0 : LONG_EVENTS;
     p.ddu_factor = drive_ddu_factor(d);
+    bool leftover = true; /* a gap may be left closed at the end */
     for (int events = 0;; events++) {
         if (events == 0 && at_start) {
             s->ya = s->y0;
@@ -215,6 +222,8 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
         stepper_end_drive(s->st, &p.ub, &p.dub);
         if (s->rest->active)
             rest_snap(s->rest, &s->lim, m, s->y, s->y + n, p.ub, p.dub);
+        if (budget == 0)
+            break; /* piling up: settled below */
         p.ya = s->ya, p.a = a, p.h = b - a;
         p.drive_err = drive_interp_error(d, b - a);
         /* The earliest event in the piece: a gap closing (or grazing), or a resting
@@ -223,16 +232,18 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
          * a step, not a step per contact. */
         int which, closing, released = -1;
         double first = events_contact(&p, &which, &closing);
-        if (s->rest->active) {
+        if (s->rest->active && !is_long) {
             double th = events_release(&p, s->work, s->force, &released);
             if (th >= 0.0 && (which < 0 || th < first))
                 first = th, which = -1;
             else
                 released = -1;
         }
-        bool is_long = n > MAX_LOCATED;
-        if ((which < 0 && released < 0) || events >= (is_long ? LONG_EVENTS : MAX_EVENTS) ||
-            (is_long && closing > LONG_CLOSING))
+        if (which < 0 && released < 0) {
+            leftover = false; /* every gap stays open to its end */
+            break;
+        }
+        if (events >= budget || (is_long && closing > LONG_CLOSING))
             break;
         /* Step again, to the instant of the event. */
         double tc = a + first * (b - a);
@@ -259,21 +270,22 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
                 drive_eval(d, tc, &uc, &duc);
             }
         }
-        if (released >= 0 && s->rest->on[released]) {
-            s->rest->on[released] = false;
-            s->rest->active--;
-        }
+        if (released >= 0)
+            rest_set(s->rest, released, false);
         at_event(s, which, uc, duc, p.ddu_factor * uc);
         if (b - tc <= 1e-12 * s->dt)
             break;
         a = tc;
     }
-    /* A pile-up, and anything left over, is put back at the piece's end. */
+    /* A pile-up, and anything left over, is put back at the piece's end; in a long chain
+     * resting contacts that pull part there too. */
     stepper_end_drive(s->st, &p.ub, &p.dub);
-    if (collision_needed(&s->lim, s->y, s->y + n, p.ub)) {
+    if (leftover && collision_needed(&s->lim, s->y, s->y + n, p.ub)) {
         struct collision_books bk = {0.0, 0.0};
         s->last_contacts += collision_settle(&s->lim, m, s->y, s->y + n, p.ub, p.dub, &bk);
         book(s, &bk);
+        at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub);
+    } else if (is_long && s->rest->active) {
         at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub);
     }
     return 0;
@@ -292,22 +304,40 @@ static double jump_work(const struct sim *s, double u_from, double u_to)
  * contact if the piston jumped into the last mass. */
 static void jump(struct sim *s, double u_from, double u, double du)
 {
-    int n = s->n;
+    int n = s->n, f, l;
+    const struct model *m = sim_model(s);
     s->y[2 * n + 1] += jump_work(s, u_from, u);
     if (!s->lim.on)
         return;
     double gap = collision_gap(&s->lim, n, s->y, u);
-    if (s->rest->on[n] && gap > TOUCH) { /* the piston jumped away from what it carried */
-        s->rest->on[n] = false;
-        s->rest->active--;
-    }
+    if (s->rest->on[n] && gap > TOUCH) /* the piston jumped away from what it carried */
+        rest_set(s->rest, n, false);
     if (gap < -TOUCH) {
-        struct collision_books b = {0.0, 0.0};
-        s->last_contacts += collision_settle(&s->lim, sim_model(s), s->y, s->y + n, u, du, &b);
-        book(s, &b);
+        /* The piston jumped into the last mass: its cluster is put on the face (the motor
+         * pays what that does to the springs), then takes the contact rule, as at any
+         * contact, unless the piston carried it. Where that would push it into its
+         * neighbour or it is held by the wall, the pile is settled instead. */
+        int held = rest_cluster(s->rest, n, n - 1, &f, &l);
+        double room = collision_gap(&s->lim, f, s->y, u);
+        if (held >= 0 && room + gap >= 0.0) {
+            double e0 = model_potential(m, s->y, u);
+            for (int i = f; i <= l; i++)
+                s->y[i] += gap;
+            s->y[2 * n + 1] += model_potential(m, s->y, u) - e0;
+            if (!s->rest->on[n]) {
+                struct collision_books b = {0.0, 0.0};
+                int hits = events_hit(&s->lim, m, s->rest, n, s->y, s->y + n, u, du, &b);
+                s->last_contacts += hits > 0 ? hits : 1;
+                book(s, &b);
+            }
+        } else {
+            struct collision_books b = {0.0, 0.0};
+            s->last_contacts += collision_settle(&s->lim, m, s->y, s->y + n, u, du, &b);
+            book(s, &b);
+        }
     }
     if (s->rest->active || gap < -TOUCH)
-        events_settle_rest(&s->lim, sim_model(s), s->rest, s->y, s->y + n, u, du, 0.0, s->force);
+        events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
 }
 
 /* Integrates from t0 to t1 in pieces split at the drive's breakpoints. */
@@ -374,6 +404,7 @@ enum sim_status sim_step(struct sim *s)
     double t1 = s->t_base + (s->steps + 1.0) * s->dt;
     double contact0 = s->contact;
     memcpy(s->y0, s->y, (size_t)len * sizeof *s->y);
+    s->prev_contacts = s->last_contacts;
     s->last_contacts = s->last_capped = 0;
     if (advance(s, t0, t1) != 0 || !all_finite(s->y, len)) {
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
@@ -503,7 +534,7 @@ void sim_restore(struct sim *s, const double *buf)
             bool on = fmod(word, 2.0) != 0.0;
             word = floor(word / 2.0);
             if (on && k < s->lim.count)
-                s->rest->on[k] = true, s->rest->active++;
+                rest_set(s->rest, k, true);
         }
     }
     /* The drive goes on from the angle it had then, at the frequency in force now: if the
