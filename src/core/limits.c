@@ -1,39 +1,48 @@
-/* limits.c: the stability and accuracy limits of dt (SPEC section 1, "Limits").
+/* limits.c: the stability and accuracy limits of dt (SPEC section 1, "Limits", and
+ * section 7).
  *
  * The chain M x'' + C x' + K x = 0 is the first-order system z' = A z with
  * A = [[0, I], [-M^-1 K, -M^-1 C]]; its 2N eigenvalues (LAPACK dgeev) pair into N
- * modes, each the oscillator x'' = -w2 x - 2 s x' with those two eigenvalues. One step h
- * of an integrator maps a mode's (x, v) by a 2x2 matrix (integrator_mode_step); dt is
- * stable when every mode's matrix has spectral radius rho <= 1. For euler and rk4, whose
- * step on z' = A z is the polynomial R(hA), this is |R(h lambda)| <= 1 exactly, whichever
- * way the eigenvalues are paired. For semi-implicit and verlet, which treat x and v
- * apart, it is exact for modal damping (C diagonal in the undamped modes, as with equal
- * dampers on equal masses) and an approximation otherwise.
+ * modes, each the oscillator x'' = -w2 x - 2 s x' with those two eigenvalues.
  *
- * Accuracy: over one period T = 2 pi / |lambda| a mode's amplitude goes by exp(-s T);
- * the method's by rho^(T/h). Their ratio minus one is the mode's error per period.
+ * Stability is the spectral radius of each integrator's own one-step matrix S, built by
+ * its stepper (onestep.c), up to ONESTEP_MAX masses (the interactive program's 10
+ * included). Above that S's 2N x 2N eigenproblem at every h of the search costs too
+ * much (dgeev: 0.04 ms at 2N = 20, 35 ms at 200, 15 s at 2000), so:
+ * - euler and rk4: S = R(hA), whose eigenvalues are R(h lambda) exactly, so the modes'
+ *   2x2 steps (whose eigenvalues are R of the pair's lambdas) give S's radius exactly
+ *   while the modes are dgeev's (up to LIMITS_DGEEV_MAX masses); above that, the modes
+ *   sampled on the boundary of the region that holds every eigenvalue (stability.c):
+ *   a limit never past the real one, reached with proportional damping;
+ * - semi-implicit and verlet: the first h at which S has the eigenvalue -1, the only
+ *   way out of the unit disc for them (stability.c): exact, O(N) and O(N^2).
  *
- * The largest good step of a mode is found along h: a scan of h |lambda| (|lambda| the
- * mode's fastest) in steps of 1/16 up to 8, past the explicit methods' regions, then
- * growing by 1/16 each step up to 1e6 (verlet, whose damping is implicit, is stable on
- * an overdamped mode out to 2 / sqrt(w2), far past its fast eigenvalue), then bisection
- * inside the first bad interval. The good steps here are an interval starting at 0, so
- * the scan only guards against the bisection starting on the wrong side. */
+ * Accuracy: a mode's motion over one period T = 2 pi / omega_d goes by exp(lambda T);
+ * the method's by mu^(T/h), mu the eigenvalue of the mode's 2x2 step (integrator_mode_step)
+ * that stands for lambda. Their ratio minus one, E, is the error after one period: its
+ * modulus the part of the amplitude the motion is off by, amplitude and phase together
+ * (semi-implicit and verlet keep the amplitude but not the phase). With non-modal damping
+ * the 2x2 step is the mode's share of S only approximately. The drive: the steady motion
+ * at its frequency with the integrator against the exact one (onestep_drive_error), up to
+ * ONESTEP_MAX masses; above, the error per period of an undamped mode at the drive's
+ * frequency. The good steps are found along h by onestep_search (scan, then bisection). */
 #include "limits.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+#include <complex.h>
+
 #include <lapacke.h>
 
 #include "modes.h"
+#include "onestep.h"
+#include "stability.h"
 
-#define RHO_TOL 1e-12  /* rho this far above 1 is rounding, not growth */
-#define SCAN_STEP 0.0625 /* of h |lambda|, up to SCAN_LINEAR */
-#define SCAN_LINEAR 8.0
-#define SCAN_END 1e6     /* no limit below this h |lambda|: none at all */
-#define BISECTIONS 64
+#define RHO_TOL 1e-12      /* rho this far above 1 is rounding, not growth */
+#define REGION_MODES 320   /* modes sampled on the eigenvalues' region (long chains) */
+#define PERIOD_STEPS 4096  /* steps of a period looked at for its error */
 
 /* ---- the modes ---- */
 
@@ -127,88 +136,215 @@ static double mode_scale(const struct limits_mode *md)
     return d > 0.0 ? md->s + sqrt(d) : sqrt(md->w2);
 }
 
-/* Spectral radius of the step matrix of integrator i on mode md at step h. */
-static double radius(const struct limits_mode *md, enum integrator i, double h)
+/* The eigenvalues of the 2x2 step of integrator i on mode md at step h: the one of
+ * largest modulus, and for a complex pair the one with Im >= 0. */
+static double complex mode_mu(const struct limits_mode *md, enum integrator i, double h)
 {
     double q[4];
     integrator_mode_step(i, md->w2, md->s, h, q);
     double half = 0.5 * (q[0] + q[3]), det = q[0] * q[3] - q[1] * q[2];
     double disc = half * half - det;
     if (disc < 0.0)
-        return sqrt(det); /* a complex pair: both of modulus sqrt(det) */
-    return fabs(half) + sqrt(disc);
+        return half + I * sqrt(-disc);
+    return half >= 0.0 ? half + sqrt(disc) : half - sqrt(disc);
 }
 
-double limits_mode_error(const struct limits_mode *md, enum integrator i, double dt)
+/* The 2x2 step of integrator i on mode md in the coordinates (w x, v), w = sqrt(w2), in
+ * which the exact motion turns (and decays) without changing shape. */
+static void scaled_step(const struct limits_mode *md, enum integrator i, double h, double q[4])
 {
-    if (md->s * md->s >= md->w2)
-        return NAN;
-    if (i == INTEGRATOR_EXACT)
-        return 0.0;
-    double period = 2.0 * M_PI / sqrt(md->w2);
-    double rho = radius(md, i, dt);
-    if (!(rho > 0.0))
-        return -1.0; /* the method stops the mode dead within a step */
-    return expm1(period / dt * log(rho) + md->s * period);
+    double w = sqrt(md->w2);
+    integrator_mode_step(i, md->w2, md->s, h, q);
+    q[1] *= w;
+    q[2] /= w;
 }
 
-/* What a step is checked for. */
-enum check { STABLE, ACCURATE };
-
-static bool good(const struct limits_mode *md, enum integrator i, double h, enum check what)
+/* The largest singular value of the 2x2 matrix a (row-major). */
+static double norm2(const double a[4])
 {
-    if (what == STABLE)
-        return radius(md, i, h) <= 1.0 + RHO_TOL;
-    return fabs(limits_mode_error(md, i, h)) <= LIMITS_LOSS;
+    double f = a[0] * a[0] + a[1] * a[1] + a[2] * a[2] + a[3] * a[3];
+    double det = a[0] * a[3] - a[1] * a[2];
+    return sqrt(0.5 * (f + sqrt(fmax(f * f - 4.0 * det * det, 0.0))));
 }
 
-/* The largest h good for mode md from 0 up: scan, then bisect the first bad interval.
- * INFINITY when nothing up to SCAN_END is bad. */
-static double largest_good(const struct limits_mode *md, enum integrator i, enum check what)
+/* The largest error of the method's motion within one period against the exact one,
+ * over every start of unit size: max over n <= T/h of |Q^n - E^n| (Q the method's step,
+ * E the exact one, both scaled). Past PERIOD_STEPS steps a period every method here is
+ * within 1 % (euler's growth, the worst, is pi^2 / steps), and the steps after those are
+ * not taken. */
+static double period_error(const struct limits_mode *md, enum integrator i, double h,
+                           double period)
 {
-    double scale = mode_scale(md);
-    if (!(scale > 0.0))
-        return INFINITY;
-    double lo = 0.0, hi = NAN;
-    for (double t = SCAN_STEP; t <= SCAN_END;
-         t = t < SCAN_LINEAR ? t + SCAN_STEP : t * (1.0 + SCAN_STEP)) {
-        if (!good(md, i, t / scale, what)) {
-            hi = t;
-            break;
+    double q[4], e[4], qn[4] = {1, 0, 0, 1}, en[4] = {1, 0, 0, 1}, err = 0.0;
+    scaled_step(md, i, h, q);
+    scaled_step(md, INTEGRATOR_EXACT, h, e);
+    double steps = fmin(ceil(period / h - 1e-9), PERIOD_STEPS);
+    for (int n = 1; n <= (int)steps && err < 1e6; n++) {
+        double a[4] = {q[0] * qn[0] + q[1] * qn[2], q[0] * qn[1] + q[1] * qn[3],
+                       q[2] * qn[0] + q[3] * qn[2], q[2] * qn[1] + q[3] * qn[3]};
+        double b[4] = {e[0] * en[0] + e[1] * en[2], e[0] * en[1] + e[1] * en[3],
+                       e[2] * en[0] + e[3] * en[2], e[2] * en[1] + e[3] * en[3]};
+        double d[4] = {a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]};
+        err = fmax(err, norm2(d));
+        for (int k = 0; k < 4; k++)
+            qn[k] = a[k], en[k] = b[k];
+    }
+    return err;
+}
+
+double limits_mode_error(const struct limits_mode *md, enum integrator i, double dt,
+                         double *amp, double *phase)
+{
+    double a = 0.0, p = 0.0, e = 0.0;
+    if (md->s * md->s >= md->w2) {
+        a = p = e = NAN;
+    } else if (i != INTEGRATOR_EXACT) {
+        double wd = sqrt(md->w2 - md->s * md->s), period = 2.0 * M_PI / wd;
+        double complex mu = mode_mu(md, i, dt);
+        if (cabs(mu) > 0.0) {
+            /* log(mu / exp(lambda dt)) per step, lambda = -s + i wd, times the steps */
+            a = expm1(period / dt * (log(cabs(mu)) + md->s * dt));
+            p = remainder(period / dt * (carg(mu) - wd * dt), 2.0 * M_PI);
+        } else {
+            a = -1.0; /* the method stops the mode dead within a step */
         }
-        lo = t;
+        e = period_error(md, i, dt, period);
     }
-    if (isnan(hi))
-        return INFINITY;
-    for (int k = 0; k < BISECTIONS; k++) {
-        double mid = 0.5 * (lo + hi);
-        if (good(md, i, mid / scale, what))
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo / scale;
+    if (amp)
+        *amp = a;
+    if (phase)
+        *phase = p;
+    return e;
 }
 
-double limits_stable_dt(const struct limits_mode *mode, int n, enum integrator i)
+/* What a step is checked for along h. */
+struct mode_ctx {
+    const struct limits_mode *md;
+    enum integrator i;
+};
+
+static bool mode_stable(void *ctx, double h)
+{
+    const struct mode_ctx *c = ctx;
+    return cabs(mode_mu(c->md, c->i, h)) <= 1.0 + RHO_TOL;
+}
+
+static bool mode_accurate(void *ctx, double h)
+{
+    const struct mode_ctx *c = ctx;
+    return limits_mode_error(c->md, c->i, h, NULL, NULL) <= LIMITS_LOSS;
+}
+
+/* The least over the n modes of the largest good h of each. */
+static double modes_search(const struct limits_mode *mode, int n, enum integrator i,
+                           bool (*good)(void *, double), bool oscillating_only)
 {
     double dt = INFINITY;
+    for (int j = 0; j < n; j++) {
+        if (oscillating_only && mode[j].s * mode[j].s >= mode[j].w2)
+            continue;
+        struct mode_ctx c = {&mode[j], i};
+        dt = fmin(dt, onestep_search(good, &c, mode_scale(&mode[j])));
+    }
+    return dt;
+}
+
+/* ---- the chain ---- */
+
+/* euler and rk4 above LIMITS_DGEEV_MAX masses: the modes sampled on the region that holds
+ * every eigenvalue of the chain, from the undamped modes' extremes. */
+static double region_stable_dt(const struct model *m, enum integrator i, const double *w2,
+                               int n)
+{
+    struct limits_mode *mode = malloc(REGION_MODES * sizeof *mode);
+    double *buf = malloc(2 * REGION_MODES * sizeof *buf);
+    double dt = 0.0; /* no memory: not known stable at any step */
+    if (mode && buf) {
+        stability_region_modes(m, w2[0], w2[n - 1], REGION_MODES, buf, buf + REGION_MODES);
+        for (int k = 0; k < REGION_MODES; k++)
+            mode[k] = (struct limits_mode){fmax(buf[k], 0.0), buf[REGION_MODES + k]};
+        dt = modes_search(mode, REGION_MODES, i, mode_stable, false);
+    }
+    free(mode);
+    free(buf);
+    return dt;
+}
+
+/* Above ONESTEP_MAX masses (see the top of the file). */
+static double long_chain_stable_dt(const struct model *m, const struct limits_mode *mode,
+                                   int n, enum integrator i)
+{
+    if (i == INTEGRATOR_SEMI_IMPLICIT)
+        return stability_semi_implicit(m);
+    if ((i == INTEGRATOR_EULER || i == INTEGRATOR_RK4) && n <= LIMITS_DGEEV_MAX)
+        return modes_search(mode, n, i, mode_stable, false);
+    double *w2 = malloc((size_t)(2 * n) * sizeof *w2), dt = 0.0;
+    if (w2 && modes_modal(m, w2, w2 + n) == 0)
+        dt = i == INTEGRATOR_VERLET ? stability_verlet(w2[n - 1]) : region_stable_dt(m, i, w2, n);
+    free(w2);
+    return dt;
+}
+
+double limits_stable_dt(const struct model *m, const struct limits_mode *mode, int n,
+                        enum integrator i)
+{
     if (i == INTEGRATOR_EXACT)
-        return dt;
+        return INFINITY;
+    if (n > ONESTEP_MAX)
+        return long_chain_stable_dt(m, mode, n, i);
+    double scale = 0.0; /* the fastest |lambda|: the unit of the search */
     for (int j = 0; j < n; j++)
-        dt = fmin(dt, largest_good(&mode[j], i, STABLE));
+        scale = fmax(scale, mode_scale(&mode[j]));
+    struct onestep *o = onestep_new(m);
+    double dt = o ? onestep_stable_dt(o, i, scale) : long_chain_stable_dt(m, mode, n, i);
+    onestep_free(o);
     return dt;
 }
 
 double limits_accurate_dt(const struct limits_mode *mode, int n, enum integrator i)
 {
-    double dt = INFINITY;
     if (i == INTEGRATOR_EXACT)
-        return dt;
-    for (int j = 0; j < n; j++)
-        if (mode[j].s * mode[j].s < mode[j].w2)
-            dt = fmin(dt, largest_good(&mode[j], i, ACCURATE));
-    return dt;
+        return INFINITY;
+    return modes_search(mode, n, i, mode_accurate, true);
+}
+
+/* ---- the drive ---- */
+
+struct drive_ctx {
+    struct onestep *o; /* NULL: the undamped mode at the drive's frequency */
+    enum integrator i;
+    double f, stable_dt;
+};
+
+static double drive_error(const struct drive_ctx *c, double h)
+{
+    if (c->o)
+        return onestep_drive_error(c->o, c->i, h, c->f);
+    double w = 2.0 * M_PI * c->f;
+    struct limits_mode md = {w * w, 0.0};
+    return limits_mode_error(&md, c->i, h, NULL, NULL);
+}
+
+static bool drive_accurate(void *ctx, double h)
+{
+    const struct drive_ctx *c = ctx;
+    return h <= c->stable_dt && drive_error(c, h) <= LIMITS_LOSS; /* NAN: not accurate */
+}
+
+/* The steady motion at the drive's frequency: its error at out->dt and the largest step
+ * keeping it within LIMITS_LOSS. */
+static void judge_drive(const struct model *m, struct limits *out)
+{
+    struct drive_ctx c = {NULL, out->integrator, out->drive_hz, out->stable_dt};
+    if (out->integrator == INTEGRATOR_EXACT) {
+        out->drive_dt = INFINITY; /* it follows the drive exactly */
+        return;
+    }
+    if (m->n <= ONESTEP_MAX)
+        c.o = onestep_new(m);
+    out->drive_error = limits_unstable(out) ? NAN : drive_error(&c, out->dt);
+    out->drive_dt = fmin(onestep_search(drive_accurate, &c, 2.0 * M_PI * c.f), out->stable_dt);
+    onestep_free(c.o);
 }
 
 /* ---- the verdict ---- */
@@ -216,18 +352,21 @@ double limits_accurate_dt(const struct limits_mode *mode, int n, enum integrator
 void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
                   enum integrator i, double dt, struct limits *out)
 {
-    *out = (struct limits){.integrator = i, .dt = dt, .worst = -1, .drive_steps = INFINITY};
-    out->stable_dt = limits_stable_dt(mode, n, i);
+    *out = (struct limits){.integrator = i, .dt = dt, .worst = -1, .drive_steps = INFINITY,
+                           .drive_dt = INFINITY};
+    out->stable_dt = limits_stable_dt(m, mode, n, i);
     out->accurate_dt = fmin(limits_accurate_dt(mode, n, i), out->stable_dt);
     int top = -1;
     for (int j = 0; j < n; j++) {
-        double e = limits_mode_error(&mode[j], i, dt);
+        double a, p, e = limits_mode_error(&mode[j], i, dt, &a, &p);
         if (isnan(e))
             continue;
         top = j; /* the modes go up in w2: the last oscillating one is the highest */
-        if (out->worst < 0 || fabs(e) > fabs(out->error)) {
+        if (out->worst < 0 || e > out->error) {
             out->worst = j;
             out->error = e;
+            out->amp_error = a;
+            out->phase_error = p;
         }
     }
     if (out->worst >= 0) {
@@ -237,6 +376,7 @@ void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
     if (m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0) {
         out->drive_hz = m->motor.frequency;
         out->drive_steps = 1.0 / (m->motor.frequency * dt);
+        judge_drive(m, out);
     }
 }
 
@@ -248,12 +388,12 @@ bool limits_unstable(const struct limits *l)
 bool limits_rough_modes(const struct limits *l)
 {
     /* Past the stability limit that is all there is to say. */
-    return !limits_unstable(l) && l->worst >= 0 && fabs(l->error) > LIMITS_LOSS;
+    return !limits_unstable(l) && l->worst >= 0 && l->error > LIMITS_LOSS;
 }
 
 bool limits_rough_drive(const struct limits *l)
 {
-    return l->drive_steps < LIMITS_DRIVE_STEPS;
+    return !limits_unstable(l) && l->drive_error > LIMITS_LOSS; /* NAN: not known rough */
 }
 
 double limits_round_down(double x)
@@ -268,7 +408,7 @@ double limits_round_down(double x)
 static void percent(double fraction, char *buf, size_t len)
 {
     double p = 100.0 * fabs(fraction);
-    snprintf(buf, len, p >= 10.0 ? "%.0f" : "%.2g", p);
+    snprintf(buf, len, p >= 10.0 ? "%.0f" : "%.3g", p);
 }
 
 void limits_say_stability(const struct limits *l, bool short_form, char *buf, size_t len)
@@ -285,38 +425,62 @@ void limits_say_stability(const struct limits *l, bool short_form, char *buf, si
                  "dt < %.3g s is stable", l->dt, name, limits_round_down(l->stable_dt));
 }
 
+/* What a period does to the worst mode's amplitude and phase: "loses 76 % and leads 31°". */
+static void amp_and_phase(const struct limits *l, char *buf, size_t len)
+{
+    char pc[16], amp[32], phase[32];
+    double deg = l->phase_error * 180.0 / M_PI;
+    percent(l->amp_error, pc, sizeof pc);
+    if (fabs(l->amp_error) < 0.005)
+        snprintf(amp, sizeof amp, "keeps its amplitude");
+    else
+        snprintf(amp, sizeof amp, "%s %s %%", l->amp_error < 0.0 ? "loses" : "gains", pc);
+    if (fabs(deg) < 0.5)
+        snprintf(phase, sizeof phase, "its phase");
+    else
+        snprintf(phase, sizeof phase, "%s %.0f°", deg < 0.0 ? "lags" : "leads", fabs(deg));
+    if (fabs(l->amp_error) < 0.005 && fabs(deg) < 0.5)
+        snprintf(buf, len, "keeps its amplitude and phase: the error comes and goes within it");
+    else
+        snprintf(buf, len, "%s and %s%s", amp, fabs(deg) < 0.5 ? "keeps " : "", phase);
+}
+
 void limits_say_modes(const struct limits *l, bool short_form, char *buf, size_t len)
 {
-    char pc[16], mode[48];
+    char pc[16], mode[48], how[80];
     const char *name = integrator_name(l->integrator);
-    const char *verb = l->error < 0.0 ? "loses" : "gains";
     buf[0] = '\0';
     if (!limits_rough_modes(l))
         return;
     percent(l->error, pc, sizeof pc);
     if (short_form) {
-        snprintf(buf, len, "warning: the %.3g Hz mode %s %s %% a period to %s; dt < %.3g s: "
-                 "under 1 %%", l->worst_hz, verb, pc, name, limits_round_down(l->accurate_dt));
+        snprintf(buf, len, "warning: %.3g Hz mode %s %% off in a period with %s; dt < %.3g s: "
+                 "1 %%", l->worst_hz, pc, name, limits_round_down(l->accurate_dt));
         return;
     }
     snprintf(mode, sizeof mode, l->worst_is_top ? "the highest mode (%.3g Hz)"
                                                 : "the mode at %.3g Hz", l->worst_hz);
-    snprintf(buf, len, "dt = %g s is accurate only roughly: %s %s %s %% of its amplitude per "
-             "period to %s; dt < %.3g s keeps it under 1 %%", l->dt, mode, verb, pc, name,
-             limits_round_down(l->accurate_dt));
+    amp_and_phase(l, how, sizeof how);
+    snprintf(buf, len, "dt = %g s is accurate only roughly: within a period %s is off by up "
+             "to %s %% of its size with %s (a period %s); dt < %.3g s keeps it under 1 %%",
+             l->dt, mode, pc, name, how, limits_round_down(l->accurate_dt));
 }
 
 void limits_say_drive(const struct limits *l, bool short_form, char *buf, size_t len)
 {
+    char pc[16];
+    const char *name = integrator_name(l->integrator);
     buf[0] = '\0';
     if (!limits_rough_drive(l))
         return;
-    double need = limits_round_down(1.0 / (LIMITS_DRIVE_STEPS * l->drive_hz));
+    percent(l->drive_error, pc, sizeof pc);
+    double need = limits_round_down(l->drive_dt);
     if (short_form)
-        snprintf(buf, len, "warning: %.2g steps per period of the %.3g Hz drive; dt <= %.3g s "
-                 "gives %.0f", l->drive_steps, l->drive_hz, need, LIMITS_DRIVE_STEPS);
+        snprintf(buf, len, "warning: motion at the %.3g Hz drive %s %% off with %s; dt < %.3g s: "
+                 "1 %%", l->drive_hz, pc, name, need);
     else
-        snprintf(buf, len, "dt = %g s is accurate only roughly: the %.3g Hz drive gets %.2g "
-                 "steps per period; dt <= %.3g s gives it %.0f", l->dt, l->drive_hz,
-                 l->drive_steps, need, LIMITS_DRIVE_STEPS);
+        snprintf(buf, len, "dt = %g s is accurate only roughly: the steady motion at the "
+                 "%.3g Hz drive's frequency is off by %s %% with %s (%.2g steps per period); "
+                 "dt < %.3g s keeps it under 1 %%", l->dt, l->drive_hz, pc, name,
+                 l->drive_steps, need);
 }
