@@ -564,7 +564,7 @@ expect_equal "$cmd: exit status" 2 "$rc"
 expect_usage_error --integrator "'RK4'" -- --headless --integrator RK4
 expect_usage_error --integrator -- --headless --integrator
 for i in euler semi-implicit verlet rk4; do
-    if expect_ok --headless --integrator "$i" --duration 1 --dt 0.0005; then
+    if expect_ok --headless --integrator "$i" --duration 1 --dt 0.0004; then
         check_csv "$out" "$cmd"
         cp "$out" "$tmp/int-$i.csv"
     fi
@@ -572,11 +572,11 @@ done
 expect_rows 1 --headless --integrator exact --duration 0
 # the integrators differ, and rk4 is the default
 if cmp -s "$tmp/int-euler.csv" "$tmp/int-rk4.csv"; then fail "--integrator euler and rk4 gave the same"; else pass; fi
-expect_ok --headless --duration 1 --dt 0.0005 &&
+expect_ok --headless --duration 1 --dt 0.0004 &&
     expect_same_output "--integrator rk4 against the default" "$tmp/int-rk4.csv" "$out"
 # a preset key in [system], the same as the option
 printf '[system]\nintegrator = verlet\n' >"$tmp/p/verlet.ini"
-expect_ok -p "$tmp/p/verlet.ini" --headless --duration 1 --dt 0.0005 &&
+expect_ok -p "$tmp/p/verlet.ini" --headless --duration 1 --dt 0.0004 &&
     expect_same_output "integrator = verlet in a preset" "$tmp/int-verlet.csv" "$out"
 expect_preset_error integrator-section 2 integrator '[motor]\nintegrator = rk4\n'
 expect_preset_error integrator-value 2 "integrator: 'leapfrog' is not an integrator" \
@@ -617,13 +617,36 @@ expect_warnings 1 "springsim: warning: dt = 0.03 s is unstable with euler" --hea
     --damping 100 --dt 0.03 --no-collisions --duration 2 --integrator euler
 expect_ok --headless -n 1 --damping 100 --dt 0.05 --no-collisions --duration 2 --integrator exact
 # accuracy: the N = 10 chain loses its top mode to rk4's damping; a 23.7 Hz drive
-expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: the highest mode (7.05 Hz) loses 76 % of its amplitude per period to rk4; dt < 0.017 s keeps it under 1 %" \
+expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: within a period the highest mode (7.05 Hz) is off by up to 82 % of its size with rk4 (a period loses 76 % and leads 31°); dt < 0.0148 s keeps it under 1 %" \
     --headless -n 10 --spring 50 --mass 0.1 --damping 0 --dt 0.05 --duration 1
 expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
 check_csv "$out" "$cmd"
-expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: the 23.7 Hz drive gets 0.84 steps per period; dt <= 0.0021 s gives it 20" \
+expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: the steady motion at the 23.7 Hz drive's frequency is off by 1183 % with rk4 (0.84 steps per period); dt < 0.0113 s keeps it under 1 %" \
     --headless --frequency 23.7 --dt 0.05 --duration 1
 expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
+# issue 17: semi-implicit and verlet with dampers not proportional to the masses, past
+# the limit of their own one-step matrices: warned, and stopped where they blow up
+expect_warnings 1 "springsim: warning: dt = 0.04 s is unstable with semi-implicit for these springs and dampers: dt < 0.0333 s is stable
+blew up at t = 0.56 s" --headless -n 2 --mass 2,0.1 --spring 10,50,10 --damping 10,5 --boundary wall \
+    --integrator semi-implicit --dt 0.04 --x0=0.01,0 --duration 2
+expect_warnings 1 "springsim: warning: dt = 0.05 s is unstable with verlet for these springs and dampers: dt < 0.0447 s is stable
+blew up" --headless -n 2 --mass 0.1 --spring 100,50,100 --damping 20,0 --boundary wall \
+    --integrator verlet --dt 0.05 --x0=0,0.01 --duration 3
+# just inside it: runs to the end, with only the accuracy it has said
+expect_warnings 0 "springsim: warning: dt = 0.044 s is accurate only roughly: within a period the highest mode (6.17 Hz) is off by up to 185 %" \
+    --headless -n 2 --mass 0.1 --spring 100,50,100 --damping 20,0 --boundary wall \
+    --integrator verlet --dt 0.044 --x0=0,0.01 --duration 3
+expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
+# semi-implicit keeps the amplitude but not the phase: at w dt = 1.9, flagged
+expect_warnings 0 "springsim: warning: dt = 0.05 s is accurate only roughly: within a period the highest mode (6.05 Hz) is off by up to 649 % of its size with semi-implicit (a period keeps its amplitude and leads 115°); dt < 0.000521 s keeps it under 1 %" \
+    --headless -n 1 --mass 0.05 --spring 36.1 --damping 0 --boundary wall --x0=0.1 \
+    --no-collisions --dt 0.05 --integrator semi-implicit --duration 1
+# a 2 Hz drive at 10 steps a period: exact follows it exactly and rk4 to 0.04 %, no
+# word; verlet's steady motion is 3.9 % off (and its lowest mode 2.4 % within a period)
+expect_ok --headless --frequency 2 --dt 0.05 --integrator exact --duration 1
+expect_ok --headless --frequency 2 --dt 0.05 --integrator rk4 --duration 1
+expect_warnings 0 "the steady motion at the 2 Hz drive's frequency is off by 3.9 % with verlet (10 steps per period); dt < 0.0255 s keeps it under 1 %" \
+    --headless --frequency 2 --dt 0.05 --integrator verlet --duration 1
 # the velocity cap: one line at the end with the count and the first time
 expect_warnings 0 "springsim: warning: the velocity cap (50 m/s) acted 46 times, first at t = 0.014 s; the energy balance includes what it removed" \
     --headless -n 1 --spring 1000 --damping 0 --x0 2 --no-collisions --dt 0.001 --duration 2 --energy

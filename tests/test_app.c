@@ -536,15 +536,18 @@ static void integrator_and_limits(void **state)
     next.x0.count = next.v0.count = 0;
     assert_int_equal(app_load_config(&next), 0);
     assert_true(app.message_is_error);
-    assert_non_null(strstr(app.message, "7.05 Hz mode loses 76 % a period to rk4"));
+    assert_non_null(strstr(app.message, "7.05 Hz mode 82 % off in a period with rk4"));
     assert_true(app_set_text(&app, CTL_DT, "0.01"));
     assert_false(app.message_is_error);
     /* A drive too fast for dt is said when it becomes so, not at every change after. */
-    assert_true(app_set_text(&app, CTL_DT, "0.02"));
-    assert_true(app_set_text(&app, CTL_FREQUENCY, "3"));
+    assert_true(app_set_text(&app, CTL_DT, "0.014"));
+    assert_false(app.message_is_error);
+    assert_true(app_set_text(&app, CTL_FREQUENCY, "4.6")); /* near a mode, undamped */
     assert_true(app.message_is_error);
-    assert_non_null(strstr(app.message, "steps per period of the 3 Hz drive"));
+    assert_non_null(strstr(app.message, "motion at the 4.6 Hz drive 1.77 % off with rk4"));
+    assert_true(limits_rough_drive(&app.limits));
     assert_int_equal(app_adjust(&app, CTL_FREQUENCY, 1, false), APP_CHANGED_DRIVE);
+    assert_true(limits_rough_drive(&app.limits)); /* still short, and not said again */
 }
 
 /* Every time the velocity cap acts, the status says so, with the count and the first
