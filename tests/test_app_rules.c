@@ -293,7 +293,7 @@ static void modes_once_per_change(void **state)
     assert_memory_equal(f, app.modes, (size_t)app.model->n * sizeof *f);
     struct limits_mode lm[APP_MAX_MASSES];
     assert_int_equal(limits_modes(app.model, lm), 0);
-    assert_close(app.stable_dt, limits_stable_dt(lm, app.model->n, app.cfg.integrator), 0.0);
+    assert_close(app.stable_dt, limits_stable_dt(app.model, lm, app.model->n, app.cfg.integrator), 0.0);
 }
 
 /* ---- all or nothing ---- */

@@ -88,7 +88,8 @@ static void judge(struct app *app)
     else
         app->limits = (struct limits){.integrator = app->cfg.integrator, .dt = app->cfg.dt,
                                       .stable_dt = INFINITY, .accurate_dt = INFINITY,
-                                      .worst = -1, .drive_steps = INFINITY};
+                                      .worst = -1, .drive_steps = INFINITY,
+                                      .drive_dt = INFINITY};
     app->stable_dt = app->limits.stable_dt;
 }
 
