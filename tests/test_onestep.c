@@ -7,7 +7,7 @@
  *   above 1 at 1.01 of it;
  * - the simulation itself, a free decay from a small random start: 3 % past the limit it
  *   grows as the radius says (by 1e3 at least where the radius makes that happen within
- *   200000 steps), 3 % inside it it does not (at most 100 times its start).
+ *   50000 steps), 3 % inside it it does not (at most 100 times its start).
  * Also: the issue's two chains (semi-implicit and verlet with dampers that are not
  * proportional to the masses) are judged unstable at its dt and blow up there; and the
  * long-chain routes above ONESTEP_MAX masses (eigenvalue -1 for semi-implicit and
@@ -218,14 +218,14 @@ static void check_limit(const struct model *m, enum integrator in, double h, int
         start = fmax(start, fabs(x0[i]));
     }
     long steps = (long)ceil(log(1e9) / log(rho));
-    if (rho > 1.0 && steps <= 200000) {
+    if (rho > 1.0 && steps <= 50000) {
         double out = run(m, in, 1.03 * h, x0, steps);
         if (!(out > 1e3 * start))
             fail_msg("N = %d, %s: %ld steps 3 %% past the limit %g s took %g to %g "
                      "(radius %.6g)", n, name, steps, h, start, out, rho);
         ++*grew_seen;
     } else {
-        steps = 20000;
+        steps = 5000;
     }
     double in_run = run(m, in, 0.97 * h, x0, steps);
     if (!(in_run <= 100.0 * start))
@@ -233,7 +233,7 @@ static void check_limit(const struct model *m, enum integrator in, double h, int
                  steps, h, start, in_run);
 }
 
-/* 48 random stiff chains of 1 to 10 masses and 8 of 11 to 20: every integrator's limit
+/* 48 random stiff chains of 1 to 10 masses and 4 of 11 to 20: every integrator's limit
  * holds against the matrix and the run; semi-implicit's and verlet's equal the first
  * h with the eigenvalue -1 (stability.c, the route of longer chains). */
 static void random_stiff_chains(void **state)
@@ -241,7 +241,7 @@ static void random_stiff_chains(void **state)
     (void)state;
     rng_state = 17;
     int chains = 0, grew = 0, checked = 0, crossing_equal = 0, crossing_checked = 0;
-    for (int c = 0; c < 56; c++) {
+    for (int c = 0; c < 52; c++) {
         int n = c < 48 ? 1 + c % 10 : 11 + (int)(uniform01() * 10.0);
         struct model *m = random_chain(n);
         struct limits_mode mode[ONESTEP_MAX];
