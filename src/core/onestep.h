@@ -41,7 +41,7 @@ double onestep_stable_dt(struct onestep *o, enum integrator i, double scale);
 double onestep_drive_error(struct onestep *o, enum integrator i, double h, double f);
 
 /* The largest h from 0 for which good(ctx, h) holds at every h up to it, by the same scan
- * and bisection (INFINITY when nothing up to 1e6 / scale fails, 0 for scale <= 0 ...). */
+ * and bisection; INFINITY when nothing up to 1e6 / scale fails, or scale is not > 0. */
 double onestep_search(bool (*good)(void *ctx, double h), void *ctx, double scale);
 
 #endif
