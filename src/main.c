@@ -77,10 +77,14 @@ static void warn_limits(const struct limits *l)
 
 /* Says why a run stopped: a non-finite number, or a velocity at the cap past the
  * stability limit. */
-static void report_blowup(const struct sim *s, const struct limits *l, bool judged)
+static void report_blowup(const struct sim *s, const struct limits *l, bool judged,
+                          bool runaway)
 {
     const char *name = integrator_name(sim_integrator(s));
-    const char *how = sim_last_capped(s) ? "a velocity reached the cap" : "numbers became non-finite";
+    char how[80];
+    snprintf(how, sizeof how, sim_last_capped(s) ? "a velocity reached the cap"
+                              : runaway ? "the energy passed %g times what it could be"
+                                        : "numbers became non-finite", LIMITS_RUNAWAY);
     char why[300];
     if (judged)
         limits_say_stability(l, false, why, sizeof why);
@@ -262,11 +266,20 @@ static int run_headless(const struct config *c, const struct model *m)
         figure_row(fig, row, s, x + 2 * n);
     }
     double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
+    struct energy e;
+    struct limits_runaway watch;
+    sim_energy(s, &e);
+    limits_runaway_start(&watch, m, &e);
     for (double step = 1; step <= total; step++) {
-        /* Past the stability limit a capped velocity means the numbers are running away:
-         * stop rather than write nonsense. */
-        if (sim_step(s) != SIM_OK || (unstable && sim_last_capped(s))) {
-            report_blowup(s, &l, judged);
+        /* Past the stability limit a capped velocity, or energy made from nothing, means
+         * the numbers are running away: stop rather than write nonsense. */
+        bool bad = sim_step(s) != SIM_OK, runaway = false;
+        if (!bad && unstable) {
+            sim_energy(s, &e);
+            runaway = limits_runaway_check(&watch, &e);
+        }
+        if (bad || (unstable && (sim_last_capped(s) || runaway))) {
+            report_blowup(s, &l, judged, runaway);
             status = EXIT_FAILURE;
             capped = 0.0; /* said already */
             break;

@@ -9,7 +9,9 @@
  *   grows as the radius says (by 1e3 at least where the radius makes that happen within
  *   50000 steps), 3 % inside it it does not (at most 100 times its start).
  * Also: the issue's two chains (semi-implicit and verlet with dampers that are not
- * proportional to the masses) are judged unstable at its dt and blow up there; and the
+ * proportional to the masses) are judged unstable at its dt and blow up there, with the
+ * walls too (the energy watch that stops such a run trips within 20 steps, and not inside
+ * the limit, with exact, or on a stable driven chain over 60 s); and the
  * long-chain routes above ONESTEP_MAX masses (eigenvalue -1 for semi-implicit and
  * verlet, the eigenvalues' region for euler and rk4) against the same matrices at
  * N = 150. */
@@ -189,6 +191,29 @@ static double run(const struct model *m, enum integrator in, double h, const dou
     return peak;
 }
 
+/* Steps of the simulation until the runaway watch (limits_runaway_*) trips: the step,
+ * or 0 when it does not within steps. */
+static long runaway_step(const struct model *m, enum integrator in, double h, const double *x0,
+                         long steps)
+{
+    struct sim *s = sim_new(m, h);
+    struct limits_runaway watch;
+    struct energy e;
+    sim_set_integrator(s, in);
+    sim_reset(s, x0, NULL);
+    sim_energy(s, &e);
+    limits_runaway_start(&watch, m, &e);
+    long k = 1;
+    for (; k <= steps; k++) {
+        assert_int_equal(sim_step(s), SIM_OK);
+        sim_energy(s, &e);
+        if (limits_runaway_check(&watch, &e))
+            break;
+    }
+    sim_free(s);
+    return k <= steps ? k : 0;
+}
+
 static const enum integrator integrators[] = {INTEGRATOR_EULER, INTEGRATOR_SEMI_IMPLICIT,
                                               INTEGRATOR_VERLET, INTEGRATOR_RK4};
 
@@ -307,7 +332,24 @@ static void issue_chains(void **state)
         assert_true(radius(cases[c].m, cases[c].in, cases[c].dt) > 1.1);
         assert_true(isinf(run(cases[c].m, cases[c].in, cases[c].dt, cases[c].x0, 200)));
         assert_true(run(cases[c].m, cases[c].in, 0.97 * l.stable_dt, cases[c].x0, 2000) < 0.02);
+        /* With the walls the velocities may never reach the cap; the energy watch trips
+         * all the same, within 20 steps, and never inside the limit or with exact. */
+        cases[c].m->collisions = true;
+        long k = runaway_step(cases[c].m, cases[c].in, cases[c].dt, cases[c].x0, 2000);
+        printf("  with contacts: the watch trips at step %ld\n", k);
+        assert_true(k > 0 && k <= 20);
+        assert_int_equal(runaway_step(cases[c].m, cases[c].in, 0.97 * l.stable_dt, cases[c].x0,
+                                      4000), 0);
+        assert_int_equal(runaway_step(cases[c].m, INTEGRATOR_EXACT, cases[c].dt, cases[c].x0,
+                                      4000), 0);
+        cases[c].m->collisions = false;
     }
+    /* A driven chain at rest, stable: the motor's work makes room for what it puts in. */
+    struct model *d = model_new(3);
+    d->motor.frequency = 0.6; /* near a mode: the energy builds up */
+    for (int in = 0; in < INTEGRATOR_COUNT; in++)
+        assert_int_equal(runaway_step(d, (enum integrator)in, 0.002, (double[3]){0}, 30000), 0);
+    model_free(d);
     model_free(a);
     model_free(b);
 }

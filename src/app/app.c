@@ -91,6 +91,7 @@ static void judge(struct app *app)
                                       .worst = -1, .drive_steps = INFINITY,
                                       .drive_dt = INFINITY};
     app->stable_dt = app->limits.stable_dt;
+    app->runaway_base_ok = false;
 }
 
 /* Says what is wrong with dt after a change, if anything. A change of the chain, dt or
@@ -146,6 +147,7 @@ static void restart(struct app *app)
     sim_set_dt(app->sim, app->cfg.dt);
     sim_reset(app->sim, app->cfg.x0.v, app->cfg.v0.v);
     sim_set_dt(app->sim, app->cfg.dt);
+    app->runaway_base_ok = false;
     history_clear(app->hist);
     trail_clear(app->trail);
     trail_clear(app->coarse);
@@ -380,6 +382,7 @@ static void follow_restored(struct app *app)
     app->model->motor.phase = sim_model(app->sim)->motor.phase;
     trail_follow(app->trail, app->sim);
     trail_follow(app->coarse, app->sim);
+    app->runaway_base_ok = false; /* the books went back */
 }
 
 /* Counts the velocities the cap took in the last step and says so. */
@@ -398,9 +401,23 @@ static unsigned note_cap(struct app *app)
 
 unsigned app_step(struct app *app)
 {
-    bool unstable = limits_unstable(&app->limits);
+    bool unstable = limits_unstable(&app->limits), runaway = false;
+    if (unstable && !app->runaway_base_ok) {
+        struct energy e0;
+        sim_energy(app->sim, &e0);
+        limits_runaway_start(&app->runaway, app->model, &e0);
+        app->runaway_base_ok = true;
+    }
     history_push(app->hist, app->sim);
-    if (sim_step(app->sim) != SIM_OK || (unstable && sim_last_capped(app->sim))) {
+    bool bad = sim_step(app->sim) != SIM_OK;
+    if (!bad && unstable) {
+        struct energy e;
+        sim_energy(app->sim, &e);
+        runaway = limits_runaway_check(&app->runaway, &e);
+    }
+    /* Past the stability limit a capped velocity, or energy made from nothing, means the
+     * numbers are running away (contacts can keep them from the cap). */
+    if (bad || (unstable && (sim_last_capped(app->sim) || runaway))) {
         /* Back to the state before this step: the last one known to be sound. */
         history_pop(app->hist, app->sim);
         follow_restored(app);

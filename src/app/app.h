@@ -94,6 +94,8 @@ struct app {
     struct limits limits;    /* what dt is worth: stability, accuracy, the drive's steps */
     struct limits_mode limit_modes[APP_MAX_MASSES]; /* the damped chain's modes */
     bool limits_ok;          /* limit_modes[] and limits are those of the model */
+    struct limits_runaway runaway; /* past the stability limit: the watch for a blow-up */
+    bool runaway_base_ok;    /* runaway is of this run since the last change */
     long capped;             /* velocities the cap has acted on since t = 0 */
     double first_cap;        /* when it first did (s) */
     char preset[64];         /* name of the preset loaded, or "" */

@@ -396,6 +396,21 @@ bool limits_rough_drive(const struct limits *l)
     return !limits_unstable(l) && l->drive_error > LIMITS_LOSS; /* NAN: not known rough */
 }
 
+void limits_runaway_start(struct limits_runaway *r, const struct model *m,
+                          const struct energy *e0)
+{
+    double amp = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
+    r->base = e0->kinetic + e0->potential + 0.5 * m->k[m->n] * amp * amp;
+    r->work0 = e0->motor_work;
+    r->most = 0.0;
+}
+
+bool limits_runaway_check(struct limits_runaway *r, const struct energy *e)
+{
+    r->most = fmax(r->most, e->motor_work - r->work0);
+    return e->kinetic + e->potential > LIMITS_RUNAWAY * (r->base + r->most);
+}
+
 double limits_round_down(double x)
 {
     if (!(x > 0.0) || !isfinite(x))

@@ -10,9 +10,11 @@
 
 #include "integrator.h"
 #include "model.h"
+#include "sim.h"
 
 #define LIMITS_LOSS 0.01     /* error per period (of the amplitude) still called accurate */
 #define LIMITS_DGEEV_MAX 100 /* above this many masses, the undamped modes (dstevr) */
+#define LIMITS_RUNAWAY 10.0  /* energy, in all the chain could have, that is a blow-up */
 
 /* One mode of the damped chain as the single oscillator x'' = -w2 x - 2 s x', whose
  * eigenvalues are a pair of the first-order system's: w2 = |lambda|^2, s = -Re lambda
@@ -82,6 +84,25 @@ void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
 bool limits_unstable(const struct limits *l);
 bool limits_rough_modes(const struct limits *l);
 bool limits_rough_drive(const struct limits *l);
+
+/* Watches a run past the stability limit for a blow-up: its kinetic + spring energy
+ * more than LIMITS_RUNAWAY times all it could have had, exactly, with a margin: the energy
+ * at the start, the most net work the motor has done since, and the drive's own scale
+ * k_N A^2 / 2 (the explicit methods' books are only first order). Contacts bound an
+ * unstable chain's positions, so its velocities need not reach the cap; its energy says
+ * it all the same. */
+struct limits_runaway {
+    double base;  /* the start's kinetic + spring energy, and the drive's scale (J) */
+    double work0; /* the motor's work at the start (J) */
+    double most;  /* the most net work since (J) */
+};
+
+/* Starts watching chain m from the state whose books are e0. */
+void limits_runaway_start(struct limits_runaway *r, const struct model *m,
+                          const struct energy *e0);
+
+/* Whether the run, now at books e, has blown up. */
+bool limits_runaway_check(struct limits_runaway *r, const struct energy *e);
 
 /* x rounded down to three significant digits: a limit quoted that way is never past the
  * real one. */
