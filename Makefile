@@ -3,7 +3,7 @@
 # make run        build and start it on the default configuration
 # make check      build and run every test
 # make sanitize   the tests under AddressSanitizer + UndefinedBehaviorSanitizer
-# make install    PREFIX=/usr/local DESTDIR=: binary, man page, presets, shell completions
+# make install    PREFIX=/usr/local DESTDIR=: binary, man page, presets, lessons, shell completions
 # make deb        an unsigned Debian package in build/ (debhelper, checked by lintian)
 # Missing Debian packages are installed by mk/deps.sh (as root) or named (otherwise).
 
@@ -23,7 +23,8 @@ BIN ?= springsim
 CFLAGS ?= -O2 -g
 WARN = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 \
        -Wwrite-strings -Wpointer-arith
-DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"'
+DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"' \
+       -DLESSONDIR='"$(DATADIR)/lessons"'
 
 # Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
 CORE_PKGS = inih lapacke gsl fftw3
@@ -117,7 +118,7 @@ $(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
 $(BUILD)/.datadir: FORCE
 	@mkdir -p $(@D)
 	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' >$@
-$(BUILD)/core/preset.o $(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/.datadir
+$(BUILD)/core/preset.o $(BUILD)/core/search.o $(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/.datadir
 FORCE:
 
 $(CORE_LIB): $(CORE_OBJ)
@@ -286,10 +287,12 @@ fuzz: | $(BUILD)/.deps-build
 
 install: $(BIN) completions
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/presets \
+	    $(DESTDIR)$(DATADIR)/lessons \
 	    $(DESTDIR)$(BASHCOMPDIR) $(DESTDIR)$(ZSHCOMPDIR) $(DESTDIR)$(FISHCOMPDIR)
 	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/springsim
 	install -m 644 man/springsim.1 $(DESTDIR)$(MANDIR)/springsim.1
 	install -m 644 presets/*.ini $(DESTDIR)$(DATADIR)/presets/
+	install -m 644 lessons/*.lesson $(DESTDIR)$(DATADIR)/lessons/
 	install -m 644 $(BUILD)/completions/springsim.bash $(DESTDIR)$(BASHCOMPDIR)/springsim
 	install -m 644 $(BUILD)/completions/_springsim $(DESTDIR)$(ZSHCOMPDIR)/_springsim
 	install -m 644 $(BUILD)/completions/springsim.fish $(DESTDIR)$(FISHCOMPDIR)/springsim.fish

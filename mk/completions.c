@@ -1,7 +1,8 @@
 /* mk/completions.c: writes springsim's shell completion for bash, zsh or fish, made from
  * the one option table (core/config.c) so that it cannot drift from the options: every
  * option, the names of every choice (--wave, --boundary, --integrator, ...), preset names
- * asked of `springsim --list-presets` when completing, files for -p and -o. A build tool
+ * and lesson names asked of `springsim --list-presets` and `--list-lessons` when
+ * completing, files for -p, --lesson, -o, --record and --replay. A build tool
  * linked with the core library; the Makefile writes build/completions/ with it.
  *
  *     completions bash|zsh|fish >FILE
@@ -18,8 +19,29 @@ enum value {
     VALUE_TYPED,  /* a number, a list, a range: typed by the user, nothing offered */
     VALUE_CHOICE, /* one of the row's choice names */
     VALUE_FILE,   /* a file name */
-    VALUE_PRESET  /* a preset name from --list-presets, or a preset file */
+    VALUE_PRESET, /* a preset name from --list-presets, or a preset file */
+    VALUE_LESSON  /* a lesson name from --list-lessons, or a lesson file */
 };
+
+/* Writes tmpl with @K@ replaced by kind ("presets", "lessons"), @N@ by its singular
+ * ("preset") and @E@ by its files' extension ("ini"): the functions that offer the names
+ * a --list-KIND gives, and the files, written once for both. */
+static void put_template(FILE *out, const char *tmpl, const char *kind, const char *ext)
+{
+    for (const char *s = tmpl; *s; s++) {
+        if (s[0] == '@' && s[1] && s[2] == '@') {
+            if (s[1] == 'K')
+                fputs(kind, out);
+            else if (s[1] == 'N')
+                fprintf(out, "%.*s", (int)strlen(kind) - 1, kind);
+            else
+                fputs(ext, out);
+            s += 2;
+        } else {
+            fputc(*s, out);
+        }
+    }
+}
 
 static enum value value_of(int key)
 {
@@ -28,6 +50,8 @@ static enum value value_of(int key)
         return VALUE_NONE;
     if (key == CFG_PRESET)
         return VALUE_PRESET;
+    if (key == CFG_LESSON)
+        return VALUE_LESSON;
     if (o->kind == CONFIG_CHOICE)
         return VALUE_CHOICE;
     if (o->arg && strstr(o->arg, "FILE"))
@@ -73,20 +97,23 @@ static const char header[] =
 static void write_bash(FILE *out)
 {
     fprintf(out, "# bash completion for %s\n", header);
-    fputs("_springsim_presets()\n"
-          "{\n"
-          "    local cmd=${COMP_WORDS[0]} line\n"
-          "    [[ $cmd == \"~/\"* ]] && cmd=$HOME/${cmd#\"~/\"}\n"
-          "    while IFS= read -r line; do\n"
-          "        line=${line%% *}\n"
-          "        [[ -n $line && $line == \"$cur\"* ]] && COMPREPLY+=(\"$line\")\n"
-          "    done < <(\"$cmd\" --list-presets 2>/dev/null)\n"
-          "    # A preset file: directories on the way to it, and .ini files.\n"
-          "    compopt -o filenames 2>/dev/null\n"
-          "    mapfile -t -O ${#COMPREPLY[@]} COMPREPLY < <(compgen -d -- \"$cur\"; "
-          "compgen -f -X '!*.ini' -- \"$cur\")\n"
-          "}\n\n"
-          "_springsim()\n"
+    static const char names[] =
+        "_springsim_@K@()\n"
+        "{\n"
+        "    local cmd=${COMP_WORDS[0]} line\n"
+        "    [[ $cmd == \"~/\"* ]] && cmd=$HOME/${cmd#\"~/\"}\n"
+        "    while IFS= read -r line; do\n"
+        "        line=${line%% *}\n"
+        "        [[ -n $line && $line == \"$cur\"* ]] && COMPREPLY+=(\"$line\")\n"
+        "    done < <(\"$cmd\" --list-@K@ 2>/dev/null)\n"
+        "    # A @N@ file: directories on the way to it, and .@E@ files.\n"
+        "    compopt -o filenames 2>/dev/null\n"
+        "    mapfile -t -O ${#COMPREPLY[@]} COMPREPLY < <(compgen -d -- \"$cur\"; "
+        "compgen -f -X '!*.@E@' -- \"$cur\")\n"
+        "}\n\n";
+    put_template(out, names, "presets", "ini");
+    put_template(out, names, "lessons", "lesson");
+    fputs("_springsim()\n"
           "{\n"
           "    local cur=${COMP_WORDS[COMP_CWORD]} prev= pre=\n"
           "    COMPREPLY=()\n"
@@ -122,7 +149,7 @@ static void write_bash(FILE *out)
                   "        mapfile -t COMPREPLY < <(compgen -f -- \"$cur\")\n",
                   out);
         } else {
-            fputs("        _springsim_presets\n", out);
+            fprintf(out, "        _springsim_%s\n", v == VALUE_PRESET ? "presets" : "lessons");
         }
         fputs("        ;;\n", out);
     }
@@ -159,20 +186,23 @@ static void write_bash(FILE *out)
 static void write_zsh(FILE *out)
 {
     fprintf(out, "#compdef springsim\n# zsh completion for %s\n", header);
-    fputs("_springsim_presets()\n"
-          "{\n"
-          "    setopt localoptions extendedglob\n"
-          "    local line ret=1\n"
-          "    local -a named\n"
-          "    for line in ${(f)\"$(_call_program presets ${(q)words[1]} --list-presets "
-          "2>/dev/null)\"}; do\n"
-          "        named+=(\"${${line%% *}//:/\\\\:}:${${line#* }##[[:space:]]#}\")\n"
-          "    done\n"
-          "    _describe -t presets preset named && ret=0\n"
-          "    _files -g '*.ini(-.)' && ret=0\n"
-          "    return ret\n"
-          "}\n\n"
-          "_springsim()\n"
+    static const char names[] =
+        "_springsim_@K@()\n"
+        "{\n"
+        "    setopt localoptions extendedglob\n"
+        "    local line ret=1\n"
+        "    local -a named\n"
+        "    for line in ${(f)\"$(_call_program @K@ ${(q)words[1]} --list-@K@ "
+        "2>/dev/null)\"}; do\n"
+        "        named+=(\"${${line%% *}//:/\\\\:}:${${line#* }##[[:space:]]#}\")\n"
+        "    done\n"
+        "    _describe -t @K@ @N@ named && ret=0\n"
+        "    _files -g '*.@E@(-.)' && ret=0\n"
+        "    return ret\n"
+        "}\n\n";
+    put_template(out, names, "presets", "ini");
+    put_template(out, names, "lessons", "lesson");
+    fputs("_springsim()\n"
           "{\n"
           "    _arguments -s -S \\\n",
           out);
@@ -211,6 +241,9 @@ static void write_zsh(FILE *out)
         case VALUE_PRESET:
             fputs(":preset:_springsim_presets", out);
             break;
+        case VALUE_LESSON:
+            fputs(":lesson:_springsim_lessons", out);
+            break;
         }
         fputs(k < CFG_KEY_COUNT - 1 ? "' \\\n" : "'\n", out);
     }
@@ -236,20 +269,22 @@ static void print_fish_quoted(FILE *out, const char *s)
 static void write_fish(FILE *out)
 {
     fprintf(out, "# fish completion for %s\n", header);
-    fputs("function __springsim_presets\n"
-          "    set -l cmd (commandline -opc)[1]\n"
-          "    command -q -- $cmd\n"
-          "    and command $cmd --list-presets 2>/dev/null | string replace -r '^(\\S+)\\s+' "
-          "'$1\\t'\n"
-          "    # A preset file: directories on the way to it, and .ini files; the word as typed\n"
-          "    # (\"dir\\ x/\", 'dir x/) without its quotes and backslashes.\n"
-          "    set -l cur (commandline -ct | string unescape)\n"
-          "    for f in $cur*/ $cur*.ini\n"
-          "        printf '%s\\tpreset file\\n' $f\n"
-          "    end\n"
-          "end\n\n"
-          "complete -c springsim -f\n",
-          out);
+    static const char names[] =
+        "function __springsim_@K@\n"
+        "    set -l cmd (commandline -opc)[1]\n"
+        "    command -q -- $cmd\n"
+        "    and command $cmd --list-@K@ 2>/dev/null | string replace -r '^(\\S+)\\s+' "
+        "'$1\\t'\n"
+        "    # A @N@ file: directories on the way to it, and .@E@ files; the word as typed\n"
+        "    # (\"dir\\ x/\", 'dir x/) without its quotes and backslashes.\n"
+        "    set -l cur (commandline -ct | string unescape)\n"
+        "    for f in $cur*/ $cur*.@E@\n"
+        "        printf '%s\\t@N@ file\\n' $f\n"
+        "    end\n"
+        "end\n\n";
+    put_template(out, names, "presets", "ini");
+    put_template(out, names, "lessons", "lesson");
+    fputs("complete -c springsim -f\n", out);
     for (int k = 0; k < CFG_KEY_COUNT; k++) {
         const struct config_option *o = &config_options[k];
         enum value v = value_of(k);
@@ -273,6 +308,9 @@ static void write_fish(FILE *out)
             break;
         case VALUE_PRESET:
             fputs(" -r -f -a '(__springsim_presets)'", out);
+            break;
+        case VALUE_LESSON:
+            fputs(" -r -f -a '(__springsim_lessons)'", out);
             break;
         }
         fputs(" -d '", out);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "core/preset.h"
+#include "core/search.h"
 #include "tui/input.h"
 
 #ifndef VERSION
@@ -102,7 +103,8 @@ static void usage(FILE *out)
             "       springsim --plain [OPTIONS]             the interactive program as lines, "
             "commands\n"
             "                                               on standard input\n"
-            "       springsim --list-presets | --keys | --help | --version\n\n"
+            "       springsim --lesson NAME|FILE [--plain]  a guided lesson (L in the program)\n"
+            "       springsim --list-presets | --list-lessons | --keys | --help | --version\n\n"
             "A chain of masses joined by springs, with damping, driven at its right end by "
             "a\nlinear motor. A preset is applied first; every other option overrides it.\n\n"
             "Options:\n");
@@ -124,10 +126,11 @@ static void usage(FILE *out)
             "\nLists are comma-separated (--mass 1,2,1.5). Negative values work in both "
             "spellings:\n--x0 -0.5 and --x0=-0.5.\n\n"
             "Presets are searched in $XDG_CONFIG_HOME/springsim/presets, $SPRINGSIM_PRESETS,\n"
-            "%s and presets/ beside the program.\n\n"
+            "%s and presets/ beside the program; lessons likewise in\n"
+            "$XDG_CONFIG_HOME/springsim/lessons, $SPRINGSIM_LESSONS,\n%s and lessons/.\n\n"
             "Exit status: 0 success, 1 a file could not be read or written or the run blew "
-            "up,\n2 a bad option, value or preset.\n",
-            preset_installed_dir);
+            "up,\n2 a bad option, value, preset or lesson.\n",
+            preset_installed_dir, search_installed_dir(SEARCH_LESSONS));
 }
 
 
@@ -188,7 +191,8 @@ static bool mode_mismatch(const bool *given, enum mode mode)
     static const char *const names[] = {[MODE_INTERACTIVE] = "the interactive program",
                                         [MODE_HEADLESS] = "--headless", [MODE_MODES] = "--modes",
                                         [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
-                                        [MODE_PLAIN] = "--plain"};
+                                        [MODE_PLAIN] = "--plain",
+                                        [MODE_LIST_LESSONS] = "--list-lessons"};
     static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE};
     for (size_t i = 0; i < sizeof csv_only / sizeof *csv_only; i++)
         if (given[csv_only[i]] && !csv) {
@@ -197,6 +201,19 @@ static bool mode_mismatch(const bool *given, enum mode mode)
                         csv_only[i] == CFG_FIGURE ? "" : ", --summary", names[mode]);
             return true;
         }
+    static const int session_only[] = {CFG_LESSON, CFG_RECORD, CFG_REPLAY};
+    for (size_t i = 0; i < sizeof session_only / sizeof *session_only; i++)
+        if (given[session_only[i]] && mode != MODE_INTERACTIVE && mode != MODE_PLAIN) {
+            options_say("--%s: applies to the interactive program or --plain, not to %s",
+                        config_options[session_only[i]].name, names[mode]);
+            return true;
+        }
+    int sessions = given[CFG_LESSON] + given[CFG_RECORD] + given[CFG_REPLAY];
+    if (sessions > 1) {
+        options_say("give only one of --lesson, --record and --replay (a lesson or a "
+                    "recording plays alone; a recording starts from the chain as it is)");
+        return true;
+    }
     if (given[CFG_PLAIN_EVERY] && mode != MODE_PLAIN) {
         options_say("--plain-every: applies to --plain's status lines, not to %s (expected "
                     "--plain too)", names[mode]);
@@ -317,6 +334,9 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         case CFG_LIST_PRESETS:
             m = MODE_LIST;
             break;
+        case CFG_LIST_LESSONS:
+            m = MODE_LIST_LESSONS;
+            break;
         case CFG_PLAIN:
             m = MODE_PLAIN;
             break;
@@ -325,8 +345,8 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         }
         if (m != MODE_INTERACTIVE) {
             if (modes++ && cli->mode != m) {
-                options_say("%s: give only one of --headless, --modes, --sweep, --list-presets "
-                            "and --plain", written(argv, before, q, sizeof q));
+                options_say("%s: give only one of --headless, --modes, --sweep, --list-presets, "
+                            "--list-lessons and --plain", written(argv, before, q, sizeof q));
                 return EXIT_USAGE;
             }
             cli->mode = m;

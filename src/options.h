@@ -11,7 +11,15 @@
 #define EXIT_USAGE 2 /* a bad option, value or preset */
 
 /* What the command line asks for. */
-enum mode { MODE_INTERACTIVE, MODE_HEADLESS, MODE_MODES, MODE_SWEEP, MODE_LIST, MODE_PLAIN };
+enum mode {
+    MODE_INTERACTIVE,
+    MODE_HEADLESS,
+    MODE_MODES,
+    MODE_SWEEP,
+    MODE_LIST,
+    MODE_PLAIN,
+    MODE_LIST_LESSONS
+};
 
 struct cli {
     enum mode mode;             /* what to do */

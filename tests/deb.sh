@@ -58,6 +58,10 @@ want=$(cd presets && ls *.ini)
 got=$(cd "$root/usr/share/springsim/presets" 2>/dev/null && ls *.ini)
 [ -n "$want" ] && [ "$got" = "$want" ] && pass ||
     fail "packaged presets '$(echo $got)', expected those in presets/: '$(echo $want)'"
+want=$(cd lessons && ls *.lesson)
+got=$(cd "$root/usr/share/springsim/lessons" 2>/dev/null && ls *.lesson)
+[ -n "$want" ] && [ "$got" = "$want" ] && pass ||
+    fail "packaged lessons '$(echo $got)', expected those in lessons/: '$(echo $want)'"
 gzip -dc "$root/usr/share/man/man1/springsim.1.gz" | cmp -s - man/springsim.1 && pass ||
     fail "the packaged man page is not man/springsim.1"
 
@@ -70,6 +74,8 @@ bin=$root/usr/bin/springsim
     fail "packaged springsim --version: $("$bin" --version 2>&1 | head -c 200)"
 "$bin" --help | tr '\n' ' ' | grep -q '/usr/share/springsim/presets' && pass ||
     fail "packaged springsim --help does not name /usr/share/springsim/presets"
+"$bin" --help | tr '\n' ' ' | grep -q '/usr/share/springsim/lessons' && pass ||
+    fail "packaged springsim --help does not name /usr/share/springsim/lessons"
 run="--headless -p resonance --duration 5 --sample 0.5 --energy"
 (cd "$tmp" && SPRINGSIM_PRESETS=$root/usr/share/springsim/presets "$bin" $run) \
     >"$tmp/deb.csv" 2>"$tmp/deb.err"

@@ -1,6 +1,6 @@
 #!/bin/sh
-# tests/install.sh: `make install DESTDIR=...` puts the binary, the man page, every preset
-# and the three shell completions where README says, and `make uninstall` takes every one
+# tests/install.sh: `make install DESTDIR=...` puts the binary, the man page, every preset,
+# every lesson and the three shell completions where README says, and `make uninstall` takes every one
 # of them away again. Uses the build under test ($BUILD, $SPRINGSIM) and the default PREFIX,
 # so that nothing is recompiled. Prints "install: N passed, M failed".
 NAME=install
@@ -25,6 +25,9 @@ files="$p/bin/springsim $p/share/man/man1/springsim.1
     $p/share/fish/vendor_completions.d/springsim.fish"
 for f in $(cd presets && ls *.ini); do
     files="$files $p/share/springsim/presets/$f"
+done
+for f in $(cd lessons && ls *.lesson); do
+    files="$files $p/share/springsim/lessons/$f"
 done
 for f in $files; do
     [ -s "$stage$f" ] && pass || fail "make install put nothing at $f"

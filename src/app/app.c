@@ -492,6 +492,11 @@ unsigned app_random(struct app *app)
 {
     uint64_t seed = (uint64_t)time(NULL) * 6364136223846793005ULL + (uint64_t)clock();
     seed ^= app->cfg.seed * 0x9E3779B97F4A7C15ULL + 1;
+    return app_random_seed(app, seed);
+}
+
+unsigned app_random_seed(struct app *app, uint64_t seed)
+{
     app->cfg.seed = seed;
     app->cfg.random = true;
     fix_initial(app);

@@ -15,6 +15,7 @@
 #define SPRINGSIM_APP_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "../core/config.h"
 #include "../core/history.h"
@@ -140,6 +141,9 @@ unsigned app_set_running(struct app *app, bool running);
 /* New random initial positions (a fresh seed), at rest, and a reset. */
 unsigned app_random(struct app *app);
 
+/* The same from a given seed (the same seed gives the same positions). */
+unsigned app_random_seed(struct app *app, uint64_t seed);
+
 /* Moves mass i's initial position by dx (m) while paused, keeping it inside its
  * neighbours and the walls; everything restarts at t = 0 from there, at rest. */
 unsigned app_move_mass(struct app *app, int i, double dx);
@@ -159,6 +163,11 @@ unsigned app_apply_masses(struct app *app);
 
 /* Loads the preset at path; 0 with the reason in the message. */
 unsigned app_load_preset(struct app *app, const char *path, const char *name);
+
+/* Loads a preset given as text (size bytes), as if read from the file path; as
+ * app_load_preset. */
+unsigned app_load_preset_text(struct app *app, const char *path, const char *text, size_t size,
+                              const char *name);
 
 /* Sets mass i's own mass (what = 'm') or damping ('c'), or spring j's constant
  * ('k'), from typed text; 0 with the reason in the message. */

@@ -3,6 +3,7 @@
 #include "command.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -20,7 +21,8 @@ const struct command commands[CMD_COUNT] = {
     [CMD_STEP] = {"step", ACT_STEP, "", "one step of dt forward (pauses)"},
     [CMD_BACK] = {"back", ACT_BACK, "", "one step back (paused; up to 500 states)"},
     [CMD_RESET] = {"reset", ACT_RESET, "", "back to the initial conditions, t = 0"},
-    [CMD_RANDOM] = {"random", ACT_RANDOM, "", "random initial positions, and a reset"},
+    [CMD_RANDOM] = {"random", ACT_RANDOM, "[SEED]",
+                    "random initial positions (from SEED: the same each time), and a reset"},
     [CMD_SET] = {"set", ACT_ENTER, "CONTROL VALUE",
                  "set a control as typed in the interactive program (controls lists them)"},
     [CMD_PRESET] = {"preset", ACT_PRESETS, "NAME", "load a preset by name or file"},
@@ -40,10 +42,20 @@ const struct command commands[CMD_COUNT] = {
                      "over the time window"},
     [CMD_RUN] = {"run", ACT_NONE, "SECONDS",
                  "run SECONDS of simulated time at once (not in real time), then pause"},
+    [CMD_VIEW] = {"view", ACT_NONE, "NAME",
+                  "what the interactive program shows (lessons set the scene with it): plots, "
+                  "x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
+                  "spectrum; nothing changes here"},
     [CMD_STATUS] = {"status", ACT_NONE, "", "the status line now"},
     [CMD_CONTROLS] = {"controls", ACT_NONE, "", "every control, its name for set and its value"},
     [CMD_HELP] = {"help", ACT_HELP, "[COMMAND]", "the commands, or what one does"},
     [CMD_QUIT] = {"quit", ACT_QUIT, "", "quit (so does the end of input)"},
+};
+
+const char *const command_views[CV_COUNT] = {
+    [CV_PLOTS] = "plots", [CV_X] = "x",   [CV_V] = "v",     [CV_A] = "a",
+    [CV_XV] = "x-v",      [CV_XA] = "x-a", [CV_VA] = "v-a", [CV_MODES] = "modes",
+    [CV_RESPONSE] = "response", [CV_ENERGY] = "energy", [CV_SPECTRUM] = "spectrum",
 };
 
 int command_find(const char *name, size_t n)
@@ -313,8 +325,19 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         app_reset(app);
         snprintf(answer, len, "reset to t = 0, at the initial conditions");
         return REPLY_OK;
-    case CMD_RANDOM:
-        return from_message(app, app_random(app), answer, len);
+    case CMD_RANDOM: {
+        if (!*rest)
+            return from_message(app, app_random(app), answer, len);
+        errno = 0;
+        unsigned long long seed = strtoull(rest, NULL, 10);
+        if (errno || strlen(rest) > 20 || strspn(rest, "0123456789") != strlen(rest)) {
+            config_quote(rest, strlen(rest), q, sizeof q);
+            snprintf(answer, len, "random: %s is not a seed (expected a whole number from 0 "
+                     "to 2^64 - 1)", q);
+            return REPLY_ERROR;
+        }
+        return from_message(app, app_random_seed(app, seed), answer, len);
+    }
     case CMD_SET: {
         char *value = rest + strcspn(rest, " \t");
         if (*value)
@@ -391,6 +414,17 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         }
         return REPLY_RUN;
     }
+    case CMD_VIEW:
+        for (int v = 0; v < CV_COUNT; v++)
+            if (strcmp(rest, command_views[v]) == 0) {
+                *seconds = v;
+                snprintf(answer, len, "view %s (the interactive program shows it)", rest);
+                return REPLY_VIEW;
+            }
+        config_quote(rest, strlen(rest), q, sizeof q);
+        snprintf(answer, len, "view: %s is not a view (expected plots, x, v, a, x-v, x-a, v-a, "
+                 "modes, response, energy or spectrum)", q);
+        return REPLY_ERROR;
     case CMD_STATUS:
         command_status(app, answer, len);
         return REPLY_OK;

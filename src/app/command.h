@@ -76,6 +76,7 @@ enum command_id {
     CMD_CURSOR,
     CMD_MEASURE,
     CMD_RUN,
+    CMD_VIEW,
     CMD_STATUS,
     CMD_CONTROLS,
     CMD_HELP,
@@ -96,6 +97,26 @@ extern const struct command commands[CMD_COUNT];
 /* The command named by the n bytes at name, or -1. */
 int command_find(const char *name, size_t n);
 
+/* What `view NAME` shows in the interactive program: the plots (the grid, or one
+ * enlarged) or an analysis view. */
+enum command_view {
+    CV_PLOTS,
+    CV_X, /* plots 1 to 6 enlarged: x, v, a, x-v, x-a, v-a (CV_X + p is plot p) */
+    CV_V,
+    CV_A,
+    CV_XV,
+    CV_XA,
+    CV_VA,
+    CV_MODES,
+    CV_RESPONSE,
+    CV_ENERGY,
+    CV_SPECTRUM,
+    CV_COUNT
+};
+
+/* Their names, as `view` takes them. */
+extern const char *const command_views[CV_COUNT];
+
 /* What a command line came to. */
 enum command_reply {
     REPLY_NONE,  /* a blank line: nothing to answer */
@@ -103,6 +124,8 @@ enum command_reply {
     REPLY_ERROR, /* refused, nothing changed; the answer says what was wrong and what is
                   * allowed */
     REPLY_RUN,   /* run: the caller runs *seconds of simulated time, then pauses */
+    REPLY_VIEW,  /* view: the interactive program shows view *seconds (enum command_view);
+                  * the answer says so */
     REPLY_QUIT   /* quit */
 };
 

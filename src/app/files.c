@@ -12,15 +12,12 @@
 #include "../core/output.h"
 #include "../core/preset.h"
 
-unsigned app_load_preset(struct app *app, const char *path, const char *name)
+/* Puts the preset read into next (from path, named name) in force. */
+static unsigned load_config(struct app *app, struct config *next_in, const char *path,
+                            const char *name)
 {
-    struct config next;
+    struct config next = *next_in;
     char err[600];
-    config_init(&next);
-    if (preset_load(path, &next, err, sizeof err) != PRESET_OK) {
-        app_say(app, true, "%s", err);
-        return 0;
-    }
     if (next.random && !next.seed_set)
         next.seed = (uint64_t)time(NULL);
     /* Playback is the user's: a preset changes it only where it says so. */
@@ -47,6 +44,31 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
                               next.description);
     return what | app_say(app, false, "preset %s%s%s%s", app->preset,
                           ghost ? " (ghost dropped)" : "", sep, next.description);
+}
+
+unsigned app_load_preset(struct app *app, const char *path, const char *name)
+{
+    static struct config next; /* large: lists of up to 1001 values */
+    char err[600];
+    config_init(&next);
+    if (preset_load(path, &next, err, sizeof err) != PRESET_OK) {
+        app_say(app, true, "%s", err);
+        return 0;
+    }
+    return load_config(app, &next, path, name);
+}
+
+unsigned app_load_preset_text(struct app *app, const char *path, const char *text, size_t size,
+                              const char *name)
+{
+    static struct config next;
+    char err[600];
+    config_init(&next);
+    if (preset_parse(path, text, size, &next, err, sizeof err) != PRESET_OK) {
+        app_say(app, true, "%s", err);
+        return 0;
+    }
+    return load_config(app, &next, path, name);
 }
 
 /* A preset name: ASCII letters, digits, '-', '_' and '.', not starting with '.', at most

@@ -44,11 +44,15 @@ enum config_key {
     CFG_GLYPHS,
     CFG_SUMMARY,
     CFG_PLAIN_EVERY,
+    CFG_LESSON,
+    CFG_RECORD,
+    CFG_REPLAY,
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
     CFG_MODES,
     CFG_SWEEP,
     CFG_PLAIN,
     CFG_LIST_PRESETS,
+    CFG_LIST_LESSONS,
     CFG_KEYS,
     CFG_HELP,
     CFG_VERSION,
@@ -146,6 +150,9 @@ struct config {
     double duration;                    /* headless run length (s) */
     double sample;                      /* headless output interval (s), 0 = every step */
     const char *output;                 /* output file, NULL for standard output */
+    const char *lesson;                 /* --lesson: a lesson's name or file, or NULL */
+    const char *record;                 /* --record: the file the session is written to */
+    const char *replay;                 /* --replay: a recording played back */
     bool energy;                        /* energy columns in the headless CSV */
     bool meta;                          /* '#' lines before a CSV: version, command line */
     const char *figure;                 /* --figure: a figure of the run (.png, .svg, .pdf) */

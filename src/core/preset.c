@@ -15,6 +15,8 @@
 
 #include <ini.h>
 
+#include "search.h"
+
 #ifndef PRESETDIR
 #define PRESETDIR "/usr/local/share/springsim/presets"
 #endif
@@ -292,63 +294,8 @@ static int handler(void *user, const char *section, const char *name, const char
 static enum preset_status slurp(const char *path, char **text, size_t *size, char *err,
                                 size_t errlen)
 {
-    struct stat st;
-    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-    if (fd < 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return PRESET_IO;
-    }
-    if (fstat(fd, &st) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        close(fd);
-        return PRESET_IO;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "%s: %s", path, S_ISDIR(st.st_mode) ? strerror(EISDIR)
-                 : "not a regular file (a preset is a text file)");
-        close(fd);
-        return PRESET_IO;
-    }
-    if (st.st_size > PRESET_MAX_BYTES) {
-        snprintf(err, errlen, "%s: too large for a preset (more than %d bytes)", path,
-                 PRESET_MAX_BYTES);
-        close(fd);
-        return PRESET_BAD;
-    }
-    char *buf = malloc(PRESET_MAX_BYTES + 2);
-    size_t n = 0;
-    if (!buf) {
-        snprintf(err, errlen, "%s: %s", path, strerror(ENOMEM));
-        close(fd);
-        return PRESET_IO;
-    }
-    /* The size may still grow while it is read: the limit holds on what is read too. */
-    for (;;) {
-        ssize_t r = read(fd, buf + n, PRESET_MAX_BYTES + 1 - n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r < 0) {
-            snprintf(err, errlen, "%s: %s", path, strerror(errno));
-            free(buf);
-            close(fd);
-            return PRESET_IO;
-        }
-        if (r == 0)
-            break;
-        n += (size_t)r;
-        if (n > PRESET_MAX_BYTES) {
-            snprintf(err, errlen, "%s: too large for a preset (more than %d bytes)", path,
-                     PRESET_MAX_BYTES);
-            free(buf);
-            close(fd);
-            return PRESET_BAD;
-        }
-    }
-    close(fd);
-    buf[n] = '\0';
-    *text = buf;
-    *size = n;
-    return PRESET_OK;
+    int st = search_read(path, PRESET_MAX_BYTES, "a preset", text, size, err, errlen);
+    return st == 0 ? PRESET_OK : st == 2 ? PRESET_BAD : PRESET_IO;
 }
 
 enum preset_status preset_load(const char *path, struct config *c, char *err, size_t errlen)
@@ -422,31 +369,7 @@ out:
 
 int preset_user_dir(char *out, size_t len)
 {
-    const char *xdg = getenv("XDG_CONFIG_HOME");
-    const char *home = getenv("HOME");
-    int n;
-    if (xdg && *xdg == '/')
-        n = snprintf(out, len, "%s/springsim/presets", xdg);
-    else if (home && *home)
-        n = snprintf(out, len, "%s/.config/springsim/presets", home);
-    else
-        return -1;
-    return n > 0 && (size_t)n < len ? 0 : -1;
-}
-
-/* The directories searched, in order; returns how many were written to dirs. */
-static int search_path(const char *exe_dir, char dirs[4][4096])
-{
-    int count = 0;
-    const char *env = getenv("SPRINGSIM_PRESETS");
-    if (preset_user_dir(dirs[count], sizeof dirs[count]) == 0)
-        count++;
-    if (env && *env)
-        snprintf(dirs[count++], sizeof dirs[0], "%s", env);
-    snprintf(dirs[count++], sizeof dirs[0], "%s", preset_installed_dir);
-    if (exe_dir && *exe_dir)
-        snprintf(dirs[count++], sizeof dirs[0], "%s/presets", exe_dir);
-    return count;
+    return search_user_dir(SEARCH_PRESETS, out, len);
 }
 
 enum preset_status preset_find(const char *name, const char *exe_dir, char *out, size_t len)
@@ -463,8 +386,8 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
         return PRESET_NONE;
     }
     if (n > 0 && n < 200) {
-        char dirs[4][4096];
-        int count = search_path(exe_dir, dirs);
+        char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
+        int count = search_dirs(SEARCH_PRESETS, exe_dir, dirs);
         for (int i = 0; i < count; i++) {
             int w = snprintf(out, len, "%s/%s.ini", dirs[i], name);
             if (w > 0 && (size_t)w < len && access(out, F_OK) == 0)
@@ -494,8 +417,8 @@ static int compare_entries(const void *a, const void *b)
 
 int preset_scan(const char *exe_dir, struct preset_entry **out)
 {
-    char dirs[4][4096];
-    int count = search_path(exe_dir, dirs), have = 0, cap = 0;
+    char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
+    int count = search_dirs(SEARCH_PRESETS, exe_dir, dirs), have = 0, cap = 0;
     struct preset_entry *all = NULL;
 
     for (int d = 0; d < count; d++) {

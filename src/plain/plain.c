@@ -27,6 +27,8 @@
 
 #include "../app/app.h"
 #include "../app/command.h"
+#include "../app/lesson.h"
+#include "../app/record.h"
 #include "../app/spell.h"
 #include "../app/watch.h"
 
@@ -49,6 +51,10 @@ struct plain {
     size_t used;               /* bytes of it */
     bool too_long;             /* the line being read is too long: skipped to its end */
     bool nul;                  /* the line being read holds a NUL byte: refused whole */
+    const struct lesson *lesson; /* the lesson being played, or NULL */
+    struct lesson_play play;   /* where it is */
+    bool quiet;                /* a step being rebuilt (previous): nothing is said */
+    struct record rec;         /* --record: the session being written */
 };
 
 static volatile sig_atomic_t quit_signal;
@@ -155,7 +161,7 @@ static void put(struct plain *p, const char *kind, const char *fmt, ...)
 {
     char text[2048], words[2048], safe[4 * sizeof text];
     va_list ap;
-    if (p->closed)
+    if (p->closed || p->quiet)
         return;
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
@@ -219,6 +225,8 @@ static bool step(struct plain *p)
     }
     watch_step(&p->watch, app, on_event, p);
     tell_message(p);
+    if (p->rec.mem && sim_time(app->sim) - p->rec.t >= RECORD_RUN_MAX)
+        record_time(&p->rec, app);
     if (sim_time(app->sim) >= p->next_status - 1e-9 * p->every) {
         put_status(p);
         plan_status(p);
@@ -274,7 +282,10 @@ static bool command(struct plain *p, const char *line)
     double seconds = 0.0;
     double t0 = sim_time(app->sim);
     bool was_running = app->running;
+    record_time(&p->rec, app);
     enum command_reply r = command_do(app, line, answer, sizeof answer, &seconds);
+    if (r == REPLY_OK || r == REPLY_VIEW)
+        record_command(&p->rec, app, line);
     if (r == REPLY_NONE)
         return true;
     if (r == REPLY_RUN)
@@ -296,6 +307,151 @@ static bool command(struct plain *p, const char *line)
     return r != REPLY_QUIT;
 }
 
+/* What the lesson waits for, said: the step's end, or the question and its choices. */
+static void say_wait(struct plain *p)
+{
+    const struct lesson *l = p->lesson;
+    const struct lesson_item *it = &l->items[p->play.waiting];
+    if (it->kind == LESSON_PAUSE) {
+        put(p, "lesson", "step %d of %d: a blank line goes on, previous goes back a step, "
+            "leave ends the lesson", p->play.step + 1, l->steps);
+        return;
+    }
+    put(p, "ask", "%s", it->text);
+    for (int k = 0; k < it->nchoices; k++)
+        put(p, "choice", "%d %s", k + 1, it->choice[k]);
+    put(p, "lesson", "step %d of %d: answer 1 to %d (previous goes back a step, leave ends "
+        "the lesson)", p->play.step + 1, l->steps, it->nchoices);
+}
+
+/* One item of the lesson, said or done the plain mode's way. */
+static void lesson_item(struct plain *p, const struct lesson_item *it)
+{
+    struct app *app = &p->app;
+    char now[4096];
+    switch (it->kind) {
+    case LESSON_SAY:
+        put(p, "say", "%s", it->text);
+        break;
+    case LESSON_COMMAND:
+        command(p, it->text);
+        break;
+    case LESSON_SETUP:
+        put(p, lesson_setup(app, p->lesson, it) == 0 ? "ok" : "error", "%s", app->message);
+        memcpy(p->seen, app->message, sizeof p->seen);
+        plan_status(p);
+        break;
+    case LESSON_EXPECT:
+        lesson_state(app, now, sizeof now);
+        if (strcmp(now, it->text) == 0)
+            put(p, "ok", "replayed: the state at t = %.*f s is the one recorded, bit for bit",
+                app_time_decimals(sim_dt(app->sim)), sim_time(app->sim));
+        else
+            put(p, "error", "replayed, but the state differs from the one recorded "
+                "(expected %s; have %s)", it->text, now);
+        break;
+    case LESSON_PAUSE:
+    case LESSON_ASK:
+        say_wait(p);
+        break;
+    }
+}
+
+/* Plays the lesson on to its next pause or question, or to its end. */
+static void lesson_play_on(struct plain *p)
+{
+    const struct lesson_item *it;
+    while (p->lesson && !p->closed && !quit_signal && (it = lesson_next(&p->play)))
+        lesson_item(p, it);
+    if (p->lesson && p->play.waiting < 0 && p->play.next >= p->lesson->count) {
+        put(p, "lesson", "end of %s: the chain is yours (help lists the commands)",
+            p->lesson->name);
+        p->lesson = NULL;
+    }
+}
+
+/* Back to the end of the step before this one (the state it left, rebuilt from the
+ * lesson's start, said nothing of), its caption and what it waits for said again. */
+static void lesson_back(struct plain *p)
+{
+    const struct lesson *l = p->lesson;
+    int target = p->play.step - 1;
+    if (target < 0) {
+        put(p, "error", "previous: this is the first step (a blank line goes on)");
+        return;
+    }
+    int end = lesson_step_end(l, target);
+    const struct lesson_item *it;
+    p->quiet = true;
+    lesson_play_start(&p->play, l);
+    while ((it = lesson_next(&p->play))) {
+        lesson_item(p, it);
+        if (p->play.waiting >= 0 && p->play.waiting != end)
+            lesson_go_on(&p->play);
+    }
+    p->quiet = false;
+    memcpy(p->seen, p->app.message, sizeof p->seen);
+    plan_status(p);
+    put(p, "lesson", "back to step %d of %d", target + 1, l->steps);
+    for (const char *c = p->play.caption; *c && !p->play.new_caption;) {
+        size_t n = strcspn(c, "\n");
+        put(p, "say", "%.*s", (int)n, c);
+        c += n + (c[n] == '\n');
+    }
+    say_wait(p);
+}
+
+/* A line typed while the lesson waits: a blank line (or next) goes on, previous goes
+ * back a step, leave ends the lesson, a choice answers the question; true when it was
+ * one of those. Any other line is a command as ever (look around before going on). */
+static bool lesson_line(struct plain *p, const char *line)
+{
+    if (!p->lesson || p->play.waiting < 0)
+        return false;
+    char w[64];
+    const char *s = line + strspn(line, " \t");
+    size_t n = strlen(s);
+    while (n && (s[n - 1] == ' ' || s[n - 1] == '\t'))
+        n--;
+    if (n >= sizeof w)
+        return false;
+    memcpy(w, s, n);
+    w[n] = '\0';
+    const struct lesson_item *it = &p->lesson->items[p->play.waiting];
+    if (strcmp(w, "leave") == 0) {
+        put(p, "lesson", "left %s at step %d of %d: the chain is as it is", p->lesson->name,
+            p->play.step + 1, p->lesson->steps);
+        p->lesson = NULL;
+        return true;
+    }
+    if (strcmp(w, "previous") == 0) {
+        lesson_back(p);
+        return true;
+    }
+    bool next = !*w || strcmp(w, "next") == 0;
+    if (it->kind == LESSON_ASK) {
+        int k = lesson_choice(it, w);
+        if (!k && !next)
+            return false;
+        if (!k) {
+            put(p, "error", "the question waits for an answer: 1 to %d (or leave)", it->nchoices);
+            return true;
+        }
+        if (it->answer == k)
+            put(p, "lesson", "you chose %d: %s; right", k, it->choice[k - 1]);
+        else if (it->answer)
+            put(p, "lesson", "you chose %d: %s; the answer is %d: %s", k, it->choice[k - 1],
+                it->answer, it->choice[it->answer - 1]);
+        else
+            put(p, "lesson", "you chose %d: %s", k, it->choice[k - 1]);
+    } else if (!next) {
+        return false;
+    }
+    lesson_go_on(&p->play);
+    lesson_play_on(p);
+    return true;
+}
+
 /* The line read so far, ended (by its newline, or the end of input): refused when too
  * long or holding a NUL, else a command. False to quit. */
 static bool end_line(struct plain *p)
@@ -315,7 +471,7 @@ static bool end_line(struct plain *p)
     size_t n = strlen(p->in);
     if (n && p->in[n - 1] == '\r')
         p->in[n - 1] = '\0'; /* a CRLF line */
-    return command(p, p->in);
+    return lesson_line(p, p->in) || command(p, p->in);
 }
 
 /* Reads what standard input has; each whole line is a command. False to quit: a quit
@@ -382,7 +538,7 @@ static void put_ready(struct plain *p)
     put_event(p, line);
 }
 
-int plain_run(const struct config *cfg, const char *exe_dir)
+int plain_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson)
 {
     static struct plain p;
     memset(&p, 0, sizeof p);
@@ -391,6 +547,12 @@ int plain_run(const struct config *cfg, const char *exe_dir)
         return EXIT_FAILURE;
     }
     p.utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    char why[4600];
+    if (cfg->record && record_start(&p.rec, cfg->record, &p.app, why, sizeof why) != 0) {
+        fprintf(stderr, "springsim: --record: %s\n", why);
+        app_free(&p.app);
+        return EXIT_FAILURE;
+    }
     p.every = cfg->plain_every;
     catch_signals();
     watch_init(&p.watch, &p.app);
@@ -398,6 +560,13 @@ int plain_run(const struct config *cfg, const char *exe_dir)
     tell_message(&p);
     put_status(&p);
     plan_status(&p);
+    if (lesson) {
+        p.lesson = lesson;
+        lesson_play_start(&p.play, lesson);
+        put(&p, "lesson", "%s: %s; %d step%s", lesson->name, lesson->title, lesson->steps,
+            lesson->steps == 1 ? "" : "s");
+        lesson_play_on(&p);
+    }
     double last = now_s(), debt = 0.0;
     bool go = true;
     while (go && !quit_signal && !p.closed) {
@@ -426,6 +595,9 @@ int plain_run(const struct config *cfg, const char *exe_dir)
                                                                          : "SIGHUP");
         put_event(&p, line);
     }
+    int recorded = 0;
+    if (p.rec.mem && (recorded = record_finish(&p.rec, &p.app, why, sizeof why)) != 0)
+        fprintf(stderr, "springsim: --record: %s\n", why);
     app_free(&p.app);
     /* A write that failed for another reason than a reader gone (a full disk, a closed
      * descriptor), or standard input unreadable: said, status 1. */
@@ -444,5 +616,5 @@ int plain_run(const struct config *cfg, const char *exe_dir)
         signal(sig, SIG_DFL);
         raise(sig);
     }
-    return p.closed ? EXIT_FAILURE : EXIT_SUCCESS;
+    return p.closed || recorded ? EXIT_FAILURE : EXIT_SUCCESS;
 }

@@ -5,8 +5,10 @@
 
 #include "../core/config.h"
 
+struct lesson;
+
 /* Runs the plain mode on cfg until quit, the end of input, a closed standard output or
  * a terminating signal; returns the exit status (or dies of the signal). */
-int plain_run(const struct config *cfg, const char *exe_dir);
+int plain_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson);
 
 #endif

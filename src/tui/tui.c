@@ -533,9 +533,10 @@ bool tui_dumb_terminal(void)
     return term_dumb();
 }
 
-int tui_run(const struct config *cfg, const char *exe_dir)
+int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson)
 {
     static struct tui t;
+    (void)lesson;
     memset(&t, 0, sizeof t);
     t.enlarged = -1;
     if (app_init(&t.app, cfg, exe_dir) != 0) {

@@ -1,8 +1,8 @@
 # tests/lib/check.sh: what the shell test scripts share. Source it after setting NAME:
 # it makes $SPRINGSIM absolute, a scratch directory $tmp removed at exit, pass and fail,
 # summary, which prints "NAME: N passed, M failed" and gives the exit status,
-# plain_env, which keeps the user's presets out of the way (an empty user directory,
-# no $SPRINGSIM_PRESETS) in the C locale, and run, one run of the binary.
+# plain_env, which keeps the user's presets and lessons out of the way (an empty user directory,
+# no $SPRINGSIM_PRESETS or $SPRINGSIM_LESSONS) in the C locale, and run, one run of the binary.
 SPRINGSIM=${SPRINGSIM:-./springsim}
 case $SPRINGSIM in /*) ;; */*) SPRINGSIM=$PWD/$SPRINGSIM ;; esac
 passed=0
@@ -20,7 +20,7 @@ plain_env() {
     mkdir -p "$tmp/xdg"
     XDG_CONFIG_HOME=$tmp/xdg
     export XDG_CONFIG_HOME
-    unset SPRINGSIM_PRESETS
+    unset SPRINGSIM_PRESETS SPRINGSIM_LESSONS
     LC_ALL=C
     export LC_ALL
 }

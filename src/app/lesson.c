@@ -1,0 +1,418 @@
+/* lesson.c: lesson files read and checked line by line, and found on the search path.
+ * Every line is one item: `title`, `say`, a command of the plain mode, `pause`, `ask`
+ * followed by its `choice` lines and perhaps an `answer`, a `setup` ... `end` block
+ * holding a preset's text, `expect`; `#` starts a comment line. */
+#include "lesson.h"
+
+#include <ctype.h>
+#include <dirent.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../core/search.h"
+#include "command.h"
+
+/* The commands a lesson may not hold: they write files or end the program. */
+static bool forbidden(int cmd)
+{
+    return cmd == CMD_SAVE || cmd == CMD_EXPORT || cmd == CMD_QUIT;
+}
+
+struct reader {
+    struct lesson *l;
+    const char *path;
+    int line;
+    char *err;
+    size_t errlen;
+    int cap;       /* items room */
+    int ask;       /* the question taking choices, or -1 */
+    bool answered; /* it has its answer line */
+    int commands;  /* commands and setups so far */
+};
+
+static int bad(struct reader *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static int bad(struct reader *r, const char *fmt, ...)
+{
+    char what[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    snprintf(r->err, r->errlen, "%s:%d: %s", r->path, r->line, what);
+    return 2;
+}
+
+static struct lesson_item *add(struct reader *r, enum lesson_kind kind, const char *text)
+{
+    struct lesson *l = r->l;
+    if (l->count == r->cap) {
+        int cap = r->cap ? 2 * r->cap : 32;
+        struct lesson_item *more = realloc(l->items, (size_t)cap * sizeof *more);
+        if (!more)
+            return NULL;
+        l->items = more;
+        r->cap = cap;
+    }
+    struct lesson_item *it = &l->items[l->count];
+    memset(it, 0, sizeof *it);
+    it->kind = kind;
+    it->line = r->line;
+    it->text = strdup(text);
+    if (!it->text)
+        return NULL;
+    l->count++;
+    return it;
+}
+
+/* A question whose choices are over: it needs two at least. */
+static int close_ask(struct reader *r)
+{
+    if (r->ask < 0)
+        return 0;
+    const struct lesson_item *q = &r->l->items[r->ask];
+    r->ask = -1;
+    if (q->nchoices < 2) {
+        r->line = q->line;
+        return bad(r, "ask needs two choices at least, each on a 'choice TEXT' line after it");
+    }
+    return 0;
+}
+
+/* One line (NUL-terminated, its end of line gone). */
+static int read_line(struct reader *r, char *s)
+{
+    for (const char *c = s; *c; c++)
+        if ((unsigned char)*c < 0x20 && *c != '\t')
+            return bad(r, "a control character (\\x%02x) in the text (a lesson is plain text)",
+                       (unsigned char)*c);
+    char *word = s + strspn(s, " \t");
+    char *rest = word + strcspn(word, " \t");
+    size_t wlen = (size_t)(rest - word);
+    rest += strspn(rest, " \t");
+    for (char *e = rest + strlen(rest); e > rest && (e[-1] == ' ' || e[-1] == '\t');)
+        *--e = '\0';
+    if (!*word || *word == '#')
+        return 0;
+#define IS(w) (wlen == strlen(w) && strncmp(word, w, wlen) == 0)
+    if (r->ask >= 0 && IS("choice")) {
+        struct lesson_item *q = &r->l->items[r->ask];
+        if (r->answered)
+            return bad(r, "a choice after the answer line (the choices come first)");
+        if (!*rest)
+            return bad(r, "choice needs its text");
+        if (q->nchoices == LESSON_MAX_CHOICES)
+            return bad(r, "a question has %d choices at most", LESSON_MAX_CHOICES);
+        if (!(q->choice[q->nchoices] = strdup(rest)))
+            return 1;
+        q->nchoices++;
+        return 0;
+    }
+    if (r->ask >= 0 && IS("answer")) {
+        struct lesson_item *q = &r->l->items[r->ask];
+        int k = lesson_choice(q, rest);
+        if (r->answered)
+            return bad(r, "the question has its answer already");
+        if (!k)
+            return bad(r, "answer: '%.40s' is not one of the %d choices above (expected 1 to "
+                       "%d)", rest, q->nchoices, q->nchoices);
+        q->answer = k;
+        r->answered = true;
+        return 0;
+    }
+    int st = close_ask(r);
+    if (st)
+        return st;
+    if (IS("choice") || IS("answer"))
+        return bad(r, "%.*s outside a question (it follows an 'ask' line)", (int)wlen, word);
+    if (IS("title")) {
+        if (r->l->title[0])
+            return bad(r, "a second title line (a lesson has one)");
+        if (!*rest)
+            return bad(r, "title needs its text");
+        snprintf(r->l->title, sizeof r->l->title, "%s", rest);
+        return 0;
+    }
+    if (IS("say"))
+        return add(r, LESSON_SAY, rest) ? 0 : 1;
+    if (IS("pause")) {
+        if (*rest)
+            return bad(r, "pause takes nothing, but was given '%.40s'", rest);
+        r->l->steps++;
+        return add(r, LESSON_PAUSE, "") ? 0 : 1;
+    }
+    if (IS("ask")) {
+        if (!*rest)
+            return bad(r, "ask needs its question");
+        if (!add(r, LESSON_ASK, rest))
+            return 1;
+        r->l->steps++;
+        r->ask = r->l->count - 1;
+        r->answered = false;
+        return 0;
+    }
+    if (IS("expect")) {
+        if (strncmp(rest, "t=", 2) != 0)
+            return bad(r, "expect needs the state, 't=... x1=... v1=...' as --record writes it");
+        return add(r, LESSON_EXPECT, rest) ? 0 : 1;
+    }
+    if (IS("end"))
+        return bad(r, "end without a setup line before it");
+    if (IS("setup"))
+        return bad(r, "setup needs its 'end' line");
+    int cmd = command_find(word, wlen);
+    if (cmd < 0)
+        return bad(r, "'%.*s' is not a command or a lesson's word (expected title, say, pause, "
+                   "ask, choice, answer, setup, expect or a command of the plain mode: help "
+                   "lists them)", wlen > 40 ? 40 : (int)wlen, word);
+    if (forbidden(cmd))
+        return bad(r, "%s is not allowed in a lesson (it %s)", commands[cmd].name,
+                   cmd == CMD_QUIT ? "would end the program" : "writes a file");
+    if (r->commands++ == 0 && cmd != CMD_PRESET)
+        return bad(r, "a lesson starts from a known chain: its first command is 'preset NAME' "
+                   "(or a setup block), not %s", commands[cmd].name);
+    /* The command as written, its blanks made one. */
+    char line[LESSON_MAX_LINE + 2];
+    snprintf(line, sizeof line, "%.*s%s%s", (int)wlen, word, *rest ? " " : "", rest);
+    return add(r, LESSON_COMMAND, line) ? 0 : 1;
+#undef IS
+}
+
+/* A setup block, from the line after `setup` to its `end`: the preset text, with as many
+ * newlines before it as lines before the block, so that its errors name the file's line. */
+static int read_setup(struct reader *r, char **s, char *end)
+{
+    int first = r->line;
+    size_t cap = (size_t)(end - *s) + (size_t)first + 2;
+    char *text = malloc(cap), *o = text;
+    if (!text)
+        return 1;
+    memset(o, '\n', (size_t)first);
+    o += first;
+    while (*s < end) {
+        char *nl = memchr(*s, '\n', (size_t)(end - *s));
+        char *eol = nl ? nl : end;
+        r->line++;
+        const char *w = *s + strspn(*s, " \t");
+        size_t n = (size_t)(eol - w);
+        while (n && (w[n - 1] == ' ' || w[n - 1] == '\t' || w[n - 1] == '\r'))
+            n--;
+        if (n == 3 && strncmp(w, "end", 3) == 0) {
+            *o = '\0';
+            *s = nl ? nl + 1 : end;
+            struct lesson_item *it = add(r, LESSON_SETUP, text);
+            if (it)
+                it->line = first;
+            free(text);
+            r->commands++;
+            return it ? 0 : 1;
+        }
+        memcpy(o, *s, (size_t)(eol - *s));
+        o += eol - *s;
+        *o++ = '\n';
+        *s = nl ? nl + 1 : end;
+    }
+    free(text);
+    r->line = first;
+    return bad(r, "setup without its 'end' line");
+}
+
+void lesson_free(struct lesson *l)
+{
+    for (int i = 0; i < l->count; i++) {
+        free(l->items[i].text);
+        for (int k = 0; k < l->items[i].nchoices; k++)
+            free(l->items[i].choice[k]);
+    }
+    free(l->items);
+    l->items = NULL;
+    l->count = l->steps = 0;
+}
+
+/* The lesson's name: its file's name without .lesson. */
+static void name_of(const char *path, char *out, size_t len)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    size_t n = strlen(base), e = strlen(LESSON_EXT);
+    if (n > e && strcmp(base + n - e, LESSON_EXT) == 0)
+        n -= e;
+    snprintf(out, len, "%.*s", (int)n, base);
+}
+
+int lesson_read(const char *path, struct lesson *l, char *err, size_t errlen)
+{
+    char *text;
+    size_t size;
+    memset(l, 0, sizeof *l);
+    snprintf(l->path, sizeof l->path, "%s", path);
+    name_of(path, l->name, sizeof l->name);
+    int st = search_read(path, LESSON_MAX_BYTES, "a lesson", &text, &size, err, errlen);
+    if (st)
+        return st;
+    struct reader r = {.l = l, .path = path, .err = err, .errlen = errlen, .ask = -1};
+    char *s = text, *end = text + size;
+    while (s < end && !st) {
+        char *nl = memchr(s, '\n', (size_t)(end - s));
+        char *eol = nl ? nl : end;
+        r.line++;
+        if (memchr(s, '\0', (size_t)(eol - s))) {
+            st = bad(&r, "contains a NUL byte (a lesson is text)");
+            break;
+        }
+        if (eol - s > LESSON_MAX_LINE) {
+            st = bad(&r, "line is longer than %d characters", LESSON_MAX_LINE);
+            break;
+        }
+        if (eol > s && eol[-1] == '\r')
+            eol[-1] = '\0';
+        *eol = '\0';
+        char *w = s + strspn(s, " \t");
+        s = nl ? nl + 1 : end;
+        if (strcmp(w, "setup") == 0 || strncmp(w, "setup ", 6) == 0 ||
+            strncmp(w, "setup\t", 6) == 0) {
+            st = close_ask(&r);
+            if (!st && w[5] && w[5 + strspn(w + 5, " \t")])
+                st = bad(&r, "setup takes nothing on its line (the preset's lines follow, "
+                         "then 'end')");
+            if (!st)
+                st = read_setup(&r, &s, end);
+            continue;
+        }
+        st = read_line(&r, w);
+    }
+    if (!st)
+        st = close_ask(&r);
+    if (!st && !l->title[0]) {
+        r.line = 1;
+        st = bad(&r, "no title line (expected 'title TEXT', the lesson's name in the menu)");
+    }
+    if (!st && r.commands == 0) {
+        r.line = r.line ? r.line : 1;
+        st = bad(&r, "no command (a lesson starts with 'preset NAME')");
+    }
+    free(text);
+    if (st == 1 && !err[0])
+        snprintf(err, errlen, "%s: out of memory", path);
+    if (st)
+        lesson_free(l);
+    return st;
+}
+
+int lesson_choice(const struct lesson_item *ask, const char *text)
+{
+    const char *s = text + strspn(text, " \t");
+    size_t n = strcspn(s, " \t");
+    if (s[n + strspn(s + n, " \t")] != '\0' || n == 0)
+        return 0;
+    int k = 0;
+    if (n == 1 && isalpha((unsigned char)*s))
+        k = tolower((unsigned char)*s) - 'a' + 1;
+    else if (n == 1 && isdigit((unsigned char)*s))
+        k = *s - '0';
+    return k >= 1 && k <= ask->nchoices ? k : 0;
+}
+
+int lesson_find(const char *name, const char *exe_dir, char *out, size_t len)
+{
+    size_t n = strlen(name), e = strlen(LESSON_EXT);
+    if (strchr(name, '/') || (n > e && strcmp(name + n - e, LESSON_EXT) == 0)) {
+        if (n < len) {
+            memcpy(out, name, n + 1);
+            return 0;
+        }
+        snprintf(out, len, "'%.36s...' is too long for a file name", name);
+        return -1;
+    }
+    if (n > 0 && n < 200) {
+        char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
+        int count = search_dirs(SEARCH_LESSONS, exe_dir, dirs);
+        for (int i = 0; i < count; i++) {
+            int w = snprintf(out, len, "%s/%s%s", dirs[i], name, LESSON_EXT);
+            if (w > 0 && (size_t)w < len && access(out, F_OK) == 0)
+                return 0;
+        }
+    }
+    char q[4 * CONFIG_QUOTE_MAX + 48];
+    config_quote(name, n, q, sizeof q);
+    snprintf(out, len, "%s is not a lesson (expected a name from --list-lessons, or a file)", q);
+    return -1;
+}
+
+static int compare_entries(const void *a, const void *b)
+{
+    return strcmp(((const struct lesson_entry *)a)->name, ((const struct lesson_entry *)b)->name);
+}
+
+/* The title line of a lesson's text, into title ("" if none). */
+static void find_title(const char *text, char *title, size_t len)
+{
+    title[0] = '\0';
+    for (const char *s = text; *s;) {
+        s += strspn(s, " \t");
+        size_t n = strcspn(s, "\n");
+        if (strncmp(s, "title", 5) == 0 && (s[5] == ' ' || s[5] == '\t')) {
+            const char *t = s + 5 + strspn(s + 5, " \t");
+            size_t m = (size_t)(s + n - t);
+            while (m && (t[m - 1] == '\r' || t[m - 1] == ' '))
+                m--;
+            snprintf(title, len, "%.*s", (int)m, t);
+            for (char *c = title; *c; c++)
+                if ((unsigned char)*c < 0x20)
+                    *c = ' ';
+            return;
+        }
+        s += n + (s[n] == '\n');
+    }
+}
+
+int lesson_scan(const char *exe_dir, struct lesson_entry **out)
+{
+    char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
+    int count = search_dirs(SEARCH_LESSONS, exe_dir, dirs), have = 0, cap = 0;
+    struct lesson_entry *all = NULL;
+    size_t e = strlen(LESSON_EXT);
+    for (int d = 0; d < count; d++) {
+        DIR *dir = opendir(dirs[d]);
+        if (!dir)
+            continue;
+        struct dirent *ent;
+        while ((ent = readdir(dir))) {
+            size_t n = strlen(ent->d_name);
+            if (n <= e || n - e >= sizeof all->name || strcmp(ent->d_name + n - e, LESSON_EXT))
+                continue;
+            int dup = 0;
+            for (int i = 0; i < have && !dup; i++)
+                dup = strncmp(all[i].name, ent->d_name, n - e) == 0 && !all[i].name[n - e];
+            if (dup)
+                continue;
+            if (have == cap) {
+                cap = cap ? 2 * cap : 16;
+                struct lesson_entry *more = realloc(all, (size_t)cap * sizeof *all);
+                if (!more)
+                    break;
+                all = more;
+            }
+            struct lesson_entry *le = &all[have];
+            int w = snprintf(le->path, sizeof le->path, "%s/%s", dirs[d], ent->d_name);
+            char *text, why[64];
+            size_t size;
+            if (w < 0 || (size_t)w >= sizeof le->path ||
+                search_read(le->path, LESSON_MAX_BYTES, "a lesson", &text, &size, why,
+                            sizeof why) != 0)
+                continue;
+            memcpy(le->name, ent->d_name, n - e);
+            le->name[n - e] = '\0';
+            find_title(text, le->title, sizeof le->title);
+            free(text);
+            have++;
+        }
+        closedir(dir);
+    }
+    if (have)
+        qsort(all, (size_t)have, sizeof *all, compare_entries);
+    *out = all;
+    return have;
+}

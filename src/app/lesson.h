@@ -1,0 +1,120 @@
+/* lesson.h: lessons, plain-text files of steps (man springsim, LESSONS): a caption
+ * (`say`), the plain mode's commands that set the scene, and a `pause` or an `ask` with
+ * its choices ending each step. They are found like presets (core/search.h), read and
+ * checked line by line here, and every command is tried on a scratch chain before
+ * anything runs (lesson_check), so a bad lesson is refused with its file and line. The
+ * front ends play them item by item (lesson_next), each command through the one path of
+ * the plain mode's commands (command.h). --record writes the same format. */
+#ifndef SPRINGSIM_LESSON_H
+#define SPRINGSIM_LESSON_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "../core/config.h"
+
+#define LESSON_EXT ".lesson"          /* a lesson file's name ends so */
+#define LESSON_MAX_BYTES (256 * 1024) /* larger files are refused */
+#define LESSON_MAX_LINE 1024          /* longest line */
+#define LESSON_MAX_CHOICES 6          /* choices of one question, at most */
+#define LESSON_CAPTION 2048           /* bytes of one step's caption */
+
+struct app;
+
+/* What one item of a lesson is. */
+enum lesson_kind {
+    LESSON_SAY,     /* a line of the step's caption */
+    LESSON_COMMAND, /* a command of the plain mode */
+    LESSON_PAUSE,   /* the end of a step: wait for the user */
+    LESSON_ASK,     /* the end of a step: a question, its choices, wait for an answer */
+    LESSON_SETUP,   /* a chain given in the lesson itself, as a preset's text */
+    LESSON_EXPECT,  /* the state the lesson must end in, exactly (a recording's last line) */
+};
+
+struct lesson_item {
+    enum lesson_kind kind;
+    int line;                             /* where it is in the file */
+    char *text;                           /* caption, command, question, preset, state */
+    int nchoices;                         /* ask: its choices */
+    char *choice[LESSON_MAX_CHOICES];     /* ask: their text */
+    int answer;                           /* ask: the right choice, 1-based, or 0 */
+};
+
+struct lesson {
+    char path[4400];           /* its file */
+    char name[256];            /* the word --lesson takes, or the file's name */
+    char title[200];           /* its title line */
+    struct lesson_item *items; /* in order */
+    int count;                 /* items */
+    int steps;                 /* pauses and questions */
+};
+
+/* A lesson found on the search path. */
+struct lesson_entry {
+    char name[256];  /* the file name without .lesson */
+    char path[4400]; /* its file */
+    char title[200]; /* its title, or "" */
+};
+
+/* Reads and checks the lesson at path (its lines' form, every command's name): 0, 1 when
+ * it cannot be read ("PATH: reason" in err), 2 when it is not a valid lesson
+ * ("PATH:LINE: what is wrong"). l is then empty (lesson_free is still safe). */
+int lesson_read(const char *path, struct lesson *l, char *err, size_t errlen);
+
+/* Frees what l holds. */
+void lesson_free(struct lesson *l);
+
+/* The file a lesson name or path stands for (a value with a '/' or ending in .lesson is
+ * a path; a name is looked for on the search path): 0 with the path in out, or -1 with
+ * a message in out. */
+int lesson_find(const char *name, const char *exe_dir, char *out, size_t len);
+
+/* Every lesson on the search path, sorted by name, each name once (the first found
+ * shadows later ones), into a malloc'ed *out (free it); returns the count. */
+int lesson_scan(const char *exe_dir, struct lesson_entry **out);
+
+/* Plays every item of l on a scratch chain made from base (commands through command_do,
+ * runs stepped at once): 0, or 2 with "PATH:LINE: what is wrong" in err (the command's
+ * own answer), 1 on no memory. Nothing is shown or written. */
+int lesson_check(const struct lesson *l, const struct config *base, const char *exe_dir,
+                 char *err, size_t errlen);
+
+/* Steps app for `seconds` of simulated time at once, then pauses it, as the plain
+ * mode's `run` does; false when a blow-up stopped it. */
+bool lesson_run(struct app *app, double seconds);
+
+/* The chain's state exactly, "t=HEX x1=HEX v1=HEX ..." in C99 hexadecimal floats, as
+ * an expect line holds it. */
+void lesson_state(const struct app *app, char *buf, size_t len);
+
+/* Puts a setup item's chain in force on app; 0, or -1 with the reason in app's message. */
+int lesson_setup(struct app *app, const struct lesson *l, const struct lesson_item *it);
+
+/* Where a lesson being played is. */
+struct lesson_play {
+    const struct lesson *lesson;
+    int next;                       /* the item to do next */
+    int step;                       /* the step being played, 0-based */
+    int waiting;                    /* the pause or question waited on, or -1 */
+    bool new_caption;               /* the next caption line starts a new caption */
+    char caption[LESSON_CAPTION];   /* the step's caption so far */
+};
+
+/* Starts playing l from its first item. */
+void lesson_play_start(struct lesson_play *p, const struct lesson *l);
+
+/* The next item to do, or NULL at the end; a caption line is added to p->caption, a
+ * pause or a question becomes p->waiting (the caller waits, then calls lesson_go_on). */
+const struct lesson_item *lesson_next(struct lesson_play *p);
+
+/* Goes on past the pause or question waited on. */
+void lesson_go_on(struct lesson_play *p);
+
+/* The item of the pause or question that ends step `step` (0-based), or -1 for none. */
+int lesson_step_end(const struct lesson *l, int step);
+
+/* Answers a question from text ("2", or its letter "b"): the choice, 1-based, or 0 when
+ * it is not one of them. */
+int lesson_choice(const struct lesson_item *ask, const char *text);
+
+#endif

@@ -1,0 +1,143 @@
+/* lesson_play.c: playing a lesson, without a terminal: where the player is (a caption
+ * gathered, a pause or a question waited on), the dry run that checks every command
+ * before anything runs, the runs stepped at once, a setup block put in force and the
+ * exact state an expect line holds. The front ends (plain/, tui/) do each item their own
+ * way: a command through command_do, as they do the user's. */
+#include "lesson.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/preset.h"
+#include "app.h"
+#include "command.h"
+
+bool lesson_run(struct app *app, double seconds)
+{
+    double end = sim_time(app->sim) + seconds;
+    bool ok = true;
+    app->running = true;
+    while (sim_time(app->sim) < end - 1e-9 * app->cfg.dt)
+        if (!app_step(app)) {
+            ok = false;
+            break;
+        }
+    app_set_running(app, false);
+    return ok;
+}
+
+void lesson_state(const struct app *app, char *buf, size_t len)
+{
+    const struct sim *s = app->sim;
+    const double *x = sim_x(s), *v = sim_v(s);
+    size_t used = (size_t)snprintf(buf, len, "t=%a", sim_time(s));
+    for (int i = 0; i < sim_model(s)->n && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, " x%d=%a v%d=%a", i + 1, x[i], i + 1,
+                                 v[i]);
+}
+
+int lesson_setup(struct app *app, const struct lesson *l, const struct lesson_item *it)
+{
+    const char *name = l->title[0] ? l->name : "setup";
+    return app_load_preset_text(app, l->path, it->text, strlen(it->text), name) ? 0 : -1;
+}
+
+/* A setup block's preset: valid, and within the interactive program's ranges; 0, or -1
+ * with "PATH:LINE: what" in err. */
+static int setup_check(const struct lesson *l, const struct lesson_item *it, char *err,
+                       size_t errlen)
+{
+    static struct config c; /* large */
+    char why[600];
+    config_init(&c);
+    if (preset_parse(l->path, it->text, strlen(it->text), &c, err, errlen) != PRESET_OK)
+        return -1;
+    int key = config_check_interactive(&c, why, sizeof why);
+    if (key < 0)
+        return 0;
+    const struct config_origin *o = &c.origin[key];
+    snprintf(err, errlen, "%s:%d: %s: %s", l->path, o->file ? o->line : it->line,
+             config_options[key].name, why);
+    return -1;
+}
+
+int lesson_check(const struct lesson *l, const struct config *base, const char *exe_dir,
+                 char *err, size_t errlen)
+{
+    static struct app app; /* large; one check at a time */
+    char answer[2048];
+    if (app_init(&app, base, exe_dir) != 0) {
+        snprintf(err, errlen, "%s: out of memory", l->path);
+        return 1;
+    }
+    int st = 0;
+    for (int i = 0; i < l->count && !st; i++) {
+        const struct lesson_item *it = &l->items[i];
+        double seconds = 0.0;
+        if (it->kind == LESSON_SETUP) {
+            if (setup_check(l, it, err, errlen) != 0) {
+                st = 2;
+            } else if (lesson_setup(&app, l, it) != 0) {
+                /* The preset's own message names the file and its line already. */
+                snprintf(err, errlen, "%s", app.message);
+                st = 2;
+            }
+            continue;
+        }
+        if (it->kind != LESSON_COMMAND)
+            continue;
+        enum command_reply r = command_do(&app, it->text, answer, sizeof answer, &seconds);
+        if (r == REPLY_ERROR) {
+            snprintf(err, errlen, "%s:%d: %s", l->path, it->line, answer);
+            st = 2;
+        } else if (r == REPLY_RUN) {
+            lesson_run(&app, seconds);
+        }
+    }
+    app_free(&app);
+    return st;
+}
+
+void lesson_play_start(struct lesson_play *p, const struct lesson *l)
+{
+    memset(p, 0, sizeof *p);
+    p->lesson = l;
+    p->waiting = -1;
+    p->new_caption = true;
+}
+
+const struct lesson_item *lesson_next(struct lesson_play *p)
+{
+    const struct lesson *l = p->lesson;
+    if (p->waiting >= 0 || p->next >= l->count)
+        return NULL;
+    const struct lesson_item *it = &l->items[p->next++];
+    if (it->kind == LESSON_SAY) {
+        size_t used = p->new_caption ? 0 : strlen(p->caption);
+        snprintf(p->caption + used, sizeof p->caption - used, "%s%s", used ? "\n" : "",
+                 it->text);
+        p->new_caption = false;
+    } else if (it->kind == LESSON_PAUSE || it->kind == LESSON_ASK) {
+        p->waiting = (int)(it - l->items);
+    }
+    return it;
+}
+
+void lesson_go_on(struct lesson_play *p)
+{
+    if (p->waiting < 0)
+        return;
+    p->waiting = -1;
+    p->step++;
+    p->new_caption = true;
+}
+
+int lesson_step_end(const struct lesson *l, int step)
+{
+    for (int i = 0, k = 0; i < l->count; i++)
+        if (l->items[i].kind == LESSON_PAUSE || l->items[i].kind == LESSON_ASK)
+            if (k++ == step)
+                return i;
+    return -1;
+}

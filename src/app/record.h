@@ -1,0 +1,56 @@
+/* record.h: --record FILE: what the user does, written as a lesson file that --replay
+ * plays back to the same state bit for bit. It opens with the chain as it was (a setup
+ * block: the settings in force, every number exact), then one line per command done (a
+ * key of the interactive program in its plain-mode words, or a command typed), each
+ * preceded by `run SECONDS` for the simulated time that passed since the line before,
+ * and ends with an `expect` line holding the state exactly. The file is written whole
+ * at the end (a temporary file beside it, renamed): never half-written. */
+#ifndef SPRINGSIM_RECORD_H
+#define SPRINGSIM_RECORD_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+struct app;
+
+#define RECORD_RUN_MAX 500.0 /* simulated seconds of one run line, at most */
+
+struct record {
+    char path[4400];  /* the file written at the end */
+    char tmp[4416];   /* the temporary file beside it, made at the start */
+    FILE *mem;        /* the text so far */
+    char *text;       /* its buffer (open_memstream) */
+    size_t size;      /* its bytes */
+    double t;         /* the simulated time the text has reached */
+    int lines;        /* commands written */
+};
+
+/* Starts recording app, its chain as it is now, for path: 0, or -1 with "PATH: reason"
+ * in err (the temporary file beside path cannot be made). */
+int record_start(struct record *r, const char *path, const struct app *app, char *err,
+                 size_t errlen);
+
+/* The simulated time run since the last line, as run lines (before a command; and while
+ * running, whenever RECORD_RUN_MAX has passed). */
+void record_time(struct record *r, const struct app *app);
+
+/* A command done (a line of the plain mode, without its newline; record_time was called
+ * before it was done); the recording is then at the chain's time. */
+void record_line(struct record *r, const struct app *app, const char *line);
+
+/* A command line of the plain mode done (its answer ok), recorded if record_wants it:
+ * random with the seed it drew, the rest as typed. */
+void record_command(struct record *r, const struct app *app, const char *line);
+
+/* Ends it: the time run, the expect line, the file written whole. 0, or -1 with "PATH:
+ * reason" in err (the temporary file removed). */
+int record_finish(struct record *r, const struct app *app, char *err, size_t errlen);
+
+/* Gives it up: the temporary file removed, nothing written. */
+void record_abandon(struct record *r);
+
+/* Whether the plain mode's command cmd (enum command_id) changes the chain or what is
+ * shown, and so is recorded. */
+bool record_wants(int cmd);
+
+#endif

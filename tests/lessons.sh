@@ -1,0 +1,257 @@
+#!/bin/sh
+# tests/lessons.sh: the built-in lessons (lessons/*.lesson) played to their end in the
+# plain mode, each one's claim measured on the run's own lines against physics worked out
+# here (resonance at sqrt(2k/m)/2pi, the beat envelope, the logarithmic decrement, the
+# modal energy, the square wave's 3rd harmonic, the integrators against the exact
+# solution and rk4's stability limit); the lesson's words (pause, ask, previous, leave);
+# --list-lessons; bad lesson files refused with FILE:LINE before anything runs.
+# Run from the repository root as `sh tests/lessons.sh`, SPRINGSIM naming the binary.
+# Ends with "lessons: N passed, M failed".
+NAME=lessons
+. "$(dirname "$0")/lib/check.sh"
+plain_env
+root=$(cd "$(dirname "$0")/.." && pwd)
+show() { head -c 600 "$1" | tr '\n' '|'; }
+
+# answers FILE: the input that goes through a lesson: a blank line at each pause, the
+# right answer (or 1) at each question.
+answers() {
+    awk '$1 == "pause" { print "" } $1 == "ask" { if (q) print a; q = 1; a = 1 }
+         $1 == "answer" { a = $2 } $1 != "answer" && $1 != "choice" && $1 != "ask" && q && $1 != "" && $1 !~ /^#/ { print a; q = 0 }
+         END { if (q) print a }' "$1"
+}
+# play NAME [ARGS]: the lesson through the plain mode, its lines in $out
+play() {
+    answers "$root/lessons/$1.lesson" >"$tmp/in"
+    l=$1
+    shift
+    cmd="springsim --plain --lesson $l $*"
+    timeout 120 "$SPRINGSIM" --plain --lesson "$l" "$@" <"$tmp/in" >"$out" 2>"$err"
+    rc=$?
+}
+
+# ---- every built-in lesson plays to its end: no error, every step, the end said ----
+count=0
+for f in "$root"/lessons/*.lesson; do
+    n=$(basename "$f" .lesson)
+    count=$((count + 1))
+    play "$n" --plain-every 1000
+    steps=$(grep -cE '^[[:space:]]*(pause|ask)([[:space:]]|$)' "$f")
+    said=$(grep -c '^lesson step ' "$out")
+    if [ "$rc" -eq 0 ] && ! grep -q '^error' "$out" && [ ! -s "$err" ] && [ "$said" -eq "$steps" ] &&
+        grep -q "^lesson end of $n: " "$out"; then pass; else
+        fail "$cmd: expected exit 0, no error line, $steps steps and the end; exit $rc, $said steps: $(grep -E '^error' "$out" | head -3 | tr '\n' '|') $(head -c 200 "$err")"
+    fi
+done
+[ "$count" -ge 6 ] && pass || fail "expected six built-in lessons at least, found $count"
+
+# ---- resonance: the swing is largest at f1 = sqrt(2k/m)/2pi = 0.712 Hz, not 0.5 Hz ----
+play resonance --plain-every 1000
+f1=$(sed -n 's/^ok modes: 1: \([0-9.]*\) Hz.*/\1/p' "$out")
+# the largest peak told while the drive was at each frequency
+awk '/^ok Frequency / { f = $3 } /^ok driving at mode/ { f = $6 }
+     /^event .* peak: mass 1/ { v = $8 + 0; if (v > max[f]) max[f] = v }
+     END { for (f in max) print f, max[f] }' "$out" | sort -n >"$tmp/peaks"
+best=$(sort -k2 -g "$tmp/peaks" | tail -n 1)
+if awk -v f1="$f1" -v best="$best" 'BEGIN {
+        pi = atan2(0, -1); k = 10; m = 1
+        want = sqrt(2 * k / m) / (2 * pi); web = sqrt(k / m) / (2 * pi)
+        split(best, b, " ")
+        exit !(f1 + 0 > 0 && (f1 - want) ^ 2 < (1e-3 * want) ^ 2 && (web - 0.5) ^ 2 < 0.01 ^ 2 &&
+               (b[1] - f1) ^ 2 < (0.01 * f1) ^ 2 && b[2] > 1.6) }' &&
+    [ "$(wc -l <"$tmp/peaks")" -eq 5 ] &&
+    awk -v best="$best" 'BEGIN { split(best, b, " ") } $1 != b[1] && $2 * 4 > b[2] { bad = 1 }
+        END { exit bad }' "$tmp/peaks"; then pass; else
+    fail "resonance: expected modes to say f1 = sqrt(2k/m)/2pi = 0.7118 Hz (not 0.5), and the largest swing (> 1.6 m, 4 times any other) at f1; modes f1 = $f1, peaks: $(tr '\n' ' ' <"$tmp/peaks")"
+fi
+
+# ---- beating: the swing swells to X(1 + w/w1) and fades to X(1 - w/w1), 10.9 s apart ----
+play beating --plain-every 0.02
+# step 1 only (t from 0 to 22 s): the largest |x| in each second
+awk '/^lesson step 2 / { exit } /^status/ { split($2, t, "="); split($3, x, "="); s = int(t[2])
+     a = x[2] < 0 ? -x[2] : x[2]; if (a > env[s]) env[s] = a } END { for (s in env) print s, env[s] }' \
+    "$out" | sort -n >"$tmp/env"
+if awk 'BEGIN { pi = atan2(0, -1); k = 10; m = 1; A = 0.5; w = 2 * pi * 0.62; w1 = sqrt(2 * k / m)
+        X = k * A / (2 * k - m * w * w); hi = X * (1 + w / w1); T = 2 * pi / (w1 - w) }
+     { env[$1] = $2 }
+     END {
+        # the largest swing in the first and in the second beat, and the quietest second
+        # between them (t = T = 10.9 s)
+        for (s = 3; s <= 8; s++) if (env[s] > a) a = env[s]
+        for (s = 14; s <= 19; s++) if (env[s] > b) b = env[s]
+        q = env[int(T)]
+        exit !((a - hi) ^ 2 < (0.03 * hi) ^ 2 && (b - hi) ^ 2 < (0.03 * hi) ^ 2 && q < 0.25 * hi)
+     }' "$tmp/env"; then pass; else
+    fail "beating: expected the envelope to reach X(1 + w/w1) = 1.94 m near 5.5 s and 16 s and to fade near 10.9 s; per second: $(tr '\n' ' ' <"$tmp/env")"
+fi
+
+# ---- damping: the logarithmic decrement of the peaks is 2 pi zeta / sqrt(1 - zeta^2) ----
+play damping --plain-every 0.01
+# per step of the lesson: zeta from modes, then the positive peaks of x1 (a parabola
+# through the sample and its neighbours)
+awk '/^ok modes: 1:/ { for (i = 1; i <= NF; i++) if ($i == "ratio") z = $(i + 1) + 0 }
+     /^ok started in mode/ { seg++; n = 0; zeta[seg] = z }
+     /^status/ && seg { split($3, x, "="); y0 = y1; y1 = y2; y2 = x[2] + 0; n++
+         if (n > 3 && y1 > y0 && y1 >= y2 && y1 > 0.025) {
+             d = y0 - 2 * y1 + y2; p = y1 - (y0 - y2) ^ 2 / (8 * d)
+             print seg, zeta[seg], p } }' "$out" >"$tmp/decay"
+if awk 'BEGIN { pi = atan2(0, -1) }
+     { if ($1 == s && prev > 0) { d = log(prev / $3); want = 2 * pi * $2 / sqrt(1 - $2 * $2)
+           if ((d - want) ^ 2 > (0.02 * want) ^ 2) bad++; checked[$1]++ }
+       s = $1; prev = $3 }
+     END { exit !(!bad && checked[1] >= 5 && checked[2] >= 1 && !(3 in checked)) }' "$tmp/decay"; then pass; else
+    fail "damping: expected ln(x_n/x_n+1) = 2 pi zeta/sqrt(1 - zeta^2) within 2 % at c = 0.5 and 2, and no second peak at critical damping; peaks (step, zeta, x): $(tr '\n' ' ' <"$tmp/decay" | head -c 600)"
+fi
+# critical damping: back to rest without swinging through
+if awk '/^ok started in mode/ { seg++ } seg == 3 && /^status/ { split($3, x, "="); if (x[2] < -0.001) bad = 1; n++ }
+        END { exit !(n > 100 && !bad) }' "$out"; then pass; else
+    fail "damping: at c = 8.94 (critical) the mass should come back without crossing x = 0"
+fi
+
+# ---- modes: started in a mode, the energy stays in it (closed-form shapes, f_j) ----
+play modes --plain-every 0.05
+# E_j = (p_j^2 + w_j^2 q_j^2) / 2, q_j and p_j the projections of x and v on shape j,
+# sin(i j pi / 4) normalised, w_j = 2 sqrt(k/m) sin(j pi / 8) (k = 10, m = 1)
+awk 'BEGIN { pi = atan2(0, -1); for (j = 1; j <= 3; j++) { w[j] = 2 * sqrt(10) * sin(j * pi / 8)
+         for (i = 1; i <= 3; i++) phi[j, i] = sin(i * j * pi / 4) / sqrt(2) } }
+     /^ok started in mode/ { seg = $5 + 0; on = 1; next }
+     /^ok ran to/ { on = 0 }
+     /^status/ && on { for (i = 1; i <= 3; i++) { split($(2 * i + 1), a, "="); split($(2 * i + 2), b, "=")
+             x[i] = a[2]; v[i] = b[2] }
+         tot = 0; for (j = 1; j <= 3; j++) { q = 0; p = 0
+             for (i = 1; i <= 3; i++) { q += phi[j, i] * x[i]; p += phi[j, i] * v[i] }
+             e[j] = (p * p + w[j] * w[j] * q * q) / 2; tot += e[j] }
+         if (tot > 0) { frac = e[seg] / tot; if (!(seg in worst) || frac < worst[seg]) worst[seg] = frac }
+         n[seg]++ }
+     END { for (s = 1; s <= 3; s++) print s, n[s] + 0, worst[s] + 0 }' "$out" >"$tmp/modal"
+if awk '{ if (!($2 >= 300 && $3 > 0.999)) bad = 1; c++ } END { exit !(c == 3 && !bad) }' "$tmp/modal"; then pass; else
+    fail "modes: started in mode j, the energy should stay in mode j (> 99.9 % at every status line); mode, lines, worst share: $(tr '\n' ' ' <"$tmp/modal")"
+fi
+if awk '/^ok started in mode 2/ { on = 1; next } /^ok ran to/ { on = 0 }
+        on && /^status/ { split($5, x, "="); a = x[2] < 0 ? -x[2] : x[2]; if (a > m) m = a; n++ }
+        END { exit !(n > 300 && m < 0.001) }' "$out"; then pass; else
+    fail "modes: in mode 2 the middle mass should stand still (|x2| < 1 mm)"
+fi
+
+# ---- harmonics: the spectrum at f and 3f = f1 of the last 20 s of each drive ----
+play harmonics --plain-every 0.02
+# |X(f)| of x1 over t in [20, 40) s, for f = 0.2373 and 3f, for each of the three waves
+awk 'BEGIN { pi = atan2(0, -1); f = 0.2373; seg = 0 }
+     /^ok ran to/ { seg++ }
+     /^status/ { split($2, t, "="); split($3, x, "="); if (t[2] < 20 || t[2] >= 40) next
+         for (h = 1; h <= 3; h += 2) { re[seg, h] += x[2] * cos(2 * pi * h * f * t[2])
+             im[seg, h] += x[2] * sin(2 * pi * h * f * t[2]) } }
+     END { for (s = 0; s < 3; s++) printf "%d %g %g\n", s, sqrt(re[s, 1] ^ 2 + im[s, 1] ^ 2),
+           sqrt(re[s, 3] ^ 2 + im[s, 3] ^ 2) }' "$out" >"$tmp/spec"
+# sine: f dominates; square: 3f = f1 dominates, well above the sine's; triangle's 3f
+# (1/9 of its first, against the square's 1/3) well below the square's
+if awk '{ a1[$1] = $2; a3[$1] = $3 }
+        END { exit !(a1[0] > 3 * a3[0] && a3[1] > 2 * a1[1] && a3[1] > 5 * a3[0] &&
+                     a3[2] < 0.5 * a3[1]) }' "$tmp/spec"; then pass; else
+    fail "harmonics: expected the sine at f1/3 to show f, the square wave's 3rd harmonic to ring f1 (the tallest peak) and the triangle's less; wave, |X(f)|, |X(3f)|: $(tr '\n' ' ' <"$tmp/spec")"
+fi
+
+# ---- numerics: rk4 = exact, Euler grows as (1 + (w dt)^2)^(n/2), the stability limit ----
+play numerics --plain-every 1000
+sed -n 's/^ok t=\([0-9.]*\) x1=\([-0-9.]*\) v1=\([-0-9.]*\) .*/\1 \2 \3/p' "$out" >"$tmp/num"
+limit=$(sed -n 's/.*above the stability limit of rk4: dt < \([0-9.]*\) s$/\1/p' "$out" | head -n 1)
+if awk -v limit="$limit" 'BEGIN { w = sqrt(20); dt = 0.01; n = 1000; W = sqrt(4000) }
+     { t[NR] = $1; x[NR] = $2; v[NR] = $3 }
+     END {
+        amp = sqrt(x[3] ^ 2 + (v[3] / w) ^ 2); want = 0.5 * (1 + (w * dt) ^ 2) ^ (n / 2)
+        semi = sqrt(x[4] ^ 2 + (v[4] / w) ^ 2)
+        exit !(NR == 7 && x[1] == x[2] && v[1] == v[2] && (x[1] - 0.5 * cos(w * 10)) ^ 2 < 1e-8 &&
+               (amp - want) ^ 2 < (0.01 * want) ^ 2 && (semi - 0.5) ^ 2 < 0.01 ^ 2 &&
+               (limit - 2 * sqrt(2) / W) ^ 2 < (0.002 * limit) ^ 2 &&
+               x[5] ^ 2 + v[5] ^ 2 < 1e-6 && x[6] == x[7] && (v[6] - v[7]) ^ 2 < 1e-6)
+     }' "$tmp/num" && grep -q '^event t=0.00 blow-up: unstable with rk4' "$out" &&
+    [ "$(grep -c '^event .*blow-up' "$out")" -eq 1 ]; then pass; else
+    fail "numerics: expected rk4 = exact = 0.5 cos(wt) at t = 10, Euler's swing 0.5 (1 + (w dt)^2)^500, semi-implicit bounded, rk4's limit 2 sqrt(2)/w and one blow-up (dt = 0.05); limit $limit, status: $(tr '\n' ' ' <"$tmp/num")"
+fi
+
+# ---- the words: previous rebuilds the step before, leave keeps the chain as it is ----
+printf '2\n\nprevious\n\nleave\nstatus\n' >"$tmp/in"
+timeout 60 "$SPRINGSIM" --plain --lesson resonance --plain-every 1000 <"$tmp/in" >"$out" 2>"$err"
+# at step 3 (after the 0.5 Hz run), previous goes back to step 2's end (t = 0), and the
+# 0.5 Hz run is run again
+if grep -q '^lesson back to step 2 of 7$' "$out" &&
+    [ "$(grep -c '^ok ran to t = 30.00 s' "$out")" -eq 2 ] &&
+    grep -q '^lesson left resonance at step 3 of 7: the chain is as it is$' "$out" &&
+    grep -q '^ok t=30.00 x1=' "$out"; then pass; else
+    fail "previous and leave: expected 'back to step 2', the 0.5 Hz run again, then leave at step 3 with the chain at t = 30: $(grep -E '^(lesson|ok ran|ok t=)' "$out" | tr '\n' '|')"
+fi
+# the state rebuilt by previous is the state the first time (the same run, bit for bit)
+first=$(grep '^ok t=' "$out")
+printf '2\n\nstatus\n' | timeout 60 "$SPRINGSIM" --plain --lesson resonance --plain-every 1000 >"$tmp/once" 2>&1
+if [ -n "$first" ] && [ "$first" = "$(grep '^ok t=' "$tmp/once")" ]; then pass; else
+    fail "previous: the step rebuilt should end where it did the first time: '$first' against '$(grep '^ok t=' "$tmp/once")'"
+fi
+# a question waits for one of its choices; a blank line does not answer it
+printf '\n7\n2\n' | timeout 60 "$SPRINGSIM" --plain --lesson resonance --plain-every 1000 >"$out" 2>&1
+if grep -q '^error the question waits for an answer: 1 to 3 (or leave)$' "$out" &&
+    grep -q "^error '7' is not a command" "$out" &&
+    grep -q '^lesson you chose 2: 0.71 Hz: sqrt(2k/m)/2pi; right$' "$out"; then pass; else
+    fail "ask: a blank line should be refused, 7 taken as a command, 2 answered: $(grep -E '^(error|lesson)' "$out" | tr '\n' '|')"
+fi
+
+# ---- --list-lessons: every built-in lesson with its title ----
+run --list-lessons
+want=$(cd "$root/lessons" && ls -- *.lesson | sed 's/\.lesson$//' | sort | tr '\n' ' ')
+got=$(awk '{ print $1 }' "$out" | tr '\n' ' ')
+if [ "$rc" -eq 0 ] && [ "$got" = "$want" ] &&
+    grep -q '^resonance  *Resonance: why one mass between two springs rings at 0.712 Hz' "$out"; then pass; else
+    fail "--list-lessons: expected $want with titles; exit $rc: $(show "$out")"
+fi
+# a lesson of the user's shadows the built-in one, and is found by name
+mkdir -p "$tmp/xdg/springsim/lessons"
+printf 'title Mine\npreset beating\nsay hello\n' >"$tmp/xdg/springsim/lessons/resonance.lesson"
+run --list-lessons
+if grep -q '^resonance  *Mine$' "$out"; then pass; else fail "a user's lesson should shadow the built-in one: $(show "$out")"; fi
+printf '' | timeout 20 "$SPRINGSIM" --plain --lesson resonance >"$out" 2>&1
+if grep -q '^say hello$' "$out" && grep -q '^lesson end of resonance' "$out"; then pass; else
+    fail "--lesson resonance should play the user's lesson first: $(show "$out")"
+fi
+rm -r "$tmp/xdg/springsim/lessons"
+
+# ---- bad lessons: FILE:LINE: what, exit 2, before anything runs ----
+# bad TEXT LINE WHAT: a lesson holding TEXT is refused naming line LINE and WHAT
+bad() {
+    printf "$1" >"$tmp/bad.lesson"
+    run --plain --lesson "$tmp/bad.lesson"
+    if [ "$rc" -eq 2 ] && [ ! -s "$out" ] && [ "$(wc -l <"$err")" -eq 1 ] &&
+        grep -qF "springsim: $tmp/bad.lesson:$2: $3" "$err"; then pass; else
+        fail "lesson '$1': expected exit 2, nothing on stdout, one line '$tmp/bad.lesson:$2: $3'; exit $rc, stdout $(show "$out"), stderr $(show "$err")"
+    fi
+}
+bad 'title T\npreset resonance\nsay a\nfrobnicate 3\n' 4 "'frobnicate' is not a command"
+bad 'title T\npreset resonance\n\nset damping -1\n' 4 "damping: '-1' is out of range"
+bad 'title T\npreset resonance\nset wave bumpy\n' 3 "wave: 'bumpy' is not a waveform"
+bad 'title T\n# a comment\npreset nonesuch\n' 3 "preset: 'nonesuch' is not a preset"
+bad 'title T\npreset resonance\nrun 20\nmode 4\n' 4 "mode: '4' is not a mode of this chain"
+bad 'title T\nset frequency 0.5\n' 2 "a lesson starts from a known chain: its first command is 'preset NAME'"
+bad 'title T\npreset resonance\nask Why?\nchoice a\nrun 1\n' 3 "ask needs two choices"
+bad 'title T\npreset resonance\nask Why?\nchoice a\nchoice b\nanswer 3\n' 6 "answer: '3' is not one of the 2 choices"
+bad 'title T\npreset resonance\nchoice a\n' 3 "choice outside a question"
+bad 'title T\npreset resonance\nexport\n' 3 "export is not allowed in a lesson"
+bad 'title T\npreset resonance\npause now\n' 3 "pause takes nothing"
+bad 'preset resonance\n' 1 "no title line"
+bad 'title T\npreset resonance\nsay \033[31mred\n' 3 'a control character (\x1b)'
+bad 'title T\nsetup\n[system]\nmasses = 99\nend\n' 4 "masses: '99' is out of range for the interactive program"
+bad 'title T\nsetup\n[system]\nmass = heavy\nend\n' 4 "mass"
+bad 'title T\nsetup\n[system]\nmasses = 2\n' 2 "setup without its 'end' line"
+# a missing file, by name and by path
+run --plain --lesson nonesuch
+if [ "$rc" -eq 2 ] && grep -qF "springsim: --lesson: 'nonesuch' is not a lesson (expected a name from --list-lessons, or a file)" "$err"; then pass; else
+    fail "--lesson nonesuch: expected exit 2 and one line; exit $rc: $(show "$err")"
+fi
+run --plain --lesson "$tmp/none.lesson"
+if [ "$rc" -eq 1 ] && grep -qF "$tmp/none.lesson: No such file or directory" "$err"; then pass; else
+    fail "--lesson MISSING-FILE: expected exit 1 naming the file; exit $rc: $(show "$err")"
+fi
+# a lesson is for the interactive program or the plain mode only
+run --headless --lesson resonance
+if [ "$rc" -eq 2 ] && grep -qF -- "--lesson: applies to the interactive program or --plain" "$err"; then pass; else
+    fail "--headless --lesson: expected exit 2; exit $rc: $(show "$err")"
+fi
+
+summary
