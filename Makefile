@@ -198,7 +198,8 @@ check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm completions | $(BUILD)/.deps-t
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 sanitize:
-	@mkdir -p $(BUILD)/san && ln -sfn $(CURDIR)/presets $(BUILD)/san/presets
+	@mkdir -p $(BUILD)/san && ln -sfn $(CURDIR)/presets $(BUILD)/san/presets && \
+	    ln -sfn $(CURDIR)/lessons $(BUILD)/san/lessons
 	$(MAKE) BUILD=$(BUILD)/san BIN=$(BUILD)/san/springsim CFLAGS="$(SAN_FLAGS)" \
 	    LDFLAGS="$(SAN_FLAGS)" DEB_CHECK=no check
 

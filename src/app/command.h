@@ -52,6 +52,7 @@ enum action {
     ACT_CURSOR_PAGE,  /* the window a window earlier or later (paused) */
     ACT_CURSOR_MASS,  /* measure the mass before or after */
     ACT_CURSOR_OFF,         /* no cursors */
+    ACT_LESSONS,   /* lesson menu */
 };
 
 /* The plain mode's commands. */

@@ -73,6 +73,26 @@ static void lay_plots(struct layout *l, int enlarged)
     l->nplots = 1;
 }
 
+int layout_caption_rows(int rows)
+{
+    return rows >= 40 ? 9 : rows >= 30 ? 8 : 7;
+}
+
+void layout_caption(struct layout *l, int rows, int enlarged, bool view)
+{
+    if (l->too_small || rows <= 0)
+        return;
+    int top = l->area.y, h = l->area.h;
+    if (rows > h - 5)
+        rows = h - 5; /* a plot of a few rows is left at the smallest size */
+    l->caption = (struct rect){top + h - rows, 0, rows, l->cols};
+    l->area.h -= rows;
+    l->controls.h -= rows;
+    l->nplots = 0;
+    if (!view)
+        lay_plots(l, enlarged);
+}
+
 void layout_compute(struct layout *l, int cols, int rows, int enlarged, bool view)
 {
     *l = (struct layout){.cols = cols, .rows = rows};

@@ -27,6 +27,7 @@ struct layout {
     int cols, rows;             /* terminal size */
     bool too_small;             /* below LAYOUT_MIN_COLS x LAYOUT_MIN_ROWS: nothing else set */
     struct rect status, scene, area, controls, hints;
+    struct rect caption;        /* a lesson's caption panel (h 0: none) */
     int nplots;                 /* plots on screen (0 while an analysis view has the area) */
     enum plot_id plot_id[PLOT_COUNT]; /* which plot each shown one is */
     struct rect plot[PLOT_COUNT];     /* their frames */
@@ -41,6 +42,15 @@ void layout_compute(struct layout *l, int cols, int rows, int enlarged, bool vie
 /* With time cursors shown on the plots: the controls' column, wider, holds the cursors'
  * readout instead, and the plots take what is left (call after layout_compute). */
 void layout_scope(struct layout *l, int enlarged);
+
+/* Rows a lesson's caption panel takes on a screen of rows (with its frame): 7, 8 or 9. */
+int layout_caption_rows(int rows);
+
+/* Takes rows (layout_caption_rows) across the whole width from the bottom of the plot
+ * area and the controls for a lesson's caption panel, so that it covers neither the plots
+ * nor the controls, and lays the plots out again in what is left (enlarged and view as
+ * layout_compute takes them). */
+void layout_caption(struct layout *l, int rows, int enlarged, bool view);
 
 /* The drawing area inside a chart's frame: right of the tick labels, above the x axis. */
 struct rect layout_drawing(struct rect frame);

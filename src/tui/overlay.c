@@ -201,6 +201,29 @@ static void draw_presets(const struct overlay *o, const struct layout *l)
                    "↑↓ choose   Enter load   Esc close");
 }
 
+static void draw_lessons(const struct overlay *o, const struct layout *l)
+{
+    int n = o->nlessons;
+    struct rect r = overlay_box(l, (n ? n : 1) + 4, 96, "Lessons");
+    if (n == 0) {
+        draw_text(r.y + 1, r.x + 2, r.w - 4, "No lessons found on the search path.");
+        return;
+    }
+    int rows = r.h - 4, first = o->lesson_sel >= rows ? o->lesson_sel - rows + 1 : 0;
+    for (int i = first; i < n && i - first < rows; i++) {
+        bool sel = i == o->lesson_sel;
+        if (sel)
+            attron(term_attr(PAIR_SELECT));
+        mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
+        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-10s %s", o->lessons[i].name,
+                    o->lessons[i].title);
+        if (sel)
+            attroff(term_attr(PAIR_SELECT));
+    }
+    draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE),
+                   "↑↓ choose   Enter start   Esc close");
+}
+
 /* What the prompt says for the text being typed. */
 static void edit_prompt(const struct overlay *o, const struct selection *sel, char *buf,
                         size_t len)
@@ -234,6 +257,9 @@ void overlay_draw(const struct overlay *o, const struct layout *l, const struct 
         break;
     case OVERLAY_PRESETS:
         draw_presets(o, l);
+        break;
+    case OVERLAY_LESSONS:
+        draw_lessons(o, l);
         break;
     case OVERLAY_EDIT: {
         char prompt[80];
@@ -273,6 +299,15 @@ void overlay_presets(struct overlay *o, const struct app *app)
     o->kind = OVERLAY_PRESETS;
 }
 
+void overlay_lessons(struct overlay *o, const struct app *app)
+{
+    free(o->lessons);
+    o->nlessons = lesson_scan(app->exe_dir, &o->lessons);
+    o->lesson_sel = 0;
+    o->chosen[0] = '\0';
+    o->kind = OVERLAY_LESSONS;
+}
+
 void overlay_edit(struct overlay *o, enum edit_target target)
 {
     o->kind = OVERLAY_EDIT;
@@ -286,6 +321,9 @@ void overlay_free(struct overlay *o)
     free(o->presets);
     o->presets = NULL;
     o->npresets = 0;
+    free(o->lessons);
+    o->lessons = NULL;
+    o->nlessons = 0;
 }
 
 /* Acts on the text typed, by what it was for; the app says what came of it. */
@@ -358,6 +396,32 @@ static unsigned preset_key(struct overlay *o, struct app *app, enum action a)
     }
 }
 
+static void lesson_key(struct overlay *o, enum action a)
+{
+    switch (a) {
+    case ACT_UP:
+        if (o->lesson_sel > 0)
+            o->lesson_sel--;
+        return;
+    case ACT_DOWN:
+        if (o->lesson_sel < o->nlessons - 1)
+            o->lesson_sel++;
+        return;
+    case ACT_ENTER:
+        o->kind = OVERLAY_NONE;
+        if (o->nlessons)
+            snprintf(o->chosen, sizeof o->chosen, "%s", o->lessons[o->lesson_sel].path);
+        return;
+    case ACT_ESCAPE:
+    case ACT_LESSONS:
+    case ACT_QUIT:
+        o->kind = OVERLAY_NONE;
+        return;
+    default:
+        return;
+    }
+}
+
 /* Scrolls the help; the screen's size bounds it when drawn. */
 static void help_key(struct overlay *o, const struct layout *l, int ch)
 {
@@ -416,6 +480,9 @@ unsigned overlay_key(struct overlay *o, struct app *app, const struct selection 
         return 0;
     case OVERLAY_PRESETS:
         return preset_key(o, app, input_action(ch, false));
+    case OVERLAY_LESSONS:
+        lesson_key(o, input_action(ch, false));
+        return 0;
     case OVERLAY_NONE:
         break;
     }

@@ -1,5 +1,6 @@
 /* overlay.h: what comes over the screen and takes the keys while it is up: the help
- * (scrollable), the preset menu, typing a value, and the replace-it confirmation. */
+ * (scrollable), the preset menu, the lesson menu, typing a value, and the replace-it
+ * confirmation. */
 #ifndef SPRINGSIM_OVERLAY_H
 #define SPRINGSIM_OVERLAY_H
 
@@ -7,10 +8,18 @@
 
 #include "../app/app.h"
 #include "../app/layout.h"
+#include "../app/lesson.h"
 #include "../app/select.h"
 #include "../core/preset.h"
 
-enum overlay_kind { OVERLAY_NONE, OVERLAY_HELP, OVERLAY_PRESETS, OVERLAY_EDIT, OVERLAY_CONFIRM };
+enum overlay_kind {
+    OVERLAY_NONE,
+    OVERLAY_HELP,
+    OVERLAY_PRESETS,
+    OVERLAY_LESSONS,
+    OVERLAY_EDIT,
+    OVERLAY_CONFIRM
+};
 
 /* What the text being typed is for. */
 enum edit_target { EDIT_CONTROL, EDIT_MASS, EDIT_DAMPING, EDIT_SPRING, EDIT_SAVE };
@@ -20,6 +29,9 @@ struct overlay {
     int help_top;                  /* first help line shown */
     struct preset_entry *presets;  /* the menu's entries */
     int npresets, preset_sel;
+    struct lesson_entry *lessons;  /* the lesson menu's entries */
+    int nlessons, lesson_sel;
+    char chosen[4400];             /* the lesson chosen (Enter), for the caller to open; "" */
     enum edit_target target;
     char edit[256];                /* text being typed */
     int edit_len;
@@ -32,6 +44,9 @@ void overlay_help(struct overlay *o);
 /* Opens the preset menu on the presets found for app, the current one selected. */
 void overlay_presets(struct overlay *o, const struct app *app);
 
+/* Opens the lesson menu on the lessons found for app. */
+void overlay_lessons(struct overlay *o, const struct app *app);
+
 /* Starts typing a value for target. */
 void overlay_edit(struct overlay *o, enum edit_target target);
 
@@ -42,7 +57,7 @@ unsigned overlay_key(struct overlay *o, struct app *app, const struct selection 
 /* Draws the overlay that is up (typing and the confirmation on the footer's row). */
 void overlay_draw(const struct overlay *o, const struct layout *l, const struct selection *sel);
 
-/* Frees the preset list. */
+/* Frees the preset and lesson lists. */
 void overlay_free(struct overlay *o);
 
 #endif

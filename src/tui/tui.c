@@ -24,6 +24,7 @@
 #include "plots.h"
 #include "readout.h"
 #include "scene.h"
+#include "teach.h"
 #include "term.h"
 #include "views.h"
 
@@ -48,6 +49,7 @@ struct tui {
     bool behind;          /* the core could not keep up */
     int backlog_frames;   /* frames in a row with output piling up unread */
     bool dragging;        /* a mass is being dragged with the mouse */
+    struct teach teach;   /* a lesson being played, its caption panel */
 };
 
 static double now_s(void)
@@ -71,6 +73,9 @@ static void relayout(struct tui *t)
     layout_compute(&t->layout, cols, rows, t->enlarged, t->views.shown != VIEW_PLOTS);
     if (cursors_shown(t))
         layout_scope(&t->layout, t->enlarged);
+    if (teach_shown(&t->teach))
+        layout_caption(&t->layout, layout_caption_rows(rows), t->enlarged,
+                       t->views.shown != VIEW_PLOTS);
     if (!t->layout.too_small) {
         scene_place(&t->scene, &t->layout);
         plots_place(&t->plots, &t->layout);
@@ -127,6 +132,7 @@ static double draw(struct tui *t, bool refresh)
         struct hint_state h = {t->enlarged, t->views.shown != VIEW_PLOTS,
                                t->sel.focus == FOCUS_MODES, cursors_shown(t)};
         panel_hints(l, &t->app, &h);
+        teach_draw(&t->teach, l);
         overlay_draw(&t->overlay, l, &t->sel);
     }
     wnoutrefresh(stdscr);
@@ -217,6 +223,36 @@ static void save_view(struct tui *t)
         fig_save_view(&t->app, pics, n, NULL);
 }
 
+/* What a lesson's `view` asked for, shown (the plots' grid, one enlarged, a view). */
+static void show_view(struct tui *t, int v)
+{
+    static const enum view views[CV_COUNT] = {
+        [CV_MODES] = VIEW_MODES, [CV_RESPONSE] = VIEW_RESPONSE, [CV_ENERGY] = VIEW_ENERGY,
+        [CV_SPECTRUM] = VIEW_SPECTRUM};
+    if (v < CV_MODES) {
+        t->enlarged = v == CV_PLOTS ? -1 : v - CV_X;
+        t->views.shown = VIEW_PLOTS;
+        if (t->sel.focus == FOCUS_MODES)
+            t->sel.focus = FOCUS_CONTROLS;
+        relayout(t);
+    } else if (t->views.shown != views[v]) {
+        toggle_view(t, views[v]);
+    }
+}
+
+/* After the lesson took a key or started: the view it asked for, and the screen laid out
+ * again when its panel came or went. */
+static void after_teach(struct tui *t, bool was_shown)
+{
+    if (t->teach.view >= 0 && t->teach.view < CV_COUNT)
+        show_view(t, t->teach.view);
+    t->teach.view = -1;
+    if (teach_shown(&t->teach) != was_shown)
+        relayout(t);
+    select_clamp(&t->sel, t->app.model);
+    t->plots_dirty = true;
+}
+
 /* Acts on a; false to quit. */
 static bool on_action(struct tui *t, enum action a, int ch)
 {
@@ -246,6 +282,9 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_PRESETS:
         overlay_presets(&t->overlay, app);
+        break;
+    case ACT_LESSONS:
+        overlay_lessons(&t->overlay, app);
         break;
     case ACT_HELP:
         overlay_help(&t->overlay);
@@ -436,11 +475,21 @@ static bool on_key(struct tui *t, int ch)
             on_mouse(t);
         return true;
     }
+    bool shown = teach_shown(&t->teach);
     if (t->overlay.kind != OVERLAY_NONE) {
         unsigned changed = overlay_key(&t->overlay, &t->app, &t->sel, &t->layout, ch);
         if (changed & APP_CHANGED_SIZE)
             select_clamp(&t->sel, t->app.model);
         t->plots_dirty = true;
+        if (t->overlay.chosen[0]) {
+            teach_open(&t->teach, t->overlay.chosen, &t->app);
+            t->overlay.chosen[0] = '\0';
+            after_teach(t, shown);
+        }
+        return true;
+    }
+    if (teach_key(&t->teach, &t->app, ch)) {
+        after_teach(t, shown);
         return true;
     }
     return on_action(t, input_action(ch, cursors_shown(t)), ch);
@@ -525,6 +574,7 @@ static void tui_free(struct tui *t)
     plots_free(&t->plots);
     views_free(&t->views);
     overlay_free(&t->overlay);
+    teach_free(&t->teach);
     app_free(&t->app);
 }
 
@@ -536,7 +586,6 @@ bool tui_dumb_terminal(void)
 int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson)
 {
     static struct tui t;
-    (void)lesson;
     memset(&t, 0, sizeof t);
     t.enlarged = -1;
     if (app_init(&t.app, cfg, exe_dir) != 0) {
@@ -548,7 +597,12 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         app_free(&t.app);
         return EXIT_FAILURE;
     }
+    t.teach.view = -1;
     relayout(&t);
+    if (lesson) {
+        teach_start(&t.teach, lesson, &t.app);
+        after_teach(&t, false);
+    }
     if (t.app.message[0] == '\0')
         app_say(&t.app, false, "space starts; ? lists every key");
 

@@ -56,7 +56,7 @@ trap 'exit 1' HUP INT TERM
 
 # The program never sees the user's presets or tmux.
 mkdir -p "$tmp/xdg"
-unset SPRINGSIM_PRESETS NO_COLOR COLORTERM TMUX TMUX_PANE
+unset SPRINGSIM_PRESETS SPRINGSIM_LESSONS NO_COLOR COLORTERM TMUX TMUX_PANE
 
 ESC=$(printf '\033')
 
@@ -64,7 +64,7 @@ ESC=$(printf '\033')
 cat >"$tmp/pane.sh" <<'EOF'
 dir=$1 bin=$2 name=$3
 shift 3
-unset SPRINGSIM_PRESETS LC_CTYPE LC_MESSAGES LC_NUMERIC LANGUAGE NO_COLOR COLORTERM
+unset SPRINGSIM_PRESETS SPRINGSIM_LESSONS LC_CTYPE LC_MESSAGES LC_NUMERIC LANGUAGE NO_COLOR COLORTERM
 while [ $# -gt 0 ] && [ "$1" != -- ]; do
     export "$1"
     shift

@@ -1,0 +1,116 @@
+#!/bin/sh
+# tests/tui-lessons.sh: lessons in the interactive program, in a real terminal (tmux) at
+# 80x24 and 120x40: the caption panel below the plots and the controls (never over them),
+# the question and its choices readable, a digit answers, space goes on, ',' goes back a
+# step (to the state that step left), Esc leaves with the chain as it is; L opens the
+# lesson menu, which reads (every lesson's name and title), and starts the one chosen; a
+# bad lesson chosen there is refused with its line. Screens are kept in
+# $SHOTS (if set) for a person to look at. Run from the repository root as
+# `sh tests/tui-lessons.sh`, SPRINGSIM naming the binary. Ends with
+# "tui-lessons: N passed, M failed".
+NAME=tui-lessons
+. "$(dirname "$0")/lib/check.sh"
+. "$(dirname "$0")/lib/tmux.sh"
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+start l80 80 24 -- --lesson resonance
+start l120 120 40 -- --lesson resonance
+start m80 80 24
+start m120 120 40
+mkdir -p "$tmp/xdg-bad/springsim/lessons"
+printf 'title Broken\npreset resonance\nset frequency 0.5\nwobble 3\n' \
+    >"$tmp/xdg-bad/springsim/lessons/broken.lesson"
+start bad 80 24 "XDG_CONFIG_HOME=$tmp/xdg-bad"
+shot() { [ -n "$SHOTS" ] && mkdir -p "$SHOTS" && cp "$scr" "$SHOTS/$1.txt"; }
+
+# row N: the first screen row (1-based) holding TEXT; 0 if none
+row() { grep -nF -- "$1" "$scr" | head -n 1 | cut -d: -f1; }
+# the last row of the plots' frames (their bottom edge) and of the controls' frame
+plots_bottom() { grep -n '^└' "$scr" | sed -n '2p' | cut -d: -f1; }
+
+for size in 80 120; do
+    S=l$size
+    cols=$size
+    top=
+    if ! up "$S"; then continue; fi
+    wait_for 'Lesson 1/7' 5
+    shot "lesson-$size-ask"
+    top=$(row 'Lesson 1/7')
+    # the panel: below every plot and the controls' frame, across the screen, its
+    # question and the three choices in it, and its keys
+    if [ -n "$top" ] && [ "$(plots_bottom)" -lt "$top" ] && has 'At what frequency will the mass swing the most?' &&
+        has '1) 0.50 Hz' && has '2) 0.71 Hz' && has '3) 1.00 Hz' && has '1-3 answers' &&
+        has 'Esc leaves' && has Controls && has 'Displacement'; then pass; else
+        fail "$S: the caption panel should sit below the plots and controls with the question, its three choices and its keys; screen: $(brief)"
+    fi
+    # the panel's frame is whole: both its corners on its top row, the right one in the
+    # last column
+    if sed -n "${top}p" "$scr" | grep -qE '^┌.*┐$' && [ "$(sed -n "${top}p" "$scr" | wc -m)" -eq $((cols + 1)) ]; then pass; else
+        fail "$S: the caption panel's top edge should span the screen: $(sed -n "${top}p" "$scr")"
+    fi
+    keys 2
+    if wait_for 'You chose 2: right.' 3 && has 'Lesson 2/7' && has 'modes: 1: 0.7118 Hz'; then pass; else
+        fail "$S: 2 should answer the question (right), go on to step 2 and show modes' answer; screen: $(brief)"
+    fi
+    keys Space
+    if wait_for 'Lesson 3/7' 3 && wait_re 't = 30\.00 s' 3 && has "First the web page's 0.5 Hz"; then pass; else
+        fail "$S: space should go on to step 3, the 0.5 Hz run done at once (t = 30.00 s); screen: $(brief)"
+    fi
+    shot "lesson-$size-step3"
+    keys ,
+    if wait_for 'back to step 2 of 7' 3 && has 'Lesson 2/7' && wait_re 't = 0\.00 s' 3; then pass; else
+        fail "$S: , should go back to step 2 (t = 0.00 s again); screen: $(brief)"
+    fi
+    keys Space Space
+    if wait_for 'Lesson 4/7' 3 && has 'Now 0.60 Hz' && wait_re 't = 30\.00 s' 3; then pass; else
+        fail "$S: space twice should reach step 4 (0.60 Hz, run to t = 30); screen: $(brief)"
+    fi
+    keys Escape
+    if wait_for 'left the lesson resonance: the chain is as it is' 3 && lacks 'Lesson 4/7' &&
+        has_re 't = 30\.00 s' && has '0.600 Hz'; then pass; else
+        fail "$S: Esc should leave the lesson, the chain as it is (t = 30.00, 0.600 Hz); screen: $(brief)"
+    fi
+    # the keys are the program's own again: space starts it
+    keys Space
+    if wait_re 'Running|t = 3[0-9]\.[0-9]*[1-9][0-9]* s' 3; then pass; else
+        fail "$S: after the lesson, space should start the chain; screen: $(brief)"
+    fi
+done
+
+# ---- L: the lesson menu reads, and starts the lesson chosen ----
+for size in 80 120; do
+    S=m$size
+    if ! up "$S"; then continue; fi
+    keys L
+    wait_for 'Lessons' 3
+    shot "menu-$size"
+    missing=
+    for f in "$root"/lessons/*.lesson; do
+        n=$(basename "$f" .lesson)
+        title=$(sed -n 's/^title //p' "$f")
+        # the name and its title (the whole title at 120 columns, its first 40 at 80)
+        grep -qE "│ *$n +$(printf '%s' "$title" | cut -c 1-40 | sed 's/[][\.*^$()+?{}|/]/\\&/g')" "$scr" || missing="$missing $n"
+        if [ "$size" = 120 ] && ! has "$title"; then missing="$missing $n(title)"; fi
+    done
+    if [ -z "$missing" ] && has 'Enter start'; then pass; else
+        fail "$S: the lesson menu should list every lesson with its title; missing:$missing; screen: $(brief)"
+    fi
+    keys Down Enter
+    if wait_for 'Lesson 1/3: Damping' 3 && has 'Each swing is smaller than the one before'; then pass; else
+        fail "$S: Down, Enter should start the second lesson (damping); screen: $(brief)"
+    fi
+done
+
+# ---- a bad lesson from the menu: refused with its line, nothing started ----
+S=bad
+if up bad; then
+    keys L
+    wait_for 'broken' 3
+    keys Down Enter
+    if wait_for 'broken.lesson:4:' 3 && has "'wobble' is not" && lacks 'Lesson 1/' &&
+        has_re 't = 0\.00 s' && lacks 'Broken'; then pass; else
+        fail "bad: a lesson with an unknown command should be refused with FILE:4 and nothing run; screen: $(brief)"
+    fi
+fi
+
+summary
