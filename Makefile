@@ -250,7 +250,8 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@BENCH_KEYS='F ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'spectrum view (F)' ./$(BIN)
 	@BENCH_KEYS='F]]]] ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
 	    'spectrum view, 10x (a 60 s record)' ./$(BIN)
-	@BENCH_KEYS='gjjjjLLLLL ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
+	@BENCH_KEYS="gjjjj$$(printf '\033[5~\033[5~\033[5~\033[5~\033[5~') " \
+	    $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
 	    'ghost (g), damping 0.1 to 0.6' ./$(BIN)
 	@BENCH_KEYS='m ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) 'modes view (m), swinging' \
 	    ./$(BIN)

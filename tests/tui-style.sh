@@ -91,8 +91,8 @@ for s in ascii preset; do
         grep -qF 'Acceleration (m/s^2) ' "$scr" && grep -qF 'x-a (m, m/s^2) ' "$scr" && pass ||
             fail "$s: a plot title spelled in ASCII is cut: $(grep -o '[0-9] [A-Za-z-]* ([^-]*' "$scr" | tr '\n' '|')"
         # ... and the help's keys: the column is as wide as the widest spelled in ASCII
-        grep -qF '| PgDn Shift+Left H  decrease, coarse' "$tmp/$s.help" &&
-            grep -qF '| PgUp Shift+Right increase, coarse' "$tmp/$s.help" && pass ||
+        grep -qF '| PgDn Shift+Left H decrease, coarse' "$tmp/$s.help" &&
+            grep -qF '| PgUp Shift+Right  increase, coarse' "$tmp/$s.help" && pass ||
             fail "$s: the help's keys cut in ASCII: $(grep -F 'coarse' "$tmp/$s.help" | tr '\n' '|')"
     fi
 done
