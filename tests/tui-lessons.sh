@@ -21,6 +21,7 @@ mkdir -p "$tmp/xdg-bad/springsim/lessons"
 printf 'title Broken\npreset resonance\nset frequency 0.5\nwobble 3\n' \
     >"$tmp/xdg-bad/springsim/lessons/broken.lesson"
 start bad 80 24 "XDG_CONFIG_HOME=$tmp/xdg-bad"
+start rec 80 24 -- -p 3-mass-chain --record "$tmp/rec.lesson"
 shot() { [ -n "$SHOTS" ] && mkdir -p "$SHOTS" && cp "$scr" "$SHOTS/$1.txt"; }
 
 # row N: the first screen row (1-based) holding TEXT; 0 if none
@@ -111,6 +112,56 @@ if up bad; then
         has_re 't = 0\.00 s' && lacks 'Broken'; then pass; else
         fail "bad: a lesson with an unknown command should be refused with FILE:4 and nothing run; screen: $(brief)"
     fi
+fi
+
+# ---- --record in the program: keys become commands; --replay ends in that state ----
+S=rec
+if up rec; then
+    keys Space ]
+    wait_t 1
+    keys m
+    wait_for 'Modes' 3
+    keys Down Enter
+    wait_for 'started in mode 2' 3
+    keys Space
+    wait_for Paused 3
+    keys . . , R
+    wait_for 'random initial positions' 3
+    keys m
+    wait_gone 'Modes' 3
+    keys Tab Right Right
+    keys c
+    wait_for 'c (N' 3
+    text 0.7
+    keys Enter
+    wait_for 'c = 0.7' 3
+    keys L
+    if wait_for 'no lessons while recording' 3; then pass; else
+        fail "rec: L while recording should say no lessons; screen: $(brief)"
+    fi
+    keys Space
+    wait_t 1.5
+    keys q
+    poll 5 ended
+    f=$tmp/rec.lesson
+    missing=
+    for want in '^start$' '^faster$' '^view modes$' '^mode 2$' '^step$' '^back$' \
+        '^random [0-9]+$' '^place 1 -?[0-9.e-]+$' '^element c 1 0.7$' '^expect t=0x'; do
+        grep -qE "$want" "$f" 2>/dev/null || missing="$missing $want"
+    done
+    if [ -z "$missing" ] && ! grep -q '^pause$' "$f"; then pass; else
+        fail "rec: the recording should hold the keys as commands; missing:$missing; file: $(sed -n '/^end/,$p' "$f" 2>/dev/null | tr '\n' '|')"
+    fi
+    "$SPRINGSIM" --plain --replay "$f" </dev/null >"$tmp/replay.out" 2>&1
+    if grep -q '^ok replayed: the state at t = [0-9.]* s is the one recorded, bit for bit$' "$tmp/replay.out"; then pass; else
+        fail "rec: --plain --replay should end in the recorded state bit for bit: $(grep -E '^(error|ok replayed)' "$tmp/replay.out" | head -c 400)"
+    fi
+    start replay 80 24 -- --replay "$f"
+    S=replay
+    if up replay && wait_for 'is the one recorded, bit for bit' 5 && has 'the end'; then pass; else
+        fail "replay: --replay in the program should end in the recorded state bit for bit; screen: $(brief)"
+    fi
+    shot "replay-80"
 fi
 
 summary

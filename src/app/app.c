@@ -509,6 +509,13 @@ unsigned app_random_seed(struct app *app, uint64_t seed)
 
 unsigned app_place_mass(struct app *app, int i, double X)
 {
+    if (i < 0 || i >= app->model->n)
+        return 0;
+    return app_place_start(app, i, X - model_equilibrium(app->model, i));
+}
+
+unsigned app_place_start(struct app *app, int i, double x0)
+{
     const struct model *m = app->model;
     int n = m->n;
     if (i < 0 || i >= n)
@@ -517,7 +524,7 @@ unsigned app_place_mass(struct app *app, int i, double X)
         app_say(app, false, "pause first (space) to move a mass");
         return 0;
     }
-    double w = model_block_width(m);
+    double w = model_block_width(m), eq = model_equilibrium(m, i);
     const double *x = sim_x(app->sim);
     double lo = 0.5 * w, hi = MODEL_LENGTH - 0.5 * w;
     if (i > 0)
@@ -528,10 +535,10 @@ unsigned app_place_mass(struct app *app, int i, double X)
         hi = MODEL_LENGTH + 2.0;
     if (hi < lo)
         return 0;
-    X = fmin(fmax(X, lo), hi);
+    x0 = fmin(fmax(x0, lo - eq), hi - eq);
     /* The chain as it stands becomes the initial condition, at rest, at t = 0. */
     memcpy(app->cfg.x0.v, x, (size_t)n * sizeof *x);
-    app->cfg.x0.v[i] = X - model_equilibrium(m, i);
+    app->cfg.x0.v[i] = x0;
     app->cfg.x0.count = n;
     for (int j = 0; j < n; j++)
         app->cfg.v0.v[j] = 0.0;

@@ -100,6 +100,8 @@ struct app {
     long capped;             /* velocities the cap has acted on since t = 0 */
     double first_cap;        /* when it first did (s) */
     char preset[64];         /* name of the preset loaded, or "" */
+    char preset_file[4400];  /* the file it was loaded from (app_load_preset), or "" */
+    unsigned loads;          /* presets loaded from files so far */
     char message[200];       /* one line for the status bar, "" for none */
     bool message_is_error;   /* shown as a warning */
     const char *exe_dir;     /* for the preset search path */
@@ -143,6 +145,10 @@ unsigned app_random(struct app *app);
 
 /* The same from a given seed (the same seed gives the same positions). */
 unsigned app_random_seed(struct app *app, uint64_t seed);
+
+/* Starts mass i displaced by x0 (m) while paused, kept inside its neighbours and the
+ * walls; the others start where they stand; everything restarts at t = 0, at rest. */
+unsigned app_place_start(struct app *app, int i, double x0);
 
 /* Moves mass i's initial position by dx (m) while paused, keeping it inside its
  * neighbours and the walls; everything restarts at t = 0 from there, at rest. */

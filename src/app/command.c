@@ -29,6 +29,12 @@ const struct command commands[CMD_COUNT] = {
     [CMD_PRESETS] = {"presets", ACT_PRESETS, "", "the presets' names"},
     [CMD_MODES] = {"modes", ACT_MODES, "", "each natural frequency with its damping ratio and Q"},
     [CMD_MODE] = {"mode", ACT_ENTER, "K", "start the chain in mode K, at rest, running"},
+    [CMD_PLACE] = {"place", ACT_LEFT, "MASS X0",
+                   "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
+                   "where they stand, at rest, t = 0 (paused)"},
+    [CMD_ELEMENT] = {"element", ACT_ENTER, "m|c|k I VALUE",
+                     "one element: mass I's mass (m) or damping (c), or spring I's constant "
+                     "(k; spring 0 is the wall's, spring N the motor's)"},
     [CMD_NEAREST] = {"nearest", ACT_NEAREST, "", "drive at the nearest natural frequency"},
     [CMD_SWEEP] = {"sweep", ACT_SWEEP, "", "start / stop a sine-sweep experiment"},
     [CMD_FASTER] = {"faster", ACT_FASTER, "", "playback faster"},
@@ -360,6 +366,44 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
             return REPLY_ERROR;
         }
         return from_message(app, app_start_mode(app, k - 1), answer, len);
+    }
+    case CMD_PLACE: {
+        char *x = rest + strcspn(rest, " \t");
+        if (*x)
+            *x++ = '\0';
+        x += strspn(x, " \t");
+        int k = whole(rest, app->model->n);
+        double x0;
+        if (!k || !*x || config_parse_number(x, &x0)) {
+            config_quote(k ? x : rest, strlen(k ? x : rest), q, sizeof q);
+            snprintf(answer, len, "place: %s is not %s (expected place MASS X0, 1 <= MASS <= "
+                     "%d, X0 in m)", q, k ? "a displacement" : "a mass of this chain",
+                     app->model->n);
+            return REPLY_ERROR;
+        }
+        return from_message(app, app_place_start(app, k - 1, x0), answer, len);
+    }
+    case CMD_ELEMENT: {
+        char *i = rest + strcspn(rest, " \t"), *v;
+        if (*i)
+            *i++ = '\0';
+        i += strspn(i, " \t");
+        v = i + strcspn(i, " \t");
+        if (*v)
+            *v++ = '\0';
+        v += strspn(v, " \t");
+        int n = app->model->n;
+        char kind = strlen(rest) == 1 ? rest[0] : 0;
+        double idx;
+        bool spring = kind == 'k';
+        if ((kind != 'm' && kind != 'c' && kind != 'k') || config_parse_number(i, &idx) ||
+            idx != floor(idx) || idx < (spring ? 0 : 1) || idx > n || !*v) {
+            snprintf(answer, len, "element: expected element m|c|k I VALUE (mass I from 1 to "
+                     "%d: m its mass, c its damping; k spring I from 0 to %d)", n, n);
+            return REPLY_ERROR;
+        }
+        return from_message(app, app_set_element(app, kind, (int)idx - !spring, v), answer,
+                            len);
     }
     case CMD_NEAREST:
         changed = app_nearest_mode(app);

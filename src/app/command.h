@@ -68,6 +68,8 @@ enum command_id {
     CMD_PRESETS,
     CMD_MODES,
     CMD_MODE,
+    CMD_PLACE,
+    CMD_ELEMENT,
     CMD_NEAREST,
     CMD_SWEEP,
     CMD_FASTER,

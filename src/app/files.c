@@ -55,7 +55,12 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
         app_say(app, true, "%s", err);
         return 0;
     }
-    return load_config(app, &next, path, name);
+    unsigned what = load_config(app, &next, path, name);
+    if (what) {
+        snprintf(app->preset_file, sizeof app->preset_file, "%s", path);
+        app->loads++;
+    }
+    return what;
 }
 
 unsigned app_load_preset_text(struct app *app, const char *path, const char *text, size_t size,

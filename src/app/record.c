@@ -2,6 +2,8 @@
 #include "record.h"
 
 #include <errno.h>
+#include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -17,11 +19,11 @@
 #define VERSION "0.1.0"
 #endif
 
+/* Not pause: in a lesson it waits for the user, and every run ends paused anyway. */
 bool record_wants(int cmd)
 {
     switch ((enum command_id)cmd) {
     case CMD_START:
-    case CMD_PAUSE:
     case CMD_STEP:
     case CMD_BACK:
     case CMD_RESET:
@@ -29,6 +31,8 @@ bool record_wants(int cmd)
     case CMD_SET:
     case CMD_PRESET:
     case CMD_MODE:
+    case CMD_PLACE:
+    case CMD_ELEMENT:
     case CMD_NEAREST:
     case CMD_SWEEP:
     case CMD_FASTER:
@@ -68,22 +72,28 @@ int record_start(struct record *r, const char *path, const struct app *app, char
     strftime(when, sizeof when, "%Y-%m-%d %H:%M", localtime(&now));
     fprintf(r->mem, "# A session recorded by springsim %s (--record), a lesson file:\n"
             "# springsim --replay FILE plays it back to the state on its last line.\n"
-            "title Recorded %s\nsetup\n", VERSION, when);
+            "title Recorded %s\nsay A session recorded with --record: played back, it "
+            "ends where the recording ended.\nsetup\n", VERSION, when);
     preset_write(r->mem, &app->cfg, app->model);
     fputs("end\n", r->mem);
     r->t = sim_time(app->sim);
     return 0;
 }
 
-void record_time(struct record *r, const struct app *app)
+/* The time run up to t, as a run line. */
+static void run_to(struct record *r, double t)
 {
-    double t = sim_time(app->sim);
     if (!r->mem || !(t > r->t))
         return;
     char num[32];
     config_format_exact(t - r->t, num, sizeof num);
     fprintf(r->mem, "run %s\n", num);
     r->t = t;
+}
+
+void record_time(struct record *r, const struct app *app)
+{
+    run_to(r, sim_time(app->sim));
 }
 
 void record_line(struct record *r, const struct app *app, const char *line)
@@ -121,6 +131,135 @@ void record_command(struct record *r, const struct app *app, const char *line)
         text[o < sizeof text ? o : sizeof text - 1] = '\0';
     }
     record_line(r, app, text);
+}
+
+void record_mark(struct record *r, const struct app *app)
+{
+    struct record_mark *k = &r->mark;
+    const struct model *m = app->model;
+    if (!r->mem)
+        return;
+    k->t = sim_time(app->sim);
+    k->n = m->n;
+    k->dt = app->cfg.dt;
+    k->amplitude = m->motor.amplitude;
+    k->frequency = m->motor.frequency;
+    k->speed = app->speed;
+    k->integrator = (int)app->cfg.integrator;
+    k->boundary = (int)m->boundary;
+    k->wave = (int)m->motor.wave;
+    k->low_bandwidth = app->cfg.low_bandwidth;
+    k->sweeping = app->sweep->active;
+    k->mass = app->cfg.mass;
+    k->damping = app->cfg.damping;
+    k->spring = app->cfg.spring;
+    for (int i = 0; i < m->n && i < CONFIG_INTERACTIVE_MAX_MASSES; i++) {
+        k->x[i] = sim_x(app->sim)[i];
+        k->x0[i] = app->cfg.x0.count ? app->cfg.x0.v[app->cfg.x0.count == 1 ? 0 : i] : 0.0;
+    }
+    k->loads = app->loads;
+}
+
+/* Writes a line of the changes of one key: the time run before the key first. */
+static void put(struct record *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void put(struct record *r, const char *fmt, ...)
+{
+    va_list ap;
+    run_to(r, r->mark.t);
+    va_start(ap, fmt);
+    vfprintf(r->mem, fmt, ap);
+    va_end(ap);
+    fputc('\n', r->mem);
+    r->lines++;
+}
+
+/* Value i of a per-element list as the settings hold it. */
+static double item(const struct config_list *l, int i)
+{
+    return l->count ? l->v[l->count == 1 ? 0 : i] : NAN;
+}
+
+/* A per-element list changed: one value for all (the control), or elements one by one. */
+static void put_list(struct record *r, const struct config_list *was, const struct config_list *now,
+                     int count, const char *control, char kind)
+{
+    char num[32];
+    if (now->count == 1) {
+        if (was->count != 1 || was->v[0] != now->v[0]) {
+            config_format_exact(now->v[0], num, sizeof num);
+            put(r, "set %s %s", control, num);
+        }
+        return;
+    }
+    for (int i = 0; i < count; i++) {
+        if (item(was, i) == item(now, i))
+            continue;
+        config_format_exact(item(now, i), num, sizeof num);
+        put(r, "element %c %d %s", kind, kind == 'k' ? i : i + 1, num);
+    }
+}
+
+void record_changes(struct record *r, const struct app *app, const char *cmd)
+{
+    const struct record_mark *k = &r->mark;
+    const struct model *m = app->model;
+    char num[32];
+    if (!r->mem)
+        return;
+    if (cmd) {
+        if (strcmp(cmd, "random") == 0)
+            put(r, "random %llu", (unsigned long long)app->cfg.seed);
+        else
+            put(r, "%s", cmd);
+    } else if (app->loads != k->loads) {
+        put(r, "preset %s", app->preset_file);
+    } else if (m->n != k->n) {
+        put(r, "set masses %d", m->n);
+    } else {
+        if (app->cfg.dt != k->dt) {
+            config_format_exact(app->cfg.dt, num, sizeof num);
+            put(r, "set dt %s", num);
+        }
+        if ((int)app->cfg.integrator != k->integrator)
+            put(r, "set integrator %s", integrator_name(app->cfg.integrator));
+        if ((int)m->boundary != k->boundary)
+            put(r, "set boundary %s", model_boundary_name(m->boundary));
+        if ((int)m->motor.wave != k->wave)
+            put(r, "set wave %s", motor_wave_name(m->motor.wave));
+        put_list(r, &k->mass, &app->cfg.mass, m->n, "mass", 'm');
+        put_list(r, &k->damping, &app->cfg.damping, m->n, "damping", 'c');
+        put_list(r, &k->spring, &app->cfg.spring, m->n + 1, "spring", 'k');
+        if (m->motor.amplitude != k->amplitude) {
+            config_format_exact(m->motor.amplitude, num, sizeof num);
+            put(r, "set amplitude %s", num);
+        }
+        /* A sweep ended by another change gives the user's frequency back by itself. */
+        if (m->motor.frequency != k->frequency && !(k->sweeping && !app->sweep->active)) {
+            config_format_exact(m->motor.frequency, num, sizeof num);
+            put(r, "set frequency %s", num);
+        }
+        if (app->speed != k->speed) {
+            config_format_exact(app->speed, num, sizeof num);
+            put(r, "set speed %s", num);
+        }
+        if (app->cfg.low_bandwidth != k->low_bandwidth)
+            put(r, "set bandwidth %s", app->cfg.low_bandwidth ? "low" : "normal");
+        /* A mass placed (the others start where the chain stood): the one whose start is
+         * not where it stood, or the first if it was put back there. */
+        bool moved = false;
+        for (int i = 0; i < m->n && app->cfg.x0.count == m->n; i++)
+            moved |= app->cfg.x0.v[i] != k->x0[i];
+        int placed = 0;
+        for (int i = 0; moved && i < m->n; i++)
+            if (app->cfg.x0.v[i] != k->x[i])
+                placed = i;
+        if (moved) {
+            config_format_exact(app->cfg.x0.v[placed], num, sizeof num);
+            put(r, "place %d %s", placed + 1, num);
+        }
+    }
+    if (r->t == k->t)
+        r->t = sim_time(app->sim);
 }
 
 void record_abandon(struct record *r)

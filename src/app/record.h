@@ -11,9 +11,24 @@
 #include <stdbool.h>
 #include <stdio.h>
 
+#include "../core/config.h"
+
 struct app;
 
 #define RECORD_RUN_MAX 500.0 /* simulated seconds of one run line, at most */
+
+/* The chain's settings just before a key, to tell what the key changed. */
+struct record_mark {
+    double t;                            /* the simulated time then */
+    int n;                               /* masses */
+    double dt, amplitude, frequency, speed;
+    int integrator, boundary, wave;
+    bool low_bandwidth, sweeping;
+    struct config_list mass, damping, spring; /* as the settings hold them */
+    double x[CONFIG_INTERACTIVE_MAX_MASSES];  /* the chain's displacements */
+    double x0[CONFIG_INTERACTIVE_MAX_MASSES]; /* its initial ones */
+    unsigned loads;                      /* presets loaded so far */
+};
 
 struct record {
     char path[4400];  /* the file written at the end */
@@ -23,6 +38,7 @@ struct record {
     size_t size;      /* its bytes */
     double t;         /* the simulated time the text has reached */
     int lines;        /* commands written */
+    struct record_mark mark; /* before the key being handled (record_mark) */
 };
 
 /* Starts recording app, its chain as it is now, for path: 0, or -1 with "PATH: reason"
@@ -42,6 +58,15 @@ void record_line(struct record *r, const struct app *app, const char *line);
  * random with the seed it drew, the rest as typed. */
 void record_command(struct record *r, const struct app *app, const char *line);
 
+/* Before a key or a mouse event of the interactive program: what the chain is now. */
+void record_mark(struct record *r, const struct app *app);
+
+/* After it: cmd, the command the key stands for (start, step, mode 2, view modes, ...),
+ * if it did something; or, for NULL, every setting it changed, as the commands that
+ * change them the same way (set, element, place, preset), each after the time run before
+ * the key. */
+void record_changes(struct record *r, const struct app *app, const char *cmd);
+
 /* Ends it: the time run, the expect line, the file written whole. 0, or -1 with "PATH:
  * reason" in err (the temporary file removed). */
 int record_finish(struct record *r, const struct app *app, char *err, size_t errlen);
@@ -50,7 +75,7 @@ int record_finish(struct record *r, const struct app *app, char *err, size_t err
 void record_abandon(struct record *r);
 
 /* Whether the plain mode's command cmd (enum command_id) changes the chain or what is
- * shown, and so is recorded. */
+ * shown, and so is recorded (not pause, which in a lesson waits for the user). */
 bool record_wants(int cmd);
 
 #endif

@@ -14,6 +14,7 @@
 
 #include "../app/ghost.h"
 #include "../app/layout.h"
+#include "../app/record.h"
 #include "../app/scope.h"
 #include "../app/select.h"
 #include "../fig/save.h"
@@ -50,6 +51,8 @@ struct tui {
     int backlog_frames;   /* frames in a row with output piling up unread */
     bool dragging;        /* a mass is being dragged with the mouse */
     struct teach teach;   /* a lesson being played, its caption panel */
+    struct record rec;    /* --record: the session being written */
+    char said[64];        /* the command the key being handled stands for, or "" */
 };
 
 static double now_s(void)
@@ -253,6 +256,70 @@ static void after_teach(struct tui *t, bool was_shown)
     t->plots_dirty = true;
 }
 
+/* What is shown, as the view command names it. */
+static const char *view_name(const struct tui *t)
+{
+    static const int of[] = {[VIEW_PLOTS] = CV_PLOTS, [VIEW_MODES] = CV_MODES,
+                             [VIEW_RESPONSE] = CV_RESPONSE, [VIEW_ENERGY] = CV_ENERGY,
+                             [VIEW_SPECTRUM] = CV_SPECTRUM};
+    if (t->views.shown == VIEW_PLOTS && t->enlarged >= 0)
+        return command_views[CV_X + t->enlarged];
+    return command_views[of[t->views.shown]];
+}
+
+/* The command action a stood for, for --record, once it has done what it did (changed:
+ * what it changed but the message; 0 when it did nothing). */
+static void say_command(struct tui *t, enum action a, unsigned changed)
+{
+    const struct app *app = &t->app;
+    const char *word = NULL;
+    switch (a) {
+    case ACT_RUN:
+        /* pause is not written: in a lesson it waits for the user (every run ends
+         * paused) */
+        word = changed && app->running ? "start" : NULL;
+        break;
+    case ACT_STEP:
+        word = changed ? "step" : NULL;
+        break;
+    case ACT_BACK:
+        word = changed ? "back" : NULL;
+        break;
+    case ACT_RESET:
+        word = "reset";
+        break;
+    case ACT_RANDOM:
+        word = "random";
+        break;
+    case ACT_NEAREST:
+        word = changed ? "nearest" : NULL;
+        break;
+    case ACT_SWEEP:
+        word = changed ? "sweep" : NULL;
+        break;
+    case ACT_SLOWER:
+    case ACT_FASTER:
+        word = changed ? a == ACT_SLOWER ? "slower" : "faster" : NULL;
+        break;
+    case ACT_ENTER:
+        if (t->sel.focus == FOCUS_MODES && changed)
+            snprintf(t->said, sizeof t->said, "mode %d", t->sel.mode + 1);
+        return;
+    case ACT_MODES:
+    case ACT_RESPONSE:
+    case ACT_ENERGY:
+    case ACT_SPECTRUM:
+    case ACT_ENLARGE:
+    case ACT_GRID:
+        snprintf(t->said, sizeof t->said, "view %s", view_name(t));
+        return;
+    default:
+        return;
+    }
+    if (word)
+        snprintf(t->said, sizeof t->said, "%s", word);
+}
+
 /* Acts on a; false to quit. */
 static bool on_action(struct tui *t, enum action a, int ch)
 {
@@ -284,7 +351,11 @@ static bool on_action(struct tui *t, enum action a, int ch)
         overlay_presets(&t->overlay, app);
         break;
     case ACT_LESSONS:
-        overlay_lessons(&t->overlay, app);
+        if (t->rec.mem)
+            app_say(app, false, "no lessons while recording (--record): the recording would "
+                    "miss their commands");
+        else
+            overlay_lessons(&t->overlay, app);
         break;
     case ACT_HELP:
         overlay_help(&t->overlay);
@@ -396,6 +467,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
     }
     if (changed & APP_CHANGED_SIZE)
         select_clamp(&t->sel, app->model);
+    say_command(t, a, changed & ~(unsigned)APP_CHANGED_MESSAGE);
     t->plots_dirty = true;
     return true;
 }
@@ -464,12 +536,24 @@ static void on_mouse(struct tui *t)
     }
 }
 
+static bool handle_key(struct tui *t, int ch);
+
+/* A key or a mouse event, and what it did written to the recording (--record). */
 static bool on_key(struct tui *t, int ch)
 {
     if (ch == KEY_RESIZE) {
         relayout(t);
         return true;
     }
+    t->said[0] = '\0';
+    record_mark(&t->rec, &t->app);
+    bool go = handle_key(t, ch);
+    record_changes(&t->rec, &t->app, t->said[0] ? t->said : NULL);
+    return go;
+}
+
+static bool handle_key(struct tui *t, int ch)
+{
     if (ch == KEY_MOUSE) {
         if (t->overlay.kind == OVERLAY_NONE)
             on_mouse(t);
@@ -593,7 +677,14 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         return EXIT_FAILURE;
     }
     t.sel.elem = 1;
+    char why[4600];
+    if (cfg->record && record_start(&t.rec, cfg->record, &t.app, why, sizeof why) != 0) {
+        fprintf(stderr, "springsim: --record: %s\n", why);
+        app_free(&t.app);
+        return EXIT_FAILURE;
+    }
     if (!term_start(cfg->color, cfg->glyphs)) {
+        record_abandon(&t.rec);
         app_free(&t.app);
         return EXIT_FAILURE;
     }
@@ -612,6 +703,8 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         double now = now_s();
         advance(&t, &debt, now - last);
         last = now;
+        if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
+            record_time(&t.rec, &t.app);
         /* Plots refresh at plot_hz() while running (the modes view's shapes swing even
          * while paused), at once after anything else. */
         bool moving = t.app.running || t.views.shown == VIEW_MODES;
@@ -646,7 +739,12 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         }
     }
     term_stop();
+    int status = EXIT_SUCCESS;
+    if (t.rec.mem && record_finish(&t.rec, &t.app, why, sizeof why) != 0) {
+        fprintf(stderr, "springsim: --record: %s\n", why);
+        status = EXIT_FAILURE;
+    }
     term_die_of_signal();
     tui_free(&t);
-    return EXIT_SUCCESS;
+    return status;
 }
