@@ -50,7 +50,7 @@ FIG_SRC = $(wildcard src/fig/*.c)
 FIG_OBJ = $(FIG_SRC:src/%.c=$(BUILD)/%.o)
 PLAIN_SRC = $(wildcard src/plain/*.c)
 PLAIN_OBJ = $(PLAIN_SRC:src/%.c=$(BUILD)/%.o)
-MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o
+MAIN_OBJ = $(BUILD)/main.o $(BUILD)/options.o $(BUILD)/lessons.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
@@ -109,7 +109,7 @@ $(BUILD)/tui/%.o: src/tui/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
 
-$(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
+$(MAIN_OBJ): $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP \
 	    -c -o $@ $<

@@ -23,7 +23,7 @@
 #include "core/sim.h"
 #include "core/summary.h"
 #include "app/lesson.h"
-#include "core/search.h"
+#include "lessons.h"
 #include "fig/report.h"
 #include "options.h"
 #include "plain/plain.h"
@@ -532,54 +532,6 @@ static int list_presets(const char *exe_dir)
     return options_finish_stdout(true);
 }
 
-/* --list-lessons: "NAME  TITLE", one line each, escaped as --list-presets is. */
-static int list_lessons(const char *exe_dir)
-{
-    struct lesson_entry *all = NULL;
-    int have = lesson_scan(exe_dir, &all), width = 0;
-    for (int i = 0; i < have; i++)
-        if ((int)strlen(all[i].name) > width)
-            width = (int)strlen(all[i].name);
-    for (int i = 0; i < have; i++) {
-        char line[1024], safe[4 * 1024 + 8];
-        snprintf(line, sizeof line, "%-*s  %s", width, all[i].name,
-                 all[i].title[0] ? all[i].title : "(no title)");
-        config_escape(line, strlen(line), 1024, safe, sizeof safe);
-        printf("%s\n", safe);
-    }
-    free(all);
-    if (have == 0)
-        options_say("no lessons found (searched the user's directory, $SPRINGSIM_LESSONS, %s "
-                    "and %s/lessons)", search_installed_dir(SEARCH_LESSONS), exe_dir);
-    return options_finish_stdout(true);
-}
-
-/* --lesson or --replay: the lesson read and every command tried before anything runs.
- * -1 to go on; else the exit status, after one line saying why (FILE:LINE: what). */
-static int load_lesson(const struct config *c, const char *exe_dir, struct lesson *l)
-{
-    static struct config base; /* large: lists of up to 1001 values */
-    char path[4400], err[2048];
-    if (c->lesson && lesson_find(c->lesson, exe_dir, path, sizeof path) != 0) {
-        options_say("--lesson: %s", path);
-        return EXIT_USAGE;
-    }
-    if (!c->lesson)
-        snprintf(path, sizeof path, "%s", c->replay);
-    int st = lesson_read(path, l, err, sizeof err);
-    if (st == 0) {
-        config_init(&base);
-        base.color = c->color;
-        base.glyphs = c->glyphs;
-        st = lesson_check(l, &base, exe_dir, err, sizeof err);
-    }
-    if (st == 0)
-        return -1;
-    options_say("%s", err);
-    lesson_free(l);
-    return st == 2 ? EXIT_USAGE : EXIT_FAILURE;
-}
-
 int main(int argc, char **argv)
 {
     static struct config c; /* large: lists of up to 1001 values */
@@ -600,7 +552,7 @@ int main(int argc, char **argv)
     if (cli.mode == MODE_LIST)
         return list_presets(exe_dir);
     if (cli.mode == MODE_LIST_LESSONS)
-        return list_lessons(exe_dir);
+        return lessons_list(exe_dir);
     int bad_key;
     struct model *m = config_model(&c, &bad_key, err, sizeof err);
     if (!m) {
@@ -641,7 +593,7 @@ int main(int argc, char **argv)
         static struct lesson lesson;
         status = interactive_limits(&c);
         if (status == EXIT_SUCCESS && (c.lesson || c.replay)) {
-            int st = load_lesson(&c, exe_dir, &lesson);
+            int st = lessons_load(&c, exe_dir, &lesson);
             status = st < 0 ? EXIT_SUCCESS : st;
         }
         const struct lesson *play = lesson.count ? &lesson : NULL;

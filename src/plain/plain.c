@@ -29,8 +29,8 @@
 #include "../app/command.h"
 #include "../app/lesson.h"
 #include "../app/record.h"
-#include "../app/spell.h"
 #include "../app/watch.h"
+#include "words.h"
 
 #define TICK_MS 20       /* while running: how often time is brought up to the clock */
 #define LINE_MAX_IN 1024 /* longest command line read; longer ones are refused */
@@ -97,63 +97,6 @@ static double now_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* The terminal program's key hints in its messages, in the plain mode's words. */
-static const char *const hints[][2] = {
-    {" (space)", ""},
-    {"; space starts", "; start starts it"},
-    {" (f shows them)", ""},
-    {"; ] runs faster, w stops", "; faster runs it faster, sweep stops it"},
-};
-
-/* text with the key hints reworded, into out. */
-static void reword(const char *text, char *out, size_t len)
-{
-    size_t o = 0;
-    while (*text && o + 1 < len) {
-        size_t h = 0, n = sizeof hints / sizeof *hints;
-        while (h < n && strncmp(text, hints[h][0], strlen(hints[h][0])) != 0)
-            h++;
-        if (h < n) {
-            o += (size_t)snprintf(out + o, len - o, "%s", hints[h][1]);
-            text += strlen(hints[h][0]);
-        } else {
-            out[o++] = *text++;
-        }
-    }
-    out[o < len ? o : len - 1] = '\0';
-}
-
-/* text made safe to print into out: control bytes and invalid UTF-8 escaped, the
- * program's own symbols in ASCII, other UTF-8 kept in a UTF-8 locale and escaped byte by
- * byte in any other. */
-static void make_plain(const char *text, bool utf8, char *out, size_t len)
-{
-    char esc[4 * 2048 + 8];
-    config_escape(text, strlen(text), 2048, esc, sizeof esc);
-    size_t o = 0;
-    for (const char *s = esc; *s && o + 8 < len;) {
-        size_t n;
-        const char *spelt;
-        if ((unsigned char)*s < 0x80) {
-            out[o++] = *s++;
-        } else if (strncmp(s, "◆ f", strlen("◆ f")) == 0) {
-            /* "Frequency 0.712 Hz ◆ f1": the drive is on natural frequency 1 */
-            o += (size_t)snprintf(out + o, len - o, "= f");
-            s += strlen("◆ f");
-        } else if ((spelt = spell_ascii(s, &n)) != NULL) {
-            o += (size_t)snprintf(out + o, len - o, "%s", spelt);
-            s += n;
-        } else if (utf8) {
-            do
-                out[o++] = *s++;
-            while (((unsigned char)*s & 0xc0) == 0x80 && o + 1 < len);
-        } else {
-            o += (size_t)snprintf(out + o, len - o, "\\x%02x", (unsigned char)*s++);
-        }
-    }
-    out[o < len ? o : len - 1] = '\0';
-}
-
 /* Writes one line "KIND text"; a failed write means standard output has gone. */
 static void put(struct plain *p, const char *kind, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -166,8 +109,8 @@ static void put(struct plain *p, const char *kind, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    reword(text, words, sizeof words);
-    make_plain(words, p->utf8, safe, sizeof safe);
+    plain_reword(text, words, sizeof words);
+    plain_text(words, p->utf8, safe, sizeof safe);
     errno = 0;
     if (printf("%s %s\n", kind, safe) < 0 || fflush(stdout) != 0) {
         p->closed = true;

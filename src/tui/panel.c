@@ -196,3 +196,27 @@ draw:;
         x += draw_text(y, x, l->cols - x, hints[i].what) + 2;
     }
 }
+
+/* The message below the minimum size, cut to fit any size. */
+void panel_too_small(const struct layout *l)
+{
+    char msg[2][64];
+    /* The longest wording that fits: the size wanted is never cut. */
+    static const char *const what[] = {"Terminal too small", "too small", "small"};
+    int k = 0;
+    while (k < 2 && (int)strlen(what[k]) > l->cols)
+        k++;
+    snprintf(msg[0], sizeof msg[0], "%s", what[k]);
+    snprintf(msg[1], sizeof msg[1], "need %dx%d, have %dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_ROWS,
+             l->cols, l->rows);
+    if ((int)strlen(msg[1]) > l->cols)
+        snprintf(msg[1], sizeof msg[1], "need %dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_ROWS);
+    if ((int)strlen(msg[1]) > l->cols)
+        snprintf(msg[1], sizeof msg[1], "%dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_ROWS);
+    for (int i = 0; i < 2; i++) {
+        int len = (int)strlen(msg[i]) < l->cols ? (int)strlen(msg[i]) : l->cols;
+        int y = l->rows / 2 - (l->rows > 1) + i;
+        if (y >= 0 && y < l->rows)
+            mvaddnstr(y, (l->cols - len) / 2, msg[i], len);
+    }
+}

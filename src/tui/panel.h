@@ -26,4 +26,7 @@ void panel_controls(const struct layout *l, const struct app *app, const struct 
 /* The footer: the app's message if there is one, else the keys that fit, by state. */
 void panel_hints(const struct layout *l, const struct app *app, const struct hint_state *h);
 
+/* The message below the minimum size, cut to fit any size. */
+void panel_too_small(const struct layout *l);
+
 #endif

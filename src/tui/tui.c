@@ -87,37 +87,13 @@ static void relayout(struct tui *t)
     t->plots_dirty = true;
 }
 
-/* The message below the minimum size, cut to fit any size. */
-static void draw_too_small(const struct layout *l)
-{
-    char msg[2][64];
-    /* The longest wording that fits: the size wanted is never cut. */
-    static const char *const what[] = {"Terminal too small", "too small", "small"};
-    int k = 0;
-    while (k < 2 && (int)strlen(what[k]) > l->cols)
-        k++;
-    snprintf(msg[0], sizeof msg[0], "%s", what[k]);
-    snprintf(msg[1], sizeof msg[1], "need %dx%d, have %dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_ROWS,
-             l->cols, l->rows);
-    if ((int)strlen(msg[1]) > l->cols)
-        snprintf(msg[1], sizeof msg[1], "need %dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_ROWS);
-    if ((int)strlen(msg[1]) > l->cols)
-        snprintf(msg[1], sizeof msg[1], "%dx%d", LAYOUT_MIN_COLS, LAYOUT_MIN_ROWS);
-    for (int i = 0; i < 2; i++) {
-        int len = (int)strlen(msg[i]) < l->cols ? (int)strlen(msg[i]) : l->cols;
-        int y = l->rows / 2 - (l->rows > 1) + i;
-        if (y >= 0 && y < l->rows)
-            mvaddnstr(y, (l->cols - len) / 2, msg[i], len);
-    }
-}
-
 /* Draws a frame; returns the seconds it took to hand it to the terminal. */
 static double draw(struct tui *t, bool refresh)
 {
     const struct layout *l = &t->layout;
     erase();
     if (l->too_small) {
-        draw_too_small(l);
+        panel_too_small(l);
     } else {
         panel_status(l, &t->app, t->behind);
         scene_draw(&t->scene, l, &t->app, &t->sel);
@@ -267,57 +243,11 @@ static const char *view_name(const struct tui *t)
     return command_views[of[t->views.shown]];
 }
 
-/* The command action a stood for, for --record, once it has done what it did (changed:
- * what it changed but the message; 0 when it did nothing). */
+/* The command action a stood for, for --record, once it has done what it did. */
 static void say_command(struct tui *t, enum action a, unsigned changed)
 {
-    const struct app *app = &t->app;
-    const char *word = NULL;
-    switch (a) {
-    case ACT_RUN:
-        /* pause is not written: in a lesson it waits for the user (every run ends
-         * paused) */
-        word = changed && app->running ? "start" : NULL;
-        break;
-    case ACT_STEP:
-        word = changed ? "step" : NULL;
-        break;
-    case ACT_BACK:
-        word = changed ? "back" : NULL;
-        break;
-    case ACT_RESET:
-        word = "reset";
-        break;
-    case ACT_RANDOM:
-        word = "random";
-        break;
-    case ACT_NEAREST:
-        word = changed ? "nearest" : NULL;
-        break;
-    case ACT_SWEEP:
-        word = changed ? "sweep" : NULL;
-        break;
-    case ACT_SLOWER:
-    case ACT_FASTER:
-        word = changed ? a == ACT_SLOWER ? "slower" : "faster" : NULL;
-        break;
-    case ACT_ENTER:
-        if (t->sel.focus == FOCUS_MODES && changed)
-            snprintf(t->said, sizeof t->said, "mode %d", t->sel.mode + 1);
-        return;
-    case ACT_MODES:
-    case ACT_RESPONSE:
-    case ACT_ENERGY:
-    case ACT_SPECTRUM:
-    case ACT_ENLARGE:
-    case ACT_GRID:
-        snprintf(t->said, sizeof t->said, "view %s", view_name(t));
-        return;
-    default:
-        return;
-    }
-    if (word)
-        snprintf(t->said, sizeof t->said, "%s", word);
+    int mode = t->sel.focus == FOCUS_MODES ? t->sel.mode + 1 : 0;
+    record_key(t->said, sizeof t->said, a, changed, t->app.running, mode, view_name(t));
 }
 
 /* Acts on a; false to quit. */
