@@ -1,7 +1,8 @@
 /* test_layout.c: the screen's rectangles at every size from the minimum to 250x70, with
  * the grid, each plot enlarged and an analysis view: inside the screen, not overlapping,
  * the enlarged plot as large as the SPEC asks, the grid's plots readable, and the scene's
- * metres-to-columns mapping and the controls' hit-test consistent with what is drawn. */
+ * metres-to-columns mapping and the controls' hit-test consistent with what is drawn; a
+ * lesson's caption panel below everything but the hints. */
 #include "testutil.h"
 
 #include "app/layout.h"
@@ -42,6 +43,47 @@ static void check_layout(const struct layout *l, int cols, int rows)
             if (overlap(parts[i], parts[j]))
                 fail_msg("%dx%d: parts %d and %d overlap", cols, rows, i, j);
     }
+}
+
+/* A lesson's caption panel (layout_caption) at every size, with the grid, a plot
+ * enlarged and a view: across the whole width, just above the hints, overlapping nothing,
+ * and the plots (or the view's area) and the controls still there above it. */
+static void caption_panel(void **state)
+{
+    (void)state;
+    struct layout l;
+    for (int cols = LAYOUT_MIN_COLS; cols <= 250; cols += 7)
+        for (int rows = LAYOUT_MIN_ROWS; rows <= 70; rows++)
+            for (int e = -2; e < PLOT_COUNT; e++) {
+                bool view = e == -2;
+                int enlarged = view ? -1 : e;
+                layout_compute(&l, cols, rows, enlarged, view);
+                int want = layout_caption_rows(rows);
+                layout_caption(&l, want, enlarged, view);
+                struct rect c = l.caption;
+                check_layout(&l, cols, rows);
+                if (c.x != 0 || c.w != cols || c.y + c.h != l.hints.y || c.h < 5 || c.h > want)
+                    fail_msg("%dx%d: caption (%d,%d %dx%d) should span the width above the hints",
+                             cols, rows, c.y, c.x, c.h, c.w);
+                struct rect parts[] = {l.status, l.scene, l.controls, l.hints, l.area};
+                for (size_t i = 0; i < sizeof parts / sizeof *parts; i++)
+                    if (overlap(c, parts[i]))
+                        fail_msg("%dx%d: the caption overlaps part %zu", cols, rows, i);
+                for (int i = 0; i < l.nplots; i++)
+                    if (overlap(c, l.plot[i]))
+                        fail_msg("%dx%d: the caption overlaps plot %d", cols, rows, i);
+                assert_true(l.area.h >= 5 && l.controls.h >= 5);
+                assert_true(view ? l.nplots == 0 : l.nplots >= 1);
+            }
+    /* 80x24 and 120x40, as the terminal tests see them: 7 and 9 rows */
+    layout_compute(&l, 80, 24, -1, false);
+    layout_caption(&l, layout_caption_rows(24), -1, false);
+    assert_int_equal(l.caption.h, 7);
+    assert_int_equal(l.caption.y, 16);
+    layout_compute(&l, 120, 40, -1, false);
+    layout_caption(&l, layout_caption_rows(40), -1, false);
+    assert_int_equal(l.caption.h, 9);
+    assert_int_equal(l.nplots, 6);
 }
 
 static void every_size(void **state)
@@ -152,7 +194,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_size),     cmocka_unit_test(enlarged_sizes),
         cmocka_unit_test(grid_choice),    cmocka_unit_test(too_small),
-        cmocka_unit_test(scene_and_controls),
+        cmocka_unit_test(scene_and_controls), cmocka_unit_test(caption_panel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
