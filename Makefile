@@ -33,7 +33,7 @@ CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
 UI_LIBS = $(shell $(PKG_CONFIG) --libs ncursesw)
 # Figures and pixel charts: cairo draws and writes PNG, SVG and PDF; libsixel encodes sixel.
-FIG_PKGS = cairo fontconfig libsixel
+FIG_PKGS = cairo fontconfig libsixel glib-2.0
 FIG_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(FIG_PKGS))
 FIG_LIBS = $(shell $(PKG_CONFIG) --libs $(FIG_PKGS))
 TEST_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka)
@@ -107,7 +107,8 @@ $(BUILD)/plain/%.o: src/plain/%.c | $(BUILD)/.core-pure
 
 $(BUILD)/tui/%.o: src/tui/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(UI_CFLAGS) $(FIG_CFLAGS) -Isrc -MMD -MP -c \
+	    -o $@ $<
 
 $(MAIN_OBJ): $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
@@ -189,10 +190,21 @@ $(BUILD)/tests/slowterm: tests/slowterm.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) -D_GNU_SOURCE $(LDFLAGS) -o $@ $< -lutil
 
+# The pixel tests' terminal (answers the queries of a sixel, kitty or plain terminal)
+# and the reader of the images it kept: not cmocka programs.
+$(BUILD)/tests/pixterm: tests/pixterm.c | $(BUILD)/.deps-build
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) -D_GNU_SOURCE $(LDFLAGS) -o $@ $< -lutil
+$(BUILD)/tests/sixelcheck: tests/sixelcheck.c | $(BUILD)/.deps-build
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(FIG_CFLAGS) $(LDFLAGS) -o $@ $< $(FIG_LIBS)
+
 # tests/deb.sh builds the Debian package (make deb) unless DEB_CHECK=no.
 DEB_CHECK ?= yes
-check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm completions | $(BUILD)/.deps-test
-	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm COMPLETIONS=$(BUILD)/completions \
+check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm $(BUILD)/tests/pixterm $(BUILD)/tests/sixelcheck \
+    completions | $(BUILD)/.deps-test
+	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm PIXTERM=$(BUILD)/tests/pixterm \
+	    SIXELCHECK=$(BUILD)/tests/sixelcheck COMPLETIONS=$(BUILD)/completions \
 	    BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.

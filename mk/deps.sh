@@ -1,12 +1,12 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3, cairo,
-# fontconfig, libsixel), test (cmocka, tmux, bash, zsh and fish for the completions, numpy and pandas
-# for --meta's CSV, GNU parallel for the --summary study, libsixel's tools, Xvfb, xterm,
-# ImageMagick and the DejaVu fonts for the pixel tests and screenshots), deb (dpkg-dev, debhelper, lintian, build-essential),
-# bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are
-# installed with apt-get; otherwise the one apt-get line to run is printed and the step
-# stops.
+# fontconfig, libsixel, GLib for base64), test (cmocka, tmux, bash, zsh and fish for the
+# completions, numpy and pandas for --meta's CSV, GNU parallel for the --summary study,
+# libsixel's tools, Xvfb, xterm, ImageMagick, the DejaVu fonts and pyte for the pixel
+# tests and screenshots), deb (dpkg-dev, debhelper, lintian, build-essential), bench
+# (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed
+# with apt-get; otherwise the one apt-get line to run is printed and the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
 want_pc() { has_pc "$1" || need="$need $2"; }
@@ -26,6 +26,7 @@ for group in "$@"; do
         want_pc cairo libcairo2-dev
         want_pc fontconfig libfontconfig-dev
         want_pc libsixel libsixel-dev
+        want_pc glib-2.0 libglib2.0-dev
         ;;
     test)
         want_pc cmocka libcmocka-dev
@@ -40,6 +41,7 @@ for group in "$@"; do
         want_bin Xvfb xvfb
         want_bin xterm xterm
         want_bin convert imagemagick
+        want_py pyte python3-pyte
         [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || need="$need fonts-dejavu-core"
         ;;
     bench)

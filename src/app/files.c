@@ -28,6 +28,7 @@ static unsigned load_config(struct app *app, struct config *next_in, const char 
     /* The terminal was set up once, at start. */
     next.color = app->cfg.color;
     next.glyphs = app->cfg.glyphs;
+    next.graphics = app->cfg.graphics;
     unsigned what = 0;
     bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
     if (app_change(app, &next, CHANGE_REBUILD | CHANGE_SETS_FREQUENCY, "the preset", &what)) {

@@ -27,6 +27,13 @@ static const char *glyphs_choice(int i)
     return names[i];
 }
 
+static const char *graphics_choice(int i)
+{
+    static const char *const names[CONFIG_GRAPHICS_COUNT] = {"auto", "sixel", "kitty",
+                                                             "braille"};
+    return names[i];
+}
+
 #define AT(field) offsetof(struct config, field)
 
 const struct config_option config_options[CFG_KEY_COUNT] = {
@@ -137,6 +144,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .def = CONFIG_GLYPHS_BRAILLE, .choice_name = glyphs_choice,
                     .choices = CONFIG_GLYPHS_COUNT, .symbol = "a glyph set",
                     .offset = AT(glyphs)},
+    [CFG_GRAPHICS] = {.name = "graphics", .section = "run", .kind = CONFIG_CHOICE,
+                      .help = "interactive: the charts' drawing areas as images (sixel or "
+                              "kitty's protocol) where the terminal says it can show them "
+                              "(auto), or braille; braille inside tmux or screen and with low "
+                              "bandwidth",
+                      .def = CONFIG_GRAPHICS_AUTO, .choice_name = graphics_choice,
+                      .choices = CONFIG_GRAPHICS_COUNT, .symbol = "a graphics setting",
+                      .offset = AT(graphics)},
     [CFG_SUMMARY] = {.name = "summary", .kind = CONFIG_FLAG, .offset = AT(summary),
                      .help = "headless (implied): a header and one row of settings and per-run "
                              "figures instead of the series"},

@@ -42,6 +42,7 @@ enum config_key {
     CFG_LOW_BANDWIDTH,
     CFG_COLOR,
     CFG_GLYPHS,
+    CFG_GRAPHICS,
     CFG_SUMMARY,
     CFG_PLAIN_EVERY,
     CFG_LESSON,
@@ -81,6 +82,16 @@ enum config_glyphs {
     CONFIG_GLYPHS_BLOCKS,
     CONFIG_GLYPHS_ASCII,
     CONFIG_GLYPHS_COUNT
+};
+
+/* --graphics: the charts' drawing areas as images where the terminal says it shows them
+ * (auto), in sixel or kitty's protocol, or braille always. */
+enum config_graphics {
+    CONFIG_GRAPHICS_AUTO,
+    CONFIG_GRAPHICS_SIXEL,
+    CONFIG_GRAPHICS_KITTY,
+    CONFIG_GRAPHICS_BRAILLE,
+    CONFIG_GRAPHICS_COUNT
 };
 
 #define CONFIG_PER_MASS 0   /* a list of N values */
@@ -160,6 +171,7 @@ struct config {
     bool low_bandwidth;                 /* interactive: keep terminal output small */
     enum config_color color;            /* interactive: when to use colour */
     enum config_glyphs glyphs;          /* interactive: which characters draw */
+    enum config_graphics graphics;      /* interactive: images for the charts, or braille */
     bool summary;                       /* headless: one row of figures, not the series */
     double plain_every;                 /* --plain: simulated seconds between status lines */
     char name[64];                      /* preset's display name */

@@ -12,6 +12,13 @@
 
 #define MIN_ROW_GAP 2 /* rows between y gridlines, at least */
 
+static bool pixels; /* the drawing areas are images: leave them blank */
+
+void chart_use_pixels(bool on)
+{
+    pixels = on;
+}
+
 bool chart_place(struct chart *c, struct rect frame, int header_rows)
 {
     struct rect a = layout_drawing(frame);
@@ -140,7 +147,7 @@ static void draw_axes(const struct chart *c, const char *xunit)
         int row = a.y + a.h - 1 - c->yt.cell[k];
         bool zero = c->zero_line && is_zero(&c->ya, c->yt.cell[k]);
         attron(term_attr(PAIR_GRID));
-        for (int col = 0; col < a.w; col += zero ? 1 : 2)
+        for (int col = 0; col < a.w && !pixels; col += zero ? 1 : 2)
             mvaddstr(row, a.x + col, zero ? (term_utf8() ? "─" : "-") : (term_utf8() ? "·" : "."));
         attroff(term_attr(PAIR_GRID));
         int len = draw_width(c->yt.label[k]);
@@ -183,7 +190,8 @@ void chart_draw(struct chart *c, const char *title, const char *short_title,
     c->drawn = c->canvas && c->area.w >= 2 && c->area.h >= 1;
     if (c->drawn) {
         draw_axes(c, xunit);
-        draw_canvas(c->canvas, c->area.y, c->area.x);
+        if (!pixels)
+            draw_canvas(c->canvas, c->area.y, c->area.x);
     }
     /* The legend on the bottom border, as many entries as fit. */
     int x = f.x + 2, y = f.y + f.h - 1;

@@ -49,6 +49,10 @@ struct chart {
  * memory (the chart then draws its frame only). */
 bool chart_place(struct chart *c, struct rect frame, int header_rows);
 
+/* Charts' drawing areas as images (tui/graphics.c sends them): chart_draw leaves the
+ * area blank (no braille, no gridline dots) for the image to show. */
+void chart_use_pixels(bool on);
+
 /* Frees the canvas. */
 void chart_free(struct chart *c);
 

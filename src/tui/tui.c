@@ -19,6 +19,7 @@
 #include "../app/select.h"
 #include "../fig/save.h"
 #include "draw.h"
+#include "graphics.h"
 #include "input.h"
 #include "overlay.h"
 #include "panel.h"
@@ -53,6 +54,7 @@ struct tui {
     struct teach teach;   /* a lesson being played, its caption panel */
     struct record rec;    /* --record: the session being written */
     char said[64];        /* the command the key being handled stands for, or "" */
+    struct graphics gfx;  /* the charts as images, where the terminal shows them */
 };
 
 static double now_s(void)
@@ -84,7 +86,21 @@ static void relayout(struct tui *t)
         plots_place(&t->plots, &t->layout);
         views_place(&t->views, &t->layout);
     }
+    graphics_invalidate(&t->gfx);
     t->plots_dirty = true;
+}
+
+/* The charts on the screen (the plots, or the analysis view's): into out, how many. */
+static int shown_charts(struct tui *t, struct chart **out)
+{
+    int n = 0;
+    if (t->layout.too_small)
+        return 0;
+    if (t->views.shown != VIEW_PLOTS)
+        return views_charts(&t->views, out, PLOT_COUNT);
+    for (int k = 0; k < t->layout.nplots && n < PLOT_COUNT; k++)
+        out[n++] = &t->plots.chart[t->layout.plot_id[k]];
+    return n;
 }
 
 /* Draws a frame; returns the seconds it took to hand it to the terminal. */
@@ -117,6 +133,8 @@ static double draw(struct tui *t, bool refresh)
     wnoutrefresh(stdscr);
     double start = now_s();
     doupdate();
+    struct chart *charts[PLOT_COUNT];
+    graphics_frame(&t->gfx, charts, shown_charts(t, charts), t->overlay.kind != OVERLAY_NONE);
     return now_s() - start;
 }
 
@@ -188,12 +206,7 @@ static void save_view(struct tui *t)
 {
     struct chart *charts[PLOT_COUNT];
     struct fig_chart pics[PLOT_COUNT];
-    int n = 0;
-    if (t->views.shown == VIEW_PLOTS)
-        for (int k = 0; k < t->layout.nplots && n < PLOT_COUNT; k++)
-            charts[n++] = &t->plots.chart[t->layout.plot_id[k]];
-    else
-        n = views_charts(&t->views, charts, PLOT_COUNT);
+    int n = shown_charts(t, charts);
     for (int i = 0; i < n; i++)
         chart_picture(charts[i], &pics[i]);
     if (t->layout.too_small)
@@ -391,6 +404,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_REDRAW:
         clearok(curscr, TRUE);
+        graphics_invalidate(&t->gfx);
         break;
     case ACT_NONE:
         break;
@@ -549,6 +563,7 @@ static void watch_backlog(struct tui *t, double spent)
     t->backlog_frames = slow ? t->backlog_frames + 1 : 0;
     if (t->backlog_frames >= 3 || spent > 1.0) {
         t->app.cfg.low_bandwidth = true;
+        graphics_set(&t->gfx, GRAPHICS_BRAILLE);
         t->backlog_frames = 0;
         app_say(&t->app, true, "the terminal is not keeping up: low bandwidth on (Bandwidth "
                 "control turns it back)");
@@ -589,6 +604,7 @@ static void tui_free(struct tui *t)
     views_free(&t->views);
     overlay_free(&t->overlay);
     teach_free(&t->teach);
+    graphics_free(&t->gfx);
     app_free(&t->app);
 }
 
@@ -613,6 +629,7 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         app_free(&t.app);
         return EXIT_FAILURE;
     }
+    graphics_detect(&t.gfx, cfg); /* before curses: the terminal is asked directly */
     if (!term_start(cfg->color, cfg->glyphs)) {
         record_abandon(&t.rec);
         app_free(&t.app);
@@ -624,6 +641,8 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         teach_start(&t.teach, lesson, &t.app);
         after_teach(&t, false);
     }
+    if (t.gfx.said[0])
+        app_say(&t.app, true, "%s", t.gfx.said);
     if (t.app.message[0] == '\0')
         app_say(&t.app, false, "space starts; ? lists every key");
 

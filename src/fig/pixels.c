@@ -1,0 +1,186 @@
+/* pixels.c: drawing areas as sixel or PNG images. The sixel palette is fixed: the
+ * background, the gridlines, the foreground and every colour of a line, each also at a
+ * quarter, a half and three quarters over the background (cairo's anti-aliasing lands
+ * near those), mapped without diffusion, so a colour drawn is a colour sent. */
+#include "pixels.h"
+
+#include <cairo.h>
+#include <errno.h>
+#include <math.h>
+#include <sixel/sixel.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "paint.h"
+
+#define LINE_COLORS (FIG_COLOR_COUNT - 1) /* colour numbers 1 .. FIG_COLOR_COUNT - 1 */
+#define BLENDS 3
+#define PALETTE (2 + LINE_COLORS * (BLENDS + 1))
+
+double fig_pixel_x(double x, int cw)
+{
+    return (x + 0.5) * cw / 2.0;
+}
+
+double fig_pixel_y(double y, int ch)
+{
+    return (y + 0.5) * ch / 4.0;
+}
+
+static bool grow(struct fig_bytes *b, size_t more)
+{
+    if (b->len + more <= b->cap)
+        return true;
+    size_t cap = b->cap ? b->cap : 65536;
+    while (cap < b->len + more)
+        cap *= 2;
+    unsigned char *d = realloc(b->data, cap);
+    if (!d)
+        return b->failed = true, false;
+    b->data = d, b->cap = cap;
+    return true;
+}
+
+static void append(struct fig_bytes *b, const void *p, size_t n)
+{
+    if (grow(b, n)) {
+        memcpy(b->data + b->len, p, n);
+        b->len += n;
+    }
+}
+
+void fig_bytes_free(struct fig_bytes *out)
+{
+    free(out->data);
+    *out = (struct fig_bytes){0};
+}
+
+static int sixel_write(char *data, int size, void *priv)
+{
+    append(priv, data, (size_t)size);
+    return size;
+}
+
+static cairo_status_t png_write(void *closure, const unsigned char *data, unsigned int length)
+{
+    struct fig_bytes *b = closure;
+    append(b, data, length);
+    return b->failed ? CAIRO_STATUS_NO_MEMORY : CAIRO_STATUS_SUCCESS;
+}
+
+/* Gridlines (dotted) on the ticks, the y = 0 one solid, then the strokes. */
+static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch, bool dark,
+                  const double bg[3])
+{
+    double grid[3];
+    fig_rgb(FIG_GRID, dark, grid);
+    cairo_set_source_rgb(cr, bg[0], bg[1], bg[2]);
+    cairo_paint(cr);
+    cairo_set_source_rgb(cr, grid[0], grid[1], grid[2]);
+    cairo_set_line_width(cr, 1.0);
+    static const double dots[] = {1.0, 3.0};
+    for (int k = 0; k < c->yt.n; k++) {
+        double y = floor((c->ah - c->yt.cell[k] - 0.5) * ch) + 0.5;
+        cairo_set_dash(cr, dots, strtod(c->yt.label[k], NULL) == 0.0 ? 0 : 2, 0.0);
+        cairo_move_to(cr, 0.0, y);
+        cairo_line_to(cr, c->aw * cw, y);
+        cairo_stroke(cr);
+    }
+    cairo_set_dash(cr, dots, 2, 0.0);
+    for (int k = 0; k < c->xt.n; k++) {
+        double x = floor((c->xt.cell[k] + 0.5) * cw) + 0.5;
+        cairo_move_to(cr, x, 0.0);
+        cairo_line_to(cr, x, c->ah * ch);
+    }
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0.0);
+    if (c->strokes)
+        fig_paint_strokes(cr, c->strokes, cw, ch, dark);
+}
+
+/* The fixed palette as RGB bytes. */
+static void palette(unsigned char *p, bool dark, const double bg[3])
+{
+    double v[3];
+    int k = 0;
+    for (int i = 0; i < 3; i++)
+        p[k++] = (unsigned char)lround(bg[i] * 255.0);
+    fig_rgb(FIG_GRID, dark, v);
+    for (int i = 0; i < 3; i++)
+        p[k++] = (unsigned char)lround(v[i] * 255.0);
+    for (int c = 1; c <= LINE_COLORS; c++) {
+        fig_rgb(c, dark, v);
+        for (int b = 0; b <= BLENDS; b++) {
+            double a = 1.0 - (double)b / (BLENDS + 1);
+            for (int i = 0; i < 3; i++)
+                p[k++] = (unsigned char)lround((a * v[i] + (1.0 - a) * bg[i]) * 255.0);
+        }
+    }
+}
+
+static int encode_sixel(unsigned char *rgb, int w, int h, bool dark, const double bg[3],
+                        struct fig_bytes *out)
+{
+    unsigned char pal[3 * PALETTE];
+    palette(pal, dark, bg);
+    sixel_dither_t *dither = NULL;
+    sixel_output_t *output = NULL;
+    SIXELSTATUS st = sixel_dither_new(&dither, PALETTE, NULL);
+    if (SIXEL_SUCCEEDED(st))
+        st = sixel_output_new(&output, sixel_write, out, NULL);
+    if (SIXEL_SUCCEEDED(st)) {
+        sixel_dither_set_palette(dither, pal);
+        sixel_dither_set_diffusion_type(dither, SIXEL_DIFFUSE_NONE);
+        sixel_dither_set_pixelformat(dither, SIXEL_PIXELFORMAT_RGB888);
+        st = sixel_encode(rgb, w, h, 3, dither, output);
+    }
+    if (output)
+        sixel_output_unref(output);
+    if (dither)
+        sixel_dither_unref(dither);
+    return SIXEL_SUCCEEDED(st) && !out->failed ? 0 : ENOMEM;
+}
+
+int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
+               enum fig_encoding e, struct fig_bytes *out)
+{
+    int w = c->aw * cw, h = c->ah * ch;
+    out->len = 0;
+    out->failed = false;
+    if (w <= 0 || h <= 0)
+        return EINVAL;
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
+    cairo_t *cr = cairo_create(s);
+    paint(cr, c, cw, ch, dark, bg);
+    cairo_status_t cs = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_flush(s);
+    int err = cs == CAIRO_STATUS_SUCCESS ? 0 : ENOMEM;
+    if (!err && e == FIG_KITTY_PNG) {
+        err = cairo_surface_write_to_png_stream(s, png_write, out) == CAIRO_STATUS_SUCCESS
+                  ? 0 : ENOMEM;
+    } else if (!err) {
+        /* cairo's RGB24 is a native-endian 32-bit word a pixel: take out R, G, B. */
+        unsigned char *rgb = malloc((size_t)w * (size_t)h * 3);
+        const unsigned char *src = cairo_image_surface_get_data(s);
+        int stride = cairo_image_surface_get_stride(s);
+        if (!rgb) {
+            err = ENOMEM;
+        } else {
+            for (int y = 0; y < h; y++) {
+                const uint32_t *row = (const uint32_t *)(const void *)(src + (size_t)y * stride);
+                for (int x = 0; x < w; x++) {
+                    unsigned char *p = rgb + ((size_t)y * w + x) * 3;
+                    p[0] = (unsigned char)(row[x] >> 16);
+                    p[1] = (unsigned char)(row[x] >> 8);
+                    p[2] = (unsigned char)row[x];
+                }
+            }
+            err = encode_sixel(rgb, w, h, dark, bg, out);
+            free(rgb);
+        }
+    }
+    cairo_surface_destroy(s);
+    return err;
+}

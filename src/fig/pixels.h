@@ -1,0 +1,37 @@
+/* pixels.h: a chart's drawing area as an image for the terminal: painted with cairo (the
+ * background, gridlines on the ticks, the zero line, the strokes) at the terminal's cell
+ * size, then encoded as sixel (libsixel, on a fixed palette of the program's colours and
+ * their blends with the background) or as PNG (for kitty's protocol). No curses here:
+ * tui/graphics.c sends the bytes. */
+#ifndef SPRINGSIM_PIXELS_H
+#define SPRINGSIM_PIXELS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "view.h"
+
+/* Bytes grown as needed and kept for the next image. */
+struct fig_bytes {
+    unsigned char *data;
+    size_t len, cap;
+    bool failed; /* memory ran out */
+};
+
+enum fig_encoding { FIG_SIXEL, FIG_KITTY_PNG };
+
+/* The image of c's drawing area (aw * cw by ah * ch pixels) on a dark or light background
+ * bg (red, green, blue, 0..1), encoded e into out (emptied first): a whole sixel sequence
+ * (DCS ... ST), or the PNG file. Returns 0 or an errno value. */
+int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
+               enum fig_encoding e, struct fig_bytes *out);
+
+/* The pixel row and column of dot coordinate (x, y) in such an image (the centre of the
+ * line drawn through it): ((x + 0.5) cw / 2, (y + 0.5) ch / 4). */
+double fig_pixel_x(double x, int cw);
+double fig_pixel_y(double y, int ch);
+
+/* Frees out's memory. */
+void fig_bytes_free(struct fig_bytes *out);
+
+#endif

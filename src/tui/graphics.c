@@ -1,0 +1,336 @@
+/* graphics.c: the terminal's answers at start, and the images after each frame. The
+ * queries go out together, primary device attributes last: every terminal answers that
+ * one, and answers in order, so its answer ends the wait; a terminal that answers nothing
+ * costs GRAPHICS_TIMEOUT_MS once, and gets braille. */
+#include "graphics.h"
+
+#include <ctype.h>
+#include <glib.h>
+#include <poll.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <termios.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <curses.h>
+
+#define KITTY_CHUNK 4096 /* base64 bytes a kitty escape carries, at most */
+#define KITTY_ID 1811    /* our images' numbers: KITTY_ID + slot */
+
+static const char queries[] = "\033_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\033\\" /* kitty */
+                              "\033[16t"                                   /* cell size */
+                              "\033[14t"                                   /* text area */
+                              "\033]11;?\033\\"                            /* background */
+                              "\033[c";                                    /* DA1 */
+
+const char *graphics_name(enum graphics_mode mode)
+{
+    return mode == GRAPHICS_SIXEL ? "sixel" : mode == GRAPHICS_KITTY ? "kitty" : "braille";
+}
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+/* What the answers say. */
+struct answers {
+    bool da1, sixel, kitty;
+    int cell_w, cell_h;  /* CSI 16 t */
+    int area_w, area_h;  /* CSI 14 t */
+    bool bg;
+    double rgb[3];
+};
+
+/* The numbers of a CSI answer "ESC [ ? a ; b ; ... F" at p (F its final byte). */
+static int csi_numbers(const char *p, int *v, int max, char *final)
+{
+    int n = 0;
+    p += 2;
+    if (*p == '?')
+        p++;
+    while (n < max) {
+        if (!isdigit((unsigned char)*p))
+            break;
+        v[n++] = (int)strtol(p, (char **)&p, 10);
+        if (*p != ';')
+            break;
+        p++;
+    }
+    *final = *p;
+    return n;
+}
+
+/* One hexadecimal component of "rgb:RRRR/GGGG/BBBB" (1 to 4 digits) as 0..1. */
+static double hex_part(const char **p)
+{
+    char *end;
+    unsigned long v = strtoul(*p, &end, 16);
+    int digits = (int)(end - *p);
+    *p = *end == '/' ? end + 1 : end;
+    return digits > 0 && digits <= 4 ? v / (double)((1UL << (4 * digits)) - 1) : 0.0;
+}
+
+static void parse(const char *buf, struct answers *a)
+{
+    for (const char *p = buf; (p = strchr(p, '\033')); p++) {
+        int v[16], n;
+        char final;
+        if (p[1] == '[') {
+            n = csi_numbers(p, v, 16, &final);
+            if (final == 'c' && p[2] == '?') {
+                a->da1 = true;
+                for (int i = 1; i < n; i++)
+                    a->sixel |= v[i] == 4;
+            } else if (final == 't' && n == 3 && v[0] == 6) {
+                a->cell_h = v[1], a->cell_w = v[2];
+            } else if (final == 't' && n == 3 && v[0] == 4) {
+                a->area_h = v[1], a->area_w = v[2];
+            }
+        } else if (p[1] == '_' && p[2] == 'G') {
+            const char *semi = strchr(p, ';');
+            a->kitty |= semi && strncmp(semi + 1, "OK", 2) == 0;
+        } else if (p[1] == ']' && strncmp(p + 2, "11;rgb:", 7) == 0) {
+            const char *q = p + 9;
+            for (int i = 0; i < 3; i++)
+                a->rgb[i] = hex_part(&q);
+            a->bg = true;
+        }
+    }
+}
+
+/* Sends the queries and reads the answers until DA1's or the time is up. */
+static void ask(struct answers *a)
+{
+    struct termios saved, raw;
+    if (tcgetattr(STDIN_FILENO, &saved) != 0)
+        return;
+    raw = saved;
+    raw.c_lflag &= (tcflag_t) ~(ICANON | ECHO);
+    raw.c_cc[VMIN] = 0;
+    raw.c_cc[VTIME] = 0;
+    tcsetattr(STDIN_FILENO, TCSANOW, &raw);
+    char buf[2048];
+    size_t len = 0;
+    if (write(STDOUT_FILENO, queries, sizeof queries - 1) == (ssize_t)(sizeof queries - 1)) {
+        double end = now_ms() + GRAPHICS_TIMEOUT_MS;
+        while (!a->da1 && len < sizeof buf - 1) {
+            int left = (int)(end - now_ms());
+            struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
+            if (left <= 0 || poll(&pfd, 1, left) <= 0)
+                break;
+            ssize_t got = read(STDIN_FILENO, buf + len, sizeof buf - 1 - len);
+            if (got <= 0)
+                break;
+            len += (size_t)got;
+            buf[len] = '\0';
+            struct answers seen = {0};
+            parse(buf, &seen);
+            a->da1 = seen.da1;
+        }
+    }
+    buf[len] = '\0';
+    parse(buf, a);
+    /* Answers still on their way are not keys. */
+    if (!a->da1)
+        tcflush(STDIN_FILENO, TCIFLUSH);
+    tcsetattr(STDIN_FILENO, TCSANOW, &saved);
+}
+
+/* Inside tmux or screen (no passthrough asked for): braille. */
+static bool multiplexed(void)
+{
+    const char *term = getenv("TERM");
+    return getenv("TMUX") || getenv("STY") ||
+           (term && (strncmp(term, "screen", 6) == 0 || strncmp(term, "tmux", 4) == 0));
+}
+
+void graphics_detect(struct graphics *g, const struct config *c)
+{
+    memset(g, 0, sizeof *g);
+    g->mode = g->can = GRAPHICS_BRAILLE;
+    g->bg[0] = g->bg[1] = g->bg[2] = 1.0;
+    g->said[0] = '\0';
+    if (c->graphics == CONFIG_GRAPHICS_BRAILLE || !isatty(STDIN_FILENO) ||
+        !isatty(STDOUT_FILENO))
+        return;
+    if (c->low_bandwidth || multiplexed()) {
+        if (c->graphics != CONFIG_GRAPHICS_AUTO)
+            snprintf(g->said, sizeof g->said, "--graphics %s: braille %s",
+                     config_options[CFG_GRAPHICS].choice_name((int)c->graphics),
+                     c->low_bandwidth ? "with low bandwidth" : "inside tmux or screen");
+        return;
+    }
+    struct answers a = {0};
+    ask(&a);
+    struct winsize ws;
+    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_xpixel && ws.ws_ypixel && ws.ws_col &&
+        ws.ws_row)
+        g->cw = ws.ws_xpixel / ws.ws_col, g->ch = ws.ws_ypixel / ws.ws_row;
+    else if (a.cell_w > 0 && a.cell_h > 0)
+        g->cw = a.cell_w, g->ch = a.cell_h;
+    else if (a.area_w > 0 && a.area_h > 0 && ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 &&
+             ws.ws_col && ws.ws_row)
+        g->cw = a.area_w / ws.ws_col, g->ch = a.area_h / ws.ws_row;
+    if (a.bg) {
+        memcpy(g->bg, a.rgb, sizeof g->bg);
+        g->dark = 0.2126 * a.rgb[0] + 0.7152 * a.rgb[1] + 0.0722 * a.rgb[2] < 0.5;
+    }
+    bool sized = g->cw >= 2 && g->ch >= 4 && g->cw <= 200 && g->ch <= 400;
+    g->can = !sized ? GRAPHICS_BRAILLE
+             : a.kitty ? GRAPHICS_KITTY
+             : a.sixel ? GRAPHICS_SIXEL
+                       : GRAPHICS_BRAILLE;
+    enum graphics_mode want = c->graphics == CONFIG_GRAPHICS_SIXEL   ? GRAPHICS_SIXEL
+                              : c->graphics == CONFIG_GRAPHICS_KITTY ? GRAPHICS_KITTY
+                                                                     : g->can;
+    /* Asked for by name: believed where the cell size is known, said otherwise. */
+    if (want != GRAPHICS_BRAILLE && sized) {
+        g->can = want;
+        graphics_set(g, want);
+    } else if (want != GRAPHICS_BRAILLE) {
+        snprintf(g->said, sizeof g->said, "--graphics %s: the terminal did not say its cell "
+                 "size in pixels; braille", graphics_name(want));
+    }
+}
+
+bool graphics_set(struct graphics *g, enum graphics_mode mode)
+{
+    if (mode != GRAPHICS_BRAILLE && mode != g->can)
+        return false;
+    if (g->mode == GRAPHICS_KITTY && mode != GRAPHICS_KITTY)
+        fputs("\033_Ga=d,d=a,q=2\033\\", stdout);
+    g->mode = mode;
+    chart_use_pixels(mode != GRAPHICS_BRAILLE);
+    graphics_invalidate(g);
+    clearok(curscr, TRUE); /* what was drawn the other way goes */
+    return true;
+}
+
+void graphics_invalidate(struct graphics *g)
+{
+    g->n = 0;
+}
+
+/* FNV-1a of more bytes. */
+static uint64_t mix(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ b[i]) * 0x100000001b3ULL;
+    return h;
+}
+
+/* What the image of c depends on. */
+static uint64_t chart_hash(const struct fig_chart *c)
+{
+    uint64_t h = c->strokes ? strokes_hash(c->strokes) : 0xcbf29ce484222325ULL;
+    h = mix(h, &c->ax, 4 * sizeof c->ax);
+    h = mix(h, &c->xt, sizeof c->xt);
+    return mix(h, &c->yt, sizeof c->yt);
+}
+
+static void out_add(struct fig_bytes *b, const void *p, size_t n)
+{
+    if (b->len + n > b->cap) {
+        size_t cap = b->cap ? b->cap : 65536;
+        while (cap < b->len + n)
+            cap *= 2;
+        unsigned char *d = realloc(b->data, cap);
+        if (!d) {
+            b->failed = true;
+            return;
+        }
+        b->data = d, b->cap = cap;
+    }
+    memcpy(b->data + b->len, p, n);
+    b->len += n;
+}
+
+/* The PNG in g->img as kitty escapes, placed at the cursor, numbered id. */
+static void kitty_escapes(struct graphics *g, int id)
+{
+    char head[96];
+    gchar chunk[KITTY_CHUNK + 8];
+    gint state = 0, save = 0;
+    size_t per = KITTY_CHUNK / 4 * 3; /* raw bytes a chunk carries */
+    for (size_t at = 0; at < g->img.len; at += per) {
+        size_t n = g->img.len - at < per ? g->img.len - at : per;
+        gsize len = g_base64_encode_step(g->img.data + at, n, FALSE, chunk, &state, &save);
+        if (at + n >= g->img.len)
+            len += g_base64_encode_close(FALSE, chunk + len, &state, &save);
+        int hl = at == 0 ? snprintf(head, sizeof head, "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,m=%d;",
+                                    id, at + n < g->img.len)
+                         : snprintf(head, sizeof head, "\033_Gm=%d;", at + n < g->img.len);
+        out_add(&g->out, head, (size_t)hl);
+        out_add(&g->out, chunk, len);
+        out_add(&g->out, "\033\\", 2);
+    }
+}
+
+void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool overlay)
+{
+    if (g->mode == GRAPHICS_BRAILLE)
+        return;
+    if (overlay || g->overlay) {
+        /* Kitty's images are not covered by text: they go while an overlay is open. */
+        if (overlay && !g->overlay && g->mode == GRAPHICS_KITTY)
+            fputs("\033_Ga=d,d=a,q=2\033\\", stdout);
+        if (!overlay)
+            graphics_invalidate(g); /* it closed: what it covered comes back */
+        g->overlay = overlay;
+        if (overlay) {
+            fflush(stdout);
+            return;
+        }
+    }
+    g->out.len = 0;
+    g->out.failed = false;
+    out_add(&g->out, "\0337", 2); /* the cursor, as curses left it */
+    int sent = 0;
+    for (int i = 0; i < n && i < GRAPHICS_SLOTS; i++) {
+        struct fig_chart pic;
+        chart_picture(charts[i], &pic);
+        if (!pic.axes || pic.aw < 1 || pic.ah < 1)
+            continue;
+        uint64_t h = chart_hash(&pic);
+        struct rect r = charts[i]->area;
+        if (i < g->n && g->hash[i] == h && memcmp(&g->at[i], &r, sizeof r) == 0)
+            continue;
+        enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
+        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, &g->img) != 0)
+            continue;
+        char pos[32];
+        int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);
+        out_add(&g->out, pos, (size_t)pl);
+        if (g->mode == GRAPHICS_KITTY)
+            kitty_escapes(g, KITTY_ID + i);
+        else
+            out_add(&g->out, g->img.data, g->img.len);
+        g->hash[i] = h, g->at[i] = r;
+        sent++;
+    }
+    g->n = n < GRAPHICS_SLOTS ? n : GRAPHICS_SLOTS;
+    out_add(&g->out, "\0338", 2);
+    if (!sent || g->out.failed)
+        return;
+    fflush(stdout);
+    size_t done = 0;
+    while (done < g->out.len) {
+        ssize_t w = write(STDOUT_FILENO, g->out.data + done, g->out.len - done);
+        if (w <= 0)
+            break;
+        done += (size_t)w;
+    }
+}
+
+void graphics_free(struct graphics *g)
+{
+    fig_bytes_free(&g->img);
+    fig_bytes_free(&g->out);
+}

@@ -1,0 +1,57 @@
+/* graphics.h: the charts' drawing areas as images in terminals that show them: the
+ * terminal asked once at start (before curses) what it can do (primary device attributes:
+ * 4 is sixel; kitty's graphics query), its cell size in pixels (TIOCGWINSZ, CSI 16 t, CSI
+ * 14 t) and its background (OSC 11); each chart's image sent at its drawing area's cell
+ * only when its content changed, never over an overlay, again after a resize, Ctrl+L or
+ * an overlay closing. Braille otherwise: inside tmux or screen, with low bandwidth, in a
+ * terminal that does not answer. */
+#ifndef SPRINGSIM_GRAPHICS_H
+#define SPRINGSIM_GRAPHICS_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "../core/config.h"
+#include "../fig/pixels.h"
+#include "chart.h"
+
+#define GRAPHICS_TIMEOUT_MS 100 /* how long the terminal has to answer at start */
+#define GRAPHICS_SLOTS 8        /* charts shown at once, at most */
+
+enum graphics_mode { GRAPHICS_BRAILLE, GRAPHICS_SIXEL, GRAPHICS_KITTY };
+
+struct graphics {
+    enum graphics_mode mode;   /* what the charts are drawn with now */
+    enum graphics_mode can;    /* what the terminal said it shows (BRAILLE: no images) */
+    int cw, ch;                /* a cell in pixels (0: not known) */
+    bool dark;                 /* the background is dark */
+    double bg[3];              /* the background (0..1) */
+    bool overlay;              /* an overlay was open at the last frame */
+    int n;                     /* images on the screen */
+    struct rect at[GRAPHICS_SLOTS];  /* where */
+    uint64_t hash[GRAPHICS_SLOTS];   /* of what */
+    struct fig_bytes img, out; /* the image, and the bytes sent */
+    char said[160];            /* what start-up found, for the status line ("" if nothing) */
+};
+
+/* Asks the terminal (standard input and output, before curses starts) and chooses the
+ * mode for want; low bandwidth, tmux and screen choose braille without asking. */
+void graphics_detect(struct graphics *g, const struct config *c);
+
+/* Switches to mode (braille, or what the terminal can show); false when it cannot. */
+bool graphics_set(struct graphics *g, enum graphics_mode mode);
+
+/* The images on the screen are gone (resize, Ctrl+L, a new layout): send them again. */
+void graphics_invalidate(struct graphics *g);
+
+/* After a frame: the n charts shown as images where they changed; with overlay, none
+ * (kitty's are taken away, since text does not cover them). */
+void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool overlay);
+
+/* Frees what it holds. */
+void graphics_free(struct graphics *g);
+
+/* The name of a mode, as --graphics spells it. */
+const char *graphics_name(enum graphics_mode mode);
+
+#endif

@@ -1,0 +1,137 @@
+#!/bin/sh
+# tests/pixels.sh: --graphics in a pseudo-terminal of our own (tests/pixterm.c) that answers
+# the program's queries as a sixel terminal, a kitty one, one without images or one that
+# answers nothing (issue 18). The images are decoded (tests/sixelcheck.c: libsixel's
+# decoder, or cairo's PNG reader for kitty's) and checked against what the terminal shows
+# as text (tests/lib/screen.py, pyte's emulator): each sits on its chart's drawing area and
+# has its size in pixels, a cosine's peaks lie on the pixel rows the y labels give for
+# +-0.5 m, each mass's colour is there; images go only where the terminal says it shows
+# them, only when they changed, not over an overlay and again after it. A terminal that
+# does not answer, tmux, --graphics braille and --low-bandwidth get braille.
+# Ends with "pixels: N passed, M failed".
+NAME=pixels
+. "$(dirname "$0")/lib/check.sh"
+trap 'exit 1' HUP INT TERM
+plain_env
+root=$(cd "$(dirname "$0")/.." && pwd)
+PIXTERM=${PIXTERM:-$root/build/tests/pixterm}
+SIXELCHECK=${SIXELCHECK:-$root/build/tests/sixelcheck}
+screen="/usr/bin/python3 $root/tests/lib/screen.py"
+# UTF-8 (braille) and box drawing as Unicode, which pyte shows as it is.
+LC_ALL=C.UTF-8
+NCURSES_NO_UTF8_ACS=1
+export LC_ALL NCURSES_NO_UTF8_ACS
+M1=005fff
+M2=008700
+M3=d75f00
+MOTOR=d700af
+COSINE="-n 1 --boundary wall --x0 0.5 --damping 0"
+
+# term KIND KEYS ARGS...: the program ($PROG, or springsim) in a 100x30 terminal of KIND
+# with cells of 10 x 20 pixels on white, KEYS typed; its output in $tmp/out, the images
+# in $tmp/images.
+term() {
+    kind=$1 keys=$2
+    shift 2
+    cmd="pixterm $kind '$keys' springsim $*"
+    "$PIXTERM" "$kind" 100 30 10 20 ffffff "$tmp/out" "$keys" ${PROG:-"$SPRINGSIM"} "$@"
+    rc=$?
+    "$SIXELCHECK" "$tmp/out" $M1 $M2 $M3 $MOTOR >"$tmp/images"
+}
+images() { grep -c "^$1 " "$tmp/images"; }
+# braille_shown: braille cells (U+2800..U+28FF) in the output.
+braille_shown() { LC_ALL=C grep -q "$(printf '\342[\240-\243]')" "$tmp/out"; }
+queried() { LC_ALL=C grep -q "$(printf '\033\\[c')" "$tmp/out"; }
+
+# 1. A sixel terminal: the enlarged displacement of an undamped cosine (0.5 m).
+term sixel '1 ~~~ ~q' $COSINE
+[ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
+last=$(grep '^sixel ' "$tmp/images" | tail -n 1)
+n=$(images sixel)
+[ "$n" -ge 2 ] && pass || fail "$cmd: expected images while running; got $n"
+$screen chart "$tmp/out" 100 30 Displacement "$n" >"$tmp/chart"
+set -- $(head -n 1 "$tmp/chart")
+ay=$1 ax=$2 aw=$3 ah=$4
+set -- $last
+if [ "$2 $3" = "$ay $ax" ]; then pass; else
+    fail "$cmd: the image is at row $2 column $3, the drawing area at $ay $ax"
+fi
+if [ "$4 $5" = "$((aw * 10)) $((ah * 20))" ]; then pass; else
+    fail "$cmd: the image is $4 x $5 pixels, the area $aw x $ah cells of 10 x 20"
+fi
+# The peaks: mass 1's colour from the row of +0.5 m to that of -0.5 m, by the labels.
+span=${6%:*}
+if tail -n +2 "$tmp/chart" | awk -v ay="$ay" -v span="$span" '
+    { v[NR] = $1; r[NR] = $2; n = NR }
+    END { a = (r[n] - r[1]) / (v[n] - v[1]); b = r[1] - a * v[1]
+          top = (a * 0.5 + b - ay + 0.5) * 20; bottom = (a * -0.5 + b - ay + 0.5) * 20
+          split(span, s, ":")
+          exit !(n >= 3 && s[1] >= top - 1 && s[1] <= top + 1 && s[2] >= bottom - 1 &&
+                 s[2] <= bottom + 1) }'
+then pass; else
+    fail "$cmd: mass 1's rows $span, expected the rows of +-0.5 m from the labels: $(tail -n +2 "$tmp/chart" | tr '\n' ' ')(area from row $ay)"
+fi
+# No braille on the charts' areas: the text there is blank (the chain keeps its braille).
+# area_braille N: braille in the drawing area ($ay $ax $aw $ah) after the N-th image.
+area_braille() {
+    $screen show "$tmp/out" 100 30 "$1" | /usr/bin/python3 -c '
+import sys
+ay, ax, aw, ah = (int(v) for v in sys.argv[1:])
+rows = sys.stdin.read().split("\n")[ay - 1:ay - 1 + ah]
+sys.exit(0 if any(0x2801 <= ord(c) <= 0x28ff for r in rows for c in r[ax - 1:ax - 1 + aw]) else 1)
+' "$ay" "$ax" "$aw" "$ah"
+}
+if area_braille "$n"; then
+    fail "$cmd: braille left on the drawing area under the image"
+else pass; fi
+
+# 2. The six plots of three masses: every mass's colour and the motor's in plot 1's image.
+term sixel ' ~~q' -n 3
+if grep '^sixel ' "$tmp/images" | awk '{ for (i = 6; i <= 9; i++) { split($i, s, ":"); if (s[3] < 20) next }
+    found = 1 } END { exit !found }'; then pass; else
+    fail "$cmd: no image holds masses 1, 2, 3 and the motor: $(head -n 6 "$tmp/images" | tr '\n' '|')"
+fi
+
+# 3. Only when changed: a chain at rest sends each chart's image once; an overlay (help)
+# takes none and its closing sends them again.
+places() { awk '$1 == "sixel" { print $2, $3 }' "$tmp/images" | sort -u | wc -l; }
+term sixel '~~q'
+if [ "$(places)" -ge 2 ] && [ "$(images sixel)" = "$(places)" ]; then pass; else
+    fail "$cmd: a still chain sent $(images sixel) images to $(places) charts, expected one each"
+fi
+term sixel '~?~~\e~~q'
+if [ "$(places)" -ge 2 ] && [ "$(images sixel)" = "$((2 * $(places)))" ]; then pass; else
+    fail "$cmd: help opened and closed on a still chain: $(images sixel) images to $(places) charts, expected two each"
+fi
+
+# 4. Kitty's protocol: PNG images of the areas' size.
+term kitty '1 ~~ q' $COSINE
+n=$(images kitty)
+last=$(grep '^kitty ' "$tmp/images" | tail -n 1)
+set -- $last
+if [ "$n" -ge 1 ] && [ "$2 $3 $4 $5" = "$ay $ax $((aw * 10)) $((ah * 20))" ] &&
+    [ "${6##*:}" -gt 100 ]; then pass; else
+    fail "$cmd: expected kitty images of $((aw * 10)) x $((ah * 20)) at $ay $ax in mass 1's colour; got $n, last: $last"
+fi
+[ "$(images sixel)" = 0 ] && pass || fail "$cmd: sixel sent to kitty"
+
+# 5. Braille: a terminal without images, one that never answers, --graphics braille,
+# --low-bandwidth, and inside tmux (not even asked).
+for how in "vt220 ~q" "none ~q" "sixel ~q --graphics braille" "sixel ~q --low-bandwidth"; do
+    set -- $how
+    k=$1 keys=$2
+    shift 2
+    term "$k" "$keys" "$@"
+    if [ "$(images sixel) $(images kitty)" = "0 0" ] && braille_shown; then pass; else
+        fail "$cmd: expected braille and no image; images: $(images sixel) sixel, $(images kitty) kitty"
+    fi
+done
+PROG=env term sixel '~q' TMUX=/tmp/x,1,0 "$SPRINGSIM"
+if [ "$(images sixel)" = 0 ] && braille_shown && ! queried; then pass; else
+    fail "inside tmux: expected braille and no query; images: $(images sixel)"
+fi
+# Asked for by name in a terminal that gives its cell size: believed.
+term vt220 '~q' --graphics sixel
+[ "$(images sixel)" -ge 1 ] && pass || fail "$cmd: --graphics sixel sent no image"
+
+summary

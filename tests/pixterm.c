@@ -1,0 +1,135 @@
+/* pixterm.c: a terminal of our own for the pixel tests. Runs a program in a
+ * pseudo-terminal of COLS x ROWS cells, answers its queries as a terminal of the kind
+ * given would, types keys, and keeps every byte the program wrote in OUT.
+ *   sixel  primary device attributes with 4 (sixel), its cell size (CSI 16 t), its
+ *          background (OSC 11)
+ *   kitty  kitty's graphics query answered OK, device attributes without 4, cell size
+ *   vt220  device attributes without 4, cell size: a terminal without images
+ *   none   answers nothing
+ * KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is Esc. The
+ * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s.
+ * usage: pixterm KIND COLS ROWS CELL_W CELL_H BG(RRGGBB) OUT KEYS PROGRAM [ARGS...] */
+#include <poll.h>
+#include <pty.h>
+#include <signal.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static void say(int fd, const char *s)
+{
+    if (write(fd, s, strlen(s)) < 0)
+        perror("pixterm: write");
+}
+
+/* Answers each query in what the program wrote (its queries come in one write). */
+static void answer(int fd, const char *kind, const char *tail, int cw, int ch, int cols,
+                   int rows, const char *bg)
+{
+    char buf[128];
+    bool none = strcmp(kind, "none") == 0, sixel = strcmp(kind, "sixel") == 0,
+         kitty = strcmp(kind, "kitty") == 0;
+    if (none)
+        return;
+    /* In the order asked. */
+    const char *q = tail;
+    while ((q = strchr(q, '\033'))) {
+        if (strncmp(q, "\033_Gi=31,", 8) == 0 && kitty) {
+            say(fd, "\033_Gi=31;OK\033\\");
+        } else if (strncmp(q, "\033[16t", 5) == 0) {
+            snprintf(buf, sizeof buf, "\033[6;%d;%dt", ch, cw);
+            say(fd, buf);
+        } else if (strncmp(q, "\033[14t", 5) == 0) {
+            snprintf(buf, sizeof buf, "\033[4;%d;%dt", ch * rows, cw * cols);
+            say(fd, buf);
+        } else if (strncmp(q, "\033]11;?", 6) == 0) {
+            snprintf(buf, sizeof buf, "\033]11;rgb:%.2s%.2s/%.2s%.2s/%.2s%.2s\033\\", bg, bg,
+                     bg + 2, bg + 2, bg + 4, bg + 4);
+            say(fd, buf);
+        } else if (strncmp(q, "\033[c", 3) == 0) {
+            say(fd, sixel ? "\033[?63;1;2;4;6;9;15;22c" : "\033[?62;1;2;6;9;15;22c");
+        }
+        q++;
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 10) {
+        fprintf(stderr, "usage: pixterm KIND COLS ROWS CELL_W CELL_H BG OUT KEYS PROGRAM...\n");
+        return 2;
+    }
+    const char *kind = argv[1], *bg = argv[6], *keys = argv[8];
+    int cols = atoi(argv[2]), rows = atoi(argv[3]), cw = atoi(argv[4]), ch = atoi(argv[5]);
+    FILE *out = fopen(argv[7], "wb");
+    if (!out) {
+        perror(argv[7]);
+        return 1;
+    }
+    /* No pixel size in the window size: the program has to ask (CSI 16 t). */
+    struct winsize ws = {(unsigned short)rows, (unsigned short)cols, 0, 0};
+    int fd;
+    pid_t pid = forkpty(&fd, NULL, NULL, &ws);
+    if (pid < 0) {
+        perror("forkpty");
+        return 1;
+    }
+    if (pid == 0) {
+        setenv("TERM", "xterm-256color", 1);
+        unsetenv("TMUX");
+        unsetenv("STY");
+        execvp(argv[9], argv + 9);
+        _exit(127);
+    }
+    double start = now_s(), next_key = start + 1.0;
+    const char *k = keys;
+    for (;;) {
+        double t = now_s();
+        if (t - start > 30.0) {
+            kill(pid, SIGTERM);
+            break;
+        }
+        if (*k && t >= next_key) {
+            if (*k == '~') {
+                next_key = t + 1.0;
+            } else if (k[0] == '\\' && k[1] == 'e') {
+                say(fd, "\033");
+                k++;
+                next_key = t + 0.3;
+            } else {
+                char c[2] = {*k, 0};
+                say(fd, c);
+                next_key = t + 0.3;
+            }
+            k++;
+        }
+        struct pollfd p = {fd, POLLIN, 0};
+        if (poll(&p, 1, 20) <= 0)
+            continue;
+        char buf[65536 + 256];
+        ssize_t r = read(fd, buf, 65536);
+        if (r <= 0)
+            break; /* the program ended */
+        fwrite(buf, 1, (size_t)r, out);
+        buf[r] = '\0';
+        for (ssize_t i = 0; i < r; i++)
+            if (buf[i] == '\0')
+                buf[i] = ' ';
+        answer(fd, kind, buf, cw, ch, cols, rows, bg);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    fclose(out);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
