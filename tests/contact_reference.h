@@ -590,11 +590,14 @@ static void ref_advance(struct ref *r, double t1)
                     }
                 }
             }
-            if (r->held[r->n]) /* carried on: it now moves at the piston's new speed */
-                for (int j = r->n - 1; j >= 0 && (j == r->n - 1 || r->held[j + 1]); j--) {
-                    r->motor_work += 0.5 * r->m[j] * (du1 * du1 - r->v[j] * r->v[j]);
-                    r->v[j] = du1;
-                }
+            if (r->held[r->n] && du1 != r->v[r->n - 1]) {
+                /* A corner under what the piston carries: turning away it leaves it,
+                 * turning into it that is a contact. */
+                bool into = du1 < r->v[r->n - 1];
+                r->held[r->n] = false;
+                if (into)
+                    ref_contact(r, r->n);
+            }
         }
     }
 }

@@ -308,11 +308,12 @@ static void numbered_cases(void **state)
 {
     (void)state;
     static const double dts[4] = {0.01, 0.005, 0.0025, 0.00125};
-    for (int j = 0; j < 3; j++) {
-        struct kase c = {.kind = (const char *[]){"neighbours", "graze", "rest"}[j]};
-        c.m = model_new(j == 0 ? 3 : 1);
+    for (int j = 0; j < 5; j++) {
+        struct kase c = {
+            .kind = (const char *[]){"neighbours", "graze", "rest", "corner", "overrun"}[j]};
+        c.m = model_new(j == 0 || j == 3 ? 3 - (j == 3) : 1);
         assert_non_null(c.m);
-        c.duration = j == 2 ? 20.0 : 5.0;
+        c.duration = (const double[]){5.0, 5.0, 20.0, 2.1, 0.5}[j];
         if (j == 0) { /* -n 3 --damping 0 --boundary wall --x0=1.95,0,-2.09 --v0=10,0,0 */
             c.m->boundary = BOUNDARY_WALL;
             for (int i = 0; i < 3; i++)
@@ -321,13 +322,29 @@ static void numbered_cases(void **state)
         } else if (j == 1) { /* --spring 50,10 --damping 0 --boundary free --x0=-4 --v0=... */
             c.m->k[0] = 50.0, c.m->c[0] = 0.0, c.m->boundary = BOUNDARY_FREE;
             c.x0[0] = -4.0, c.v0[0] = -18.762942213309717;
-        } else { /* --spring 2,50 --damping 1 --amplitude 6 --frequency 0.1 */
+        } else if (j == 2) { /* --spring 2,50 --damping 1 --amplitude 6 --frequency 0.1 */
             c.m->k[0] = 2.0, c.m->k[1] = 50.0, c.m->c[0] = 1.0;
             c.m->motor.amplitude = 6.0, c.m->motor.frequency = 0.1;
+        } else if (j == 3) {
+            /* A review's find: mass 2 comes to rest on the triangle piston at once; at
+             * its corner at 0.5 s the piston turns into the mass (a contact at 2 m/s).
+             * -n 2 --mass 1000,1 --spring 0.01,10,0.5 --damping 0 --wave triangle
+             * --amplitude 0.5 --frequency 0.5 --x0 4.2,3.1333332333 --v0 0,1.0001 */
+            c.m->m[0] = 1000.0, c.m->k[0] = 0.01, c.m->k[2] = 0.5;
+            c.m->c[0] = c.m->c[1] = 0.0;
+            c.m->motor = (struct motor){WAVE_TRIANGLE, 0.5, 0.5, 0.0};
+            c.x0[0] = 4.2, c.x0[1] = 3.1333332333, c.v0[1] = 1.0001;
+        } else {
+            /* The piston's furthest reach in falls inside a step and overruns the mass
+             * by 20 um: a contact the cubic of the drive alone would miss. */
+            c.m->k[0] = c.m->k[1] = 1e-6, c.m->c[0] = 0.0;
+            c.m->motor = (struct motor){WAVE_SINE, 1.0, 5.0, 0.125};
+            c.x0[0] = 10.0 - 1.0 - 0.2 - 5.0 + 2e-5;
         }
         struct track tr;
         track_run(&c, 0.0, dts[3], &tr);
-        assert_null(tr.error);
+        if (tr.error)
+            fail_msg("%s: the reference: %s", c.kind, tr.error);
         struct outcome o[4];
         for (int d = 0; d < 4; d++)
             sim_run(&c, &tr, dts[d], &o[d]);
@@ -351,6 +368,7 @@ static void numbered_cases(void **state)
         assert_true(ex.err <= 1e-8);
         assert_int_equal(ex.contacts, tr.contacts);
         assert_true(o[j == 1 ? 2 : 0].err <= 1e-5);
+        assert_true(tr.contacts >= 1);
         assert_true(0.5 * log2(o[0].err / o[2].err) >= 3.0 || o[0].err <= 1e-10);
         for (int d = 0; d < 4; d++) {
             assert_int_equal(o[d].contacts, tr.contacts);

@@ -98,6 +98,41 @@ static double root(const struct events_piece *p, int k, const double c[4], doubl
     return hi;
 }
 
+/* The piston's gap, whose drive strays from its cubic by up to drive_err: on each piece
+ * between the cubic's turning points that comes within drive_err of closing, the gap
+ * itself is minimised (golden section) and a minimum below -EVENTS_TOUCH closes it. */
+static double piston_close(const struct events_piece *p, int k, const double c[4],
+                           const double *pts, int np)
+{
+    const double phi = 0.6180339887498949;
+    for (int j = 0; j + 1 < np; j++) {
+        double lo = pts[j], hi = pts[j + 1];
+        if (fmin(cubic(c, lo), cubic(c, hi)) >= p->drive_err - EVENTS_TOUCH)
+            continue;
+        double glo = gap_at(p, k, lo);
+        if (glo < -EVENTS_TOUCH)
+            return lo; /* closed already at the piece's start */
+        double a = lo, b = hi, x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+        double f1 = gap_at(p, k, x1), f2 = gap_at(p, k, x2);
+        for (int it = 0; it < 60 && b - a > 1e-13; it++) {
+            if (f1 < f2) {
+                b = x2, x2 = x1, f2 = f1;
+                x1 = b - phi * (b - a), f1 = gap_at(p, k, x1);
+            } else {
+                a = x1, x1 = x2, f1 = f2;
+                x2 = a + phi * (b - a), f2 = gap_at(p, k, x2);
+            }
+        }
+        double tm = f1 < f2 ? x1 : x2, gm = fmin(f1, f2), ghi = gap_at(p, k, hi);
+        if (ghi < gm)
+            tm = hi, gm = ghi;
+        if (gm >= -EVENTS_TOUCH)
+            continue;
+        return glo > 0.0 ? root(p, k, c, lo, tm) : lo;
+    }
+    return -1.0;
+}
+
 /* Where constraint k, given its cubic c, first closes: theta, or -1. */
 static double first_close(const struct events_piece *p, int k, const double c[4])
 {
@@ -126,12 +161,11 @@ static double first_close(const struct events_piece *p, int k, const double c[4]
             pts[np++] = r;
     }
     pts[np++] = 1.0;
+    if (k == p->lim->n && p->drive_err > 0.0)
+        return piston_close(p, k, c, pts, np);
     for (int j = 0; j + 1 < np; j++) {
-        /* The piece's end is the stepped state itself; inside it, the piston's gap may
-         * stray from the cubic by the drive's own straying. */
-        bool end = j + 2 == np;
         double g1 = cubic(c, pts[j + 1]);
-        if (g1 >= -EVENTS_TOUCH - (end ? 0.0 : p->drive_err * (k == p->lim->n)))
+        if (g1 >= -EVENTS_TOUCH)
             continue;
         /* The first piece that ends closed: its root, or its start if it starts closed
          * (a turning point that never opened). */
@@ -273,7 +307,7 @@ static int body_hit(const struct collision_limits *l, const struct model *m, str
     double closing = L.v - R.v;
     if (!(closing > 0.0) || (isinf(L.mass) && isinf(R.mass)))
         return 0;
-    double e = closing < COLLISION_V_REST ? 0.0 : MODEL_RESTITUTION, vl, vr, mu;
+    double e = closing < r->v_rest ? 0.0 : MODEL_RESTITUTION, vl, vr, mu;
     r->soft[k] = e == 0.0 && r->enabled;
     if (isinf(L.mass)) {
         vl = L.v, vr = L.v + e * closing, mu = R.mass;
@@ -321,6 +355,8 @@ void events_settle_rest(const struct collision_limits *l, const struct model *m,
                         double *x, double *v, double u, double du, double ddu, double *force)
 {
     for (int k = 0; k < l->count; k++) {
+        if (!r->on[k] && !r->soft[k])
+            continue; /* the common case, in a long chain nearly every k */
         double rate = collision_rate(l, k, v, du);
         if (r->on[k] && rate > REST_RATE)
             rest_set(r, k, false);
@@ -329,7 +365,7 @@ void events_settle_rest(const struct collision_limits *l, const struct model *m,
             rest_set(r, k, true);
         r->soft[k] = false;
     }
-    for (;;) {
+    while (r->active) {
         int k = rest_forces(r, m, x, v, u, du, ddu, force);
         if (k < 0 || force[k] >= -REST_PULL)
             break;

@@ -35,6 +35,7 @@ struct rest *rest_new(int n)
     r->last = r->first + n;
     r->n = n;
     r->count = n + 1;
+    r->v_rest = COLLISION_V_REST;
     return r;
 }
 

@@ -35,6 +35,9 @@
 #define MAX_LOCATED 12
 #define LONG_CLOSING 3
 #define LONG_EVENTS 2
+/* The most a first-order method's error in a contact's speed may make it inelastic (m/s):
+ * an unstable run must still run away. */
+#define FIRST_ORDER_REST 0.1
 /* Gaps within this of zero count as touching. */
 #define TOUCH EVENTS_TOUCH
 
@@ -99,6 +102,7 @@ int sim_copy(struct sim *dst, const struct sim *src)
     dst->integrator = src->integrator;
     dst->contact = src->contact;
     dst->last_contacts = src->last_contacts;
+    dst->prev_contacts = src->prev_contacts;
     dst->last_capped = src->last_capped;
     rest_copy(dst->rest, src->rest);
     memcpy(dst->y, src->y, (size_t)(2 * src->n + 2) * sizeof *src->y);
@@ -128,6 +132,8 @@ void sim_set_model(struct sim *s, const struct model *model)
      * the new parameters pull apart. */
     if (s->rest->count != s->lim.count || !s->lim.on)
         rest_clear(s->rest, &s->lim);
+    else if (s->lim.count > s->n)
+        rest_set(s->rest, s->n, false); /* the drive may have changed under it */
 }
 
 void sim_set_integrator(struct sim *s, enum integrator i)
@@ -170,6 +176,7 @@ void sim_reset(struct sim *s, const double *x, const double *v)
     s->steps = 0.0;
     s->contact = 0.0;
     s->last_contacts = 0;
+    s->prev_contacts = 0;
     s->last_capped = 0;
     rest_clear(s->rest, &s->lim);
 }
@@ -189,6 +196,17 @@ static void at_event(struct sim *s, int k, double u, double du, double ddu)
     const struct model *m = sim_model(s);
     if (k >= 0) {
         struct collision_books b = {0.0, 0.0};
+        s->rest->v_rest = COLLISION_V_REST;
+        if (s->integrator == INTEGRATOR_EULER || s->integrator == INTEGRATOR_SEMI_IMPLICIT) {
+            /* A first-order method's velocity at the instant is off by about dt times
+             * the gap's acceleration: slower than that (up to FIRST_ORDER_REST), a
+             * contact is at rest already. */
+            double *a = s->work;
+            model_rates(m, NULL, s->y, s->y + n, u, du, a, NULL, NULL);
+            rest_project(s->rest, m, a, ddu);
+            double arel = k == 0 ? a[0] : k < n ? a[k] - a[k - 1] : ddu - a[n - 1];
+            s->rest->v_rest = fmax(COLLISION_V_REST, fmin(FIRST_ORDER_REST, s->dt * fabs(arel)));
+        }
         s->last_contacts += events_hit(&s->lim, m, s->rest, k, s->y, s->y + n, u, du, &b);
         book(s, &b);
     }
@@ -207,6 +225,7 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
     int budget = !is_long ? MAX_EVENTS : s->prev_contacts > LONG_CLOSING ? 0 : LONG_EVENTS;
     p.ddu_factor = drive_ddu_factor(d);
     bool leftover = true; /* a gap may be left closed at the end */
+    int stalls = 0;       /* events in a row at the start of what is left */
     for (int events = 0;; events++) {
         if (events == 0 && at_start) {
             s->ya = s->y0;
@@ -275,6 +294,8 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
         at_event(s, which, uc, duc, p.ddu_factor * uc);
         if (b - tc <= 1e-12 * s->dt)
             break;
+        if (tc <= a && ++stalls > 2)
+            break; /* events that make no progress (a jammed chain): settled below */
         a = tc;
     }
     /* A pile-up, and anything left over, is put back at the piece's end; in a long chain
@@ -340,6 +361,24 @@ static void jump(struct sim *s, double u_from, double u, double du)
         events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
 }
 
+/* A corner of the drive (its speed changes, as at a triangle's turn) under a cluster the
+ * piston carries: turning away it leaves it, turning into it that is a contact. */
+static void corner(struct sim *s, double u, double du)
+{
+    int n = s->n;
+    double v = s->y[2 * n - 1];
+    if (!s->lim.on || !s->rest->on[n] || du == v)
+        return;
+    const struct model *m = sim_model(s);
+    rest_set(s->rest, n, false);
+    if (du < v) {
+        struct collision_books b = {0.0, 0.0};
+        s->last_contacts += events_hit(&s->lim, m, s->rest, n, s->y, s->y + n, u, du, &b);
+        book(s, &b);
+    }
+    events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
+}
+
 /* Integrates from t0 to t1 in pieces split at the drive's breakpoints. */
 static int advance(struct sim *s, double t0, double t1)
 {
@@ -368,6 +407,10 @@ static int advance(struct sim *s, double t0, double t1)
             drive_eval(&d, a, &ua, &du);
             if (jumps && ua != u_now) {
                 jump(s, u_now, ua, du);
+                fresh = false;
+            }
+            if (s->rest->active) {
+                corner(s, ua, du);
                 fresh = false;
             }
             if (piece(s, &d, a, b, fresh) != 0)
@@ -416,6 +459,15 @@ enum sim_status sim_step(struct sim *s)
     struct collision_books b = {0.0, 0.0};
     s->last_capped = collision_cap(sim_model(s), s->y + n, &b);
     book(s, &b);
+    if (s->last_capped && s->rest->active) {
+        /* A capped mass moves no longer as what holds it: its resting contacts part. */
+        for (int i = 0; i < n; i++)
+            if (fabs(s->y[n + i]) >= MODEL_VMAX) {
+                rest_set(s->rest, i, false);
+                if (i + 1 < s->lim.count)
+                    rest_set(s->rest, i + 1, false);
+            }
+    }
     s->last_contacts += s->last_capped;
     return SIM_OK;
 }

@@ -391,6 +391,7 @@ int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, 
     case INTEGRATOR_EXACT:
         if (st->rest && st->rest->active) {
             exact_resting(st, d, a, b, y);
+            drive_eval(d, a, &st->start_u, &st->start_du);
             drive_eval(d, b, &st->end_u, &st->end_du);
             return 0;
         }
