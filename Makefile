@@ -271,6 +271,21 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	    ./$(BIN)
 	@$(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
 	@$(BUILD)/bench/bench_tty 200 60 $(BENCH_SECONDS) --low-bandwidth ./$(BIN) --low-bandwidth
+	@echo
+	@echo "pixel graphics (goals: sixel < 1 MB/s at 120x40, < 600 KB/s at 80x24, CPU < 10 %;"
+	@echo "kitty < 400 KB/s at 120x40; cells of 10x20 pixels; first frame < 150 ms with auto"
+	@echo "in a terminal that never answers, which gets braille)"
+	@echo
+	@echo "| run | size | CPU | output | first frame | peak RSS |"
+	@echo "| --- | --- | --- | --- | --- | --- |"
+	@BENCH_TERM=sixel $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) sixel ./$(BIN)
+	@BENCH_TERM=sixel $(BUILD)/bench/bench_tty 80 24 $(BENCH_SECONDS) sixel ./$(BIN)
+	@BENCH_TERM=sixel BENCH_KEYS='1 ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
+	    'sixel, plot 1 enlarged' ./$(BIN)
+	@BENCH_TERM=kitty $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) kitty ./$(BIN)
+	@BENCH_TERM=kitty $(BUILD)/bench/bench_tty 80 24 $(BENCH_SECONDS) kitty ./$(BIN)
+	@BENCH_TERM=none $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
+	    'auto, a terminal that never answers' ./$(BIN)
 
 # Fuzzing with clang's libFuzzer under ASan + UBSan: make fuzz FUZZ_SECONDS=N runs each
 # target N seconds from its seed corpus (a copy: what it finds stays in build/fuzz).

@@ -1,7 +1,6 @@
-/* pixels.c: drawing areas as sixel or PNG images. The sixel palette is fixed: the
- * background, the gridlines, the foreground and every colour of a line, each also at a
- * quarter, a half and three quarters over the background (cairo's anti-aliasing lands
- * near those), mapped without diffusion, so a colour drawn is a colour sent. */
+/* pixels.c: drawing areas as sixel or PNG images. Sixel uses xterm's 256 colours, which
+ * hold every colour of the program exactly, mapped without diffusion: a colour drawn is
+ * a colour sent, and the anti-aliased edges take the nearest of the others. */
 #include "pixels.h"
 
 #include <cairo.h>
@@ -14,9 +13,6 @@
 
 #include "paint.h"
 
-#define LINE_COLORS (FIG_COLOR_COUNT - 1) /* colour numbers 1 .. FIG_COLOR_COUNT - 1 */
-#define BLENDS 3
-#define PALETTE (2 + LINE_COLORS * (BLENDS + 1))
 
 double fig_pixel_x(double x, int cw)
 {
@@ -99,38 +95,15 @@ static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch, bool d
         fig_paint_strokes(cr, c->strokes, cw, ch, dark);
 }
 
-/* The fixed palette as RGB bytes. */
-static void palette(unsigned char *p, bool dark, const double bg[3])
+static int encode_sixel(unsigned char *rgb, int w, int h, struct fig_bytes *out)
 {
-    double v[3];
-    int k = 0;
-    for (int i = 0; i < 3; i++)
-        p[k++] = (unsigned char)lround(bg[i] * 255.0);
-    fig_rgb(FIG_GRID, dark, v);
-    for (int i = 0; i < 3; i++)
-        p[k++] = (unsigned char)lround(v[i] * 255.0);
-    for (int c = 1; c <= LINE_COLORS; c++) {
-        fig_rgb(c, dark, v);
-        for (int b = 0; b <= BLENDS; b++) {
-            double a = 1.0 - (double)b / (BLENDS + 1);
-            for (int i = 0; i < 3; i++)
-                p[k++] = (unsigned char)lround((a * v[i] + (1.0 - a) * bg[i]) * 255.0);
-        }
-    }
-}
-
-static int encode_sixel(unsigned char *rgb, int w, int h, bool dark, const double bg[3],
-                        struct fig_bytes *out)
-{
-    unsigned char pal[3 * PALETTE];
-    palette(pal, dark, bg);
-    sixel_dither_t *dither = NULL;
+    /* xterm's 256 colours: the program's colours are among them (its 6x6x6 cube), and
+     * libsixel maps onto a built-in palette through its cache, fast enough for every
+     * refresh. */
+    sixel_dither_t *dither = sixel_dither_get(SIXEL_BUILTIN_XTERM256);
     sixel_output_t *output = NULL;
-    SIXELSTATUS st = sixel_dither_new(&dither, PALETTE, NULL);
-    if (SIXEL_SUCCEEDED(st))
-        st = sixel_output_new(&output, sixel_write, out, NULL);
+    SIXELSTATUS st = dither ? sixel_output_new(&output, sixel_write, out, NULL) : SIXEL_BAD_ALLOCATION;
     if (SIXEL_SUCCEEDED(st)) {
-        sixel_dither_set_palette(dither, pal);
         sixel_dither_set_diffusion_type(dither, SIXEL_DIFFUSE_NONE);
         sixel_dither_set_pixelformat(dither, SIXEL_PIXELFORMAT_RGB888);
         st = sixel_encode(rgb, w, h, 3, dither, output);
@@ -143,7 +116,7 @@ static int encode_sixel(unsigned char *rgb, int w, int h, bool dark, const doubl
 }
 
 int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
-               enum fig_encoding e, struct fig_bytes *out)
+               enum fig_encoding e, struct fig_bytes *out, struct fig_bytes *scratch)
 {
     int w = c->aw * cw, h = c->ah * ch;
     out->len = 0;
@@ -162,7 +135,9 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
                   ? 0 : ENOMEM;
     } else if (!err) {
         /* cairo's RGB24 is a native-endian 32-bit word a pixel: take out R, G, B. */
-        unsigned char *rgb = malloc((size_t)w * (size_t)h * 3);
+        size_t need = (size_t)w * (size_t)h * 3;
+        scratch->len = 0;
+        unsigned char *rgb = grow(scratch, need) ? scratch->data : NULL;
         const unsigned char *src = cairo_image_surface_get_data(s);
         int stride = cairo_image_surface_get_stride(s);
         if (!rgb) {
@@ -177,8 +152,7 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
                     p[2] = (unsigned char)row[x];
                 }
             }
-            err = encode_sixel(rgb, w, h, dark, bg, out);
-            free(rgb);
+            err = encode_sixel(rgb, w, h, out);
         }
     }
     cairo_surface_destroy(s);

@@ -6,6 +6,7 @@
 
 #include <ctype.h>
 #include <glib.h>
+#include <math.h>
 #include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -289,10 +290,14 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
             return;
         }
     }
+    double now = now_ms() / 1e3;
+    if (now < g->next_at)
+        return; /* what changed goes at a later frame */
     g->out.len = 0;
     g->out.failed = false;
     out_add(&g->out, "\0337", 2); /* the cursor, as curses left it */
     int sent = 0;
+    double pixels = 0.0;
     for (int i = 0; i < n && i < GRAPHICS_SLOTS; i++) {
         struct fig_chart pic;
         chart_picture(charts[i], &pic);
@@ -303,7 +308,7 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         if (i < g->n && g->hash[i] == h && memcmp(&g->at[i], &r, sizeof r) == 0)
             continue;
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
-        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, &g->img) != 0)
+        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, &g->img, &g->rgb) != 0)
             continue;
         char pos[32];
         int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);
@@ -313,12 +318,15 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         else
             out_add(&g->out, g->img.data, g->img.len);
         g->hash[i] = h, g->at[i] = r;
+        pixels += (double)pic.aw * pic.ah * g->cw * g->ch;
         sent++;
     }
     g->n = n < GRAPHICS_SLOTS ? n : GRAPHICS_SLOTS;
     out_add(&g->out, "\0338", 2);
     if (!sent || g->out.failed)
         return;
+    double rate = g->mode == GRAPHICS_KITTY ? GRAPHICS_KITTY_BYTES_S : GRAPHICS_SIXEL_BYTES_S;
+    g->next_at = now + fmax(pixels / GRAPHICS_PIXELS_S, (double)g->out.len / rate);
     fflush(stdout);
     size_t done = 0;
     while (done < g->out.len) {
@@ -333,4 +341,5 @@ void graphics_free(struct graphics *g)
 {
     fig_bytes_free(&g->img);
     fig_bytes_free(&g->out);
+    fig_bytes_free(&g->rgb);
 }

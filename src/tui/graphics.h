@@ -17,6 +17,12 @@
 
 #define GRAPHICS_TIMEOUT_MS 100 /* how long the terminal has to answer at start */
 #define GRAPHICS_SLOTS 8        /* charts shown at once, at most */
+/* The images' pace: a batch of P pixels and B bytes is followed by none for P / PIXELS_S or
+ * B / BYTES_S seconds, the longer (so a large terminal refreshes its images less often,
+ * as the braille plots do, and the link and the CPU are spared). */
+#define GRAPHICS_PIXELS_S 1.2e6
+#define GRAPHICS_SIXEL_BYTES_S 700e3
+#define GRAPHICS_KITTY_BYTES_S 300e3
 
 enum graphics_mode { GRAPHICS_BRAILLE, GRAPHICS_SIXEL, GRAPHICS_KITTY };
 
@@ -30,8 +36,9 @@ struct graphics {
     int n;                     /* images on the screen */
     struct rect at[GRAPHICS_SLOTS];  /* where */
     uint64_t hash[GRAPHICS_SLOTS];   /* of what */
-    struct fig_bytes img, out; /* the image, and the bytes sent */
+    struct fig_bytes img, out, rgb; /* the image, the bytes sent, the pixels on their way */
     char said[160];            /* what start-up found, for the status line ("" if nothing) */
+    double next_at;            /* monotonic seconds before which no image is sent */
 };
 
 /* Asks the terminal (standard input and output, before curses starts) and chooses the

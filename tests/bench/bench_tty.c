@@ -1,10 +1,14 @@
 /* bench_tty.c: the interactive program in a pseudo-terminal of a given size, running
  * for a given time after one press of space, as a person would start it: time to the
  * first frame, CPU share, bytes written to the terminal per second, peak resident
- * memory. Prints one table row.
+ * memory. Prints one table row. The terminal answers the program's start-up queries as
+ * BENCH_TERM says: vt220 (the default: device attributes without sixel, so braille),
+ * sixel or kitty (images; cells of 10 x 20 pixels, a white background), or none (it
+ * never answers: the program waits its 100 ms and draws braille).
  * usage: bench_tty COLS ROWS SECONDS LABEL PROGRAM [ARGS...] */
 #include <errno.h>
 #include <poll.h>
+#include <stdbool.h>
 #include <pty.h>
 #include <signal.h>
 #include <stdio.h>
@@ -55,6 +59,30 @@ static long peak_kb(pid_t pid)
     return kb;
 }
 
+static const char *term_kind = "vt220";
+
+/* Answers the queries in what the program wrote, as a terminal of term_kind. */
+static void answer(int fd, const char *buf, size_t n)
+{
+    bool sixel = strcmp(term_kind, "sixel") == 0, kitty = strcmp(term_kind, "kitty") == 0;
+    if (strcmp(term_kind, "none") == 0)
+        return;
+    for (const char *q = buf; (q = memchr(q, '\033', (size_t)(buf + n - q))); q++) {
+        const char *a = NULL;
+        size_t left = (size_t)(buf + n - q);
+        if (left >= 8 && memcmp(q, "\033_Gi=31,", 8) == 0 && kitty)
+            a = "\033_Gi=31;OK\033\\";
+        else if (left >= 5 && memcmp(q, "\033[16t", 5) == 0)
+            a = "\033[6;20;10t";
+        else if (left >= 6 && memcmp(q, "\033]11;?", 6) == 0)
+            a = "\033]11;rgb:ffff/ffff/ffff\033\\";
+        else if (left >= 3 && memcmp(q, "\033[c", 3) == 0)
+            a = sixel ? "\033[?63;1;2;4;6;9;15;22c" : "\033[?62;1;2;6;9;15;22c";
+        if (a && write(fd, a, strlen(a)) < 0)
+            return;
+    }
+}
+
 /* Reads what the terminal gets until the deadline; counts the bytes; with want, stops
  * as soon as that text has arrived (it may span reads: a small tail is kept). */
 static long pump(int fd, double until, const char *want, double *seen_at)
@@ -71,6 +99,7 @@ static long pump(int fd, double until, const char *want, double *seen_at)
         if (r <= 0)
             break;
         total += r;
+        answer(fd, buf, (size_t)r);
         if (want) {
             memcpy(tail + keep, buf, (size_t)r);
             size_t len = keep + (size_t)r;
@@ -93,6 +122,8 @@ int main(int argc, char **argv)
         return 2;
     }
     struct winsize ws = {(unsigned short)atoi(argv[2]), (unsigned short)atoi(argv[1]), 0, 0};
+    if (getenv("BENCH_TERM"))
+        term_kind = getenv("BENCH_TERM");
     double secs = atof(argv[3]);
     int fd;
     double t0 = now_s();
