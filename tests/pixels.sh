@@ -85,6 +85,12 @@ if area_braille "$n"; then
     fail "$cmd: braille left on the drawing area under the image"
 else pass; fi
 
+# Sixel goes at the cursor whatever the terminal's sixel display mode was: DECSDM is reset
+# before the images (xterm's sixelScrolling false would put them at the top left).
+if LC_ALL=C grep -q "$(printf '\033\\[?80l\033\\[[0-9;]*H\033P')" "$tmp/out"; then pass; else
+    fail "$cmd: no DECSDM reset (CSI ? 80 l) before the images"
+fi
+
 # 2. The six plots of three masses: every mass's colour and the motor's in plot 1's image.
 term sixel ' ~~q' -n 3
 if grep '^sixel ' "$tmp/images" | awk '{ for (i = 6; i <= 9; i++) { split($i, s, ":"); if (s[3] < 20) next }

@@ -296,6 +296,10 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
     g->out.len = 0;
     g->out.failed = false;
     out_add(&g->out, "\0337", 2); /* the cursor, as curses left it */
+    /* Sixel at the cursor, not at the screen's top left (DECSDM off: xterm's
+     * sixelScrolling, which a user may have turned the other way). */
+    if (g->mode == GRAPHICS_SIXEL)
+        out_add(&g->out, "\033[?80l", 6);
     int sent = 0;
     double pixels = 0.0;
     for (int i = 0; i < n && i < GRAPHICS_SLOTS; i++) {
