@@ -22,6 +22,10 @@ printf 'title Broken\npreset resonance\nset frequency 0.5\nwobble 3\n' \
     >"$tmp/xdg-bad/springsim/lessons/broken.lesson"
 start bad 80 24 "XDG_CONFIG_HOME=$tmp/xdg-bad"
 start rec 80 24 -- -p 3-mass-chain --record "$tmp/rec.lesson"
+for f in "$root"/lessons/*.lesson; do
+    n=$(basename "$f" .lesson)
+    start "ask-$n" 80 24 -- --lesson "$n"
+done
 shot() { [ -n "$SHOTS" ] && mkdir -p "$SHOTS" && cp "$scr" "$SHOTS/$1.txt"; }
 
 # row N: the first screen row (1-based) holding TEXT; 0 if none
@@ -39,8 +43,10 @@ for size in 80 120; do
     top=$(row 'Lesson 1/7')
     # the panel: below every plot and the controls' frame, across the screen, its
     # question and the three choices in it, and its keys
+    # (the whole step, its caption too, fits in the panel even at 80x24)
     if [ -n "$top" ] && [ "$(plots_bottom)" -lt "$top" ] && has 'At what frequency will the mass swing the most?' &&
-        has '1) 0.50 Hz' && has '2) 0.71 Hz' && has '3) 1.00 Hz' && has '1-3 answers' &&
+        has 'One mass of 1 kg between two springs of 10 N/m; the motor shakes one end.' &&
+        has '1) 0.50 Hz: sqrt(k/m)/2pi' && has '2) 0.71 Hz' && has '3) 1.00 Hz' && has '1-3 answers' &&
         has 'Esc leaves' && has Controls && has 'Displacement'; then pass; else
         fail "$S: the caption panel should sit below the plots and controls with the question, its three choices and its keys; screen: $(brief)"
     fi
@@ -75,6 +81,26 @@ for size in 80 120; do
     keys Space
     if wait_re 'Running|t = 3[0-9]\.[0-9]*[1-9][0-9]* s' 3; then pass; else
         fail "$S: after the lesson, space should start the chain; screen: $(brief)"
+    fi
+done
+
+# ---- every built-in lesson's first question reads whole at 80x24: its step's caption,
+# the question and each choice on a line of its own ----
+for f in "$root"/lessons/*.lesson; do
+    n=$(basename "$f" .lesson)
+    S=ask-$n
+    up "$S" || continue
+    # the step's caption lines, the question and the choices ("K) TEXT"), one a line
+    awk '$1 == "pause" { n = 0 } $1 == "say" { sub(/^[ \t]*say[ \t]+/, ""); say[n++] = $0 }
+         $1 == "ask" { for (i = 0; i < n; i++) print say[i]; sub(/^[ \t]*ask[ \t]+/, ""); print; q = 1; next }
+         q && $1 == "choice" { sub(/^[ \t]*choice[ \t]+/, ""); print ++k ") " $0; next }
+         q && $1 != "choice" { exit }' "$f" >"$tmp/ask-$n"
+    i=0
+    while ! has ' answers ' && [ $i -lt 6 ]; do keys Space; sleep 0.3; cap; i=$((i + 1)); done
+    missing=
+    while IFS= read -r line; do has "$line" || missing="$missing|$line"; done <"$tmp/ask-$n"
+    if [ -s "$tmp/ask-$n" ] && has ' answers ' && [ -z "$missing" ]; then pass; else
+        fail "$n at 80x24: the first question's step should show whole; missing: $missing; screen: $(brief)"
     fi
 done
 
