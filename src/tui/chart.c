@@ -128,6 +128,11 @@ int chart_dot_y(const struct chart *c, double v)
     return 4 * c->area.h - 1 - (int)lround(axis_dot(&c->ya, v));
 }
 
+double chart_dot_yf(const struct chart *c, double v)
+{
+    return 4 * c->area.h - 1 - axis_dot(&c->ya, v);
+}
+
 /* True when tick k of axis a is the value 0. */
 static bool is_zero(const struct axis *a, int cell)
 {

@@ -76,6 +76,9 @@ void chart_ticks_from_axis(struct chart_ticks *t, const struct axis *a);
 /* Canvas dot row (from the top) of y value v. */
 int chart_dot_y(const struct chart *c, double v);
 
+/* The same unrounded: where a stroke in pixels goes through. */
+double chart_dot_yf(const struct chart *c, double v);
+
 /* Draws the frame with title (short_title where the long one does not fit), the axes
  * with their ticks and labels (xunit at the left of the x labels), the gridlines, the
  * canvas and the legend on the bottom border; keeps the title, unit and legend shown. */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "../app/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
 #include "term.h"
@@ -167,17 +168,25 @@ static void draw_amplitude(struct response_view *rv, const struct app *app)
     amplitude_axes(c, top > 0.0 ? top : 1.0);
     canvas_clear(c->canvas);
     mark_frequencies(c->canvas, app);
+    struct strokes *keep = c->canvas->strokes;
+    c->canvas->mute++; /* the curves' strokes are kept unrounded below */
     for (int i = n - 1; i >= 0; i--) {
         int py = H;
+        if (keep)
+            strokes_begin(keep, (uint8_t)(PAIR_MASS + i % 10), STROKE_LINE);
         for (int x = 0; x < rv->width; x++) {
-            int y = amp_dot(c, rv->curve[(size_t)x * n + i]);
+            double a = rv->curve[(size_t)x * n + i];
+            int y = amp_dot(c, a);
             if (py < H && y < H)
                 canvas_line(c->canvas, x - 1, py, x, y, (uint8_t)(PAIR_MASS + i % 10));
             else if (y < H)
                 canvas_set(c->canvas, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            if (keep)
+                strokes_point(keep, x, a > 0 && isfinite(a) ? chart_dot_yf(c, log10(a)) : NAN);
             py = y;
         }
     }
+    c->canvas->mute--;
     for (int p = 0; p < sweep_measured(sw); p++)
         for (int i = 0; i < n; i++)
             mark_point(c->canvas, (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1)),
@@ -193,19 +202,29 @@ static void draw_phase(struct response_view *rv, const struct app *app)
     phase_axes(c);
     canvas_clear(c->canvas);
     mark_frequencies(c->canvas, app);
+    struct strokes *keep = c->canvas->strokes;
+    c->canvas->mute++; /* the curves' strokes are kept unrounded below */
     for (int i = n - 1; i >= 0; i--) {
         int py = H;
         double pp = NAN;
+        if (keep)
+            strokes_begin(keep, (uint8_t)(PAIR_MASS + i % 10), STROKE_LINE);
         for (int x = 0; x < W && x < rv->width; x++) {
             double p = rv->phase_curve[(size_t)x * n + i];
             int y = phase_dot(c, p);
-            if (py < H && y < H && fabs(p - pp) < 180.0)
+            bool joined = fabs(p - pp) < 180.0;
+            if (py < H && y < H && joined)
                 canvas_line(c->canvas, x - 1, py, x, y, (uint8_t)(PAIR_MASS + i % 10));
             else if (y < H)
                 canvas_set(c->canvas, x, y, (uint8_t)(PAIR_MASS + i % 10));
+            if (keep && !joined)
+                strokes_point(keep, NAN, NAN);
+            if (keep)
+                strokes_point(keep, x, isfinite(p) ? chart_dot_yf(c, p) : NAN);
             py = y, pp = p;
         }
     }
+    c->canvas->mute--;
     for (int p = 0; p < sweep_measured(sw); p++)
         for (int i = 0; i < n; i++)
             mark_point(c->canvas, (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1)),

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "../app/ghost.h"
+#include "../app/strokes.h"
 #include "../core/motor.h"
 #include "draw.h"
 #include "term.h"
@@ -173,14 +174,26 @@ static int trace_dot(const struct chart *c, const struct spectrum *fft, int x, d
 static void draw_trace(struct chart *c, const struct spectrum *fft, double bin_hz, uint8_t color,
                   bool dash)
 {
+    /* The strokes for pixels keep each column's level unrounded (held to the canvas as
+     * the dots are). */
+    struct strokes *keep = c->canvas->strokes;
+    if (keep)
+        strokes_begin(keep, color, dash ? STROKE_DASHED : STROKE_LINE);
+    c->canvas->mute++;
     for (int x = 0, py = -1; x < 2 * c->canvas->cols; x++) {
         int y = trace_dot(c, fft, x, bin_hz);
         if (y >= 0 && py >= 0)
             canvas_dashed_line(c->canvas, x - 1, py, x, y, color, dash);
         else if (y >= 0 && !(dash && x / 2 % 2))
             canvas_set(c->canvas, x, y, color);
+        if (keep) {
+            double v = column_level(c, fft, x, bin_hz), H = 4.0 * c->canvas->rows;
+            strokes_point(keep, x, isfinite(v) ? fmin(fmax(chart_dot_yf(c, v), 0.0), H - 1.0)
+                                               : NAN);
+        }
         py = y;
     }
+    c->canvas->mute--;
 }
 
 /* A marker at dot column x: a stem from the spectrum down to the floor, every dot of
