@@ -109,19 +109,24 @@ if command -v tmux >/dev/null 2>&1; then
     if up sel; then
         keys Tab
         wait_for '─ mass 1: m' 3
-        keys Up Up
-        if wait_for '─ spring 10: k' 3; then
+        keys Up
+        # springs numbered from 1 as in --spring, with what they join (issue 22, item 9)
+        if wait_for '─ spring 1 (wall–1): k' 3; then pass; else
+            fail "Tab, ↑ should select spring 1 (wall–1), the first of --spring; screen: $(brief "$scr" '^└─ ')"
+        fi
+        keys Up
+        if wait_for '─ spring 11 (10–motor): k' 3; then
             keys p
             wait_for ' Presets ' 3
             keys Down Enter
             wait_gone ' Presets ' 3
             if has 'EXITED'; then fail "loading a shorter preset with the chain focused killed the program"
-            elif has 'spring 10'; then fail "the selection stayed on spring 10 of a one-mass chain"
+            elif has 'spring 11'; then fail "the selection stayed on spring 11 of a one-mass chain"
             elif wait_for '─ mass 1: m' 3 && wait_for 'N 1 ' 3; then pass
             else fail "after loading a shorter preset the chain selection is not on mass 1: $(grep '^└─ ' "$scr" | head -n 1)"
             fi
         else
-            fail "Tab, ↑, ↑ on a 10-mass chain should select spring 10; screen: $(brief "$scr" '^└─ ')"
+            fail "Tab, ↑, ↑ on a 10-mass chain should select spring 11 (10–motor); screen: $(brief "$scr" '^└─ ')"
         fi
     fi
     # --low-bandwidth shows in the status line and on its control, which turns it off.

@@ -121,15 +121,16 @@ if up edit; then
             fail "per-element: Enter, 2.5, Enter on mass 1 should say 'mass 1: m = 2.5 kg'; screen: $(brief)"
         fi
         keys Down
-        if wait_re '└─ spring 1: k 10 N/m' 3; then
+        # springs numbered from 1 as in --spring, with what they join (issue 22, item 9)
+        if wait_re '└─ spring 2 \(1–2\): k 10 N/m' 3; then
             keys Enter
             text 22
             keys Enter
-            if wait_for 'spring 1: k = 22 N/m' 3 && has_re 'Spring k +mixed N/m'; then pass; else
-                fail "per-element: spring 1 Enter 22 Enter should say 'spring 1: k = 22 N/m' and Spring k 'mixed N/m'; screen: $(brief "$scr" 'Spring k')"
+            if wait_for 'spring 2 (1–2): k = 22 N/m' 3 && has_re 'Spring k +mixed N/m'; then pass; else
+                fail "per-element: spring 2 Enter 22 Enter should say 'spring 2 (1–2): k = 22 N/m' and Spring k 'mixed N/m'; screen: $(brief "$scr" 'Spring k')"
             fi
         else
-            fail "per-element: ↓ from mass 1 should select spring 1; screen: $(brief "$scr" '└─ (mass|spring)')"
+            fail "per-element: ↓ from mass 1 should select spring 2 (1–2); screen: $(brief "$scr" '└─ (mass|spring)')"
         fi
         keys Up
         if wait_re '└─ mass 1: m 2\.5 kg' 3; then
@@ -140,7 +141,7 @@ if up edit; then
                 fail "per-element: c, 0.3, Enter on mass 1 should set its damping ('mass 1: c = 0.3 N·s/m', Damping 'mixed'); screen: $(brief "$scr" 'Damping')"
             fi
         else
-            fail "per-element: ↑ from spring 1 should select mass 1 again; screen: $(brief "$scr" '└─ (mass|spring)')"
+            fail "per-element: ↑ from spring 2 should select mass 1 again; screen: $(brief "$scr" '└─ (mass|spring)')"
         fi
         # the modes view follows the edits
         "$SPRINGSIM" -n 3 --mass 2.5,1,1 --spring 10,22,10,10 --damping 0.3,0.1,0.1 --modes \

@@ -179,6 +179,10 @@ unsigned app_load_preset_text(struct app *app, const char *path, const char *tex
  * ('k'), from typed text; 0 with the reason in the message. */
 unsigned app_set_element(struct app *app, char what, int index, const char *text);
 
+/* Spring j's name for the screen: numbered from 1 as in the --spring list, with what it
+ * joins, "spring 1 (wall–1)", "spring 2 (1–2)", "spring 4 (3–motor)". */
+void app_spring_name(const struct model *m, int j, char *buf, size_t len);
+
 /* Sets the motor frequency to the natural frequency nearest to it. */
 unsigned app_nearest_mode(struct app *app);
 

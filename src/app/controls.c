@@ -327,10 +327,13 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
     const struct model *m = app->model;
     int n = m->n, count = what == 'k' ? n + 1 : n;
     enum config_key key = what == 'm' ? CFG_MASS : what == 'c' ? CFG_DAMPING : CFG_SPRING;
-    const char *noun = what == 'k' ? "spring" : "mass";
-    int number = index + (what != 'k');
     if (index < 0 || index >= count)
         return 0;
+    char noun[48];
+    if (what == 'k')
+        app_spring_name(m, index, noun, sizeof noun);
+    else
+        snprintf(noun, sizeof noun, "mass %d", index + 1);
     /* Check the one value with the key's own rules, on a scratch config. */
     struct config next;
     char err[300];
@@ -342,7 +345,7 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
             config_quote(text, strlen(text), q, sizeof q);
             snprintf(err, sizeof err, "%s is more than one value", q);
         }
-        app_say(app, true, "%s %d: %s", noun, number, err);
+        app_say(app, true, "%s: %s", noun, err);
         return 0;
     }
     double v = (what == 'm' ? next.mass : what == 'c' ? next.damping : next.spring).v[0];
@@ -355,7 +358,7 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
         l->v[i] = cur[i];
     l->v[index] = v;
     char why[64];
-    snprintf(why, sizeof why, "the change of %s %d", noun, number);
+    snprintf(why, sizeof why, "the change of %s", noun);
     unsigned changed = 0;
     if (app_change(app, &next, 0, why, &changed) != 0)
         return 0;
@@ -363,7 +366,22 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
         return changed;
     const char *symbol = what == 'm' ? "m" : what == 'c' ? "c" : "k";
     const char *unit = config_options[key].unit;
-    return changed | app_say(app, false, "%s %d: %s = %g %s", noun, number, symbol, v, unit);
+    return changed | app_say(app, false, "%s: %s = %g %s", noun, symbol, v, unit);
+}
+
+void app_spring_name(const struct model *m, int j, char *buf, size_t len)
+{
+    /* Numbered from 1 as in the --spring list; what it joins says which one it is. */
+    char left[16], right[16];
+    if (j == 0)
+        snprintf(left, sizeof left, "wall");
+    else
+        snprintf(left, sizeof left, "%d", j);
+    if (j == m->n)
+        snprintf(right, sizeof right, "%s", m->boundary == BOUNDARY_MOTOR ? "motor" : "wall");
+    else
+        snprintf(right, sizeof right, "%d", j + 1);
+    snprintf(buf, len, "spring %d (%s–%s)", j + 1, left, right);
 }
 
 unsigned app_nearest_mode(struct app *app)

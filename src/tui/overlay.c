@@ -225,8 +225,8 @@ static void draw_lessons(const struct overlay *o, const struct layout *l)
 }
 
 /* What the prompt says for the text being typed. */
-static void edit_prompt(const struct overlay *o, const struct selection *sel, char *buf,
-                        size_t len)
+static void edit_prompt(const struct overlay *o, const struct app *app,
+                        const struct selection *sel, char *buf, size_t len)
 {
     int i = sel->elem / 2;
     switch (o->target) {
@@ -239,16 +239,20 @@ static void edit_prompt(const struct overlay *o, const struct selection *sel, ch
     case EDIT_DAMPING:
         snprintf(buf, len, "mass %d: c (N·s/m) =", i + 1);
         break;
-    case EDIT_SPRING:
-        snprintf(buf, len, "spring %d: k (N/m) =", i);
+    case EDIT_SPRING: {
+        char name[48];
+        app_spring_name(app->model, i, name, sizeof name);
+        snprintf(buf, len, "%s: k (N/m) =", name);
         break;
+    }
     case EDIT_SAVE:
         snprintf(buf, len, "save preset as:");
         break;
     }
 }
 
-void overlay_draw(const struct overlay *o, const struct layout *l, const struct selection *sel)
+void overlay_draw(const struct overlay *o, const struct app *app, const struct layout *l,
+                  const struct selection *sel)
 {
     int y = l->hints.y;
     switch (o->kind) {
@@ -263,7 +267,7 @@ void overlay_draw(const struct overlay *o, const struct layout *l, const struct 
         break;
     case OVERLAY_EDIT: {
         char prompt[80];
-        edit_prompt(o, sel, prompt, sizeof prompt);
+        edit_prompt(o, app, sel, prompt, sizeof prompt);
         mvhline(y, 0, ' ', l->cols);
         attron(A_BOLD);
         int x = 1 + draw_printf(y, 1, l->cols - 1, "%s %s", prompt, o->edit);

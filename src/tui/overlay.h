@@ -55,7 +55,8 @@ unsigned overlay_key(struct overlay *o, struct app *app, const struct selection 
                      const struct layout *l, int ch);
 
 /* Draws the overlay that is up (typing and the confirmation on the footer's row). */
-void overlay_draw(const struct overlay *o, const struct layout *l, const struct selection *sel);
+void overlay_draw(const struct overlay *o, const struct app *app, const struct layout *l,
+                  const struct selection *sel);
 
 /* Frees the preset and lesson lists. */
 void overlay_free(struct overlay *o);

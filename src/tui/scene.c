@@ -257,8 +257,11 @@ void scene_draw(struct scene *s, const struct layout *l, const struct app *app,
     if (i >= 0)
         snprintf(line, sizeof line, " mass %d: m %.3g kg, c %.3g N·s/m │ Enter m  c damping"
                  "  ←→ move (paused)  ↑↓ next  Tab back ", i + 1, m->m[i], m->c[i]);
-    else
-        snprintf(line, sizeof line, " spring %d: k %.3g N/m │ Enter k  ↑↓ next  Tab back ", j,
+    else {
+        char name[48];
+        app_spring_name(m, j, name, sizeof name);
+        snprintf(line, sizeof line, " %s: k %.3g N/m │ Enter k  ↑↓ next  Tab back ", name,
                  m->k[j]);
+    }
     draw_text_attr(r.y + r.h - 1, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), line);
 }

@@ -128,7 +128,7 @@ static double draw(struct tui *t, bool refresh)
                                t->sel.focus == FOCUS_MODES, cursors_shown(t)};
         panel_hints(l, &t->app, &h);
         teach_draw(&t->teach, l);
-        overlay_draw(&t->overlay, l, &t->sel);
+        overlay_draw(&t->overlay, &t->app, l, &t->sel);
     }
     wnoutrefresh(stdscr);
     double start = now_s();
