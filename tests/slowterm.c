@@ -67,14 +67,14 @@ int main(int argc, char **argv)
     if (write(fd, "\f", 1) != 1)
         return 1;
     drain(fd, 800);
-    if (memmem(screen, have, "keeping", 7) && memmem(screen, have, "low-bw", 6)) {
+    if (memmem(screen, have, "keeping", 7) && memmem(screen, have, "low refresh", 11)) {
         passed++;
     } else {
         failed++;
         printf("FAIL: a terminal that stopped reading for 4 s: no step-down to low bandwidth "
-               "was shown (keeping: %s, low-bw: %s)\n",
+               "was shown (keeping: %s, low refresh: %s)\n",
                memmem(screen, have, "keeping", 7) ? "yes" : "no",
-               memmem(screen, have, "low-bw", 6) ? "yes" : "no");
+               memmem(screen, have, "low refresh", 11) ? "yes" : "no");
         FILE *f = getenv("SLOWTERM_DUMP") ? fopen(getenv("SLOWTERM_DUMP"), "w") : NULL;
         if (f) {
             fwrite(screen, 1, have, f);

@@ -15,7 +15,7 @@ static const char *const labels[CTL_COUNT] = {
     [CTL_INTEGRATOR] = "Integrator",
     [CTL_DAMPING] = "Damping",    [CTL_SPRING] = "Spring k",   [CTL_MASS] = "Mass",
     [CTL_BOUNDARY] = "Right end", [CTL_WAVE] = "Waveform",     [CTL_AMPLITUDE] = "Amplitude",
-    [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Bandwidth",
+    [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Refresh",
 };
 
 /* What ends a sweep, for its message. */
@@ -296,7 +296,7 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
         }
         char q[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(text, strlen(text), q, sizeof q);
-        app_say(app, true, "bandwidth: %s is not low or normal", q);
+        app_say(app, true, "refresh: %s is not low or normal", q);
         return 0;
     }
     /* Checked on a copy, so a bad value changes nothing. */
@@ -466,7 +466,7 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         snprintf(buf, len, "%gx", app->speed);
         return;
     case CTL_BANDWIDTH:
-        snprintf(buf, len, "%s", app->cfg.low_bandwidth ? "low" : "normal");
+        snprintf(buf, len, "%s", app->cfg.low_bandwidth ? "low (slow link)" : "normal");
         return;
     default:
         break;

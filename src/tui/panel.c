@@ -22,7 +22,7 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
         snprintf(motor, sizeof motor, "%s end", model_boundary_name(m->boundary));
     if (app->speed != 1.0 || behind || app->cfg.low_bandwidth)
         snprintf(speed, sizeof speed, " %s %gx%s%s", bar, app->speed, behind ? " behind" : "",
-                 app->cfg.low_bandwidth ? " low-bw" : "");
+                 app->cfg.low_bandwidth ? " low refresh" : "");
     if (app->ghost) {
         /* The ghost by what differs from the live chain. */
         char what[100];

@@ -565,7 +565,7 @@ static void watch_backlog(struct tui *t, double spent)
         t->app.cfg.low_bandwidth = true;
         graphics_set(&t->gfx, GRAPHICS_BRAILLE);
         t->backlog_frames = 0;
-        app_say(&t->app, true, "the terminal is not keeping up: low bandwidth on (Bandwidth "
+        app_say(&t->app, true, "the terminal is not keeping up: refresh low (the Refresh "
                 "control turns it back)");
     }
 }
