@@ -181,11 +181,11 @@ static void scene_and_controls(void **state)
         }
         struct rect r = l.controls;
         for (int i = 0; i < 12; i++)
-            assert_int_equal(layout_control_at(&l, r.y + 1 + i, r.x + 1, 12), i);
-        assert_int_equal(layout_control_at(&l, r.y, r.x + 1, 12), -1);      /* the frame */
-        assert_int_equal(layout_control_at(&l, r.y + 13, r.x + 1, 12), -1); /* below them */
-        assert_int_equal(layout_control_at(&l, r.y + 1, r.x, 12), -1);      /* the border */
-        assert_int_equal(layout_control_at(&l, r.y + 1, 0, 12), -1);
+            assert_int_equal(layout_control_at(&l, r.y + 1 + i, r.x + 1, 12, 0), i);
+        assert_int_equal(layout_control_at(&l, r.y, r.x + 1, 12, 0), -1);      /* the frame */
+        assert_int_equal(layout_control_at(&l, r.y + 13, r.x + 1, 12, 0), -1); /* below them */
+        assert_int_equal(layout_control_at(&l, r.y + 1, r.x, 12, 0), -1);      /* the border */
+        assert_int_equal(layout_control_at(&l, r.y + 1, 0, 12, 0), -1);
     }
 }
 

@@ -140,11 +140,11 @@ double layout_scene_metres(const struct layout *l, int col)
     return (col + 0.5 - l->scene_x0) / l->scene_cpm;
 }
 
-int layout_control_at(const struct layout *l, int y, int x, int ncontrols)
+int layout_control_at(const struct layout *l, int y, int x, int ncontrols, int top)
 {
     struct rect c = l->controls;
     if (l->too_small || x <= c.x || x >= c.x + c.w - 1)
         return -1;
     int i = y - c.y - 1;
-    return i >= 0 && i < ncontrols && i < c.h - 2 ? i : -1;
+    return i >= 0 && i + top < ncontrols && i < c.h - 2 ? i + top : -1;
 }

@@ -61,8 +61,8 @@ double layout_scene_col(const struct layout *l, double X);
 /* Physical position (m) at the centre of scene column col. */
 double layout_scene_metres(const struct layout *l, int col);
 
-/* The control drawn at screen cell (y, x), or -1. */
-int layout_control_at(const struct layout *l, int y, int x, int ncontrols);
+/* The control drawn at screen cell (y, x), the list shown from control top, or -1. */
+int layout_control_at(const struct layout *l, int y, int x, int ncontrols, int top);
 
 /* True when (y, x) is inside r. */
 bool rect_contains(struct rect r, int y, int x);

@@ -53,3 +53,18 @@ void select_toggle_focus(struct selection *s, const struct model *m, bool modes_
         s->elem = 1; /* mass 1 */
     select_clamp(s, m);
 }
+
+int select_control_top(struct selection *s, int rows, int ncontrols)
+{
+    if (rows <= 0 || rows >= ncontrols)
+        return s->control_top = 0;
+    if (s->control < s->control_top)
+        s->control_top = s->control;
+    if (s->control >= s->control_top + rows)
+        s->control_top = s->control - rows + 1;
+    if (s->control_top > ncontrols - rows)
+        s->control_top = ncontrols - rows;
+    if (s->control_top < 0)
+        s->control_top = 0;
+    return s->control_top;
+}

@@ -15,6 +15,7 @@ struct selection {
     int control;      /* selected control (enum control) */
     int elem;         /* selected element: 2j is spring j, 2i+1 is mass i */
     int mode;         /* selected mode in the modes view, 0 the lowest */
+    int control_top;  /* the first control shown where they do not all fit */
 };
 
 /* Elements the chain has: N+1 springs (N with a free end) and N masses. */
@@ -35,6 +36,10 @@ void select_clamp(struct selection *s, const struct model *m);
 
 /* Moves the selection by dir (+1 down / right, -1 up / left), wrapping around. */
 void select_move(struct selection *s, int dir, int ncontrols, const struct model *m);
+
+/* The first of ncontrols controls to show in rows rows: the same as last time unless
+ * the selected control would be out of sight, then the least scroll that shows it. */
+int select_control_top(struct selection *s, int rows, int ncontrols);
 
 /* Moves the focus on: the controls, the chain (landing on mass 1), then the modes when
  * modes_shown, and round again. */

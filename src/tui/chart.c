@@ -184,6 +184,54 @@ static void draw_axes(const struct chart *c, const char *xunit)
     }
 }
 
+/* Whether legend item l is a mass's (the ones left out, with "…", when not all fit). */
+static bool is_mass(const struct legend_item *l)
+{
+    return l->pair >= PAIR_MASS && l->pair < PAIR_MASS + 10;
+}
+
+/* The legend on the bottom border, between its corners with a border column kept at
+ * each end: every entry a border column apart; if that is too wide, side by side (each
+ * in its own colour); if that is too wide, the masses that fit, "…", and the rest (the
+ * motor, the ghost), so nothing is dropped unsaid. */
+static void draw_legend(struct chart *c, const struct legend_item *legend, int nlegend)
+{
+    struct rect f = c->frame;
+    int room = f.w - 4, y = f.y + f.h - 1, total = 0, kept = 0;
+    int len[12];
+    nlegend = nlegend < 12 ? nlegend : 12;
+    for (int i = 0; i < nlegend; i++) {
+        len[i] = draw_width(legend[i].text);
+        total += len[i];
+        kept += is_mass(&legend[i]) ? 0 : len[i];
+    }
+    int gap = total + nlegend - 1 <= room ? 1 : 0;
+    bool cut = total > room && nlegend > 0;
+    const char *ell = term_utf8() ? "…" : "...";
+    int masses = room - kept - draw_width(ell); /* the masses' columns when cut */
+    bool said = false;
+    int x = f.x + 2;
+    c->nlegend = 0;
+    for (int i = 0; i < nlegend; i++) {
+        if (cut && is_mass(&legend[i])) {
+            if (len[i] > masses) {
+                if (!said && masses >= 0)
+                    x += draw_text(y, x, draw_width(ell), ell);
+                said = true;
+                masses = -1;
+                continue;
+            }
+            masses -= len[i];
+        }
+        if (x + len[i] > f.x + f.w - 2)
+            break;
+        draw_text_attr(y, x, len[i], term_attr(legend[i].pair) | A_BOLD, legend[i].text);
+        snprintf(c->legend[c->nlegend], sizeof c->legend[0], "%s", legend[i].text);
+        c->legend_pair[c->nlegend++] = legend[i].pair;
+        x += len[i] + gap;
+    }
+}
+
 void chart_draw(struct chart *c, const char *title, const char *short_title,
                 const char *xunit, const struct legend_item *legend, int nlegend)
 {
@@ -198,18 +246,7 @@ void chart_draw(struct chart *c, const char *title, const char *short_title,
         if (!pixels)
             draw_canvas(c->canvas, c->area.y, c->area.x);
     }
-    /* The legend on the bottom border, as many entries as fit. */
-    int x = f.x + 2, y = f.y + f.h - 1;
-    c->nlegend = 0;
-    for (int i = 0; i < nlegend && i < 12; i++) {
-        int len = draw_width(legend[i].text);
-        if (x + len + 1 > f.x + f.w - 1)
-            break;
-        draw_text_attr(y, x, len, term_attr(legend[i].pair) | A_BOLD, legend[i].text);
-        snprintf(c->legend[c->nlegend], sizeof c->legend[0], "%s", legend[i].text);
-        c->legend_pair[c->nlegend++] = legend[i].pair;
-        x += len + 1;
-    }
+    draw_legend(c, legend, nlegend);
 }
 
 /* Ticks t as a picture's. */

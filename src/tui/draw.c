@@ -88,12 +88,29 @@ int draw_text(int y, int x, int w, const char *s)
     if (!term_utf8())
         s = ascii(s, plain, sizeof plain);
     int cols = 0;
-    const char *p = s;
+    const char *p = s, *last = s; /* last: where the w-th column starts */
     while (*p && cols < w) {
+        last = p;
         p++;
         while ((*p & 0xC0) == 0x80)
             p++;
         cols++;
+    }
+    /* Text that does not fit ends in "…" (ASCII "..."), never cut silently; trailing
+     * blanks cut are no loss. */
+    const char *rest = p;
+    while (*rest == ' ')
+        rest++;
+    if (*rest && cols > 0) {
+        if (term_utf8()) {
+            mvaddnstr(y, x, s, (int)(last - s));
+            mvaddstr(y, x + cols - 1, "…");
+        } else { /* ASCII: one byte a column */
+            int dots = cols < 3 ? cols : 3;
+            mvaddnstr(y, x, s, cols - dots);
+            mvaddnstr(y, x + cols - dots, "...", dots);
+        }
+        return cols;
     }
     mvaddnstr(y, x, s, (int)(p - s));
     return cols;

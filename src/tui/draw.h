@@ -21,7 +21,8 @@ chtype draw_line(enum line l);
 int draw_width(const char *s);
 
 /* Writes at most w columns of UTF-8 text s at (y, x); our few symbols are spelled in
- * ASCII outside UTF-8. Returns the columns written. */
+ * ASCII outside UTF-8. Text that does not fit ends in "…" ("..." in ASCII) in its last
+ * column(s). Returns the columns written. */
 int draw_text(int y, int x, int w, const char *s);
 
 /* draw_text with printf formatting. */

@@ -15,6 +15,15 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
     const char *bar = "│";
     int d = app_time_decimals(app->cfg.dt);
     char motor[80], speed[64] = "", ghost[120] = "", line[520];
+    /* While dt is past a limit the line says so, not only the message at the change
+     * that put it there (the next key clears that). */
+    const char *limit = limits_unstable(&app->limits)      ? "dt unstable"
+                        : limits_rough_modes(&app->limits) ? "dt inaccurate"
+                        : limits_rough_drive(&app->limits) ? "dt coarse for the drive"
+                                                           : NULL;
+    char past[48] = "";
+    if (limit)
+        snprintf(past, sizeof past, " %s %s", bar, limit);
     if (m->boundary == BOUNDARY_MOTOR)
         snprintf(motor, sizeof motor, "motor %s %.2f Hz %.2f m", motor_wave_name(m->motor.wave),
                  m->motor.frequency, m->motor.amplitude);
@@ -30,10 +39,10 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
         snprintf(ghost, sizeof ghost, " %s %s", bar, what);
     }
     /* The full line where it fits; the SPEC's essentials where it does not. */
-    snprintf(line, sizeof line, " springsim ▸ %-7s t = %.*f s %s %s %s N %d %s dt %.*f s %s "
+    snprintf(line, sizeof line, " springsim ▸ %-7s t = %.*f s %s %s %s N %d %s dt %.*f s%s %s "
              "history %d%s%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
-             motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, bar, history_count(app->hist),
-             speed, ghost);
+             motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, past, bar,
+             history_count(app->hist), speed, ghost);
     if (draw_width(line) > l->cols && m->boundary == BOUNDARY_MOTOR)
         snprintf(motor, sizeof motor, "motor %s %.2f Hz", motor_wave_name(m->motor.wave),
                  m->motor.frequency);
@@ -44,13 +53,23 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
             snprintf(ghost, sizeof ghost, " %s ghost", bar);
         else if (form == 2)
             ghost[0] = '\0';
-        snprintf(line, sizeof line, " %s t = %.*f s %s %s %s history %d%s%s",
-                 app->running ? "Running" : "Paused", d, sim_time(app->sim), bar, motor, bar,
-                 history_count(app->hist), speed, ghost);
+        snprintf(line, sizeof line, " %s t = %.*f s%s %s %s %s history %d%s%s",
+                 app->running ? "Running" : "Paused", d, sim_time(app->sim), past, bar, motor,
+                 bar, history_count(app->hist), speed, ghost);
     }
     attron(A_REVERSE);
     mvhline(l->status.y, 0, ' ', l->cols);
     int used = draw_text(l->status.y, 0, l->cols, line);
+    const char *at = limit ? strstr(line, limit) : NULL;
+    if (at) {
+        /* The limit in the warning's colour, out of the reverse bar. */
+        char before[520];
+        snprintf(before, sizeof before, "%.*s", (int)(at - line), line);
+        int x = draw_width(before);
+        attroff(A_REVERSE);
+        draw_text_attr(l->status.y, x, l->cols - x, term_attr(PAIR_WARN), limit);
+        attron(A_REVERSE);
+    }
     const char *right = "? help  q quit ";
     int rw = draw_width(right);
     if (used + rw + 2 <= l->cols)
@@ -81,23 +100,42 @@ static void frequency_bar(const struct rect r, int y, const struct app *app)
                        term_attr(PAIR_MOTOR) | A_BOLD, "●");
 }
 
-void panel_controls(const struct layout *l, const struct app *app, const struct selection *sel)
+void panel_controls(const struct layout *l, const struct app *app, struct selection *sel)
 {
     struct rect r = l->controls;
     draw_frame(r, "Controls", false);
     int last = r.y + r.h - 2; /* the last row inside the frame */
-    for (int i = 0; i < CTL_COUNT && r.y + 1 + i <= last; i++) {
+    /* Where they do not all fit, the list scrolls to the selected one and the frame
+     * says how many are above and below. */
+    int rows = last - r.y, top = select_control_top(sel, rows, CTL_COUNT);
+    for (int i = top; i < CTL_COUNT && r.y + 1 + i - top <= last; i++) {
         char value[96], line[160];
         app_control_value(app, (enum control)i, value, sizeof value);
         bool hot = sel->focus == FOCUS_CONTROLS && sel->control == i;
         snprintf(line, sizeof line, "%s%-10s %s", hot ? "▸" : " ",
                  app_control_label((enum control)i), value);
+        char *mark = strstr(line, " ◆ f");
+        if (mark && draw_width(line) > r.w - 3) /* off the border: "◆f10" */
+            memmove(mark + strlen(" ◆"), mark + strlen(" ◆ "), strlen(mark + strlen(" ◆ ")) + 1);
         if (hot)
             attron(term_attr(PAIR_SELECT));
-        mvhline(r.y + 1 + i, r.x + 1, ' ', r.w - 2);
-        draw_text(r.y + 1 + i, r.x + 1, r.w - 2, line);
+        mvhline(r.y + 1 + i - top, r.x + 1, ' ', r.w - 2);
+        draw_text(r.y + 1 + i - top, r.x + 1, r.w - 2, line);
         if (hot)
             attroff(term_attr(PAIR_SELECT));
+    }
+    if (rows > 0 && rows < CTL_COUNT) {
+        bool u = term_utf8();
+        char more[40];
+        if (top > 0) {
+            snprintf(more, sizeof more, " %s %d more ", u ? "↑" : "^", top);
+            draw_text(r.y, r.x + r.w - 1 - draw_width(more) - 1, draw_width(more), more);
+        }
+        if (top + rows < CTL_COUNT) {
+            snprintf(more, sizeof more, " %s %d more ", u ? "↓" : "v", CTL_COUNT - top - rows);
+            draw_text(r.y + r.h - 1, r.x + r.w - 1 - draw_width(more) - 1, draw_width(more),
+                      more);
+        }
     }
     int y = r.y + 1 + CTL_COUNT;
     if (y > last || !app->modes_ok)
@@ -114,15 +152,22 @@ void panel_controls(const struct layout *l, const struct app *app, const struct 
     bool titled = last - y >= 1;
     if (titled)
         draw_text(y++, r.x + 2, r.w - 3, "natural frequencies (Hz)");
-    int x = r.x + 2;
-    for (int j = 0; j < app->model->n && y <= last; j++) {
+    int x = r.x + 2, n = app->model->n, end = r.x + r.w - 2;
+    const char *ell = term_utf8() ? "…" : "...";
+    for (int j = 0; j < n && y <= last; j++) {
         char num[16];
         snprintf(num, sizeof num, "%.3f", app->modes[j]);
         int len = (int)strlen(num);
-        if (x + len > r.x + r.w - 2)
+        if (x + len > end)
             x = r.x + 2, y++;
-        if (y > last)
-            break;
+        /* On the last row, room for "…" after it unless it is the last number. */
+        if (y > last || (y == last && j < n - 1 && x + len + 1 + draw_width(ell) > end)) {
+            if (y > last)
+                y = last; /* after the previous row's last number */
+            draw_text(y, x <= end - draw_width(ell) ? x : end - draw_width(ell),
+                      draw_width(ell), ell);
+            return;
+        }
         draw_text_attr(y, x, len, term_attr(PAIR_TITLE), num);
         x += len + 1;
     }

@@ -21,7 +21,7 @@ struct hint_state {
 void panel_status(const struct layout *l, const struct app *app, bool behind);
 
 /* The controls with their values, the selected one highlighted. */
-void panel_controls(const struct layout *l, const struct app *app, const struct selection *sel);
+void panel_controls(const struct layout *l, const struct app *app, struct selection *sel);
 
 /* The footer: the app's message if there is one, else the keys that fit, by state. */
 void panel_hints(const struct layout *l, const struct app *app, const struct hint_state *h);

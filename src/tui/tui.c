@@ -439,7 +439,7 @@ static void on_mouse(struct tui *t)
         return;
     t->plots_dirty = true;
     /* The readout has the controls' place while a cursor is shown. */
-    int ctl = cursors_shown(t) ? -1 : layout_control_at(l, ev.y, ev.x, CTL_COUNT);
+    int ctl = cursors_shown(t) ? -1 : layout_control_at(l, ev.y, ev.x, CTL_COUNT, t->sel.control_top);
     if (ctl >= 0) {
         t->sel.focus = FOCUS_CONTROLS;
         t->sel.control = ctl;

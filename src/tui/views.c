@@ -39,12 +39,41 @@ void views_toggle(struct views *v, enum view w)
 
 /* ---- energy ---- */
 
+static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "damped", "motor",
+                                                  "contact"};
+static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
+                                           PAIR_MOTOR, PAIR_WARN};
+
+/* The energies now, in their colours, in the rows above the data of frame f: named in
+ * full (form 0) or briefly (1). Whether they all fit; drawn (those that fit, then "…")
+ * if draw. */
+static bool energy_items(struct rect f, const double *vals, int form, bool draw)
+{
+    static const char *const brief[TRAIL_ENERGIES] = {"kin", "pot", "damp", "motor", "cont"};
+    int x = f.x + 2, y = f.y + 1, right = f.x + f.w - 2;
+    for (int q = 0; q < TRAIL_ENERGIES; q++) {
+        char item[48];
+        if (form)
+            snprintf(item, sizeof item, "━%s %.2g", brief[q], vals[q]);
+        else
+            snprintf(item, sizeof item, "━ %s %.3g", names[q], vals[q]);
+        int len = draw_width(item);
+        if (x + len > right)
+            x = f.x + 2, y++;
+        if (y >= f.y + ENERGY_HEADER) { /* "…" after the last row's items */
+            if (draw)
+                draw_text(f.y + ENERGY_HEADER - 1, right - 1, 1, term_utf8() ? "…" : "~");
+            return false;
+        }
+        if (draw)
+            draw_text_attr(y, x, len, term_attr(colors[q]) | A_BOLD, item);
+        x += len + (form ? 1 : 2);
+    }
+    return true;
+}
+
 static void draw_energy(struct energy_view *ev, const struct app *app, bool fresh)
 {
-    static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "damped",
-                                                      "motor", "contact"};
-    static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
-                                               PAIR_MOTOR, PAIR_WARN};
     struct chart *c = &ev->chart;
     const struct trail *tr = app_trail(app);
     struct energy e;
@@ -77,27 +106,27 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
     struct rect f = c->frame;
     const double vals[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,
                                          e.contact};
-    int x = f.x + 2, y = f.y + 1;
-    for (int q = 0; q < TRAIL_ENERGIES; q++) {
-        char item[48];
-        snprintf(item, sizeof item, "━ %s %.3g", names[q], vals[q]);
-        int len = draw_width(item);
-        if (x + len > f.x + f.w - 2)
-            x = f.x + 2, y++;
-        if (y >= f.y + ENERGY_HEADER)
-            break;
-        draw_text_attr(y, x, len, term_attr(colors[q]) | A_BOLD, item);
-        x += len + 2;
-    }
+    /* Each with its name, or where they do not all fit in the rows, shorter ("━kin
+     * 0.047"); if even that does not fit, the ones that do and "…". */
+    energy_items(f, vals, energy_items(f, vals, 0, false) ? 0 : 1, true);
     if (c->area.y <= f.y + ENERGY_HEADER)
         return; /* no room above the data */
-    double drift = app_energy_drift(app);
+    double drift = app_energy_drift(app), rel = ev->peak > 0 ? fabs(drift) / ev->peak : 0.0;
     char line[200];
-    if (e.contact > 0.0)
-        snprintf(line, sizeof line, "balance %.6g J (contact counted)", e.balance);
-    else
-        snprintf(line, sizeof line, "balance %.6g J  drift %.1e of the peak", e.balance,
-                 ev->peak > 0 ? fabs(drift) / ev->peak : 0.0);
+    /* The longest form that fits: the drift, relative to the peak, is what matters. */
+    for (int form = 0; form < 3; form++) {
+        if (e.contact > 0.0)
+            snprintf(line, sizeof line, form ? "balance %.3g J (contact)" :
+                     "balance %.6g J (contact counted)", e.balance);
+        else if (form == 0)
+            snprintf(line, sizeof line, "balance %.6g J  drift %.1e of the peak", e.balance, rel);
+        else if (form == 1)
+            snprintf(line, sizeof line, "balance %.3g J, drift %.0e", e.balance, rel);
+        else
+            snprintf(line, sizeof line, "drift %.1e of the peak", rel);
+        if (draw_width(line) <= f.w - 4)
+            break;
+    }
     draw_text(f.y + ENERGY_HEADER, f.x + 2, f.w - 4, line);
 }
 
