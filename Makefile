@@ -152,7 +152,8 @@ $(TEST_BIN): TEST_EXTRA = $(APP_OBJ) $(FIG_OBJ)
 # fail on demand and counts the modes' computations (tests/app_fixture.c wraps them).
 APP_WRAPPED = config_model sim_new history_new trail_new trail_new_motion sweep_new modes_compute \
               limits_modes
-APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules $(BUILD)/tests/test_ghost
+APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules $(BUILD)/tests/test_ghost \
+            $(BUILD)/tests/test_export
 APP_FIXTURE = $(BUILD)/tests/app_fixture.o
 $(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
 $(APP_TESTS): TEST_EXTRA += $(APP_FIXTURE)

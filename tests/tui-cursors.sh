@@ -68,7 +68,7 @@ if up d80; then
     if wait_for 'exported ' 5; then
         csv=$(ls "$tmp/d80"/springsim-*.csv 2>/dev/null | head -n 1)
         t=$(value 47 t)
-        row=$(awk -F, -v t="$t" 'NR > 1 && $1 + 0 > t - 1e-9 && $1 + 0 < t + 1e-9' "$csv")
+        row=$(awk -F, -v t="$t" 'NR > 1 && !/^#/ && $1 + 0 > t - 1e-9 && $1 + 0 < t + 1e-9' "$csv")
         set -- $(panel 47 | sed -n 's/^│1 *\([^ ]*\) *\([^ ]*\) *\([^│ ]*\)│$/\1 \2 \3/p')
         x=$1 v=$2 a=$3
         u=$(panel 47 | sed -n 's/^│u *\([^ │]*\).*/\1/p')

@@ -190,14 +190,19 @@ if wait_t 1; then
     keys Space
     t=$(settled_t)
     keys x
-    if wait_re 'exported [0-9]+ rows to \./springsim-[0-9]{8}-[0-9]{6}\.csv'; then
+    if wait_re 'exported [0-9]+ rows \(t = 0 to [0-9.]+ s\) to \./springsim-[0-9]{8}-[0-9]{6}\.csv'; then
         pass
-        n=$(sed -n 's/.*exported \([0-9][0-9]*\) rows to .*/\1/p' "$scr" | head -n 1)
-        f=$(sed -n 's/.*exported [0-9]* rows to \.\/\(springsim-[0-9]*-[0-9]*\.csv\).*/\1/p' "$scr" | head -n 1)
+        n=$(sed -n 's/.*exported \([0-9][0-9]*\) rows .* to .*/\1/p' "$scr" | head -n 1)
+        f=$(sed -n 's/.*exported [0-9]* rows .* to \.\/\(springsim-[0-9]*-[0-9]*\.csv\).*/\1/p' "$scr" | head -n 1)
         if [ -f "$tmp/exp/$f" ] && [ "$(ls -A "$tmp/exp" | wc -l)" -eq 1 ]; then
             pass
+            # --meta's lines first: the version, the command line, what the file holds
             if awk -F, -v n="$n" -v t="$t" '
-                NR == 1 { ok = ($0 == "t,x1,x2,v1,v2,a1,a2,motor"); next }
+                NR == 1 { ok = ($0 ~ /^# springsim [0-9]+\.[0-9]+\.[0-9]+$/); next }
+                NR == 2 { ok = ok && ($0 ~ /^# springsim --headless --sample 0\.01 --masses 2 .* --duration /); next }
+                NR == 3 { ok = ok && index($0, "# exported from the interactive program at t = ") == 1 &&
+                          index($0, ": " n " rows from t = 0.00 s, every 0.01 s;") > 0; next }
+                NR == 4 { ok = ok && ($0 == "t,x1,x2,v1,v2,a1,a2,motor"); next }
                 { rows++
                   if (NF != 8 || tolower($0) ~ /nan|inf/) ok = 0
                   for (i = 1; i <= NF; i++) if ($i !~ /^-?[0-9.]+(e[-+]?[0-9]+)?$/) ok = 0
@@ -205,13 +210,13 @@ if wait_t 1; then
                   last = $1 + 0 }
                 END { exit !(ok && rows == n && rows > 50 && last > t - 0.005 && last < t + 0.005) }' \
                 "$tmp/exp/$f"; then pass; else
-                fail "export: $f should have the header t,x1,x2,v1,v2,a1,a2,motor, $n rows of 8 numbers, t increasing to $t; it has $(($(wc -l <"$tmp/exp/$f") - 1)) rows: $(sed -n '1p;2p;$p' "$tmp/exp/$f" | tr '\n' '|')"
+                fail "export: $f should have 3 '#' lines (version, --headless command, what it holds), the header t,x1,x2,v1,v2,a1,a2,motor, $n rows of 8 numbers, t increasing to $t; it has $(($(wc -l <"$tmp/exp/$f") - 4)) rows: $(sed -n '1,5p;$p' "$tmp/exp/$f" | cut -c 1-120 | tr '\n' '|')"
             fi
         else
             fail "export: expected only $f in the working directory; found: $(ls -A "$tmp/exp" | tr '\n' ' ')"
         fi
     else
-        fail "export: x should say 'exported N rows to ./springsim-YYYYmmdd-HHMMSS.csv'; screen: $(brief)"
+        fail "export: x should say 'exported N rows (t = 0 to T s) to ./springsim-YYYYmmdd-HHMMSS.csv'; screen: $(brief)"
     fi
 else
     fail "export: expected it to run to t = 1 s; screen: $(brief)"

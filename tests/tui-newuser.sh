@@ -43,7 +43,7 @@ fi
 # ---- 80x24, ten masses: nothing dropped unsaid ----
 if up ten; then
     # plot 1's legend: the masses that fit, "…", and the motor
-    if has_re '└─━1━2━3━4━5━6━7…┅motor─+┘'; then pass; else
+    if has_re '└─━1━2━3━4━5━6━7…─┅motor─+┘'; then pass; else
         fail "ten masses at 80x24: plot 1's legend should read '━1━2…━7…┅motor'; screen: $(brief "$scr" '━1')"
     fi
     # plot 4's legend has room for all ten side by side

@@ -16,6 +16,7 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "../core/config.h"
 #include "../core/history.h"
@@ -213,6 +214,22 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite);
 /* Writes the fine samples as --headless CSV to ./springsim-YYYYmmdd-HHMMSS.csv (or into
  * dir if not NULL); the path goes into path. 0 with the reason in the message. */
 unsigned app_export(struct app *app, const char *dir, char *path, size_t len);
+
+/* The '#' lines app_export writes before its header, as --meta's: the version, the
+ * --headless command line of the settings now (duration the time now, --sample the
+ * samples' spacing), and what the file holds (from when, how many, the recording's
+ * limit). */
+void app_export_meta(FILE *fp, const struct app *app);
+
+/* What app_export writes, for its message: "4400 rows, the last 11.00 s (t = 33.30 to
+ * 44.30 s)" or "504 rows (t = 0 to 5.03 s)". */
+void app_export_summary(const struct app *app, char *buf, size_t len);
+
+/* Writes the sweep's measured points (amplitude and phase of each mass) beside the
+ * linear theory's at each point, as CSV with --meta's lines (the --sweep command line
+ * that gives the theory), to ./springsim-sweep-YYYYmmdd-HHMMSS.csv (or into dir); the
+ * path into path. 0 with the reason in the message (no sweep measured, no drive). */
+unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t len);
 
 /* The energy balance now, minus its value at t = 0 (J). */
 double app_energy_drift(const struct app *app);

@@ -40,7 +40,7 @@ const struct command commands[CMD_COUNT] = {
     [CMD_FASTER] = {"faster", ACT_FASTER, "", "playback faster"},
     [CMD_SLOWER] = {"slower", ACT_SLOWER, "", "playback slower"},
     [CMD_SAVE] = {"save", ACT_SAVE, "NAME", "save the set-up as a user preset"},
-    [CMD_EXPORT] = {"export", ACT_EXPORT, "", "export the recorded samples as CSV"},
+    [CMD_EXPORT] = {"export", ACT_EXPORT, "", "export the samples as CSV (and a sweep's points)"},
     [CMD_CURSOR] = {"cursor", ACT_CURSOR, "T",
                     "every mass's x, v, a and the motor at the recorded sample nearest to time T"},
     [CMD_MEASURE] = {"measure", ACT_CURSOR, "[MASS]",
@@ -441,8 +441,16 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         return st == SAVE_OK ? REPLY_OK : REPLY_ERROR;
     }
     case CMD_EXPORT: {
+        /* The samples; after a sweep, its points beside the theory too. */
         char path[4200];
-        return from_message(app, app_export(app, NULL, path, sizeof path), answer, len);
+        enum command_reply r = from_message(app, app_export(app, NULL, path, sizeof path),
+                                            answer, len);
+        if (r != REPLY_OK || sweep_measured(app->sweep) == 0)
+            return r;
+        size_t used = strlen(answer);
+        app_export_sweep(app, NULL, path, sizeof path);
+        snprintf(answer + used, len - used, "; %s", app->message);
+        return app->message_is_error ? REPLY_ERROR : REPLY_OK;
     }
     case CMD_CURSOR:
         return scope_say_cursor(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;

@@ -186,6 +186,7 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
     struct output o;
     int e = output_open(&o, path);
     if (e == 0) {
+        app_export_meta(o.fp, app);
         output_csv_header(o.fp, n, false);
         const double *rec = trail_first(tr);
         for (int k = 0; k < tr->count; k++, rec += tr->width)
@@ -197,5 +198,7 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
         app_say(app, true, "export: %s: %s", path, strerror(e));
         return 0;
     }
-    return app_say(app, false, "exported %d rows to %s", tr->count, path);
+    char what[120];
+    app_export_summary(app, what, sizeof what);
+    return app_say(app, false, "exported %s to %s", what, path);
 }

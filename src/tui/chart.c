@@ -191,44 +191,54 @@ static bool is_mass(const struct legend_item *l)
 }
 
 /* The legend on the bottom border, between its corners with a border column kept at
- * each end: every entry a border column apart; if that is too wide, side by side (each
- * in its own colour); if that is too wide, the masses that fit, "…", and the rest (the
- * motor, the ghost), so nothing is dropped unsaid. */
+ * each end: every entry a border column apart; if that is too wide, the masses' side by
+ * side (each in its own colour); if that is too wide, the masses that fit, "…", and the
+ * rest (the motor, the ghost), so nothing is dropped unsaid; an entry that still does
+ * not fit is "…". */
 static void draw_legend(struct chart *c, const struct legend_item *legend, int nlegend)
 {
     struct rect f = c->frame;
-    int room = f.w - 4, y = f.y + f.h - 1, total = 0, kept = 0;
-    int len[12];
+    int room = f.w - 4, y = f.y + f.h - 1, right = f.x + f.w - 2;
+    int len[12], loose = 0, tight = 0, kept = 0, nmass = 0;
     nlegend = nlegend < 12 ? nlegend : 12;
+    for (int i = 0; i < nlegend; i++)
+        nmass += is_mass(&legend[i]);
     for (int i = 0; i < nlegend; i++) {
         len[i] = draw_width(legend[i].text);
-        total += len[i];
-        kept += is_mass(&legend[i]) ? 0 : len[i];
+        bool glued = i > 0 && is_mass(&legend[i]) && is_mass(&legend[i - 1]);
+        loose += len[i] + (i > 0);
+        tight += len[i] + (i > 0 && !glued);
+        kept += is_mass(&legend[i]) ? 0 : len[i] + 1;
     }
-    int gap = total + nlegend - 1 <= room ? 1 : 0;
-    bool cut = total > room && nlegend > 0;
+    bool glue = loose > room, cut = tight > room && nmass > 1; /* a list of masses */
     const char *ell = term_utf8() ? "…" : "...";
-    int masses = room - kept - draw_width(ell); /* the masses' columns when cut */
+    int ew = draw_width(ell);
+    int masses = room - kept - ew; /* the masses' columns when cut */
     bool said = false;
     int x = f.x + 2;
     c->nlegend = 0;
     for (int i = 0; i < nlegend; i++) {
-        if (cut && is_mass(&legend[i])) {
-            if (len[i] > masses) {
-                if (!said && masses >= 0)
-                    x += draw_text(y, x, draw_width(ell), ell);
-                said = true;
-                masses = -1;
-                continue;
-            }
-            masses -= len[i];
+        bool mass = is_mass(&legend[i]);
+        if (i > 0 && !(glue && mass && is_mass(&legend[i - 1])))
+            x++; /* a border column between */
+        if (cut && mass && len[i] > masses) {
+            if (!said && x + ew <= right)
+                x += draw_text(y, x, ew, ell);
+            said = true;
+            masses = -1;
+            continue;
         }
-        if (x + len[i] > f.x + f.w - 2)
+        if (cut && mass)
+            masses -= len[i];
+        if (x + len[i] > right) { /* still too wide: say so and stop */
+            if (!said && x - 1 + ew <= right)
+                draw_text(y, x - 1 + (x - 1 + ew <= right - 1), ew, ell);
             break;
+        }
         draw_text_attr(y, x, len[i], term_attr(legend[i].pair) | A_BOLD, legend[i].text);
         snprintf(c->legend[c->nlegend], sizeof c->legend[0], "%s", legend[i].text);
         c->legend_pair[c->nlegend++] = legend[i].pair;
-        x += len[i] + gap;
+        x += len[i];
     }
 }
 

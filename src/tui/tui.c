@@ -362,8 +362,12 @@ static bool on_action(struct tui *t, enum action a, int ch)
         overlay_edit(&t->overlay, EDIT_SAVE);
         break;
     case ACT_EXPORT: {
+        /* In the response view, the sweep's points; elsewhere the recorded samples. */
         char path[4200];
-        app_export(app, NULL, path, sizeof path);
+        if (t->views.shown == VIEW_RESPONSE)
+            app_export_sweep(app, NULL, path, sizeof path);
+        else
+            app_export(app, NULL, path, sizeof path);
         break;
     }
     case ACT_FIGURE:
