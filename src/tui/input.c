@@ -33,7 +33,7 @@ const struct binding input_bindings[] = {
     {'n', ACT_NEAREST, "n", "n", "drive at the nearest natural frequency", false},
     {'w', ACT_SWEEP, "w", "w", "start / stop a sine-sweep experiment (see it in f)", false},
     {'s', ACT_SAVE, "s", "s", "save the set-up as a preset", false},
-    {'x', ACT_EXPORT, "x", "x", "export the samples as CSV (in the f view: the sweep's points)", false},
+    {'x', ACT_EXPORT, "x", "x", "export the samples as CSV (f view: the sweep's points)", false},
     {'X', ACT_FIGURE, "X", "X", "save the view (plots or analysis view) as SVG and PNG", false},
     {'|', ACT_CURSOR, "|", "|", "time cursor, readout; again: a second cursor; again: none", false},
     {KEY_UP, ACT_UP, "↑", "Up", "select the control above (chain: element to the left)", false},
