@@ -15,6 +15,14 @@ start ten 80 24 -- -n 10 --random --seed 5
 start energy 60 20 -- -p 3-mass-chain
 start euler 80 24 -- --integrator euler --dt 0.05
 start fine 80 24 -- -p 3-mass-chain
+start c8 100 30 TERM=xterm -- -n 6 --start-mode 2 --amplitude 0
+start c8e 100 30 TERM=xterm -- -p square-wave
+start c256 100 30 -- -n 6 --start-mode 2 --amplitude 0
+start mono 100 30 NO_COLOR=1 -- -p 3-mass-chain
+start help80 80 24
+start help60 60 20
+start menu120 120 40
+start vt100 80 24 TERM=vt100
 
 # row N of the screen, and the controls' frame (the right-hand column from its corner)
 row() { sed -n "${1}p" "$scr"; }
@@ -93,5 +101,124 @@ if up fine; then
     fi
 fi
 
-all_alive small ten energy euler fine
+# ---- colours: every trace told apart, in 8 colours as in 256, and without ----
+# attr TEXT: the colour (fg=, bold=, rev=) in force where TEXT first starts on the screen
+# as sent (capture-pane -e), from the escapes before it on its line
+attr() {
+    tm capture-pane -e -p -t "$S" | awk -v t="$1" '
+        BEGIN { esc = sprintf("%c", 27) }
+        index($0, t) {
+            fg = "d"; bold = 0; rev = 0; s = $0
+            while (length(s) > 0) {
+                if (substr(s, 1, length(t)) == t) { printf "fg=%s bold=%d rev=%d\n", fg, bold, rev; exit }
+                if (substr(s, 1, 2) == esc "[") {
+                    e = index(s, "m"); n = split(substr(s, 3, e - 3), a, ";"); s = substr(s, e + 1)
+                    if (n == 0) { fg = "d"; bold = 0; rev = 0 }
+                    for (k = 1; k <= n; k++) {
+                        v = a[k] + 0
+                        if (v == 0) { fg = "d"; bold = 0; rev = 0 }
+                        else if (v == 1) bold = 1
+                        else if (v == 22) bold = 0
+                        else if (v == 7) rev = 1
+                        else if (v == 27) rev = 0
+                        else if (v >= 30 && v <= 37) fg = v - 30
+                        else if (v >= 90 && v <= 97) fg = v - 82
+                        else if (v == 39) fg = "d"
+                        else if (v == 38 && a[k + 1] == 5) { fg = a[k + 2]; k += 2 }
+                    }
+                    continue
+                }
+                s = substr(s, 2)
+            }
+        }'
+}
+# ends: the mass digits drawn at the right edge of the enlarged plot 1 (before "││")
+ends() { LC_ALL=$U8 grep -v '^│ s ' "$scr" | LC_ALL=$U8 grep -o '[0-9]││' | cut -c 1 | sort -u | tr -d '\n'; }
+# rev_ends: the same, those drawn in reverse video (from the screen as sent)
+rev_ends() {
+    e=$(printf '\033') so=$(printf '\016') # the frame may come as line drawing: SO x x
+    tm capture-pane -e -p -t "$S" |
+        LC_ALL=$U8 grep -oE "$e\[[0-9;]*7m[0-9]($e\[[0-9;]*m)*(││|${so}xx)" |
+        LC_ALL=$U8 sed "s/$e\[[0-9;]*m//g" | cut -c 1 | sort -u | tr -d '\n'
+}
+for s in c8 c256; do
+    if up $s; then
+        motor=$(attr '┅motor')
+        same= yellow=
+        for i in 1 2 3 4 5 6; do
+            a=$(attr "━$i")
+            [ "$a" = "$motor" ] && same="$same $i"
+            case $a in fg=3\ * | fg=11\ *) yellow="$yellow $i" ;; esac
+        done
+        if [ -n "$motor" ] && [ -z "$same" ] && [ -z "$yellow" ]; then pass; else
+            fail "$s: the motor ($motor) should be no mass's colour (same:$same) and no mass yellow (yellow:$yellow)"
+        fi
+        keys Space
+        wait_t 3 10
+        keys Space 1
+        sleep 1
+        cap
+        # 8 colours tell five masses apart: the six curves end in their digits; 256 tell ten
+        if [ $s = c8 ]; then want=123456; else want=; fi
+        if [ "$(ends)" = "$want" ]; then pass; else
+            fail "$s: the curves' end digits should be '$want', are '$(ends)'; screen: $(brief "$scr" '││')"
+        fi
+    fi
+done
+if up c8e; then
+    keys e
+    wait_for 'contact' 3
+    d=$(attr '━ damped') c=$(attr '━ contact') m=$(attr '━ motor')
+    if [ -n "$d" ] && [ "$d" != "$c" ] && [ "$m" != "$c" ] && [ "$m" != "$d" ]; then pass; else
+        fail "8 colours, energy view: damped ($d), contact ($c) and motor ($m) should differ"
+    fi
+fi
+if up mono; then
+    keys Space
+    wait_t 3 10
+    keys Space 1
+    sleep 1
+    cap
+    # without colour each curve ends in its digit, in reverse video
+    if [ "$(ends)" = 123 ] && [ "$(rev_ends)" = 123 ]; then pass; else
+        fail "NO_COLOR: the three curves should end in 1, 2, 3 in reverse video; ends '$(ends)', in reverse '$(rev_ends)'; screen: $(brief "$scr" '││')"
+    fi
+fi
+
+# ---- boxes over the screen: a blank cell around them, nothing beneath at their edges ----
+for s in help80 help60; do
+    if up $s; then
+        keys '?'
+        if wait_re '^ ┌─+ Keys ─+┐ ?$' 3 && has_re '^ │ space +start / pause +│ ?$' &&
+            ! has_re '^(┌┌|││|└│|┌│|└└)' && ! has_re '(┐┐|││|│┘|│┐|┘┘)$'; then pass; else
+            fail "$s: the help box should stand a blank column inside the screen's edges, no frame beneath doubling its border; screen: $(brief "$scr" '┌┌|││|Keys')"
+        fi
+    fi
+done
+S=help80
+if alive help80; then
+    keys Escape p
+    # the highlighted row beneath (the Preset control) shows nowhere at the menu's edge
+    if wait_re '^ ┌─+ Presets ─+┐ ?$' 3 && has_re '^ │ beating  ' && ! has_re '─┐ ?▸|│ ?▸|┐▸'; then pass; else
+        fail "80x24: the preset menu should stand clear of the controls' highlighted row; screen: $(brief "$scr" 'Presets|beating|▸')"
+    fi
+fi
+if up menu120; then
+    keys p
+    # as wide as the descriptions need where there is room: a short one whole
+    if wait_for ' Presets ' 3 &&
+        has_re '│ high-frequency  Two masses driven at 3 Hz, far above their modes: the response is attenuated +│'; then
+        pass
+    else
+        fail "120x40: the preset menu should show 'high-frequency' whole; screen: $(brief "$scr" 'high-frequency')"
+    fi
+fi
+# ---- TERM=vt100 cannot hide its cursor: it waits on the status line's first cell ----
+if up vt100; then
+    if [ "$(tm display -p -t vt100 '#{cursor_x},#{cursor_y}')" = 0,0 ]; then pass; else
+        fail "TERM=vt100: the cursor should rest at 0,0 (the status line's blank first cell), is at $(tm display -p -t vt100 '#{cursor_x},#{cursor_y}')"
+    fi
+fi
+
+all_alive small ten energy euler fine c8 c8e c256 mono help80 help60 menu120 vt100
 summary

@@ -132,7 +132,11 @@ static struct rect overlay_box(const struct layout *l, int h, int w, const char 
     if (w > l->cols - 2)
         w = l->cols - 2;
     struct rect r = {(l->rows - h) / 2, (l->cols - w) / 2, h, w};
-    draw_clear(r);
+    /* A blank cell around it, so no frame or highlight beneath shows at its edge. */
+    int x0 = r.x > 0 ? r.x - 1 : 0, y0 = r.y > 0 ? r.y - 1 : 0;
+    int x1 = r.x + r.w < l->cols ? r.x + r.w + 1 : l->cols;
+    int y1 = r.y + r.h < l->rows ? r.y + r.h + 1 : l->rows;
+    draw_clear((struct rect){y0, x0, y1 - y0, x1 - x0});
     draw_frame(r, title, true);
     return r;
 }
@@ -180,8 +184,14 @@ static void draw_help(const struct overlay *o, const struct layout *l)
 
 static void draw_presets(const struct overlay *o, const struct layout *l)
 {
-    int n = o->npresets;
-    struct rect r = overlay_box(l, (n ? n : 1) + 4, 76, "Presets");
+    int n = o->npresets, longest = 0;
+    /* As wide as the longest description needs, where the screen has room. */
+    for (int i = 0; i < n; i++) {
+        int d = draw_width(o->presets[i].description);
+        longest = d > longest ? d : longest;
+    }
+    int w = 2 + 15 + 1 + longest + 2;
+    struct rect r = overlay_box(l, (n ? n : 1) + 4, w > 76 ? w : 76, "Presets");
     if (n == 0) {
         draw_text(r.y + 1, r.x + 2, r.w - 4, "No presets found on the search path.");
         return;

@@ -4,6 +4,9 @@
 #include "plots.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "../app/ghost.h"
 #include "../app/scope.h"
@@ -119,8 +122,11 @@ static void cursor_lines(struct chart *c, const struct app *app, const struct sc
 /* Takes the samples of the window shown (the present, or paused, scrolled back): fits
  * the axes to the live chain's and the ghost's, and rasterises the ghost's dashed under
  * the live chain's. */
-static void take_samples(struct chart *c, enum plot_id id, const struct app *app)
+static void take_samples(struct chart *c, enum plot_id id, const struct app *app, int *end_row,
+                         int *end_col)
 {
+    for (int i = 0; i < 10; i++)
+        end_row[i] = end_col[i] = -1;
     struct scope_view v;
     scope_view(app, &v);
     const struct trail *tr = v.trail, *gt = NULL;
@@ -164,6 +170,53 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     if (motor)
         plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, end, &c->xa, &c->ya, true,
                    PAIR_MOTOR);
+    /* Where each curve ends: the newest sample's cell. */
+    int h = 4 * c->canvas->rows;
+    const double *last = k > 0 ? rec + (size_t)(k - 1) * w : NULL;
+    for (int i = 0; i < 10 && last && i < tr->n; i++) {
+        double dx = xq == 0 ? axis_dot(&c->xa, last[TRAIL_T] - end)
+                            : axis_dot(&c->xa, last[field(tr, xq, i)]);
+        double dy = h - 1 - axis_dot(&c->ya, last[field(tr, yq, i)]);
+        if (dx > -0.5 && dx < 2 * c->canvas->cols - 0.5 && dy > -0.5 && dy < h - 0.5) {
+            end_col[i] = (int)floor(dx + 0.5) / 2;
+            end_row[i] = (int)floor(dy + 0.5) / 4;
+        }
+    }
+}
+
+/* Each mass's digit where its curve ends, in its colour: what tells the curves apart
+ * where the colours cannot (none, or 8 colours past five masses). */
+static void end_marks(const struct chart *c, const int *end_row, const int *end_col, int n)
+{
+    if (!c->drawn || n <= term_hues())
+        return;
+    /* Two ends in one cell: the later mass's digit goes to the nearest free row. */
+    int taken_row[10], taken_col[10], taken = 0;
+    for (int i = 0; i < n && i < 10; i++) {
+        if (end_row[i] < 0)
+            continue;
+        char digit[12];
+        snprintf(digit, sizeof digit, "%d", i + 1);
+        int len = (int)strlen(digit), col = end_col[i] - (len - 1);
+        if (col < 0)
+            col = 0;
+        int row = -1;
+        for (int d = 0; d < c->area.h && row < 0; d++)
+            for (int s = d ? -1 : 1; s <= 1 && row < 0; s += 2) {
+                int r = end_row[i] + s * d;
+                bool free = r >= 0 && r < c->area.h;
+                for (int k = 0; k < taken && free; k++)
+                    free = !(taken_row[k] == r && abs(taken_col[k] - col) < 2);
+                if (free)
+                    row = r;
+            }
+        if (row < 0)
+            continue;
+        taken_row[taken] = row;
+        taken_col[taken++] = col;
+        draw_text_attr(c->area.y + row, c->area.x + col, len,
+                       term_mass_attr(i) | A_BOLD | A_REVERSE, digit);
+    }
 }
 
 /* The cursors on a phase portrait: each mass's point at each cursor's sample, a mark in
@@ -203,12 +256,13 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
         enum plot_id id = l->plot_id[k];
         struct chart *c = &p->chart[id];
         if (fresh)
-            take_samples(c, id, app);
+            take_samples(c, id, app, p->end_row[id], p->end_col[id]);
         int items = n;
         if (id == PLOT_X && m->boundary == BOUNDARY_MOTOR)
             legend[items++] = (struct legend_item){"┅motor", PAIR_MOTOR};
         chart_draw(c, kinds[id].title, kinds[id].short_title, kinds[id].xq ? NULL : "s", legend,
                    items);
+        end_marks(c, p->end_row[id], p->end_col[id], m->n);
         if (kinds[id].xq)
             cursor_points(c, id, app);
     }

@@ -11,6 +11,10 @@
 
 struct plots {
     struct chart chart[PLOT_COUNT]; /* one per plot, placed when shown */
+    /* Each mass's newest point at the last refresh, as a cell of the plot's area (row,
+     * column), or -1: where its digit goes when the colours do not tell the masses
+     * apart. */
+    int end_row[PLOT_COUNT][10], end_col[PLOT_COUNT][10];
 };
 
 /* Places the plots the layout shows; false on no memory. */

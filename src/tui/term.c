@@ -29,6 +29,7 @@ static bool utf8;   /* UTF-8 glyphs: the locale has them and --glyphs is not asc
 static bool blocks; /* block characters in place of braille (--glyphs blocks) */
 static bool color;
 static bool rich; /* 256 colours */
+static bool cursor_stays; /* the terminal cannot hide its cursor (vt100) */
 
 bool term_utf8(void)
 {
@@ -201,8 +202,10 @@ static void install_signals(void)
 
 /* Palettes chosen to read on black and on white: mid-tone hues only, no yellow, white,
  * black or light grey for anything that carries information. 256 colours: blue, green,
- * orange, red, purple, teal, ochre, magenta, brown, slate. 8 colours have no mid tones:
- * the hues that read on both backgrounds come first, yellow and cyan last. */
+ * orange, red, purple, teal, ochre, magenta, brown, slate. 8 colours have no mid tones
+ * and yellow does not read on white: five hues (blue, green, red, magenta, cyan), again
+ * for masses 6 to 10 (told apart by their digit at the curve's end, plots.c). The motor
+ * is the terminal's own foreground, in bold, so that it is no mass's colour in either. */
 static void init_colors(enum config_color want)
 {
     const char *no_color = getenv("NO_COLOR");
@@ -214,13 +217,12 @@ static void init_colors(enum config_color want)
     start_color();
     use_default_colors();
     static const short c256[10] = {27, 28, 166, 160, 128, 30, 136, 163, 94, 61};
-    static const short c8[10] = {COLOR_BLUE, COLOR_GREEN,  COLOR_RED,   COLOR_MAGENTA,
-                                 COLOR_CYAN, COLOR_YELLOW, COLOR_BLUE,  COLOR_GREEN,
-                                 COLOR_RED,  COLOR_MAGENTA};
+    static const short c8[10] = {COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN,
+                                 COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN};
     rich = COLORS >= 256;
     for (int i = 0; i < 10; i++)
         init_pair((short)(PAIR_MASS + i), rich ? c256[i] : c8[i], -1);
-    init_pair(PAIR_MOTOR, rich ? 163 : COLOR_MAGENTA, -1);
+    init_pair(PAIR_MOTOR, -1, -1);
     init_pair(PAIR_SPRING, rich ? 28 : COLOR_GREEN, -1);
     init_pair(PAIR_GRID, rich ? 245 : -1, -1);
     init_pair(PAIR_TITLE, rich ? 32 : -1, -1);
@@ -237,12 +239,24 @@ attr_t term_attr(int p)
     switch (p) {
     case PAIR_TITLE:
     case PAIR_WARN:
+    case PAIR_MOTOR:
         return a | A_BOLD;
     case PAIR_SELECT:
         return a | A_REVERSE;
     default:
         return a;
     }
+}
+
+void term_park_cursor(void)
+{
+    if (cursor_stays)
+        move(0, 0); /* the status line's first cell, blank */
+}
+
+int term_hues(void)
+{
+    return !color ? 0 : rich ? 10 : 5;
 }
 
 attr_t term_mass_attr(int i)
@@ -253,7 +267,7 @@ attr_t term_mass_attr(int i)
 /* With 8 colours, blue is too dark to read on black: its bright form reads on both. */
 static attr_t eight_color_boost(int p)
 {
-    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 && (p - PAIR_MASS) % 6 == 0
+    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 && (p - PAIR_MASS) % 5 == 0
                ? A_BOLD
                : 0;
 }
@@ -320,7 +334,7 @@ bool term_start(enum config_color want_color, enum config_glyphs glyphs)
     noecho();
     nonl();
     keypad(stdscr, TRUE);
-    curs_set(0);
+    cursor_stays = curs_set(0) == ERR;
     set_escdelay(25);
     mousemask(BUTTON1_PRESSED | BUTTON1_RELEASED | BUTTON4_PRESSED | REPORT_MOUSE_POSITION
 #ifdef BUTTON5_PRESSED

@@ -39,6 +39,14 @@ void term_stop(void);
  * symbols allowed. */
 bool term_utf8(void);
 
+/* How many masses the colours tell apart: 10 with 256 colours, 5 with 8, 0 without
+ * colour. Past that, the plots mark each curve's end with its mass's digit. */
+int term_hues(void);
+
+/* Where the terminal cannot hide its cursor (vt100), puts it on the status line's
+ * first cell, a blank, rather than where drawing ended; before each refresh. */
+void term_park_cursor(void);
+
 /* True where canvases draw in quadrant blocks instead of braille (--glyphs blocks in a
  * UTF-8 locale). */
 bool term_blocks(void);

@@ -130,6 +130,7 @@ static double draw(struct tui *t, bool refresh)
         teach_draw(&t->teach, l);
         overlay_draw(&t->overlay, &t->app, l, &t->sel);
     }
+    term_park_cursor();
     wnoutrefresh(stdscr);
     double start = now_s();
     doupdate();

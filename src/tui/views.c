@@ -42,7 +42,7 @@ void views_toggle(struct views *v, enum view w)
 static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "damped", "motor",
                                                   "contact"};
 static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
-                                           PAIR_MOTOR, PAIR_WARN};
+                                           PAIR_MOTOR, PAIR_MASS + 4};
 
 /* The energies now, in their colours, in the rows above the data of frame f: named in
  * full (form 0) or briefly (1). Whether they all fit; drawn (those that fit, then "…")
