@@ -175,7 +175,7 @@ page_to_end() {
 # help_body: the overlay's text lines (inside its frame, above "lines a–b of N")
 help_body() {
     awk '/ Keys / { on = 1; next } / lines [0-9]+–[0-9]+ of / { on = 0 } on' "$scr" |
-        sed 's/^[^ ]*│ //; s/ *│[^ ]*$//'
+        sed 's/^ *[^ ]*│ //; s/ *│[^ ]*$//'
 }
 if up help; then
     keys '?'

@@ -23,6 +23,8 @@ start help80 80 24
 start help60 60 20
 start menu120 120 40
 start vt100 80 24 TERM=vt100
+start hide 100 30 NO_COLOR=1 -- -p 3-mass-chain
+start top 100 30 -- -p 3-mass-chain
 
 # row N of the screen, and the controls' frame (the right-hand column from its corner)
 row() { sed -n "${1}p" "$scr"; }
@@ -220,5 +222,69 @@ if up vt100; then
     fi
 fi
 
-all_alive small ten energy euler fine c8 c8e c256 mono help80 help60 menu120 vt100
+# ---- v shows or hides a mass's curves; the selected mass is drawn over the others ----
+if up hide; then
+    keys Space
+    wait_t 3 10
+    keys Space 1 Tab Down Down # mass 2
+    wait_re '└─ mass 2: m' 3
+    keys v
+    if wait_for 'mass 2 hidden in the plots' 3 && [ "$(ends)" = 13 ] && has_re '━1·2━3|━1─·2─━3'; then
+        pass
+    else
+        fail "v on mass 2 should leave its curve out (ends 13, legend ·2): ends '$(ends)'; screen: $(brief "$scr" 'hidden|━1')"
+    fi
+    keys v
+    if wait_for 'mass 2 shown in the plots' 3 && [ "$(ends)" = 123 ]; then pass; else
+        fail "v again should show mass 2 again: ends '$(ends)'; screen: $(brief "$scr" 'shown|━1')"
+    fi
+    keys Tab v # the controls: no mass selected
+    if wait_for 'select it in the chain first' 3; then pass; else
+        fail "v with no mass selected should say how to select one; screen: $(brief "$scr")"
+    fi
+fi
+# cells of plot 1 (rows 9 to 27 of 30, left of its frame) in colour $1, from the screen
+# as sent: braille characters counted by the colour in force
+cells() {
+    tm capture-pane -e -p -t "$S" | sed -n '9,27p' | LC_ALL=C awk -v want="$1" '
+        BEGIN { esc = sprintf("%c", 27) }
+        { fg = "d"; s = $0; col = 0
+          while (length(s) > 0 && col < 68) {
+              if (substr(s, 1, 2) == esc "[") {
+                  e = index(s, "m"); n = split(substr(s, 3, e - 3), a, ";"); s = substr(s, e + 1)
+                  for (k = 1; k <= n; k++) {
+                      v = a[k] + 0
+                      if (v == 0 || v == 39) fg = "d"
+                      else if (v >= 30 && v <= 37) fg = v - 30
+                      else if (v == 38 && a[k + 1] == 5) { fg = a[k + 2]; k += 2 }
+                  }
+                  continue
+              }
+              c = substr(s, 1, 1)
+              if (c == "\342" && substr(s, 2, 1) >= "\240" && substr(s, 2, 1) <= "\243") {
+                  if (fg == want) count++
+                  s = substr(s, 4); col++; continue
+              }
+              if (c >= "\300") { s = substr(s, 2); while (substr(s, 1, 1) >= "\200" && substr(s, 1, 1) < "\300") s = substr(s, 2); col++; continue }
+              s = substr(s, 2); col++
+          } }
+        END { print count + 0 }'
+}
+if up top; then
+    keys Space
+    wait_t 4 10
+    keys Space 1
+    sleep 1
+    c2=$(attr '━2' | sed 's/^fg=\([^ ]*\).*/\1/')
+    before=$(cells "$c2")
+    keys Tab Down Down # mass 2 selected: drawn last, it keeps the cells it shares
+    wait_re '└─ mass 2: m' 3
+    sleep 0.5
+    after=$(cells "$c2")
+    if [ "$before" -gt 0 ] && [ "$after" -gt "$before" ]; then pass; else
+        fail "selecting mass 2 should draw it over masses 1 and 3: its cells in plot 1 were $before, are $after (colour $c2)"
+    fi
+fi
+
+all_alive small ten energy euler fine c8 c8e c256 mono help80 help60 menu120 vt100 hide top
 summary

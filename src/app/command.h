@@ -53,6 +53,7 @@ enum action {
     ACT_CURSOR_MASS,  /* measure the mass before or after */
     ACT_CURSOR_OFF,         /* no cursors */
     ACT_LESSONS,   /* lesson menu */
+    ACT_HIDE,      /* show / hide the selected mass's curves in the plots */
 };
 
 /* The plain mode's commands. */

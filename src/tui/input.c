@@ -30,6 +30,7 @@ const struct binding input_bindings[] = {
     {'e', ACT_ENERGY, "e", "e", "energy view: the balance and its drift (again: plots)", false},
     {'F', ACT_SPECTRUM, "F", "F", "spectrum view of the selected mass (again: plots)", false},
     {'g', ACT_GHOST, "g", "g", "ghost: a frozen copy run beside the chain (again: drop it)", false},
+    {'v', ACT_HIDE, "v", "v", "show / hide the selected mass's curves (Tab, ↑↓ to a mass)", false},
     {'n', ACT_NEAREST, "n", "n", "drive at the nearest natural frequency", false},
     {'w', ACT_SWEEP, "w", "w", "start / stop a sine-sweep experiment (see it in f)", false},
     {'s', ACT_SAVE, "s", "s", "save the set-up as a preset", false},

@@ -132,10 +132,11 @@ static struct rect overlay_box(const struct layout *l, int h, int w, const char 
     if (w > l->cols - 2)
         w = l->cols - 2;
     struct rect r = {(l->rows - h) / 2, (l->cols - w) / 2, h, w};
-    /* A blank cell around it, so no frame or highlight beneath shows at its edge. */
-    int x0 = r.x > 0 ? r.x - 1 : 0, y0 = r.y > 0 ? r.y - 1 : 0;
+    /* A blank cell around it, so no frame or highlight beneath shows at its edge; the
+     * status line and the hints stay. */
+    int x0 = r.x > 0 ? r.x - 1 : 0, y0 = r.y > 1 ? r.y - 1 : r.y;
     int x1 = r.x + r.w < l->cols ? r.x + r.w + 1 : l->cols;
-    int y1 = r.y + r.h < l->rows ? r.y + r.h + 1 : l->rows;
+    int y1 = r.y + r.h < l->rows - 1 ? r.y + r.h + 1 : r.y + r.h;
     draw_clear((struct rect){y0, x0, y1 - y0, x1 - x0});
     draw_frame(r, title, true);
     return r;

@@ -65,26 +65,38 @@ static double left_time(const struct chart *c)
 }
 
 /* The range of quantity q (0: none) over k records of tr from rec, into [*lo, *hi]. */
-static void scan(const struct trail *tr, const double *rec, int k, int q, double *lo,
-                 double *hi)
+static void scan(const struct trail *tr, const double *rec, int k, int q, unsigned hidden,
+                 double *lo, double *hi)
 {
     if (!q)
         return;
     for (int s = 0; s < k; s++) {
         const double *r = rec + (size_t)s * (size_t)tr->width;
         for (int i = 0; i < tr->n; i++)
-            *lo = fmin(*lo, r[field(tr, q, i)]), *hi = fmax(*hi, r[field(tr, q, i)]);
+            if (!(hidden >> i & 1u))
+                *lo = fmin(*lo, r[field(tr, q, i)]), *hi = fmax(*hi, r[field(tr, q, i)]);
     }
 }
 
 /* Each mass's trace from k records of tr from rec, in its colour: solid, or dashed (the
  * ghost's). */
 static void traces(struct chart *c, enum plot_id id, const struct trail *tr, const double *rec,
-                   int k, double now, bool dashed)
+                   int k, double now, bool dashed, unsigned hidden, int top)
 {
     int xq = kinds[id].xq, yq = kinds[id].yq;
     size_t w = (size_t)tr->width;
-    for (int i = tr->n - 1; i >= 0; i--) {
+    /* Mass 1 over the others, or the one selected in the chain over all; hidden ones not
+     * at all. */
+    int order[APP_MAX_MASSES], n = 0;
+    for (int i = tr->n - 1; i >= 0 && n < APP_MAX_MASSES; i--)
+        if (i != top)
+            order[n++] = i;
+    if (top >= 0 && top < tr->n && n < APP_MAX_MASSES)
+        order[n++] = top;
+    for (int o = 0; o < n; o++) {
+        int i = order[o];
+        if (hidden >> i & 1u)
+            continue;
         unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
         const double *y = rec + field(tr, yq, i);
         if (xq == 0)
@@ -123,7 +135,7 @@ static void cursor_lines(struct chart *c, const struct app *app, const struct sc
  * the axes to the live chain's and the ghost's, and rasterises the ghost's dashed under
  * the live chain's. */
 static void take_samples(struct chart *c, enum plot_id id, const struct app *app, int *end_row,
-                         int *end_col)
+                         int *end_col, unsigned hidden, int top)
 {
     for (int i = 0; i < 10; i++)
         end_row[i] = end_col[i] = -1;
@@ -146,11 +158,11 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
         gk = up_to(gt, grec, gk, end);
     size_t w = (size_t)tr->width;
     double ylo = INFINITY, yhi = -INFINITY, xlo = INFINITY, xhi = -INFINITY;
-    scan(tr, rec, k, yq, &ylo, &yhi);
-    scan(tr, rec, k, xq, &xlo, &xhi);
+    scan(tr, rec, k, yq, hidden, &ylo, &yhi);
+    scan(tr, rec, k, xq, hidden, &xlo, &xhi);
     if (gt) {
-        scan(gt, grec, gk, yq, &ylo, &yhi);
-        scan(gt, grec, gk, xq, &xlo, &xhi);
+        scan(gt, grec, gk, yq, hidden, &ylo, &yhi);
+        scan(gt, grec, gk, xq, hidden, &xlo, &xhi);
     }
     for (int s = 0; motor && s < k; s++)
         ylo = fmin(ylo, rec[s * w + TRAIL_U]), yhi = fmax(yhi, rec[s * w + TRAIL_U]);
@@ -165,8 +177,8 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     if (xq == 0)
         cursor_lines(c, app, &v);
     if (gt)
-        traces(c, id, gt, grec, gk, end, true);
-    traces(c, id, tr, rec, k, end, false);
+        traces(c, id, gt, grec, gk, end, true, hidden, top);
+    traces(c, id, tr, rec, k, end, false, hidden, top);
     if (motor)
         plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, end, &c->xa, &c->ya, true,
                    PAIR_MOTOR);
@@ -186,14 +198,15 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
 
 /* Each mass's digit where its curve ends, in its colour: what tells the curves apart
  * where the colours cannot (none, or 8 colours past five masses). */
-static void end_marks(const struct chart *c, const int *end_row, const int *end_col, int n)
+static void end_marks(const struct chart *c, const int *end_row, const int *end_col, int n,
+                      unsigned hidden)
 {
     if (!c->drawn || n <= term_hues())
         return;
     /* Two ends in one cell: the later mass's digit goes to the nearest free row. */
     int taken_row[10], taken_col[10], taken = 0;
     for (int i = 0; i < n && i < 10; i++) {
-        if (end_row[i] < 0)
+        if (end_row[i] < 0 || (hidden >> i & 1u))
             continue;
         char digit[12];
         snprintf(digit, sizeof digit, "%d", i + 1);
@@ -248,22 +261,48 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
     const struct model *m = app->model;
     struct legend_item legend[12];
     int n = 0;
+    unsigned all = (1u << m->n) - 1u; /* a new chain: only its masses, and one shown */
+    p->hidden &= all;
+    if (p->hidden == all)
+        p->hidden = 0;
+    /* A hidden mass keeps its place, its line left out: " 3" for "━3". */
+    static const char *const hidden_keys[10] = {"·1", "·2", "·3", "·4", "·5",
+                                                "·6", "·7", "·8", "·9", "·10"};
     for (int i = 0; i < m->n && i < 10; i++)
-        legend[n++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
+        legend[n++] = (struct legend_item){p->hidden >> i & 1u ? hidden_keys[i] : mass_keys[i],
+                                           PAIR_MASS + i};
     if (app->ghost)
         legend[n++] = (struct legend_item){"┄ghost", PAIR_TITLE};
     for (int k = 0; k < l->nplots; k++) {
         enum plot_id id = l->plot_id[k];
         struct chart *c = &p->chart[id];
         if (fresh)
-            take_samples(c, id, app, p->end_row[id], p->end_col[id]);
+            take_samples(c, id, app, p->end_row[id], p->end_col[id], p->hidden, p->top);
         int items = n;
         if (id == PLOT_X && m->boundary == BOUNDARY_MOTOR)
             legend[items++] = (struct legend_item){"┅motor", PAIR_MOTOR};
         chart_draw(c, kinds[id].title, kinds[id].short_title, kinds[id].xq ? NULL : "s", legend,
                    items);
-        end_marks(c, p->end_row[id], p->end_col[id], m->n);
+        end_marks(c, p->end_row[id], p->end_col[id], m->n, p->hidden);
         if (kinds[id].xq)
             cursor_points(c, id, app);
     }
+}
+
+void plots_toggle_mass(struct plots *p, struct app *app, int i)
+{
+    if (i < 0 || i >= app->model->n) {
+        app_say(app, false, "v shows or hides a mass's curves: select it in the chain first "
+                "(Tab, then ↑↓)");
+        return;
+    }
+    unsigned all = (1u << app->model->n) - 1u;
+    if (!(p->hidden >> i & 1u) && (p->hidden | 1u << i) == all) {
+        app_say(app, true, "mass %d is the only one shown: the plots keep one", i + 1);
+        return;
+    }
+    p->hidden ^= 1u << i;
+    app_say(app, false, "mass %d %s the plots (v again: %s)", i + 1,
+            p->hidden >> i & 1u ? "hidden in" : "shown in", p->hidden >> i & 1u ? "shown" :
+            "hidden");
 }

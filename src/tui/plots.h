@@ -15,7 +15,12 @@ struct plots {
      * column), or -1: where its digit goes when the colours do not tell the masses
      * apart. */
     int end_row[PLOT_COUNT][10], end_col[PLOT_COUNT][10];
+    unsigned hidden; /* bit i: mass i's curves left out of the plots (v) */
+    int top;         /* the mass drawn last, over the others (the chain's selected), or -1 */
 };
+
+/* Shows or hides mass i's curves (key v on a mass of the chain); what the message says. */
+void plots_toggle_mass(struct plots *p, struct app *app, int i);
 
 /* Places the plots the layout shows; false on no memory. */
 bool plots_place(struct plots *p, const struct layout *l);

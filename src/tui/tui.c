@@ -116,6 +116,7 @@ static double draw(struct tui *t, bool refresh)
         /* The spectrum follows the mass last selected in the chain. */
         if (select_mass(&t->sel) >= 0)
             t->views.spectrum.mass = select_mass(&t->sel);
+        t->plots.top = select_mass(&t->sel); /* the selected mass over the others */
         if (t->views.shown == VIEW_PLOTS)
             plots_draw(&t->plots, l, &t->app, refresh);
         else
@@ -353,6 +354,9 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_GHOST:
         changed = app_toggle_ghost(app);
+        break;
+    case ACT_HIDE:
+        plots_toggle_mass(&t->plots, app, select_mass(&t->sel));
         break;
     case ACT_SWEEP:
         changed = app_toggle_sweep(app);
