@@ -17,6 +17,7 @@
 #include "events.h"
 
 #include <math.h>
+#include <stddef.h>
 
 /* Rates below this (m/s) after a contact count as no motion: the two moved as one. */
 #define REST_RATE 1e-9
@@ -174,45 +175,76 @@ static double first_close(const struct events_piece *p, int k, const double c[4]
     return -1.0;
 }
 
-double events_contact(const struct events_piece *p, int *which, int *closing)
+/* Constraint k's gap and its rate times h at both ends of the piece, and how far the
+ * gap may stray from its cubic. */
+static void ends(const struct events_piece *p, int k, double g[2], double s[2], double *err)
 {
     const struct collision_limits *l = p->lim;
     const double *ya = p->ya, *y = p->y;
     int n = l->n;
-    double h = p->h, first = 2.0, sp = l->spacing, w = l->w;
+    double h = p->h, sp = l->spacing, w = l->w;
+    *err = 0.0;
+    if (k == 0) {
+        g[0] = sp + ya[0] - 0.5 * w, g[1] = sp + y[0] - 0.5 * w;
+        s[0] = h * ya[n], s[1] = h * y[n];
+    } else if (k < n) {
+        g[0] = sp + ya[k] - ya[k - 1] - w, g[1] = sp + y[k] - y[k - 1] - w;
+        s[0] = h * (ya[n + k] - ya[n + k - 1]), s[1] = h * (y[n + k] - y[n + k - 1]);
+    } else {
+        double base = MODEL_LENGTH - 0.5 * w - n * sp;
+        g[0] = base + p->ua - ya[n - 1], g[1] = base + p->ub - y[n - 1];
+        s[0] = h * (p->dua - ya[2 * n - 1]), s[1] = h * (p->dub - y[2 * n - 1]);
+        *err = p->drive_err;
+    }
+}
+
+/* Whether a gap with these ends may close inside the piece (the bound of the header). */
+static inline bool may_close(double g0, double g1, double s0, double s1, double err)
+{
+    double dg = g1 - g0, A = fabs(s0 - dg), B = fabs(s1 - dg);
+    return (g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B) - err <= -EVENTS_TOUCH;
+}
+
+/* Constraint k, which may close: where it first does (theta), or -1. */
+static double consider(const struct events_piece *p, int k)
+{
+    double g[2], s[2], err;
+    ends(p, k, g, s, &err);
+    if (!may_close(g[0], g[1], s[0], s[1], err))
+        return -1.0;
+    double dg = g[1] - g[0];
+    double c[4] = {g[0], s[0], 3.0 * dg - 2.0 * s[0] - s[1], s[0] + s[1] - 2.0 * dg};
+    return first_close(p, k, c);
+}
+
+double events_contact(const struct events_piece *p, int *which, int *closing)
+{
+    const struct collision_limits *l = p->lim;
+    const double *ya = p->ya, *y = p->y;
+    const bool *on = p->rest->active ? p->rest->on : NULL;
+    int n = l->n;
+    double h = p->h, first = 2.0, pair = l->spacing - l->w;
     *which = -1, *closing = 0;
-    bool rests = p->rest->active > 0;
+    double wall = l->spacing - 0.5 * l->w;
+    double face = MODEL_LENGTH - 0.5 * l->w - n * l->spacing;
     for (int k = 0; k < l->count; k++) {
+        /* The bound alone, inline: the common case costs a few flops a gap. */
+        double g0, g1, s0, s1, err = 0.0;
         if (k > 0 && k < n) {
-            /* The pairs, the bulk of a long chain: the bound alone, inline. */
-            double g0 = sp + ya[k] - ya[k - 1] - w, g1 = sp + y[k] - y[k - 1] - w;
-            double dg = g1 - g0, s0 = h * (ya[n + k] - ya[n + k - 1]) - dg;
-            double s1 = h * (y[n + k] - y[n + k - 1]) - dg;
-            double A = s0 < 0 ? -s0 : s0, B = s1 < 0 ? -s1 : s1;
-            if ((g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B) > -EVENTS_TOUCH)
-                continue;
-        }
-        if (rests && p->rest->on[k])
-            continue;
-        double g0, g1, s0, s1, err = 0.0, lo;
-        if (k == 0) {
-            g0 = sp + ya[0] - 0.5 * w, g1 = sp + y[0] - 0.5 * w;
-            s0 = h * ya[n], s1 = h * y[n];
-        } else if (k < n) {
-            g0 = sp + ya[k] - ya[k - 1] - w, g1 = sp + y[k] - y[k - 1] - w;
+            g0 = pair + ya[k] - ya[k - 1], g1 = pair + y[k] - y[k - 1];
             s0 = h * (ya[n + k] - ya[n + k - 1]), s1 = h * (y[n + k] - y[n + k - 1]);
+        } else if (k == 0) {
+            g0 = wall + ya[0], g1 = wall + y[0], s0 = h * ya[n], s1 = h * y[n];
         } else {
-            double base = MODEL_LENGTH - 0.5 * w - n * sp;
-            g0 = base + p->ua - ya[n - 1], g1 = base + p->ub - y[n - 1];
+            g0 = face + p->ua - ya[n - 1], g1 = face + p->ub - y[n - 1];
             s0 = h * (p->dua - ya[2 * n - 1]), s1 = h * (p->dub - y[2 * n - 1]);
             err = p->drive_err;
         }
-        double dg = g1 - g0, A = fabs(s0 - dg), B = fabs(s1 - dg);
-        lo = g0 < g1 ? g0 : g1;
-        if (lo - 0.25 * (A > B ? A : B) - err > -EVENTS_TOUCH)
-            continue; /* the common case: it cannot close in this piece */
-        double c[4] = {g0, s0, 3.0 * dg - 2.0 * s0 - s1, s0 + s1 - 2.0 * dg};
-        double th = first_close(p, k, c);
+        if (!may_close(g0, g1, s0, s1, err))
+            continue;
+        if (on && on[k])
+            continue;
+        double th = consider(p, k);
         if (th < 0.0)
             continue;
         ++*closing;

@@ -60,6 +60,7 @@ struct sim {
     struct rest *rest;   /* the contacts resting now */
     double *work;        /* 2N of scratch for the events */
     double *force;       /* N + 1: the resting contacts' forces */
+    double sine_err;     /* a sine drive's straying from its cubic over h is this h^4 */
 };
 
 struct sim *sim_new(const struct model *model, double dt)
@@ -103,6 +104,7 @@ int sim_copy(struct sim *dst, const struct sim *src)
     dst->contact = src->contact;
     dst->last_contacts = src->last_contacts;
     dst->prev_contacts = src->prev_contacts;
+    dst->sine_err = src->sine_err;
     dst->last_capped = src->last_capped;
     rest_copy(dst->rest, src->rest);
     memcpy(dst->y, src->y, (size_t)(2 * src->n + 2) * sizeof *src->y);
@@ -128,6 +130,9 @@ void sim_set_model(struct sim *s, const struct model *model)
 {
     stepper_set_model(s->st, model, s->dt);
     collision_limits(&s->lim, model);
+    /* The cubic Hermite interpolant's error bound, max |u''''| h^4 / 384. */
+    double w = 2.0 * M_PI * model->motor.frequency;
+    s->sine_err = model->motor.amplitude * w * w * w * w / 384.0;
     /* Resting contacts stay while the same constraints exist; the next step parts any
      * the new parameters pull apart. */
     if (s->rest->count != s->lim.count || !s->lim.on)
@@ -244,7 +249,8 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
         if (budget == 0)
             break; /* piling up: settled below */
         p.ya = s->ya, p.a = a, p.h = b - a;
-        p.drive_err = drive_interp_error(d, b - a);
+        double h2 = (b - a) * (b - a);
+        p.drive_err = d->kind == DRIVE_SINE ? s->sine_err * h2 * h2 : 0.0;
         /* The earliest event in the piece: a gap closing (or grazing), or a resting
          * contact starting to pull. Where more than a few gaps close in one piece of a
          * long chain, it is piling up: those are settled at its end, so a pile-up costs

@@ -28,6 +28,7 @@ struct stepper {
     double end_u, end_du;  /* the drive at the end of the last step taken */
     double start_u, start_du; /* and at its start */
     const struct rest *rest;  /* resting contacts held as constraints, or NULL */
+    bool constrained;         /* some rest now: the step being taken projects its rates */
     double ddu_factor;        /* u'' = ddu_factor u on the piece being stepped */
 };
 
@@ -50,15 +51,6 @@ double drive_ddu_factor(const struct drive *d)
         return 0.0; /* constants and ramps */
     double w = 2.0 * M_PI * d->motor->frequency;
     return -w * w;
-}
-
-double drive_interp_error(const struct drive *d, double h)
-{
-    if (d->kind != DRIVE_SINE)
-        return 0.0;
-    /* The cubic Hermite interpolant's error bound, max |u''''| h^4 / 384. */
-    double wh = 2.0 * M_PI * d->motor->frequency * h;
-    return d->motor->amplitude * wh * wh * wh * wh / 384.0;
 }
 
 void drive_eval(const struct drive *d, double t, double *u, double *du)
@@ -187,7 +179,7 @@ static void deriv(const struct stepper *st, const double *y, double u, double du
     for (int i = 0; i < n; i++) /* a loop: for a short chain memcpy's call costs more */
         dy[i] = y[n + i];
     model_rates(st->model, st->inv_m, y, y + n, u, du, dy + n, &dy[2 * n], &dy[2 * n + 1]);
-    if (st->rest && st->rest->active)
+    if (st->constrained)
         constrain(st, u, du, dy);
 }
 
@@ -325,7 +317,7 @@ static void verlet(struct stepper *st, const struct drive *d, double a, double b
         y[n + i] = (vh[i] + 0.5 * h * d1[n + i]) /
                    (1.0 + 0.5 * h * st->model->c[i] * st->inv_m[i]);
     model_rates(st->model, st->inv_m, y, y + n, u1, du1, d1 + n, &d1[2 * n], &d1[2 * n + 1]);
-    if (st->rest && st->rest->active)
+    if (st->constrained)
         constrain(st, u1, du1, d1);
     y[2 * n] += 0.5 * h * (d0[2 * n] + d1[2 * n]);
     y[2 * n + 1] += 0.5 * h * (d0[2 * n + 1] + d1[2 * n + 1]);
@@ -374,6 +366,7 @@ int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, 
                   double b, double *y)
 {
     st->ddu_factor = drive_ddu_factor(d);
+    st->constrained = st->rest && st->rest->active;
     if (i != INTEGRATOR_RK4) {
         drive_eval(d, a, &st->start_u, &st->start_du);
         drive_eval(d, b, &st->end_u, &st->end_du);
@@ -389,7 +382,7 @@ int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, 
         verlet(st, d, a, b, y);
         return 0;
     case INTEGRATOR_EXACT:
-        if (st->rest && st->rest->active) {
+        if (st->constrained) {
             exact_resting(st, d, a, b, y);
             drive_eval(d, a, &st->start_u, &st->start_du);
             drive_eval(d, b, &st->end_u, &st->end_du);

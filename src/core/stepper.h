@@ -22,9 +22,6 @@ void drive_at(struct drive *d, const struct model *m, double t);
 /* u'' on the piece is drive_ddu_factor(d) u: a sine's -w^2, 0 for constants and ramps. */
 double drive_ddu_factor(const struct drive *d);
 
-/* How far u strays from its cubic Hermite interpolant over a piece of length h (m). */
-double drive_interp_error(const struct drive *d, double h);
-
 /* u(t) and u'(t) on the piece. */
 void drive_eval(const struct drive *d, double t, double *u, double *du);
 
