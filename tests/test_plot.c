@@ -135,12 +135,28 @@ static void trace_lines(void **state)
     for (int x = 0; x < 20; x++)
         for (int r = 0; r < 20; r++)
             assert_int_equal(dot(c, x, r), r == 19 - 6);
-    /* Dashed: pairs of columns 2-3, 6-7, .. left out. */
+    /* Dashed: four dots on, four off, along the line: columns 4-7, 12-15 left out. */
     canvas_clear(c);
     plot_trace(c, t, y, 400, 1, t_ref, &xa10, &ya5, true, 1);
     for (int x = 0; x < 20; x++)
-        assert_int_equal(dot(c, x, 13), (x / 2) % 2 == 0);
-    assert_int_equal(dots(c), 10);
+        assert_int_equal(dot(c, x, 13), (x / 4) % 2 == 0);
+    assert_int_equal(dots(c), 12);
+    /* Dashed and steep (the ghost's fast swings, issue 22 item 7): dashed along its
+     * length, not whole columns on and off, so it still reads as a curve: a line 4 dots
+     * down a column has, in every column, dots on and dots off. */
+    canvas_clear(c);
+    for (int x = 0; x < 5; x++)
+        t[x] = t_ref + t_at(x), y[x] = y_at(4 * x);
+    plot_trace(c, t, y, 5, 1, t_ref, &xa10, &ya5, true, 1);
+    int on = 0;
+    for (int x = 1; x < 5; x++) {
+        int in_column = 0;
+        for (int r = 0; r < 20; r++)
+            in_column += dot(c, x, r);
+        assert_true(in_column >= 1 && in_column <= 3); /* of 4 */
+        on += in_column;
+    }
+    assert_true(on >= 6 && on <= 10); /* about half of the 16 */
     /* Samples further apart than a column are joined by a straight line. */
     canvas_clear(c);
     t[0] = t_ref + t_at(0), y[0] = y_at(0);

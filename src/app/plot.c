@@ -66,12 +66,6 @@ static double dot_clamp(double d)
     return d < -DOT_FAR ? -DOT_FAR : d > DOT_FAR ? DOT_FAR : d;
 }
 
-/* Dot x is drawn unless dash leaves out its pair of columns (every other pair). */
-static bool dash_draws(int x, bool dash)
-{
-    return !dash || (x / 2) % 2 == 0;
-}
-
 /* The dot column of x and the dot row of y (from the top) in dot coordinates. A value
  * half way between two dots goes to the right and up, as it would rounding half up on
  * the axes (which count y from the bottom). */
@@ -142,9 +136,14 @@ struct column {
     double lx, ly; /* last sample */
 };
 
-/* Draws column k, joined to column p (the one before it, if have_p). */
+/* Dots of a dashed trace on, then off, along its length. */
+#define TRACE_DASH 4
+
+/* Draws column k, joined to column p (the one before it, if have_p). Dashed, run counts
+ * the dots along the trace (a step across one, each dot down one), and the dots are on
+ * and off by TRACE_DASH along it, so a steep stretch is dashed along its length too. */
 static void column_draw(struct canvas *c, struct column *k, const struct column *p, bool have_p,
-                        bool dash, unsigned char color)
+                        bool dash, int *run, unsigned char color)
 {
     int h = 4 * c->rows;
     if (have_p && p->x == k->x - 1) {
@@ -158,8 +157,22 @@ static void column_draw(struct canvas *c, struct column *k, const struct column 
     } else if (have_p) {
         segment(c, p->lx, p->ly, k->fx, k->fy, dash, NULL, color);
     }
-    if (k->x >= 0 && k->x < 2 * c->cols && dash_draws(k->x, dash))
+    if (k->x < 0 || k->x >= 2 * c->cols)
+        return;
+    if (!dash) {
         canvas_vspan(c, k->x, k->lo, k->hi, color);
+        return;
+    }
+    /* From the end next to where the trace came in, to the other. */
+    bool up = have_p && p->ly > k->ly;
+    for (int i = 0; i <= k->hi - k->lo; i++) {
+        int y = up ? k->hi - i : k->lo + i;
+        if (y >= 0 && y < h && (*run / TRACE_DASH) % 2 == 0)
+            canvas_set(c, k->x, y, color);
+        if (i < k->hi - k->lo)
+            ++*run;
+    }
+    ++*run; /* the step across to the next column */
 }
 
 void plot_trace(struct canvas *c, const double *t, const double *y, int count, size_t stride,
@@ -169,6 +182,7 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
     int w = 2 * c->cols, h = 4 * c->rows;
     struct column cur = {0}, prev = {0};
     bool have_cur = false, have_prev = false;
+    int run = 0;
     /* The strokes keep every sample at full precision: pixels have room for them. */
     struct strokes *keep = c->mute ? NULL : c->strokes;
     if (keep)
@@ -187,7 +201,7 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
         int r = dot_y(fmin(fmax(fy, -1.0), (double)h));
         if (!have_cur || x != cur.x) {
             if (have_cur) {
-                column_draw(c, &cur, &prev, have_prev, dash, color);
+                column_draw(c, &cur, &prev, have_prev, dash, &run, color);
                 prev = cur, have_prev = true;
             }
             cur = (struct column){x, r, r, fx, fy, fx, fy};
@@ -200,7 +214,7 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
         cur.lx = fx, cur.ly = fy;
     }
     if (have_cur)
-        column_draw(c, &cur, &prev, have_prev, dash, color);
+        column_draw(c, &cur, &prev, have_prev, dash, &run, color);
     c->mute--;
 }
 
