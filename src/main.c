@@ -259,22 +259,31 @@ static int run_headless(const struct config *c, const struct model *m)
         report_data_free(fig);
         return EXIT_FAILURE;
     }
-    write_meta(o.fp, c, sum ? "summary" : "headless", NULL);
+    /* A summary's '#' lines go out with its header and row, so a run that blows up
+     * leaves no '#' lines without them. */
+    if (!sum)
+        write_meta(o.fp, c, "headless", NULL);
+    double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
+    bool blown = false;
     if (sum) {
         summary_add(sum, s, 0.0, total);
     } else {
         output_csv_header(o.fp, n, c->energy);
-        output_csv_row(o.fp, s, c->energy, x + 2 * n);
+        blown = output_csv_row(o.fp, s, c->energy, x + 2 * n) != 0;
         figure_row(fig, row, s, x + 2 * n);
     }
-    double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
+    if (blown) {
+        report_blowup(s, &l, judged, false);
+        status = EXIT_FAILURE;
+    }
     struct energy e;
     struct limits_runaway watch;
     sim_energy(s, &e);
     limits_runaway_start(&watch, m, &e);
-    for (double step = 1; step <= total; step++) {
+    for (double step = 1; !blown && step <= total; step++) {
         /* Past the stability limit a capped velocity, or energy made from nothing, means
-         * the numbers are running away: stop rather than write nonsense. */
+         * the numbers are running away: stop rather than write nonsense (or a value that
+         * is no longer finite). */
         bool bad = sim_step(s) != SIM_OK, runaway = false;
         if (!bad && unstable) {
             sim_energy(s, &e);
@@ -294,13 +303,19 @@ static int run_headless(const struct config *c, const struct model *m)
         if (sum) {
             summary_add(sum, s, step, total);
         } else if (fmod(step, stride) == 0.0) {
-            output_csv_row(o.fp, s, c->energy, x + 2 * n);
+            if (output_csv_row(o.fp, s, c->energy, x + 2 * n) != 0) {
+                report_blowup(s, &l, judged, false);
+                status = EXIT_FAILURE;
+                capped = 0.0;
+                break;
+            }
             figure_row(fig, row, s, x + 2 * n);
             if (ferror(o.fp))
                 break;
         }
     }
     if (sum && status == EXIT_SUCCESS) {
+        write_meta(o.fp, c, "summary", NULL);
         summary_header(o.fp, n);
         summary_row(o.fp, sum, s);
     }

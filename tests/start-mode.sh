@@ -36,7 +36,7 @@ accepted() {
 }
 
 # ---- errors: K from 1 to N, AMP >= 0 and finite, the K[:AMP] form ----
-expect="(expected K[:AMP]: a mode 1 <= K <= N, AMP >= 0 m, default 0.5)"
+expect="(expected K[:AMP]: a mode 1 <= K <= N, 0 <= AMP <= 10 m, default 0.5)"
 refused "--start-mode: '0' is out of range $expect" --headless -n 3 --start-mode 0
 refused "--start-mode: '4' is out of range for 3 masses (expected a mode 1 <= K <= 3)" \
     --headless -n 3 --start-mode 4

@@ -53,6 +53,11 @@ enum app_change {
  * them, so t = 0.003 s after three steps of 0.001 s and dt 0.0075 s reads whole. */
 int app_time_decimals(double dt);
 
+/* v with this many decimals while |v| < 1e6, in exponent form (at most 3 decimals) from
+ * there, and a word for a value that is not finite: never wider than about 12 characters
+ * (no 300-digit numbers, no inf or nan on the screen). Returns buf. */
+const char *app_fixed(double v, int decimals, char *buf, size_t len);
+
 /* Position of frequency f on the control's range drawn on a log scale, 0 to 1. */
 double app_freq_fraction(double f);
 

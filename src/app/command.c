@@ -131,11 +131,14 @@ void command_status(const struct app *app, char *buf, size_t len)
     const struct sim *s = app->sim;
     const double *x = sim_x(s), *v = sim_v(s);
     size_t used = (size_t)snprintf(buf, len, "t=%.*f", app_time_decimals(sim_dt(s)), sim_time(s));
+    char a[32], b[32];
     for (int i = 0; i < sim_model(s)->n && used < len; i++)
-        used += (size_t)snprintf(buf + used, len - used, " x%d=%.4f v%d=%.4f", i + 1,
-                                 x[i] + 0.0, i + 1, v[i] + 0.0);
+        used += (size_t)snprintf(buf + used, len - used, " x%d=%s v%d=%s", i + 1,
+                                 app_fixed(x[i], 4, a, sizeof a), i + 1,
+                                 app_fixed(v[i], 4, b, sizeof b));
     if (used < len)
-        snprintf(buf + used, len - used, " drive=%.4f", sim_end_position(s) + 0.0);
+        snprintf(buf + used, len - used, " drive=%s",
+                 app_fixed(sim_end_position(s), 4, a, sizeof a));
 }
 
 /* The modes in one line: frequency, damping ratio and Q = 1/(2 zeta) of each. */
@@ -156,7 +159,7 @@ static enum command_reply say_modes(const struct app *app, char *answer, size_t 
         else if (z > 0.0)
             snprintf(damping, sizeof damping, ", damping ratio %.3g, Q %.3g", z, 0.5 / z);
         else
-            snprintf(damping, sizeof damping, ", damping ratio 0, Q inf");
+            snprintf(damping, sizeof damping, ", damping ratio 0, Q unbounded");
         used += (size_t)snprintf(answer + used, len - used, "%s %d: %.4g Hz%s", j ? ";" : "",
                                  j + 1, app->modes[j], damping);
     }

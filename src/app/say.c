@@ -1,5 +1,5 @@
 /* say.c: the status message, the one line every part of the app says what happened on,
- * and the digits its times are given with. */
+ * the digits its times are given with, and numbers kept to a width. */
 #include "app.h"
 
 #include <math.h>
@@ -26,4 +26,15 @@ int app_time_decimals(double dt)
     while (d < 6 && fabs(dt * pow(10.0, d) - round(dt * pow(10.0, d))) > 1e-6)
         d++;
     return d;
+}
+
+const char *app_fixed(double v, int decimals, char *buf, size_t len)
+{
+    if (!isfinite(v))
+        snprintf(buf, len, "%s", isnan(v) ? "undefined" : v > 0 ? "overflow" : "-overflow");
+    else if (fabs(v) < 1e6)
+        snprintf(buf, len, "%.*f", decimals, v + 0.0);
+    else
+        snprintf(buf, len, "%.*e", decimals > 3 ? 3 : decimals, v);
+    return buf;
 }

@@ -45,16 +45,16 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .symbol = "N", .lo = 1, .hi = MODEL_MAX_MASSES,
                     .ihi = CONFIG_INTERACTIVE_MAX_MASSES, .def = 2, .offset = AT(masses)},
     [CFG_MASS] = {.name = "mass", .section = "system", .kind = CONFIG_LIST, .arg = "LIST",
-                  .help = "masses", .symbol = "masses", .lo = 0, .lo_open = true,
+                  .help = "masses", .symbol = "masses", .lo = 0, .lo_open = true, .hi = INFINITY,
                   .def = MODEL_DEFAULT_MASS, .unit = "kg", .digits = 2, .offset = AT(mass)},
     [CFG_SPRING] = {.name = "spring", .section = "system", .kind = CONFIG_LIST, .arg = "LIST",
                     .help = "springs, the walls' included", .symbol = "springs", .lo = 0,
-                    .lo_open = true, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
+                    .lo_open = true, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
                     .unit = "N/m",
                     .digits = 1, .offset = AT(spring)},
     [CFG_DAMPING] = {.name = "damping", .section = "system", .kind = CONFIG_LIST,
                      .arg = "LIST", .help = "damping of each mass",
-                     .symbol = "damping", .lo = 0, .def = MODEL_DEFAULT_DAMPING, .unit = "N·s/m",
+                     .symbol = "damping", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_DAMPING, .unit = "N·s/m",
                      .digits = 2,
                      .offset = AT(damping)},
     [CFG_DT] = {.name = "dt", .section = "system", .kind = CONFIG_NUMBER, .arg = "SECONDS",
@@ -83,12 +83,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                        .lo_open = true, .hi = 1e6, .def = MODEL_DEFAULT_FREQUENCY, .unit = "Hz",
                        .digits = 3,
                        .offset = AT(frequency)},
+    /* Bounded by what the model can hold: the walls are MODEL_LENGTH apart, and no
+     * velocity outlives the cap (a state past these only makes inf and nan). */
     [CFG_X0] = {.name = "x0", .section = "initial", .kind = CONFIG_LIST, .arg = "LIST",
-                .help = "initial displacements", .symbol = "displacements", .lo = -INFINITY,
-                .def = 0, .unit = "m", .offset = AT(x0)},
+                .help = "initial displacements", .symbol = "displacements",
+                .lo = -MODEL_LENGTH, .hi = MODEL_LENGTH, .def = 0, .unit = "m", .offset = AT(x0)},
     [CFG_V0] = {.name = "v0", .section = "initial", .kind = CONFIG_LIST, .arg = "LIST",
-                .help = "initial velocities", .symbol = "velocities", .lo = -INFINITY,
-                .def = 0, .unit = "m/s", .offset = AT(v0)},
+                .help = "initial velocities", .symbol = "velocities", .lo = -MODEL_VMAX,
+                .hi = MODEL_VMAX, .def = 0, .unit = "m/s", .offset = AT(v0)},
     [CFG_RANDOM] = {.name = "random", .section = "initial", .kind = CONFIG_FLAG,
                     .help = "random initial positions (minimum separation kept)",
                     .offset = AT(random)},
@@ -99,9 +101,9 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     /* Checked against N in config_model; the later of x0, v0, random and this wins. */
     [CFG_START_MODE] = {.name = "start-mode", .section = "initial", .kind = CONFIG_TEXT,
                         .arg = "K[:AMP]", .offset = AT(start_mode),
-                        .expect = "K[:AMP]: a mode 1 <= K <= N, AMP >= 0 m, default 0.5",
-                        .help = "start along mode K's shape, largest |x| = AMP m (default "
-                                "0.5), at rest"},
+                        .expect = "K[:AMP]: a mode 1 <= K <= N, 0 <= AMP <= 10 m, default 0.5",
+                        .help = "start along mode K's shape, largest |x| = AMP m (0 to 10, "
+                                "default 0.5), at rest"},
     [CFG_NO_COLLISIONS] = {.name = "no-collisions", .section = "system", .kind = CONFIG_FLAG,
                            .help = "turn collisions off (the velocity cap stays)",
                            .offset = AT(no_collisions)},
@@ -225,7 +227,10 @@ void config_expected(int key, char *buf, size_t len)
         return;
     case CONFIG_LIST: {
         const char *each = o->per == CONFIG_PER_SPRING ? "N+1" : "one per mass";
-        if (isfinite(o->lo))
+        if (isfinite(o->lo) && isfinite(o->hi))
+            snprintf(buf, len, "%s <= %s <= %s %s: one value, or %s", lo, o->symbol, hi,
+                     o->unit, each);
+        else if (isfinite(o->lo))
             snprintf(buf, len, "%s %s %s %s: one value, or %s", o->symbol, gt, lo, o->unit,
                      each);
         else
@@ -273,8 +278,15 @@ void config_help(int key, char *buf, size_t len)
         snprintf(buf, len, "%s (%s%s%s)", o->help, range, def[0] ? "; " : "", def);
         return;
     case CONFIG_LIST:
-        snprintf(buf, len, "%s (%s; one value or %s; %s)", o->help, o->unit,
-                 o->per == CONFIG_PER_SPRING ? "N+1" : "N", def);
+        if (isfinite(o->lo) && isfinite(o->hi)) {
+            char lo[32], hi[32];
+            bound_text(o->lo, lo, sizeof lo);
+            bound_text(o->hi, hi, sizeof hi);
+            snprintf(buf, len, "%s (%s to %s %s; one value or %s; %s)", o->help, lo, hi,
+                     o->unit, o->per == CONFIG_PER_SPRING ? "N+1" : "N", def);
+        } else
+            snprintf(buf, len, "%s (%s; one value or %s; %s)", o->help, o->unit,
+                     o->per == CONFIG_PER_SPRING ? "N+1" : "N", def);
         return;
     default:
         snprintf(buf, len, "%s%s%s%s", o->help, def[0] ? " (" : "", def, def[0] ? ")" : "");
@@ -359,13 +371,13 @@ static const char *parse_number(const char *s, double *out)
     return config_parse_number(s, out);
 }
 
-/* Whether v is inside key's range (for a list, above its lower bound). */
+/* Whether v is inside key's range (a list's every value too). */
 static int in_range(int key, double v)
 {
     const struct config_option *o = &config_options[key];
     if (o->lo_open ? !(v > o->lo) : !(v >= o->lo))
         return 0;
-    return o->kind == CONFIG_LIST || (o->hi_open ? v < o->hi : v <= o->hi);
+    return o->hi_open ? v < o->hi : v <= o->hi;
 }
 
 static int set_number(int key, const char *value, double *out, char *err, size_t errlen)
@@ -495,7 +507,7 @@ static int set_start_mode(struct config *c, const char *value, char *err, size_t
         if (!colon[1])
             return fail(CFG_START_MODE, value, "has no amplitude after ':'", err, errlen);
         why = config_parse_number(colon + 1, &amp);
-        if (!why && !(amp >= 0.0))
+        if (!why && !(amp >= 0.0 && amp <= MODEL_LENGTH))
             why = "is out of range";
         if (why) {
             config_quote(colon + 1, strlen(colon + 1), q, sizeof q);

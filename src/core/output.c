@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <math.h>
 #include <signal.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -254,16 +255,30 @@ void output_csv_values(FILE *fp, int n, double t, const double *x, const double 
     fputc('\n', fp);
 }
 
-void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
+/* Whether all n values at v are finite. */
+static bool all_finite(const double *v, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return false;
+    return true;
+}
+
+int output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
 {
     struct energy e;
     double books[5];
+    int n = sim_model(s)->n;
     sim_accel(s, scratch);
     if (energy) {
         sim_energy(s, &e);
         books[0] = e.kinetic, books[1] = e.potential, books[2] = e.dissipated;
         books[3] = e.motor_work, books[4] = e.contact;
     }
-    output_csv_values(fp, sim_model(s)->n, sim_time(s), sim_x(s), sim_v(s), scratch,
-                      sim_end_position(s), energy ? books : NULL);
+    if (!all_finite(sim_x(s), n) || !all_finite(sim_v(s), n) || !all_finite(scratch, n) ||
+        (energy && !all_finite(books, 5)) || !isfinite(sim_end_position(s)))
+        return -1;
+    output_csv_values(fp, n, sim_time(s), sim_x(s), sim_v(s), scratch, sim_end_position(s),
+                      energy ? books : NULL);
+    return 0;
 }

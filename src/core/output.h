@@ -40,7 +40,9 @@ void output_csv_header(FILE *fp, int n, bool energy);
 void output_csv_values(FILE *fp, int n, double t, const double *x, const double *v,
                        const double *a, double u, const double *energy);
 
-/* One --headless CSV row for the current state of s. scratch holds n doubles. */
-void output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch);
+/* One --headless CSV row for the current state of s. scratch holds n doubles. Returns 0,
+ * or -1 without writing anything when a value (an acceleration or an energy included)
+ * is not finite: the CSV never holds inf or nan. */
+int output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch);
 
 #endif

@@ -155,8 +155,8 @@ void panel_controls(const struct layout *l, const struct app *app, struct select
     int x = r.x + 2, n = app->model->n, end = r.x + r.w - 2;
     const char *ell = term_utf8() ? "…" : "...";
     for (int j = 0; j < n && y <= last; j++) {
-        char num[16];
-        snprintf(num, sizeof num, "%.3f", app->modes[j]);
+        char num[32];
+        app_fixed(app->modes[j], 3, num, sizeof num);
         int len = (int)strlen(num);
         if (x + len > end)
             x = r.x + 2, y++;
