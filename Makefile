@@ -315,23 +315,37 @@ fuzz: | $(BUILD)/.deps-build
 	    fi; \
 	done
 
+# Every path goes to the shell through the environment and is quoted there, so that a
+# DESTDIR or PREFIX with blanks, quotes or any other byte names one directory (issue 23).
+# uninstall removes exactly the files install puts, then the directories it made if they
+# are left empty: nothing else, not even a preset of someone else's beside ours.
+INSTALL_DIRS = SS_BINDIR='$(subst ','\'',$(DESTDIR)$(BINDIR))' \
+    SS_MANDIR='$(subst ','\'',$(DESTDIR)$(MANDIR))' \
+    SS_DATADIR='$(subst ','\'',$(DESTDIR)$(DATADIR))' \
+    SS_BASHCOMPDIR='$(subst ','\'',$(DESTDIR)$(BASHCOMPDIR))' \
+    SS_ZSHCOMPDIR='$(subst ','\'',$(DESTDIR)$(ZSHCOMPDIR))' \
+    SS_FISHCOMPDIR='$(subst ','\'',$(DESTDIR)$(FISHCOMPDIR))' \
+    SS_BIN='$(subst ','\'',$(BIN))' SS_BUILD='$(subst ','\'',$(BUILD))'
+
 install: $(BIN) completions
-	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR) $(DESTDIR)$(DATADIR)/presets \
-	    $(DESTDIR)$(DATADIR)/lessons \
-	    $(DESTDIR)$(BASHCOMPDIR) $(DESTDIR)$(ZSHCOMPDIR) $(DESTDIR)$(FISHCOMPDIR)
-	install -m 755 $(BIN) $(DESTDIR)$(BINDIR)/springsim
-	install -m 644 man/springsim.1 $(DESTDIR)$(MANDIR)/springsim.1
-	install -m 644 presets/*.ini $(DESTDIR)$(DATADIR)/presets/
-	install -m 644 lessons/*.lesson $(DESTDIR)$(DATADIR)/lessons/
-	install -m 644 $(BUILD)/completions/springsim.bash $(DESTDIR)$(BASHCOMPDIR)/springsim
-	install -m 644 $(BUILD)/completions/_springsim $(DESTDIR)$(ZSHCOMPDIR)/_springsim
-	install -m 644 $(BUILD)/completions/springsim.fish $(DESTDIR)$(FISHCOMPDIR)/springsim.fish
+	@$(INSTALL_DIRS); set -e; \
+	install -d "$$SS_BINDIR" "$$SS_MANDIR" "$$SS_DATADIR/presets" "$$SS_DATADIR/lessons" \
+	    "$$SS_BASHCOMPDIR" "$$SS_ZSHCOMPDIR" "$$SS_FISHCOMPDIR"; \
+	install -m 755 "$$SS_BIN" "$$SS_BINDIR/springsim"; \
+	install -m 644 man/springsim.1 "$$SS_MANDIR/springsim.1"; \
+	install -m 644 presets/*.ini "$$SS_DATADIR/presets/"; \
+	install -m 644 lessons/*.lesson "$$SS_DATADIR/lessons/"; \
+	install -m 644 "$$SS_BUILD/completions/springsim.bash" "$$SS_BASHCOMPDIR/springsim"; \
+	install -m 644 "$$SS_BUILD/completions/_springsim" "$$SS_ZSHCOMPDIR/_springsim"; \
+	install -m 644 "$$SS_BUILD/completions/springsim.fish" "$$SS_FISHCOMPDIR/springsim.fish"
 
 uninstall:
-	rm -f $(DESTDIR)$(BINDIR)/springsim $(DESTDIR)$(MANDIR)/springsim.1
-	rm -rf $(DESTDIR)$(DATADIR)
-	rm -f $(DESTDIR)$(BASHCOMPDIR)/springsim $(DESTDIR)$(ZSHCOMPDIR)/_springsim \
-	    $(DESTDIR)$(FISHCOMPDIR)/springsim.fish
+	@$(INSTALL_DIRS); set -e; \
+	rm -f "$$SS_BINDIR/springsim" "$$SS_MANDIR/springsim.1" \
+	    "$$SS_BASHCOMPDIR/springsim" "$$SS_ZSHCOMPDIR/_springsim" \
+	    "$$SS_FISHCOMPDIR/springsim.fish"; \
+	for f in presets/*.ini lessons/*.lesson; do rm -f "$$SS_DATADIR/$$f"; done; \
+	rmdir "$$SS_DATADIR/presets" "$$SS_DATADIR/lessons" "$$SS_DATADIR" 2>/dev/null || true
 
 # An unsigned Debian package (debian/, dh with debhelper compat 13), built from a copy of
 # the tree in $(BUILD)/deb so that its clean step leaves this build alone; the .deb is
