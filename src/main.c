@@ -415,11 +415,19 @@ static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count
     *cnt++ = '\0';
     double c;
     const char *digits = cnt + (cnt[0] == '+');
-    int bad = config_parse_number(a, fmin) || config_parse_number(b, fmax) ||
-              config_parse_number(cnt, &c) || !*digits ||
-              strspn(digits, "0123456789") != strlen(digits);
-    if (bad) {
+    if (config_parse_number(a, fmin) || config_parse_number(b, fmax) ||
+        config_parse_number(cnt, &c)) {
         options_say("--sweep: %s has a value that is not a number (%s)", q, expect);
+        return -1;
+    }
+    /* A number, but not a count: say which is wrong (-5 is out of range, 1.5 not whole). */
+    if (!*digits || strspn(digits, "0123456789") != strlen(digits)) {
+        char qc[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(cnt, strlen(cnt), qc, sizeof qc);
+        options_say("--sweep: %s has COUNT %s, which %s (%s)", q, qc,
+                    c != floor(c) ? "is not a whole number"
+                    : c < 2.0     ? "is out of range"
+                                  : "is not written in digits", expect);
         return -1;
     }
     *count = c > SWEEP_MAX ? SWEEP_MAX + 1 : (long)c;

@@ -83,4 +83,58 @@ if [ "$rc" -eq 0 ] && [ "$(grep -c '^#' "$out")" -eq 2 ] &&
     fail "$cmd: expected two '#' lines, a header and a row, got $rc: $(show "$out")"
 fi
 
+# plain CMDS ARGS...: the plain mode with the commands CMDS on standard input, its output
+# in $out.
+plain() {
+    cmds=$1
+    shift
+    printf '%b' "$cmds" | timeout 60 "$SPRINGSIM" --plain "$@" >"$out" 2>"$err"
+    rc=$?
+}
+
+# has WHAT PATTERN: the plain output holds a line matching PATTERN (grep -E).
+has() {
+    if grep -qE -- "$2" "$out"; then pass; else
+        fail "$1: expected a line matching '$2', got: $(show "$out")"
+    fi
+}
+hasnt() {
+    if grep -qE -- "$2" "$out"; then
+        fail "$1: expected no line matching '$2', got: $(grep -E -- "$2" "$out" | head -2 | tr '\n' '|')"
+    else pass; fi
+}
+
+# --- 5: nearest and sweep keep the 1e6 Hz limit (the one change path checks every range) ---
+mkdir -p "$tmp/xdg/springsim/presets"
+plain 'set spring 1e14\nnearest\nsave bigf\nsweep\n' -n 1
+has "nearest past 1e6 Hz" '^error mode 1 is at 2\.251e\+06 Hz, past the drive.s range \(0 < frequency <= 1e6 Hz\)'
+has "sweep with every mode past 1e6 Hz" '^error a sweep needs a mode the drive reaches'
+hasnt "sweep past 1e6 Hz" 'sweeping'
+if grep -q '^frequency *= *1$' "$tmp/xdg/springsim/presets/bigf.ini" 2>/dev/null &&
+    "$SPRINGSIM" -p bigf --modes >/dev/null 2>"$err"; then pass; else
+    fail "the preset saved after a refused nearest: $(grep frequency "$tmp/xdg/springsim/presets/bigf.ini" 2>/dev/null) $(show "$err")"
+fi
+rm -f "$tmp/xdg/springsim/presets/bigf.ini"
+plain 'sweep\n' -n 2 --spring 1e11
+has "sweep capped at 1e6 Hz" '^ok sweeping 25164\.61\.\.130759\.13 Hz'
+
+# --- 7: the sweep runs from half the first mode to 1.5 times the last (README) ---
+# -n 2, k = 1000 N/m, m = 1 kg, motor end: w^2 = (2 -+ 1) 1000, f = 5.03 and 8.72 Hz.
+plain 'sweep\n' -n 2 --spring 1000
+has "sweep to 1.5 times the last mode" '^ok sweeping 2\.52\.\.13\.08 Hz'
+
+# --- 9: the words ---
+plain 'sweep\n' -n 1 --mass 1e-300 --spring 1e300
+has "sweep with the modes not known" '^error a sweep needs the modes|^error a sweep needs a mode the drive reaches'
+hasnt "sweep with the modes not known" 'needs the motor at the right end'
+plain 'set damping 1e308\nset damping 1e200\n' -n 1
+has "damping 1e308" '^ok Damping 1e\+308 N.s/m; warning: dt = 0\.01 s may be unstable with rk4: the stability limit of dt cannot be computed'
+has "damping 1e200" '^ok Damping 1e\+200 N.s/m; warning: dt = 0\.01 s may be unstable'
+hasnt "damping 1e308" 'dt < 0 s'
+plain 'set dt 1e-320\n'
+has "set dt 1e-320" "^error dt: '1e-320' is out of range for the interactive program"
+refused "has COUNT '-5', which is out of range" --sweep 0.1:5:-5
+refused "has COUNT '1.5', which is not a whole number" --sweep 0.1:5:1.5
+refused "has a value that is not a number" --sweep 0.1:x:5
+
 summary

@@ -253,8 +253,10 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
     int bad;
     bool drive_was_rough = app->model && limits_rough_drive(&app->limits);
     *changed = 0;
-    /* The interactive program's narrower ranges, whatever the route. */
-    if ((bad = config_check_interactive(next, err, sizeof err)) >= 0) {
+    /* Every option's range, then the interactive program's narrower ones, whatever the
+     * route (a value the program made too: the nearest mode, a sweep's frequency). */
+    if ((bad = config_check_ranges(next, err, sizeof err)) >= 0 ||
+        (bad = config_check_interactive(next, err, sizeof err)) >= 0) {
         app_say(app, true, "%s: %s", config_options[bad].name, err);
         return -1;
     }
@@ -559,11 +561,23 @@ unsigned app_toggle_sweep(struct app *app)
 {
     if (app->sweep->active)
         return end_sweep(app, NULL);
-    if (app->model->boundary != BOUNDARY_MOTOR || !app->modes_ok)
+    if (app->model->boundary != BOUNDARY_MOTOR)
         return app_say(app, true, "a sweep needs the motor at the right end");
+    if (!app->modes_ok)
+        return app_say(app, true, "a sweep needs the modes, and those of this chain are not "
+                                  "known");
     int n = app->model->n;
+    /* Half the first mode to 1.5 times the last, as far as the drive goes (0.1 Hz up to
+     * the frequency's limit, 1e6 Hz). */
+    double top = config_options[CFG_FREQUENCY].hi;
     double lo = fmax(APP_FMIN, 0.5 * app->modes[0]);
-    double hi = fmin(APP_FMAX, 1.5 * app->modes[n - 1]);
+    double hi = fmin(top, 1.5 * app->modes[n - 1]);
+    if (!(lo < hi)) {
+        char range[64];
+        config_expected(CFG_FREQUENCY, range, sizeof range);
+        return app_say(app, true, "a sweep needs a mode the drive reaches: the first is at "
+                                  "%.4g Hz (the drive: %s Hz)", app->modes[0], range);
+    }
     /* Settle for a few damping times of the slowest-decaying mode, within reason. */
     double cmin = app->model->c[0], mmax = app->model->m[0];
     for (int i = 1; i < n; i++)
@@ -572,8 +586,10 @@ unsigned app_toggle_sweep(struct app *app)
     app->sweep_from = app->model->motor.frequency;
     sweep_start(app->sweep, lo, hi, settle, sim_time(app->sim));
     unsigned what = retune(app, sweep_frequency(app->sweep)) | app_set_running(app, true);
-    return what | app_say(app, false, "sweeping %.2f..%.2f Hz, %d steps of %.0f s or more; ] "
-                          "runs faster, w stops", lo, hi, app->sweep->points, settle);
+    char a[32], b[32];
+    return what | app_say(app, false, "sweeping %s..%s Hz, %d steps of %.0f s or more; ] "
+                          "runs faster, w stops", app_fixed(lo, 2, a, sizeof a),
+                          app_fixed(hi, 2, b, sizeof b), app->sweep->points, settle);
 }
 
 double app_window(const struct app *app)

@@ -391,6 +391,12 @@ unsigned app_nearest_mode(struct app *app)
     int j = modes_nearest(app->modes, app->model->n, app->model->motor.frequency);
     struct config next = app->cfg;
     unsigned what = 0;
+    if (app->modes[j] > config_options[CFG_FREQUENCY].hi) {
+        char range[64];
+        config_expected(CFG_FREQUENCY, range, sizeof range);
+        return app_say(app, true, "mode %d is at %.4g Hz, past the drive's range (%s Hz); the "
+                                  "drive is as it was", j + 1, app->modes[j], range);
+    }
     next.frequency = app->modes[j];
     if (app_change(app, &next, CHANGE_SETS_FREQUENCY, "the nearest mode", &what) != 0)
         return 0;

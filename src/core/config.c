@@ -607,6 +607,39 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
     return 0;
 }
 
+/* Says that v, a value of key, is out of range. */
+static int out_of_range(int key, double v, char *err, size_t errlen)
+{
+    char text[40];
+    config_format_exact(v, text, sizeof text);
+    fail(key, text, "is out of range", err, errlen);
+    return key;
+}
+
+int config_check_ranges(const struct config *c, char *err, size_t errlen)
+{
+    for (int k = 0; k < CFG_KEY_COUNT; k++) {
+        const struct config_option *o = &config_options[k];
+        const char *at = (const char *)c + o->offset;
+        bool physical = o->section && (strcmp(o->section, "system") == 0 ||
+                                       strcmp(o->section, "motor") == 0 ||
+                                       strcmp(o->section, "initial") == 0);
+        if (!physical)
+            continue; /* the run's settings (--sample 0 is every step) are not changed here */
+        if (o->kind == CONFIG_NUMBER) {
+            double v = *(const double *)at;
+            if (!in_range(k, v))
+                return out_of_range(k, v, err, errlen);
+        } else if (o->kind == CONFIG_LIST) {
+            const struct config_list *l = (const struct config_list *)(const void *)at;
+            for (int i = 0; i < l->count; i++)
+                if (!in_range(k, l->v[i]))
+                    return out_of_range(k, l->v[i], err, errlen);
+        }
+    }
+    return -1;
+}
+
 int config_check_interactive(const struct config *c, char *err, size_t errlen)
 {
     const struct config_option *n = &config_options[CFG_MASSES], *dt = &config_options[CFG_DT];
@@ -614,9 +647,12 @@ int config_check_interactive(const struct config *c, char *err, size_t errlen)
         snprintf(err, errlen, "'%d' is out of range for the interactive program (expected "
                  "%g <= %s <= %g; --headless takes up to %g)", c->masses, n->lo, n->symbol,
                  n->ihi, n->hi);
-    else if (!(c->dt >= dt->ilo))
-        snprintf(err, errlen, "'%g' is out of range for the interactive program (expected "
-                 "%g <= %s <= %g)", c->dt, dt->ilo, dt->symbol, dt->hi);
+    else if (!(c->dt >= dt->ilo)) {
+        char v[40];
+        config_format_exact(c->dt, v, sizeof v);
+        snprintf(err, errlen, "'%s' is out of range for the interactive program (expected "
+                 "%g <= %s <= %g)", v, dt->ilo, dt->symbol, dt->hi);
+    }
     else
         return -1;
     return c->masses > n->ihi ? CFG_MASSES : CFG_DT;

@@ -208,6 +208,11 @@ void config_expected(int key, char *buf, size_t len);
 void config_arg(int key, char *buf, size_t len);
 void config_help(int key, char *buf, size_t len);
 
+/* The key to blame when a number or a list value of c is outside its option's range
+ * (a value made by the program, not typed: the nearest mode, a sweep's frequency), with
+ * the reason in err; -1 when every one is inside. The one change path checks it. */
+int config_check_ranges(const struct config *c, char *err, size_t errlen);
+
 /* The key to blame when c is beyond the interactive program's narrower ranges (N, dt),
  * with the reason in err; -1 when it is within them. */
 int config_check_interactive(const struct config *c, char *err, size_t errlen);

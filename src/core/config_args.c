@@ -10,7 +10,9 @@
 
 void config_format_exact(double v, char *buf, size_t len)
 {
-    for (int digits = 6; digits <= 17; digits++) {
+    /* From one digit: the same text as from six for every normal number (%g drops the
+     * zeros), and the shortest for a subnormal one (1e-320, not 9.99989e-321). */
+    for (int digits = 1; digits <= 17; digits++) {
         snprintf(buf, len, "%.*g", digits, v);
         if (strtod(buf, NULL) == v)
             return;

@@ -301,6 +301,16 @@ double limits_stable_dt(const struct model *m, const struct limits_mode *mode, i
     return dt;
 }
 
+/* limits_stable_dt, but NAN where the values overflow its computation (dampers of 1e160
+ * N s/m make an infinite limit): no explicit integrator is stable at every step on a
+ * chain with springs, so an infinite answer only means it is not known. */
+static double known_stable_dt(const struct model *m, const struct limits_mode *mode, int n,
+                              enum integrator i)
+{
+    double dt = limits_stable_dt(m, mode, n, i);
+    return i != INTEGRATOR_EXACT && !isfinite(dt) ? NAN : dt;
+}
+
 double limits_accurate_dt(const struct limits_mode *mode, int n, enum integrator i)
 {
     if (i == INTEGRATOR_EXACT)
@@ -354,7 +364,7 @@ void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
 {
     *out = (struct limits){.integrator = i, .dt = dt, .worst = -1, .drive_steps = INFINITY,
                            .drive_dt = INFINITY};
-    out->stable_dt = limits_stable_dt(m, mode, n, i);
+    out->stable_dt = known_stable_dt(m, mode, n, i);
     out->accurate_dt = fmin(limits_accurate_dt(mode, n, i), out->stable_dt);
     int top = -1;
     for (int j = 0; j < n; j++) {
@@ -382,7 +392,7 @@ void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
 
 bool limits_unstable(const struct limits *l)
 {
-    return l->dt > l->stable_dt;
+    return !(l->dt <= l->stable_dt); /* a limit not known (NAN) is not known stable */
 }
 
 bool limits_rough_modes(const struct limits *l)
@@ -416,6 +426,8 @@ double limits_round_down(double x)
     if (!(x > 0.0) || !isfinite(x))
         return x;
     double scale = pow(10.0, 2.0 - floor(log10(x)));
+    if (!isfinite(scale) || !isfinite(x * scale))
+        return x; /* a subnormal limit: as it is, not 0 */
     return floor(x * scale * (1.0 + 1e-12)) / scale;
 }
 
@@ -432,7 +444,11 @@ void limits_say_stability(const struct limits *l, bool short_form, char *buf, si
     buf[0] = '\0';
     if (!limits_unstable(l))
         return;
-    if (short_form)
+    if (isnan(l->stable_dt))
+        snprintf(buf, len, "%sdt = %g s may be unstable with %s: the stability limit of dt "
+                 "cannot be computed for these springs and dampers (the numbers overflow)",
+                 short_form ? "warning: " : "", l->dt, name);
+    else if (short_form)
         snprintf(buf, len, "warning: dt = %g s is above the stability limit of %s: dt < %.3g s",
                  l->dt, name, limits_round_down(l->stable_dt));
     else

@@ -59,7 +59,8 @@ double limits_accurate_dt(const struct limits_mode *mode, int n, enum integrator
 struct limits {
     enum integrator integrator; /* the integrator judged */
     double dt;                  /* the step judged (s) */
-    double stable_dt;           /* the largest stable step (s), INFINITY for none */
+    double stable_dt;           /* the largest stable step (s), INFINITY for none, NAN when
+                                 * not known (the numbers overflow) */
     double accurate_dt;         /* the largest step keeping every mode within 1 % (s) */
     int worst;                  /* the mode off most per period at dt, or -1 */
     double error;               /* its largest error within a period (fraction of its size) */
