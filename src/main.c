@@ -182,7 +182,13 @@ static void write_meta(FILE *fp, const struct config *c, const char *mode, const
     fprintf(fp, "# springsim %s\n# springsim --%s", VERSION, mode);
     if (arg)
         fprintf(fp, " %s", arg);
-    config_write_args(fp, c);
+    /* A summary has no series: --energy and --sample (a preset's) would be refused. */
+    struct config shown = *c;
+    if (strcmp(mode, "summary") == 0) {
+        shown.energy = false;
+        shown.sample = config_options[CFG_SAMPLE].def;
+    }
+    config_write_args(fp, &shown);
     fputc('\n', fp);
 }
 

@@ -185,7 +185,7 @@ static const char *written(char **argv, int index, char *buf, size_t len)
  * for another mode than the one asked for: -o and --meta shape the CSV modes' output,
  * --plain-every the plain mode's. Options a preset can set are left alone, since a preset
  * serves every mode. */
-static bool mode_mismatch(const bool *given, enum mode mode)
+static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
 {
     bool csv = mode == MODE_HEADLESS || mode == MODE_MODES || mode == MODE_SWEEP;
     static const char *const names[] = {[MODE_INTERACTIVE] = "the interactive program",
@@ -213,6 +213,24 @@ static bool mode_mismatch(const bool *given, enum mode mode)
         options_say("give only one of --lesson, --record and --replay (a lesson or a "
                     "recording plays alone; a recording starts from the chain as it is)");
         return true;
+    }
+    /* The series' options shape --headless's rows: a summary has none, and --plain
+     * runs as long as its commands say. */
+    static const int series_only[] = {CFG_ENERGY, CFG_SAMPLE, CFG_DURATION};
+    for (size_t i = 0; i < sizeof series_only / sizeof *series_only; i++) {
+        int k = series_only[i];
+        if (given[k] && mode == MODE_HEADLESS && summary && k != CFG_DURATION) {
+            options_say("--%s: applies to --headless's rows, and --summary writes one row of "
+                        "figures (expected --headless without --summary)", config_options[k].name);
+            return true;
+        }
+        if (given[k] && mode == MODE_PLAIN) {
+            options_say("--%s: applies to --headless, not to --plain (expected --headless%s)",
+                        config_options[k].name,
+                        k == CFG_DURATION ? "; --plain runs as long as its commands say"
+                                          : "");
+            return true;
+        }
     }
     if (given[CFG_PLAIN_EVERY] && mode != MODE_PLAIN) {
         options_say("--plain-every: applies to --plain's status lines, not to %s (expected "
@@ -344,9 +362,10 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             break;
         }
         if (m != MODE_INTERACTIVE) {
-            if (modes++ && cli->mode != m) {
+            if (modes++) {
                 options_say("%s: give only one of --headless, --modes, --sweep, --list-presets, "
-                            "--list-lessons and --plain", written(argv, before, q, sizeof q));
+                            "--list-lessons and --plain, once%s", written(argv, before, q, sizeof q),
+                            cli->mode == m ? " (it was given twice)" : "");
                 return EXIT_USAGE;
             }
             cli->mode = m;
@@ -366,7 +385,7 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                     "(expected --headless without --summary)");
         return EXIT_USAGE;
     }
-    if (mode_mismatch(given, cli->mode))
+    if (mode_mismatch(given, cli->mode, c->summary))
         return EXIT_USAGE;
     if (optind < argc) {
         written(argv, optind, q, sizeof q);

@@ -137,4 +137,29 @@ refused "has COUNT '-5', which is out of range" --sweep 0.1:5:-5
 refused "has COUNT '1.5', which is not a whole number" --sweep 0.1:5:1.5
 refused "has a value that is not a number" --sweep 0.1:x:5
 
+# --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---
+refused "--energy: applies to --headless's rows" --summary --energy
+refused "--sample: applies to --headless's rows" --summary --sample 1
+refused "--energy: applies to --headless's rows" --headless --summary --energy
+refused "--energy: applies to --headless, not to --plain" --plain --energy
+refused "--duration: applies to --headless, not to --plain" --plain --duration 3
+refused "--sample: applies to --headless, not to --plain" --plain --sample 1
+refused "(it was given twice)" --modes --modes
+refused "(it was given twice)" --sweep 1:2:3 --sweep 1:2:4
+refused "--output: applies to the output of --headless" --plain -o "$tmp/x.csv"
+# A preset may set them for every mode: then they are left alone, and --meta's command
+# line (which repeats the run) leaves out what --summary would refuse.
+printf '[run]\nenergy = true\nsample = 0.5\n' >"$tmp/series.ini"
+run --summary --meta -p "$tmp/series.ini" --duration 0.1
+if [ "$rc" -eq 0 ] && ! grep -q -- '--energy\|--sample' "$out"; then pass; else
+    fail "$cmd: exit $rc, $(show "$out")"
+fi
+set -- $(sed -n 's/^# springsim //p' "$out" | sed -n 2p)
+run "$@"
+if [ "$rc" -eq 0 ] && [ "$(grep -vc '^#' "$out")" -eq 2 ]; then pass; else
+    fail "the --summary --meta line run again: exit $rc, $(show "$err")"
+fi
+run --headless --energy --sample 0.05 --duration 0.1
+[ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
+
 summary

@@ -4,15 +4,16 @@
  * was made; the preset and output options are not settings of the run. */
 #include "config.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 void config_format_exact(double v, char *buf, size_t len)
 {
-    /* From one digit: the same text as from six for every normal number (%g drops the
-     * zeros), and the shortest for a subnormal one (1e-320, not 9.99989e-321). */
-    for (int digits = 1; digits <= 17; digits++) {
+    /* A subnormal number from one digit, the shortest (1e-320, not 9.99989e-321); any
+     * other from six (10, not 1e+01). */
+    for (int digits = fpclassify(v) == FP_SUBNORMAL ? 1 : 6; digits <= 17; digits++) {
         snprintf(buf, len, "%.*g", digits, v);
         if (strtod(buf, NULL) == v)
             return;
