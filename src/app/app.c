@@ -396,9 +396,11 @@ static unsigned note_cap(struct app *app)
     if (app->capped == 0)
         app->first_cap = sim_time(app->sim);
     app->capped += capped;
-    return app_say(app, true, "the velocity cap (%g m/s) acted %ld time%s, first at t = %.*f s",
-                   MODEL_VMAX, app->capped, app->capped == 1 ? "" : "s",
-                   app_time_decimals(app->cfg.dt), app->first_cap);
+    unsigned what = app_say(app, true, "the velocity cap (%g m/s) acted %ld time%s, first at "
+                            "t = %.*f s", MODEL_VMAX, app->capped, app->capped == 1 ? "" : "s",
+                            app_time_decimals(app->cfg.dt), app->first_cap);
+    app->message_is_cap = true;
+    return what;
 }
 
 unsigned app_step(struct app *app)

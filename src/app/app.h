@@ -110,6 +110,9 @@ struct app {
     unsigned loads;          /* presets loaded from files so far */
     char message[200];       /* one line for the status bar, "" for none */
     bool message_is_error;   /* shown as a warning */
+    bool message_is_cap;     /* the message is the velocity cap's note, said anew at every
+                              * step the cap acts (a line mode tells it at most once a
+                              * second of simulated time) */
     const char *exe_dir;     /* for the preset search path */
     double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */

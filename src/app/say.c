@@ -17,6 +17,7 @@ unsigned app_say(struct app *app, bool error, const char *fmt, ...)
     /* Whatever went into it, the status line gets no control byte. */
     config_escape(line, strlen(line), sizeof line, app->message, sizeof app->message);
     app->message_is_error = error;
+    app->message_is_cap = false;
     return APP_CHANGED_MESSAGE;
 }
 

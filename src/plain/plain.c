@@ -42,6 +42,7 @@ struct plain {
     struct watch watch;
     double every;              /* seconds of simulated time between status lines */
     double next_status;        /* simulated time of the next status line */
+    double cap_second;         /* the second of simulated time the cap's note was last told */
     bool utf8;                 /* the locale is UTF-8: valid UTF-8 text may pass */
     bool closed;               /* standard output has gone */
     int out_error;             /* why a write failed (EPIPE: the reader went), or 0 */
@@ -148,6 +149,14 @@ static void plan_status(struct plain *p)
  * event. */
 static void tell_message(struct plain *p)
 {
+    /* The cap's note changes at every step the cap acts (its count): told at most once a
+     * second of simulated time, as contacts are, the count in it saying how many since. */
+    if (p->app.message_is_cap && strcmp(p->app.message, p->seen) != 0) {
+        double second = floor(sim_time(p->app.sim));
+        if (second == p->cap_second)
+            return; /* told in the next second's first step, or not if something else is */
+        p->cap_second = second;
+    }
     if (p->app.message[0] && strcmp(p->app.message, p->seen) != 0)
         put_event(p, p->app.message);
     memcpy(p->seen, p->app.message, sizeof p->seen);
@@ -485,6 +494,7 @@ int plain_run(const struct config *cfg, const char *exe_dir, const struct lesson
 {
     static struct plain p;
     memset(&p, 0, sizeof p);
+    p.cap_second = -1.0;
     if (app_init(&p.app, cfg, exe_dir) != 0) {
         fprintf(stderr, "springsim: out of memory\n");
         return EXIT_FAILURE;
