@@ -150,6 +150,22 @@ fi
 n=$(echo "$last" | sed -n 's/.*acted \([0-9]*\) times.*/\1/p')
 if [ -n "$n" ] && [ "$n" -ge 300 ]; then pass; else fail "--plain cap count: '$last'"; fi
 
+# --- 10: -o takes every legal name, up to 255 bytes (the temporary name is kept short) ---
+mkdir -p "$tmp/long"
+for len in 244 245 250 255; do
+    name=$(head -c "$len" /dev/zero | tr '\0' n)
+    run --modes -o "$tmp/long/$name"
+    if [ "$rc" -eq 0 ] && [ -s "$tmp/long/$name" ] && [ ! -s "$err" ]; then pass; else
+        fail "--modes -o NAME of $len bytes: exit $rc, $(show "$err")"
+    fi
+done
+name=$(head -c 256 /dev/zero | tr '\0' n)
+run --modes -o "$tmp/long/$name"
+[ "$rc" -eq 1 ] && grep -q 'File name too long' "$err" && pass ||
+    fail "--modes -o NAME of 256 bytes: exit $rc, $(show "$err")"
+left=$(ls -A "$tmp/long" | grep -v '^n*$' | tr '\n' ' ')
+[ -z "$left" ] && pass || fail "-o with long names left: $left"
+
 # --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---
 refused "--energy: applies to --headless's rows" --summary --energy
 refused "--sample: applies to --headless's rows" --summary --sample 1

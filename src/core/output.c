@@ -135,7 +135,14 @@ int output_open(struct output *o, const char *path)
         forget(o);
         return ENOMEM;
     }
-    snprintf(o->tmp, n + 16, "%s.tmp-XXXXXX", path);
+    /* NAME.tmp-XXXXXX beside the target; a short name in its directory instead when that
+     * would be past the longest name a directory holds (a target of 245-255 bytes). */
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    if (strlen(base) + strlen(".tmp-XXXXXX") <= NAME_MAX)
+        snprintf(o->tmp, n + 16, "%s.tmp-XXXXXX", path);
+    else
+        snprintf(o->tmp, n + 16, "%.*s.ss.tmp-XXXXXX", (int)(base - path), path);
     int fd = open_unnamed(path, mode);
     if (fd >= 0) {
         o->unnamed = true;
