@@ -29,7 +29,8 @@ DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"'
 # Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
 CORE_PKGS = inih lapacke gsl fftw3
 CORE_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(CORE_PKGS))
-CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lm
+# libunistring (Unicode's character classes, for escaping format characters) has no .pc.
+CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lunistring -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
 UI_LIBS = $(shell $(PKG_CONFIG) --libs ncursesw)
 # Figures and pixel charts: cairo draws and writes PNG, SVG and PDF; libsixel encodes sixel.

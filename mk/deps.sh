@@ -1,12 +1,13 @@
 #!/bin/sh
 # mk/deps.sh GROUP...: makes sure the Debian packages a build step needs are present.
 # Groups: build (compiler, pkg-config, ncursesw, libinih, LAPACKE, GSL, FFTW3, cairo,
-# fontconfig, libsixel, GLib for base64), test (cmocka, tmux, bash, zsh and fish for the
-# completions, numpy and pandas for --meta's CSV, GNU parallel for the --summary study,
-# libsixel's tools, Xvfb, xterm, ImageMagick, the DejaVu fonts and pyte for the pixel
-# tests and screenshots), deb (dpkg-dev, debhelper, lintian, build-essential), bench
-# (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing ones are installed
-# with apt-get; otherwise the one apt-get line to run is printed and the step stops.
+# fontconfig, libsixel, GLib for base64, libunistring for Unicode's classes), test (cmocka,
+# tmux, bash, zsh and fish for the completions, numpy and pandas for --meta's CSV, GNU
+# parallel for the --summary study, libsixel's tools, Xvfb, xterm, ImageMagick, the DejaVu
+# fonts and pyte for the pixel tests and screenshots), deb (dpkg-dev, debhelper, lintian,
+# build-essential), bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing
+# ones are installed with apt-get; otherwise the one apt-get line to run is printed and
+# the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
 want_pc() { has_pc "$1" || need="$need $2"; }
@@ -27,6 +28,7 @@ for group in "$@"; do
         want_pc fontconfig libfontconfig-dev
         want_pc libsixel libsixel-dev
         want_pc glib-2.0 libglib2.0-dev
+        [ -e /usr/include/unictype.h ] || need="$need libunistring-dev"
         ;;
     test)
         want_pc cmocka libcmocka-dev

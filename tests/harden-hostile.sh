@@ -166,6 +166,35 @@ run --modes -o "$tmp/long/$name"
 left=$(ls -A "$tmp/long" | grep -v '^n*$' | tr '\n' ' ')
 [ -z "$left" ] && pass || fail "-o with long names left: $left"
 
+# --- 11: Unicode format characters (U+202E turns a line around, U+200B hides) escaped as
+# control characters are, in a UTF-8 locale too; other UTF-8 (é) kept ---
+rlo=$(printf '\342\200\256')
+zwsp=$(printf '\342\200\213')
+eacute=$(printf '\303\251')
+printf 'preset a%sb%sc%s\n' "$rlo" "$zwsp" "$eacute" |
+    LC_ALL=C.UTF-8 timeout 60 "$SPRINGSIM" --plain >"$out" 2>"$err"
+if grep -qF "'a\u202eb\u200bc$eacute'" "$out" && ! grep -qF "$rlo" "$out" &&
+    ! grep -qF "$zwsp" "$out"; then pass; else
+    fail "--plain, preset a<U+202E>b<U+200B>c: $(grep error "$out" | od -c | head -3 | tr '\n' '|')"
+fi
+LC_ALL=C.UTF-8 "$SPRINGSIM" --modes --dt "0.01$rlo" >"$out" 2>"$err"
+if grep -qF "'0.01\u202e'" "$err" && ! grep -qF "$rlo" "$err"; then pass; else
+    fail "--dt 0.01<U+202E>: $(od -c "$err" | head -3 | tr '\n' '|')"
+fi
+mkdir -p "$tmp/fmt"
+printf '[preset]\ndescription = evil %s title%s\n[system]\nmasses = 1\n' "$rlo" "$zwsp" \
+    >"$tmp/fmt/evil.ini"
+SPRINGSIM_PRESETS=$tmp/fmt LC_ALL=C.UTF-8 "$SPRINGSIM" --list-presets >"$out" 2>"$err"
+if grep -qF 'evil \u202e title\u200b' "$out" && ! grep -qF "$rlo" "$out"; then pass; else
+    fail "--list-presets, a description with U+202E: $(grep evil "$out" | od -c | head -3 | tr '\n' '|')"
+fi
+cp "$tmp/fmt/evil.ini" "$tmp/fmt/x${rlo}y.ini"
+printf 'presets\n' | SPRINGSIM_PRESETS=$tmp/fmt LC_ALL=C.UTF-8 timeout 60 "$SPRINGSIM" --plain \
+    >"$out" 2>"$err"
+if grep -qF 'x\u202ey' "$out" && ! grep -qF "$rlo" "$out"; then pass; else
+    fail "--plain presets, a name with U+202E: $(grep presets "$out" | od -c | head -4 | tr '\n' '|')"
+fi
+
 # --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---
 refused "--energy: applies to --headless's rows" --summary --energy
 refused "--sample: applies to --headless's rows" --summary --sample 1

@@ -1,10 +1,14 @@
 /* config_quote.c: user text as every message quotes it: control bytes escaped (C's
- * escapes, \xNN for the rest, invalid UTF-8 and C1 controls included), valid UTF-8 kept,
- * long values cut. */
+ * escapes, \xNN for the rest, invalid UTF-8 and C1 controls included), Unicode's format
+ * characters and line and paragraph separators as \uXXXX (U+202E would turn the rest of
+ * the line around, U+200B hide in it; libunistring knows which they are), other valid
+ * UTF-8 kept, long values cut. */
 #include "config.h"
 
 #include <stdio.h>
 #include <string.h>
+#include <unictype.h>
+#include <unistr.h>
 
 /* Appends byte c to buf (room for len, NUL kept) at *used, escaped if it is a control
  * byte: C's escapes for the common ones, \xNN for the rest. */
@@ -54,7 +58,20 @@ void config_escape(const char *text, size_t n, size_t max, char *buf, size_t len
     buf[0] = '\0';
     while (i < n && i < max) {
         size_t k = s[i] >= 0x80 ? utf8_length(s + i, n - i) : 0;
-        if (k > 0) {
+        ucs4_t uc = 0;
+        if (k > 0 && u8_mbtouc(&uc, s + i, k) == (int)k &&
+            (uc_is_general_category(uc, UC_CATEGORY_Cf) ||
+             uc_is_general_category(uc, UC_CATEGORY_Zl) ||
+             uc_is_general_category(uc, UC_CATEGORY_Zp))) {
+            char one[16];
+            int w = snprintf(one, sizeof one, uc > 0xffff ? "\\U%08x" : "\\u%04x",
+                             (unsigned)uc);
+            if (used + (size_t)w < len) {
+                memcpy(buf + used, one, (size_t)w + 1);
+                used += (size_t)w;
+            }
+            i += k;
+        } else if (k > 0) {
             if (used + k < len) {
                 memcpy(buf + used, s + i, k);
                 used += k;

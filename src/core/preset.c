@@ -404,8 +404,11 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
 static int describe(void *user, const char *section, const char *name, const char *value)
 {
     struct preset_entry *e = user;
+    /* Escaped here, for every list that shows it (the menu, --list-presets, presets):
+     * no control byte, no Unicode format character reaches a screen raw. */
     if (strcmp(section, "preset") == 0 && strcmp(name, "description") == 0)
-        snprintf(e->description, sizeof e->description, "%s", value);
+        config_escape(value, strlen(value), strlen(value), e->description,
+                      sizeof e->description);
     return 1;
 }
 
