@@ -195,6 +195,37 @@ if grep -qF 'x\u202ey' "$out" && ! grep -qF "$rlo" "$out"; then pass; else
     fail "--plain presets, a name with U+202E: $(grep presets "$out" | od -c | head -4 | tr '\n' '|')"
 fi
 
+# --- 6: two programs racing: every export gets its own file, one save of a name wins ---
+mkdir -p "$tmp/race"
+cmds=$(i=0; while [ $i -lt 40 ]; do echo export; i=$((i + 1)); done)
+(
+    cd "$tmp/race" || exit 1
+    echo "$cmds" | timeout 60 "$SPRINGSIM" --plain >a.out 2>&1 &
+    echo "$cmds" | timeout 60 "$SPRINGSIM" --plain >b.out 2>&1
+    wait
+)
+said=$(cat "$tmp/race/a.out" "$tmp/race/b.out" | grep -c '^ok exported')
+files=$(ls "$tmp/race" | grep -c '^springsim-.*\.csv$')
+if [ "$said" -eq 80 ] && [ "$files" -eq 80 ]; then pass; else
+    fail "two --plain exporting 40 times each in one directory: $said 'ok exported', $files files"
+fi
+both=0
+round=0
+while [ $round -lt 20 ]; do
+    rm -rf "$tmp/race/x"
+    mkdir -p "$tmp/race/x"
+    printf 'save race\n' | XDG_CONFIG_HOME=$tmp/race/x timeout 60 "$SPRINGSIM" --plain \
+        >"$tmp/race/a.out" 2>&1 &
+    printf 'save race\n' | XDG_CONFIG_HOME=$tmp/race/x timeout 60 "$SPRINGSIM" --plain \
+        >"$tmp/race/b.out" 2>&1
+    wait
+    [ "$(cat "$tmp/race/a.out" "$tmp/race/b.out" | grep -c '^ok saved')" -eq 1 ] ||
+        both=$((both + 1))
+    round=$((round + 1))
+done
+[ "$both" -eq 0 ] && pass ||
+    fail "two --plain saving 'race' at once: not exactly one 'ok saved' in $both of 20 rounds"
+
 # --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---
 refused "--energy: applies to --headless's rows" --summary --energy
 refused "--sample: applies to --headless's rows" --summary --sample 1

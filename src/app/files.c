@@ -154,11 +154,24 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
         c.frequency = m.motor.frequency = app->sweep_from;
     snprintf(c.name, sizeof c.name, "%s", name);
     snprintf(c.description, sizeof c.description, "Saved from springsim");
+    /* A new preset is made exclusively: if another program made one of that name since
+     * the check above, it is not replaced without asking. The user's yes replaces. */
     struct output o;
     int e = output_open(&o, path);
     if (e == 0) {
         preset_write(o.fp, &c, &m);
-        e = output_close(&o, true);
+        if (overwrite) {
+            e = output_close(&o, true);
+        } else {
+            e = output_link_new(&o, path);
+            int closed = output_close(&o, false);
+            e = e ? e : closed;
+        }
+    }
+    if (e == EEXIST && !overwrite) {
+        app_say(app, false, "preset %s appeared meanwhile (another springsim?): replace it? "
+                "(y/n)", name);
+        return SAVE_EXISTS;
     }
     if (e) {
         app_say(app, true, "save: %s: %s", path, strerror(e));
@@ -176,11 +189,10 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
     char stamp[32];
     localtime_r(&now, &tm);
     strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-    /* Two exports in one second: the second gets -2, then -3, ... never replacing one. */
-    struct stat st;
+    /* Two exports in one second: the second gets -2, then -3, ... never replacing one,
+     * even of another program exporting at the same moment: the complete file takes the
+     * first name still free, linked exclusively. */
     snprintf(path, len, "%s/springsim-%s.csv", dir ? dir : ".", stamp);
-    for (int k = 2; lstat(path, &st) == 0 && k < 1000; k++)
-        snprintf(path, len, "%s/springsim-%s-%d.csv", dir ? dir : ".", stamp, k);
     const struct trail *tr = app->trail;
     int n = tr->n;
     struct output o;
@@ -192,7 +204,13 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
         for (int k = 0; k < tr->count; k++, rec += tr->width)
             output_csv_values(o.fp, n, rec[TRAIL_T], rec + TRAIL_X(tr, 0), rec + TRAIL_V(tr, 0),
                               rec + TRAIL_A(tr, 0), rec[TRAIL_U], NULL);
-        e = output_close(&o, true);
+        e = output_link_new(&o, path);
+        for (int k = 2; e == EEXIST && k < 1000; k++) {
+            snprintf(path, len, "%s/springsim-%s-%d.csv", dir ? dir : ".", stamp, k);
+            e = output_link_new(&o, path);
+        }
+        int closed = output_close(&o, false);
+        e = e ? e : closed;
     }
     if (e) {
         app_say(app, true, "export: %s: %s", path, strerror(e));

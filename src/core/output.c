@@ -200,6 +200,25 @@ static int name_unnamed(struct output *o)
     return EEXIST;
 }
 
+int output_link_new(struct output *o, const char *path)
+{
+    if (!o->fp || !o->tmp)
+        return EINVAL; /* standard output, or a device written in place */
+    if (fflush(o->fp) != 0 || ferror(o->fp))
+        return errno ? errno : EIO;
+    if (fsync(fileno(o->fp)) != 0)
+        return errno;
+    if (o->unnamed) {
+        char proc[64];
+        snprintf(proc, sizeof proc, "/proc/self/fd/%d", fileno(o->fp));
+        if (linkat(AT_FDCWD, proc, AT_FDCWD, path, AT_SYMLINK_FOLLOW) != 0)
+            return errno;
+    } else if (link(o->tmp, path) != 0) {
+        return errno;
+    }
+    return 0;
+}
+
 int output_close(struct output *o, bool commit)
 {
     int err = 0;

@@ -27,6 +27,14 @@ int output_open(struct output *o, const char *path);
  * Returns 0, or an errno value. */
 int output_close(struct output *o, bool commit);
 
+/* Gives the complete file being written (opened by output_open on a regular or new file)
+ * the name path as well, never replacing anything there: path must not exist (a link
+ * made exclusively, so of two programs racing for one name one gets it). path must be in
+ * the directory output_open was given. Returns 0, EEXIST when path is taken (try another
+ * name: the file stays open), or another errno value. Then output_close(o, false) drops
+ * the temporary name and keeps path. */
+int output_link_new(struct output *o, const char *path);
+
 /* Removes the named temporary file of the output being written, if any: for a handler
  * of a terminating signal (async-signal-safe: unlink only). Where the system has unnamed
  * files (O_TMPFILE) there is nothing to remove until the last moment. */
