@@ -592,7 +592,8 @@ int main(int argc, char **argv)
         options_report_key(&c, bad_key, err);
         return EXIT_USAGE;
     }
-    if (cli.mode == MODE_HEADLESS && (bad_key = config_check_steps(&c, err, sizeof err)) >= 0) {
+    if (cli.mode == MODE_HEADLESS && ((bad_key = config_check_steps(&c, err, sizeof err)) >= 0 ||
+                                      (bad_key = config_check_exact(&c, err, sizeof err)) >= 0)) {
         options_report_key(&c, bad_key, err);
         model_free(m);
         return EXIT_USAGE;

@@ -226,6 +226,17 @@ done
 [ "$both" -eq 0 ] && pass ||
     fail "two --plain saving 'race' at once: not exactly one 'ok saved' in $both of 20 rounds"
 
+# --- 3: --integrator exact where it would look hung is refused, with the reason ---
+refused "'exact' takes at most 20 masses with collisions" --headless --integrator exact -n 1000
+refused "'exact' takes at most 20 masses with collisions" --headless --integrator exact -n 21
+refused "'exact' takes at most 100 masses without collisions" --headless --integrator exact \
+    -n 101 --no-collisions
+printf '[system]\nmasses = 300\nintegrator = exact\n' >"$tmp/exact.ini"
+refused "exact.ini:3: integrator: 'exact' takes at most" --headless -p "$tmp/exact.ini"
+accepted --headless --integrator exact -n 20 --duration 0.05
+accepted --headless --integrator exact -n 100 --no-collisions --duration 0
+accepted --modes --integrator exact -n 200
+
 # --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---
 refused "--energy: applies to --headless's rows" --summary --energy
 refused "--sample: applies to --headless's rows" --summary --sample 1
