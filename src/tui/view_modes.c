@@ -175,7 +175,9 @@ static void draw_cell(struct modes_view *v, const struct app *app, int j, struct
 {
     char title[80];
     const char *mark = !selected ? "" : term_utf8() ? "▸ " : "> ";
-    int len = snprintf(title, sizeof title, "%smode %d  %.3f Hz", mark, j + 1, app->modes[j]);
+    char hz[32];
+    int len = snprintf(title, sizeof title, "%smode %d  %s Hz", mark, j + 1,
+                       app_fixed(app->modes[j], 3, hz, sizeof hz));
     if (driven)
         snprintf(title + len, sizeof title - (size_t)len, "%s",
                  len + 11 + (r.h < 2 ? 7 : 0) <= r.w - 2 ? (term_utf8() ? "  ◆ driven" : "  * driven")

@@ -1,0 +1,46 @@
+#!/bin/sh
+# tests/tui-hostile.sh: the interactive program (tmux) on the largest values it takes
+# (issue 23, item 2): every number on the screen in a width, no inf or nan, in the chain
+# view, the modes view (m), the energy view (e) and the response view (f).
+# Run from the repository root as `sh tests/tui-hostile.sh`, SPRINGSIM naming the binary.
+# Ends with "tui-hostile: N passed, M failed".
+NAME=tui-hostile
+. "$(dirname "$0")/lib/check.sh"
+. "$(dirname "$0")/lib/tmux.sh"
+
+start stiff 120 40 -- -n 2 --spring 1e300 --x0 9
+start edge 120 40 -- -n 2 --x0 10,-10 --v0 50,-50
+sessions="stiff edge"
+
+# clean WHAT: the screen in $scr holds no inf, nan and no number of 13 digits or more.
+clean() {
+    if grep -qiE '(^|[^a-z])-?(inf|nan)([^a-z]|$)|[0-9]{13}' "$scr"; then
+        fail "$1: $(grep -oiE '.{0,20}(inf|nan|[0-9]{13}).{0,10}' "$scr" | head -2 | tr '\n' '|')"
+    else
+        pass
+    fi
+}
+
+for S in $sessions; do
+    if ! wait_re 'Paused'; then
+        fail "$S: no first frame: $(brief)"
+        continue
+    fi
+    cap
+    clean "$S, the chain view"
+    keys Space
+    sleep 0.5
+    for v in m e f; do
+        keys "$v"
+        sleep 0.5
+        cap
+        clean "$S, view $v"
+    done
+done
+S=stiff
+keys m
+if wait_re 'mode 1  1\.592e\+149 Hz'; then pass; else
+    fail "stiff: the modes view should title mode 1 '1.592e+149 Hz': $(brief "$scr" 'mode 1')"
+fi
+
+summary
