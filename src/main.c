@@ -272,6 +272,7 @@ static int run_headless(const struct config *c, const struct model *m)
     double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
     bool blown = false;
     if (sum) {
+        blown = !output_state_finite(s, x + 2 * n);
         summary_add(sum, s, 0.0, total);
     } else {
         output_csv_header(o.fp, n, c->energy);
@@ -319,6 +320,10 @@ static int run_headless(const struct config *c, const struct model *m)
             if (ferror(o.fp))
                 break;
         }
+    }
+    if (sum && status == EXIT_SUCCESS && !output_state_finite(s, x + 2 * n)) {
+        report_blowup(s, &l, judged, false);
+        status = EXIT_FAILURE;
     }
     if (sum && status == EXIT_SUCCESS) {
         write_meta(o.fp, c, "summary", NULL);

@@ -290,10 +290,11 @@ static bool all_finite(const double *v, int n)
     return true;
 }
 
-int output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
+/* The row's values for the current state of s: accelerations into scratch, the energy
+ * books into books (if energy). Returns whether every one is finite. */
+static bool row_values(const struct sim *s, bool energy, double *scratch, double *books)
 {
     struct energy e;
-    double books[5];
     int n = sim_model(s)->n;
     sim_accel(s, scratch);
     if (energy) {
@@ -301,10 +302,22 @@ int output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
         books[0] = e.kinetic, books[1] = e.potential, books[2] = e.dissipated;
         books[3] = e.motor_work, books[4] = e.contact;
     }
-    if (!all_finite(sim_x(s), n) || !all_finite(sim_v(s), n) || !all_finite(scratch, n) ||
-        (energy && !all_finite(books, 5)) || !isfinite(sim_end_position(s)))
+    return all_finite(sim_x(s), n) && all_finite(sim_v(s), n) && all_finite(scratch, n) &&
+           (!energy || all_finite(books, 5)) && isfinite(sim_end_position(s));
+}
+
+bool output_state_finite(const struct sim *s, double *scratch)
+{
+    double books[5];
+    return row_values(s, true, scratch, books);
+}
+
+int output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
+{
+    double books[5];
+    if (!row_values(s, energy, scratch, books))
         return -1;
-    output_csv_values(fp, n, sim_time(s), sim_x(s), sim_v(s), scratch, sim_end_position(s),
-                      energy ? books : NULL);
+    output_csv_values(fp, sim_model(s)->n, sim_time(s), sim_x(s), sim_v(s), scratch,
+                      sim_end_position(s), energy ? books : NULL);
     return 0;
 }

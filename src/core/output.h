@@ -48,6 +48,10 @@ void output_csv_header(FILE *fp, int n, bool energy);
 void output_csv_values(FILE *fp, int n, double t, const double *x, const double *v,
                        const double *a, double u, const double *energy);
 
+/* Whether the state of s, its accelerations (into scratch, n doubles) and its energy
+ * books are all finite: what a --summary run checks where the CSV checks its rows. */
+bool output_state_finite(const struct sim *s, double *scratch);
+
 /* One --headless CSV row for the current state of s. scratch holds n doubles. Returns 0,
  * or -1 without writing anything when a value (an acceleration or an energy included)
  * is not finite: the CSV never holds inf or nan. */
