@@ -371,8 +371,7 @@ static const char *parse_number(const char *s, double *out)
     return config_parse_number(s, out);
 }
 
-/* Whether v is inside key's range (a list's every value too). */
-static int in_range(int key, double v)
+bool config_in_range(int key, double v)
 {
     const struct config_option *o = &config_options[key];
     if (o->lo_open ? !(v > o->lo) : !(v >= o->lo))
@@ -386,7 +385,7 @@ static int set_number(int key, const char *value, double *out, char *err, size_t
     const char *why = parse_number(value, &v);
     if (why)
         return fail(key, value, why, err, errlen);
-    if (!in_range(key, v))
+    if (!config_in_range(key, v))
         return fail(key, value, "is out of range", err, errlen);
     *out = v;
     return 0;
@@ -423,7 +422,7 @@ static int set_list(int key, const char *value, struct config_list *out, char *e
         }
         double v;
         const char *why = parse_span(p, len, &v);
-        if (!why && !in_range(key, v))
+        if (!why && !config_in_range(key, v))
             why = "is out of range";
         if (why) {
             if (p == value && *end == '\0')
@@ -568,7 +567,7 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
             return fail(key, value, why, err, errlen);
         /* The seed's whole range is what parse_whole reads (below 2^64, which a double
          * cannot tell from 2^64 - 1). */
-        if (key != CFG_SEED && !in_range(key, (double)whole))
+        if (key != CFG_SEED && !config_in_range(key, (double)whole))
             return fail(key, value, "is out of range", err, errlen);
         if (key == CFG_SEED) {
             c->seed = whole;
@@ -605,85 +604,4 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
     if (key == CFG_X0 || key == CFG_V0 || (key == CFG_RANDOM && c->random))
         c->start_mode = 0;
     return 0;
-}
-
-/* Says that v, a value of key, is out of range. */
-static int out_of_range(int key, double v, char *err, size_t errlen)
-{
-    char text[40];
-    config_format_exact(v, text, sizeof text);
-    fail(key, text, "is out of range", err, errlen);
-    return key;
-}
-
-int config_check_ranges(const struct config *c, char *err, size_t errlen)
-{
-    for (int k = 0; k < CFG_KEY_COUNT; k++) {
-        const struct config_option *o = &config_options[k];
-        const char *at = (const char *)c + o->offset;
-        bool physical = o->section && (strcmp(o->section, "system") == 0 ||
-                                       strcmp(o->section, "motor") == 0 ||
-                                       strcmp(o->section, "initial") == 0);
-        if (!physical)
-            continue; /* the run's settings (--sample 0 is every step) are not changed here */
-        if (o->kind == CONFIG_NUMBER) {
-            double v = *(const double *)at;
-            if (!in_range(k, v))
-                return out_of_range(k, v, err, errlen);
-        } else if (o->kind == CONFIG_LIST) {
-            const struct config_list *l = (const struct config_list *)(const void *)at;
-            for (int i = 0; i < l->count; i++)
-                if (!in_range(k, l->v[i]))
-                    return out_of_range(k, l->v[i], err, errlen);
-        }
-    }
-    return -1;
-}
-
-int config_check_interactive(const struct config *c, char *err, size_t errlen)
-{
-    const struct config_option *n = &config_options[CFG_MASSES], *dt = &config_options[CFG_DT];
-    if (c->masses > n->ihi)
-        snprintf(err, errlen, "'%d' is out of range for the interactive program (expected "
-                 "%g <= %s <= %g; --headless takes up to %g)", c->masses, n->lo, n->symbol,
-                 n->ihi, n->hi);
-    else if (!(c->dt >= dt->ilo)) {
-        char v[40];
-        config_format_exact(c->dt, v, sizeof v);
-        snprintf(err, errlen, "'%s' is out of range for the interactive program (expected "
-                 "%g <= %s <= %g)", v, dt->ilo, dt->symbol, dt->hi);
-    }
-    else
-        return -1;
-    return c->masses > n->ihi ? CFG_MASSES : CFG_DT;
-}
-
-int config_check_exact(const struct config *c, char *err, size_t errlen)
-{
-    int most = c->no_collisions ? CONFIG_EXACT_MAX_MASSES : CONFIG_EXACT_MAX_MASSES_CONTACTS;
-    if (c->integrator != INTEGRATOR_EXACT || c->masses <= most)
-        return -1;
-    snprintf(err, errlen, "'exact' takes at most %d masses %s, not %d: %s (expected rk4, "
-             "verlet, semi-implicit or euler, or fewer masses)", most,
-             c->no_collisions ? "without collisions" : "with collisions (100 without)",
-             c->masses,
-             c->no_collisions ? "its set-up is a matrix exponential of order 2N+2 (0.7 s at "
-                                "100 masses, minutes at 300)"
-                              : "every contact makes a new step length, each a matrix "
-                                "exponential of order 2N+2 (a second of motion takes 0.4 s "
-                                "at 20 masses, 13 s at 50)");
-    return CFG_INTEGRATOR;
-}
-
-int config_check_steps(const struct config *c, char *err, size_t errlen)
-{
-    double steps = c->duration / c->dt;
-    if (steps <= CONFIG_MAX_STEPS)
-        return -1;
-    char count[32];
-    snprintf(count, sizeof count, isfinite(steps) ? "%.3g" : "over 1e308", steps);
-    snprintf(err, errlen, "a run of %g s at dt = %g s is %s steps (expected at most %g: "
-             "a shorter --duration or a larger --dt)", c->duration, c->dt, count,
-             CONFIG_MAX_STEPS);
-    return c->dt < 1e-9 ? CFG_DT : CFG_DURATION;
 }

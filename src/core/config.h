@@ -219,6 +219,9 @@ void config_expected(int key, char *buf, size_t len);
 void config_arg(int key, char *buf, size_t len);
 void config_help(int key, char *buf, size_t len);
 
+/* Whether v is inside key's range (a list's every value too). */
+bool config_in_range(int key, double v);
+
 /* The key to blame when a number or a list value of c is outside its option's range
  * (a value made by the program, not typed: the nearest mode, a sweep's frequency), with
  * the reason in err; -1 when every one is inside. The one change path checks it. */
