@@ -27,6 +27,7 @@
 #include "fig/report.h"
 #include "options.h"
 #include "plain/plain.h"
+#include "progress.h"
 #include "tui/tui.h"
 
 #define SWEEP_MAX 1000000 /* rows a sweep may ask for */
@@ -287,6 +288,9 @@ static int run_headless(const struct config *c, const struct model *m)
     struct limits_runaway watch;
     sim_energy(s, &e);
     limits_runaway_start(&watch, m, &e);
+    /* A run that takes more than a second says how far it has got (a terminal only). */
+    struct progress prog;
+    progress_start(&prog, total * c->dt);
     for (double step = 1; !blown && step <= total; step++) {
         /* Past the stability limit a capped velocity, or energy made from nothing, means
          * the numbers are running away: stop rather than write nonsense (or a value that
@@ -297,6 +301,7 @@ static int run_headless(const struct config *c, const struct model *m)
             runaway = limits_runaway_check(&watch, &e);
         }
         if (bad || (unstable && (sim_last_capped(s) || runaway))) {
+            progress_end(&prog);
             report_blowup(s, &l, judged, runaway);
             status = EXIT_FAILURE;
             capped = 0.0; /* said already */
@@ -311,6 +316,7 @@ static int run_headless(const struct config *c, const struct model *m)
             summary_add(sum, s, step, total);
         } else if (fmod(step, stride) == 0.0) {
             if (output_csv_row(o.fp, s, c->energy, x + 2 * n) != 0) {
+                progress_end(&prog);
                 report_blowup(s, &l, judged, false);
                 status = EXIT_FAILURE;
                 capped = 0.0;
@@ -320,7 +326,11 @@ static int run_headless(const struct config *c, const struct model *m)
             if (ferror(o.fp))
                 break;
         }
+        /* The clock read every 64 steps, or every step of exact's (each may be slow). */
+        if (fmod(step, 64.0) == 0.0 || c->integrator == INTEGRATOR_EXACT)
+            progress_tick(&prog, sim_time(s));
     }
+    progress_end(&prog);
     if (sum && status == EXIT_SUCCESS && !output_state_finite(s, x + 2 * n)) {
         report_blowup(s, &l, judged, false);
         status = EXIT_FAILURE;

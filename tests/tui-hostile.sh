@@ -10,6 +10,7 @@ NAME=tui-hostile
 
 start stiff 120 40 -- -n 2 --spring 1e300 --x0 9
 start edge 120 40 -- -n 2 --x0 10,-10 --v0 50,-50
+start_shell long 100 10
 sessions="stiff edge"
 
 # clean WHAT: the screen in $scr holds no inf, nan and no number of 13 digits or more.
@@ -41,6 +42,33 @@ S=stiff
 keys m
 if wait_re 'mode 1  1\.592e\+149 Hz'; then pass; else
     fail "stiff: the modes view should title mode 1 '1.592e+149 Hz': $(brief "$scr" 'mode 1')"
+fi
+
+# Item 3: a headless run that takes more than a second says how far it has got, on the
+# terminal's standard error only, and leaves no line behind when it ends.
+S=long
+if wait_for 'PROMPT$' 3; then
+    keys "'$SPRINGSIM' --headless -n 50 --dt 1e-4 --duration 10000 --sample 1 >/dev/null; echo DONE\$?" Enter
+    if wait_re 'springsim: t = [0-9.]+ of 10000 s \([0-9]+ %\)' 10; then pass; else
+        fail "a long headless run: no progress line after 10 s: $(brief)"
+    fi
+    keys C-c
+    if wait_re '^PROMPT\$ *$' 10; then pass; else fail "a long headless run: Ctrl-C did not end it: $(brief)"; fi
+    keys "clear; '$SPRINGSIM' --headless -n 50 --dt 1e-4 --duration 300 --sample 1 >/dev/null; echo DONE\$?" Enter
+    if wait_for 'DONE0' 60; then
+        cap
+        if grep -q 'springsim: t =' "$scr"; then
+            fail "a run that ended left its progress line: $(brief)"
+        else pass; fi
+    else
+        fail "a run of 3e6 steps did not end within 60 s: $(brief)"
+    fi
+    run --headless --integrator exact -n 20 --duration 3
+    if [ "$rc" -eq 0 ] && [ ! -s "$err" ]; then pass; else
+        fail "$cmd with standard error not a terminal: exit $rc, stderr $(head -c 200 "$err")"
+    fi
+else
+    fail "no shell prompt: $(brief)"
 fi
 
 summary
