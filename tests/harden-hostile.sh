@@ -58,6 +58,8 @@ refused "0 <= AMP <= 10 m" --headless --start-mode 1:10.01
 refused "-10 <= displacements <= 10 m" --plain --x0 1e300
 printf '[initial]\nx0 = 1e300\n' >"$tmp/huge.ini"
 refused "huge.ini:2: x0" --headless -p "$tmp/huge.ini"
+refused "0 <= amplitude <= 10" --headless --amplitude 11
+refused "0 <= amplitude <= 10" --headless --amplitude 1e308
 accepted --headless --duration 0 --x0 10 --v0 -50 -n 1 --boundary wall
 accepted --headless --duration 0.1 --start-mode 1:10
 # A state inside the bounds whose energy still overflows (springs of 1e308 N/m): the run
@@ -71,6 +73,16 @@ no_inf_nan "$out" "$cmd"
 printf 'modes\nstatus\n' | "$SPRINGSIM" --plain -n 1 --spring 1e300 --damping 0 --x0 9 \
     >"$out" 2>&1
 no_inf_nan "$out" "--plain --spring 1e300 --damping 0, modes"
+
+# A drive of 1e308 m made inf accelerations in the cursor's readout; a mode of 1e149 Hz
+# was said in 150 digits when the chain started in it.
+printf 'set amplitude 1e308\nset spring 1e300\nmode 1\nrun 0.5\ncursor 0.2\n' |
+    timeout 60 "$SPRINGSIM" --plain -n 1 >"$out" 2>&1
+no_inf_nan "$out" "--plain, amplitude 1e308, spring 1e300, mode 1, cursor"
+if grep -q "^error amplitude: '1e308' is out of range" "$out" &&
+    grep -q '^ok started in mode 1 (2\.251e+149 Hz)' "$out"; then pass; else
+    fail "--plain, amplitude 1e308 and mode 1 at 2.251e+149 Hz: $(show "$out")"
+fi
 
 # --- 13: --summary --meta on a run that blows up: no '#' lines alone ---
 run --summary --meta --spring 1e308 --x0 1 --duration 0.05

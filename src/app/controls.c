@@ -440,8 +440,10 @@ unsigned app_start_mode(struct app *app, int j)
     bool sweeping = app->sweep->active;
     unsigned what = app_reset(app) | app_set_running(app, true);
     bool driven = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
-    return what | app_say(app, false, "%sstarted in mode %d (%.3f Hz), largest |x| %.2f m%s",
-                          sweeping ? "sweep stopped; " : "", j + 1, app->modes[j], amp,
+    char hz[32];
+    return what | app_say(app, false, "%sstarted in mode %d (%s Hz), largest |x| %.2f m%s",
+                          sweeping ? "sweep stopped; " : "", j + 1,
+                          app_fixed(app->modes[j], 3, hz, sizeof hz), amp,
                           driven ? "; the motor still drives (Amplitude 0 leaves it alone)"
                                  : amp < APP_MODE_AMPLITUDE ? ", so no two masses touch" : "");
 }

@@ -73,7 +73,7 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                   .choices = WAVE_COUNT, .symbol = "a waveform", .offset = AT(wave)},
     [CFG_AMPLITUDE] = {.name = "amplitude", .section = "motor", .kind = CONFIG_NUMBER,
                        .arg = "METRES", .help = "motor amplitude", .symbol = "amplitude",
-                       .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_AMPLITUDE, .unit = "m",
+                       .lo = 0, .hi = MODEL_LENGTH, /* the walls are 10 m apart */ .def = MODEL_DEFAULT_AMPLITUDE, .unit = "m",
                        .digits = 2,
                        .offset = AT(amplitude)},
     /* A bound well past any mechanical drive: a square wave at f makes 2 f dt sub-steps
