@@ -45,7 +45,7 @@ static void expected_texts(void **state)
         {CFG_DT, "0 < dt <= 0.05"},
         {CFG_MASSES, "1 <= N <= 1000"},
         {CFG_FREQUENCY, "0 < frequency <= 1e6"},
-        {CFG_AMPLITUDE, "amplitude >= 0 m"},
+        {CFG_AMPLITUDE, "0 <= amplitude <= 10"},
         {CFG_SAMPLE, "sample > 0 s"},
         {CFG_MASS, "masses > 0 kg: one value, or one per mass"},
         {CFG_SPRING, "springs > 0 N/m: one value, or N+1"},
