@@ -163,6 +163,16 @@ if [ "$(grep -c '^ok .*; warning: dt = ' "$out")" -eq 2 ] &&
     grep -q "^error dt: '0.5' is out of range" "$out"; then pass; else
     fail "a set that warns should be ok with the value and the warning: $(grep -E '^(ok|error)' "$out" | cut -c 1-120 | tr '\n' '|')"
 fi
+# the time plots' window: the beating preset's 33 s (three beats of 10.9 s), set window
+# in --window's range, a bad value refused and the window kept, and set lists it
+feed 'controls\nset window 12.5\ncontrols\nset window 61\nset window\nhelp set\n' -p beating
+if grep -q '^ok controls: .*; window 33 s$' "$out" && grep -qx 'ok window 12.5 s' "$out" &&
+    grep -q '^ok controls: .*; window 12.5 s$' "$out" &&
+    grep -qx "error window: '61' is out of range (expected 1 <= window <= 60)" "$out" &&
+    grep -qx "error set: 'window' needs a value" "$out" &&
+    grep -q '^ok set CONTROL VALUE: .*, window$' "$out"; then pass; else
+    fail "set window: $(grep -E '^(ok|error)' "$out" | cut -c 1-160 | tr '\n' '|')"
+fi
 # a preset without a description is named alone, no ': ' left hanging
 printf '[system]\nmasses = 1\n' >"$tmp/bare preset.ini"
 feed "preset $tmp/bare preset.ini\n"

@@ -181,6 +181,44 @@ static void window_steps_and_clamps(void **state)
     assert_ptr_equal(app_trail(&app), app.coarse);
 }
 
+/* A window between the list's (--window, a preset) starts there; < and > go on to the
+ * list's nearest on either side; a preset that names one sets it, one that does not
+ * keeps the user's; set window checks --window's range. */
+static void window_from_settings(void **state)
+{
+    (void)state;
+    static struct config c;
+    c = cfg;
+    c.window = 33.0;
+    app_free(&app);
+    assert_int_equal(app_init(&app, &c, NULL), 0);
+    assert_close(app_window(&app), 33.0, 0.0);
+    assert_ptr_equal(app_trail(&app), app.coarse); /* the fine samples reach 11 s */
+    assert_int_equal(app_window_step(&app, -1), APP_CHANGED_WINDOW);
+    assert_close(app_window(&app), 30.0, 0.0);
+    app.cfg.window = 33.0;
+    assert_int_equal(app_window_step(&app, 1), APP_CHANGED_WINDOW);
+    assert_close(app_window(&app), 60.0, 0.0);
+    app.cfg.window = 33.0;
+    assert_int_equal(app_window_step(&app, -2), APP_CHANGED_WINDOW);
+    assert_close(app_window(&app), 20.0, 0.0);
+
+    assert_int_equal(preset_text("p", "[run]\nwindow = 5\n") & APP_CHANGED_WINDOW,
+                     APP_CHANGED_WINDOW);
+    assert_close(app_window(&app), 5.0, 0.0);
+    unsigned w = preset(); /* 3-mass-chain says no window */
+    assert_true(w && !(w & APP_CHANGED_WINDOW));
+    assert_close(app_window(&app), 5.0, 0.0);
+
+    assert_int_equal(app_set_window(&app, "61"), 0);
+    assert_true(app.message_is_error);
+    assert_string_equal(app.message, "window: '61' is out of range (expected 1 <= window <= 60)");
+    assert_close(app_window(&app), 5.0, 0.0);
+    assert_int_equal(app_set_window(&app, "12.5"), APP_CHANGED_WINDOW | APP_CHANGED_MESSAGE);
+    assert_close(app_window(&app), 12.5, 0.0);
+    assert_string_equal(app.message, "window 12.5 s");
+}
+
 /* Checks a trail is in time order, spaced min to max apart, and covers t0..t1 (its last
  * sample less than max before t1). */
 static void covers(const struct trail *tr, double min, double max, double t0, double t1)
@@ -591,6 +629,7 @@ int main(void)
         T(arrows_move_lists_both_ways),
         T(preset_keeps_playback),
         T(window_steps_and_clamps),
+        T(window_from_settings),
         T(coarse_trail_covers_60_s),
         T(time_decimals),
         T(element_editing),

@@ -54,6 +54,7 @@ static void expected_texts(void **state)
         {CFG_WAVE, "sine, square, triangle or sawtooth"},
         {CFG_SEED, "0 <= seed < 2^64"},
         {CFG_ENERGY, "true or false"},
+        {CFG_WINDOW, "1 <= window <= 60"},
     };
     char buf[256];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
@@ -73,6 +74,38 @@ static void expected_texts(void **state)
 }
 
 /* The interactive program's N <= 10 and dt >= 0.001 come from the rows. */
+/* --window: 1 to 60 s (the coarse samples reach 66 s back), 10 unless given; a bad value
+ * says what was wrong and what is allowed, and changes nothing. */
+static void window_range(void **state)
+{
+    (void)state;
+    static struct config c;
+    char err[256];
+    config_init(&c);
+    assert_true(c.window == 10.0);
+    static const char *const good[] = {"1", "33", "60", "2.5"};
+    for (size_t i = 0; i < sizeof good / sizeof *good; i++) {
+        assert_int_equal(config_set(&c, CFG_WINDOW, good[i], err, sizeof err), 0);
+        assert_true(c.window == strtod(good[i], NULL));
+    }
+    static const struct {
+        const char *value, *err;
+    } bad[] = {
+        {"0.99", "'0.99' is out of range (expected 1 <= window <= 60)"},
+        {"60.5", "'60.5' is out of range (expected 1 <= window <= 60)"},
+        {"-33", "'-33' is out of range (expected 1 <= window <= 60)"},
+        {"33s", "'33s' is not a number (expected 1 <= window <= 60)"},
+        {"inf", "'inf' is not a finite number (expected 1 <= window <= 60)"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        assert_int_equal(config_set(&c, CFG_WINDOW, bad[i].value, err, sizeof err), -1);
+        assert_string_equal(err, bad[i].err);
+        assert_true(c.window == 2.5);
+    }
+    /* The longest window is what the interactive program's coarse samples cover. */
+    assert_true(config_options[CFG_WINDOW].hi == CONFIG_WINDOW_MAX);
+}
+
 static void interactive_limits(void **state)
 {
     (void)state;
@@ -243,6 +276,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(defaults_from_the_table),
         cmocka_unit_test(expected_texts),
+        cmocka_unit_test(window_range),
         cmocka_unit_test(interactive_limits),
         cmocka_unit_test(run_length),
         cmocka_unit_test(escaping),

@@ -110,6 +110,12 @@ static void builtin_presets_show_their_names(void **state)
     double off = fabs(m->motor.frequency - first_mode(m)) / first_mode(m);
     assert_true(off > 0.02 && off < 0.25); /* close, not equal: beats of a few seconds */
     assert_true(m->c[0] < 0.05);           /* little damping, so the beats persist */
+    /* It opens on a window of three whole beats (of 1 / |f - f1| each), not a fourth. */
+    double beat = 1.0 / fabs(m->motor.frequency - first_mode(m));
+    assert_true(c.window >= 3.0 * beat && c.window < 3.5 * beat);
+    model_free(m);
+    m = load("resonance", &c);
+    assert_true(c.window == config_options[CFG_WINDOW].def); /* a preset without one: 10 s */
     model_free(m);
 
     m = load("low-frequency", &c);
@@ -205,10 +211,13 @@ static void write_read_round_trip(void **state)
     config_set(&c, CFG_BOUNDARY, "free", err, sizeof err);
     config_set(&c, CFG_NO_COLLISIONS, NULL, err, sizeof err);
     config_set(&c, CFG_DT, "0.0125", err, sizeof err);
+    assert_int_equal(config_set(&c, CFG_WINDOW, "32.5", err, sizeof err), 0);
     struct model *m = config_model(&c, &bad, err, sizeof err);
     assert_non_null(m);
 
     write_and_read(&c, m, &back);
+    assert_true(back.window == 32.5);
+    assert_int_not_equal(back.origin[CFG_WINDOW].line, 0); /* written, not the default */
     struct model *m2 = config_model(&back, &bad, err, sizeof err);
     assert_non_null(m2);
     assert_int_equal(m2->n, 40);

@@ -2,7 +2,7 @@
 # tests/tui-plots.sh: the plots and the scene as a person reads them (SPEC section 4,
 # issue 9), in a real terminal (tmux): 1..6 enlarge one plot (big enough to read, the
 # resonance's oscillations distinct), the same digit or 0 give the grid back, < and >
-# change the time window; at 60x20 every plot shown carries data; tick labels are whole
+# change the time window (the beating preset and --window choose the one at start); at 60x20 every plot shown carries data; tick labels are whole
 # numbers falling evenly and gridlines evenly spaced in every plot at every size, also
 # with accelerations of 1e4; mass labels 1..10 in full, on the springs' row whatever the
 # masses. Run from the repository root as `sh tests/tui-plots.sh`, SPRINGSIM naming the
@@ -137,6 +137,8 @@ start ten 120 40 -- -n 10
 start ten80 80 24 -- -n 10
 start light 120 40 -- -n 3 --mass 0.2,1,5
 start light80 80 24 -- -n 3 --mass 0.2,1,5
+start beat80 80 24 -- -p beating
+start win80 80 24 -- --window 2
 sessions="res80 big huge small acc acc80 acc120 acc60 ten ten80 light light80"
 for s in res80 big huge small acc acc80 acc120 acc60; do
     if up $s; then keys Space; fi
@@ -321,5 +323,28 @@ else
 fi
 
 all_alive $sessions
+
+# ---- the window at start: the beating preset's three beats, --window ----
+# beating.ini: f1 = sqrt(20) / 2 pi = 0.7118 Hz driven at 0.62 Hz beats every
+# 1 / 0.0918 = 10.9 s; its window of 33 s holds three beats, on an axis from -40 s.
+S=beat80
+t1=$(title 1)
+keys 1
+if wait_for '0 all plots' 3 && poll 3 x_from -40; then pass; else
+    fail "80x24 -p beating: the time axis should start at -40 (a 33 s window, three beats of 10.9 s), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+fi
+keys '<'
+if poll 3 x_from -30; then pass; else
+    fail "80x24 -p beating: < from 33 s should make the window 30 s (axis from -30), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+fi
+keys '>'
+if poll 3 x_from -60; then pass; else
+    fail "80x24 -p beating: > from 30 s should make the window 60 s (axis from -60), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+fi
+S=win80
+keys 1
+if wait_for '0 all plots' 3 && poll 3 x_from -2; then pass; else
+    fail "80x24 --window 2: the time axis should start at -2 (s), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+fi
 
 summary

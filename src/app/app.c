@@ -13,10 +13,9 @@
 #include "../core/modes.h"
 #include "ghost.h"
 
-/* The time plots' windows (s), and the one at start (10 s). */
+/* The time plots' windows (s) that < and > step through; --window may start between. */
 static const double windows[] = {1.0, 2.0, 5.0, 10.0, 20.0, 30.0, 60.0};
 #define NWINDOWS (int)(sizeof windows / sizeof *windows)
-#define DEFAULT_WINDOW 3
 
 /* The chain-sized parts, made together and swapped in together. */
 struct parts {
@@ -195,6 +194,8 @@ static unsigned compare(const struct app *app, const struct config *next, const 
         what |= APP_CHANGED_INTEGRATOR;
     if (next->low_bandwidth != app->cfg.low_bandwidth || next->fps != app->cfg.fps)
         what |= APP_CHANGED_PLAYBACK;
+    if (next->window != app->cfg.window)
+        what |= APP_CHANGED_WINDOW;
     return what;
 }
 
@@ -320,7 +321,6 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
     memset(app, 0, sizeof *app);
     app->exe_dir = exe_dir;
     app->speed = 1.0;
-    app->window = DEFAULT_WINDOW;
     snprintf(app->preset, sizeof app->preset, "%s", cfg->name);
     struct config next = *cfg;
     unsigned changed;
@@ -596,21 +596,29 @@ unsigned app_toggle_sweep(struct app *app)
 
 double app_window(const struct app *app)
 {
-    return windows[app->window];
+    return app->cfg.window;
 }
 
 unsigned app_window_step(struct app *app, int dir)
 {
-    int i = app->window + dir;
-    unsigned what = 0;
-    if (i < 0 || i >= NWINDOWS) {
-        i = i < 0 ? 0 : NWINDOWS - 1;
-        what |= app_say(app, false, "the time window is %g s at %s", windows[i],
-                        i == 0 ? "least" : "most");
+    /* Place by place to the next window of the list past the one shown, which may lie
+     * between two of them (--window 33); a move past an end of the list stops there. */
+    double w = app->cfg.window;
+    int places = dir < 0 ? -dir : dir, moved = 0;
+    for (; moved < places; moved++) {
+        double to = w;
+        for (int i = 0; i < NWINDOWS; i++)
+            if (dir > 0 ? windows[i] > w && to == w : windows[i] < w)
+                to = windows[i];
+        if (to == w)
+            break;
+        w = to;
     }
-    if (i != app->window)
-        what |= APP_CHANGED_WINDOW;
-    app->window = i;
+    unsigned what = w != app->cfg.window ? APP_CHANGED_WINDOW : 0;
+    app->cfg.window = w;
+    if (moved < places)
+        what |= app_say(app, false, "the time window is %g s at %s", w,
+                        dir < 0 ? "least" : "most");
     return what;
 }
 

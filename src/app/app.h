@@ -93,7 +93,6 @@ struct app {
     int since_sample;        /* steps since the last fine sample */
     int coarse_every;        /* steps between coarse samples */
     int since_coarse;        /* steps since the last coarse sample */
-    int window;              /* index of the time plots' window in the list of windows */
     bool running;            /* playing, not paused */
     double speed;            /* simulated seconds per wall-clock second */
     int masses_pending;      /* the Masses control before it is applied */
@@ -173,6 +172,10 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse);
 /* Sets a control from typed text; 0 with the reason in the message if it is bad. */
 unsigned app_set_text(struct app *app, enum control ctl, const char *text);
 
+/* Sets the time plots' window from typed text (seconds, --window's range); 0 with the
+ * reason in the message if it is bad. */
+unsigned app_set_window(struct app *app, const char *text);
+
 /* Applies a pending change of the number of masses (a reset). */
 unsigned app_apply_masses(struct app *app);
 
@@ -203,10 +206,11 @@ unsigned app_start_mode(struct app *app, int j);
 /* Starts (or stops, if running) the sine-sweep experiment across the modes. */
 unsigned app_toggle_sweep(struct app *app);
 
-/* The time plots' window (s): 1, 2, 5, 10 (at start), 20, 30 or 60. */
+/* The time plots' window (s): cfg.window, 10 unless --window or a preset says otherwise. */
 double app_window(const struct app *app);
 
-/* Moves dir places along that list (clamped at its ends, with a message). */
+/* Moves to the next window of 1, 2, 5, 10, 20, 30 and 60 s past the one shown, shorter
+ * (dir -1) or longer (+1); at an end of the list, a message. */
 unsigned app_window_step(struct app *app, int dir);
 
 /* The samples that cover the current window: the fine ones up to 10 s, else coarse. */

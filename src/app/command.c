@@ -124,6 +124,8 @@ static void control_list(char *buf, size_t len)
     for (int c = 0; c < CTL_COUNT && used < len; c++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", c ? ", " : "",
                                  control_names[c]);
+    if (used < len) /* a setting with keys (< and >) but no row of the panel */
+        snprintf(buf + used, len - used, ", window");
 }
 
 void command_status(const struct app *app, char *buf, size_t len)
@@ -177,6 +179,8 @@ static enum command_reply say_controls(const struct app *app, char *answer, size
         used += (size_t)snprintf(answer + used, len - used, "%s%s %s", c ? "; " : "controls: ",
                                  control_names[c], value);
     }
+    if (used < len)
+        snprintf(answer + used, len - used, "; window %g s", app_window(app));
     return REPLY_OK;
 }
 
@@ -235,11 +239,14 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     char q[4 * CONFIG_QUOTE_MAX + 48], names[200];
     control_list(names, sizeof names);
     int c = find_control(name);
-    if (c < 0 || !*value) {
+    bool window = c < 0 && strcmp(name, "window") == 0;
+    if (window && *value)
+        return from_message(app, app_set_window(app, value), answer, len);
+    if ((c < 0 && !window) || !*value) {
         config_quote(name, strlen(name), q, sizeof q);
         if (!*name)
             snprintf(answer, len, "set: needs a control and a value (controls: %s)", names);
-        else if (c < 0)
+        else if (c < 0 && !window)
             snprintf(answer, len, "set: %s is not a control (expected %s)", q, names);
         else
             snprintf(answer, len, "set: %s needs a value", q);

@@ -313,6 +313,19 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
     return say_set(app, ctl, what);
 }
 
+unsigned app_set_window(struct app *app, const char *text)
+{
+    struct config next = app->cfg;
+    char err[300];
+    if (config_set(&next, CFG_WINDOW, text, err, sizeof err) != 0) {
+        app_say(app, true, "window: %s", err);
+        return 0;
+    }
+    unsigned what = next.window != app->cfg.window ? APP_CHANGED_WINDOW : 0;
+    app->cfg.window = next.window;
+    return what | app_say(app, false, "window %g s", next.window);
+}
+
 unsigned app_apply_masses(struct app *app)
 {
     unsigned what = 0;

@@ -23,6 +23,8 @@ static unsigned load_config(struct app *app, struct config *next_in, const char 
     /* Playback is the user's: a preset changes it only where it says so. */
     if (!next.origin[CFG_FPS].line)
         next.fps = app->cfg.fps;
+    if (!next.origin[CFG_WINDOW].line)
+        next.window = app->cfg.window;
     if (!next.origin[CFG_LOW_BANDWIDTH].line)
         next.low_bandwidth = app->cfg.low_bandwidth;
     /* The terminal was set up once, at start. */

@@ -131,6 +131,11 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_FPS] = {.name = "fps", .section = "run", .kind = CONFIG_WHOLE, .arg = "N",
                  .help = "interactive frames per second", .symbol = "fps", .lo = 1, .hi = 60,
                  .def = 30, .offset = AT(fps)},
+    [CFG_WINDOW] = {.name = "window", .section = "run", .kind = CONFIG_NUMBER,
+                    .arg = "SECONDS", .help = "interactive: the time plots' window at start (< and > "
+                    "change it)", .symbol = "window",
+                    .lo = 1, .hi = CONFIG_WINDOW_MAX, .def = 10, .unit = "s", .digits = 0,
+                    .offset = AT(window)},
     [CFG_LOW_BANDWIDTH] = {.name = "low-bandwidth", .section = "run", .kind = CONFIG_FLAG,
                            .help = "interactive: fewer frames and plot refreshes (slow links)",
                            .offset = AT(low_bandwidth)},

@@ -39,6 +39,7 @@ enum config_key {
     CFG_META,
     CFG_FIGURE,
     CFG_FPS,
+    CFG_WINDOW,
     CFG_LOW_BANDWIDTH,
     CFG_COLOR,
     CFG_GLYPHS,
@@ -168,6 +169,7 @@ struct config {
     bool meta;                          /* '#' lines before a CSV: version, command line */
     const char *figure;                 /* --figure: a figure of the run (.png, .svg, .pdf) */
     int fps;                            /* interactive frames per second */
+    double window;                      /* interactive: the time plots' window (s) */
     bool low_bandwidth;                 /* interactive: keep terminal output small */
     enum config_color color;            /* interactive: when to use colour */
     enum config_glyphs glyphs;          /* interactive: which characters draw */
@@ -182,6 +184,9 @@ struct config {
 #define CONFIG_QUOTE_MAX 40  /* characters of a value quoted in a message */
 #define CONFIG_START_AMP 0.5 /* --start-mode's AMP unless given (m) */
 #define CONFIG_MAX_STEPS 1e12 /* steps a headless run may take */
+/* The interactive program's longest time window (s): its coarse samples reach 66 s back
+ * (app/trail.h). */
+#define CONFIG_WINDOW_MAX 60.0
 
 /* Writes the n bytes of text into buf (room for len) with every control byte escaped
  * (\n, \t, \x1b, ...; invalid UTF-8 and C1 controls as \xNN too), at most max of them,

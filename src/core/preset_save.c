@@ -73,5 +73,7 @@ int preset_write(FILE *out, const struct config *c, const struct model *m)
         write_list(out, "v0", x, n);
         free(x);
     }
+    fprintf(out, "\n[run]\n");
+    write_number(out, "window", c->window);
     return ferror(out) ? -1 : 0;
 }
