@@ -3,8 +3,6 @@
  * do); logarithmic axes a tick at every power of ten. */
 #include "figure.h"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
 #include <cairo.h>
 #include <errno.h>
 #include <fontconfig/fontconfig.h>
@@ -13,6 +11,7 @@
 #include <strings.h>
 
 #include "app/axis.h"
+#include "surface.h"
 
 #define FONT "DejaVu Sans"
 #define TICK_PT 9.0    /* tick labels */
@@ -364,47 +363,14 @@ static void draw_page(cairo_t *cr, const struct fig_page *pg)
               pg->width - MARGIN_L - MARGIN_R, ph);
 }
 
-/* cairo's writer: to the FILE. */
-static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned int length)
+static void draw_page_of(cairo_t *cr, const void *page)
 {
-    return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS
-                                                      : CAIRO_STATUS_WRITE_ERROR;
-}
-
-static int status_errno(cairo_status_t st, FILE *fp)
-{
-    if (st == CAIRO_STATUS_SUCCESS)
-        return ferror(fp) ? EIO : 0;
-    if (st == CAIRO_STATUS_NO_MEMORY)
-        return ENOMEM;
-    return errno ? errno : EIO;
+    draw_page(cr, page);
 }
 
 int fig_write(FILE *fp, enum fig_format f, const struct fig_page *page)
 {
-    cairo_surface_t *s;
-    errno = 0;
-    if (f == FIG_PNG)
-        s = cairo_image_surface_create(CAIRO_FORMAT_RGB24,
-                                       (int)lround(page->width * FIG_PNG_SCALE),
-                                       (int)lround(page->height * FIG_PNG_SCALE));
-    else if (f == FIG_SVG)
-        s = cairo_svg_surface_create_for_stream(to_file, fp, page->width, page->height);
-    else
-        s = cairo_pdf_surface_create_for_stream(to_file, fp, page->width, page->height);
-    cairo_t *cr = cairo_create(s);
-    if (f == FIG_PNG)
-        cairo_scale(cr, FIG_PNG_SCALE, FIG_PNG_SCALE);
-    draw_page(cr, page);
-    cairo_status_t st = cairo_status(cr);
-    cairo_destroy(cr);
-    if (st == CAIRO_STATUS_SUCCESS && f == FIG_PNG)
-        st = cairo_surface_write_to_png_stream(s, to_file, fp);
-    cairo_surface_finish(s);
-    if (st == CAIRO_STATUS_SUCCESS)
-        st = cairo_surface_status(s);
-    cairo_surface_destroy(s);
-    return status_errno(st, fp);
+    return fig_surface_write(fp, f, page->width, page->height, draw_page_of, page);
 }
 
 void fig_done(void)

@@ -5,8 +5,6 @@
  * tick's gridline goes through the middle of its cell, where the terminal draws it. */
 #include "view.h"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
 #include <cairo.h>
 #include <errno.h>
 #include <limits.h>
@@ -14,6 +12,7 @@
 #include <string.h>
 
 #include "paint.h"
+#include "surface.h"
 
 #define CW FIG_CELL_W
 #define CH FIG_CELL_H
@@ -100,10 +99,22 @@ static void chart(cairo_t *cr, const struct fig_chart *c)
     }
 }
 
-static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned int length)
+/* The charts at their places, the top left one at the picture's corner. */
+struct view_art {
+    const struct fig_chart *c;
+    int n, x0, y0;
+};
+
+static void draw_view(cairo_t *cr, const void *arg)
 {
-    return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS
-                                                      : CAIRO_STATUS_WRITE_ERROR;
+    const struct view_art *a = arg;
+    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+    cairo_paint(cr);
+    cairo_translate(cr, -a->x0 * CW, -a->y0 * CH);
+    cairo_select_font_face(cr, FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, TEXT_PT);
+    for (int i = 0; i < a->n; i++)
+        chart(cr, &a->c[i]);
 }
 
 int fig_view_write(FILE *fp, enum fig_format f, const struct fig_chart *c, int n)
@@ -117,33 +128,6 @@ int fig_view_write(FILE *fp, enum fig_format f, const struct fig_chart *c, int n
     if (n == 0)
         x0 = y0 = 0, x1 = y1 = 1;
     double w = (x1 - x0) * CW, h = (y1 - y0) * CH;
-    cairo_surface_t *s;
-    if (f == FIG_PNG)
-        s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)lround(w * FIG_PNG_SCALE),
-                                       (int)lround(h * FIG_PNG_SCALE));
-    else if (f == FIG_SVG)
-        s = cairo_svg_surface_create_for_stream(to_file, fp, w, h);
-    else
-        s = cairo_pdf_surface_create_for_stream(to_file, fp, w, h);
-    cairo_t *cr = cairo_create(s);
-    if (f == FIG_PNG)
-        cairo_scale(cr, FIG_PNG_SCALE, FIG_PNG_SCALE);
-    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
-    cairo_paint(cr);
-    cairo_translate(cr, -x0 * CW, -y0 * CH);
-    cairo_select_font_face(cr, FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, TEXT_PT);
-    for (int i = 0; i < n; i++)
-        chart(cr, &c[i]);
-    cairo_status_t st = cairo_status(cr);
-    cairo_destroy(cr);
-    if (st == CAIRO_STATUS_SUCCESS && f == FIG_PNG)
-        st = cairo_surface_write_to_png_stream(s, to_file, fp);
-    cairo_surface_finish(s);
-    if (st == CAIRO_STATUS_SUCCESS)
-        st = cairo_surface_status(s);
-    cairo_surface_destroy(s);
-    if (st == CAIRO_STATUS_SUCCESS)
-        return ferror(fp) ? EIO : 0;
-    return st == CAIRO_STATUS_NO_MEMORY ? ENOMEM : EIO;
+    struct view_art art = {c, n, x0, y0};
+    return fig_surface_write(fp, f, w, h, draw_view, &art);
 }

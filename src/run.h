@@ -1,0 +1,18 @@
+/* run.h: the modes that write a file instead of drawing (SPEC section 2). Each returns
+ * the exit status, having said on standard error what went wrong. */
+#ifndef SPRINGSIM_RUN_H
+#define SPRINGSIM_RUN_H
+
+#include "core/config.h"
+#include "core/model.h"
+
+/* --headless: the run's CSV rows, or its --summary row (run_headless.c). */
+int run_headless(const struct config *c, const struct model *m);
+
+/* --modes: the natural frequencies and shapes (run_tables.c). */
+int run_modes(const struct config *c, const struct model *m);
+
+/* --sweep FMIN:FMAX:COUNT, spec as given (run_tables.c). */
+int run_sweep(const struct config *c, const struct model *m, const char *spec);
+
+#endif

@@ -1,0 +1,186 @@
+/* run_tables.c: the modes that write a table computed, not stepped: --modes (the natural
+ * frequencies and shapes) and --sweep (the steady response over a range of frequencies),
+ * each with --figure's plot of it (SPEC section 2). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/config.h"
+#include "core/modes.h"
+#include "core/output.h"
+#include "fig/report.h"
+#include "options.h"
+#include "run.h"
+#include "run_files.h"
+
+#define SWEEP_MAX 1000000 /* rows a sweep may ask for */
+
+int run_modes(const struct config *c, const struct model *m)
+{
+    int n = m->n;
+    double *f = malloc((size_t)(3 * n) * sizeof *f);
+    double *shapes = malloc((size_t)n * (size_t)n * sizeof *shapes);
+    struct output o;
+    int status = EXIT_SUCCESS;
+    double *ratio = f ? f + n : NULL, *damped_hz = f ? f + 2 * n : NULL;
+    if (!f || !shapes || modes_compute(m, f, shapes) != 0 ||
+        modes_damped(m, shapes, ratio, damped_hz) != 0) {
+        options_say(!f || !shapes ? "out of memory"
+                                  : "the modes cannot be computed for these values "
+                                    "(LAPACK failed, or the numbers overflow)");
+        free(f);
+        free(shapes);
+        return EXIT_FAILURE;
+    }
+    struct output fo;
+    if (run_open_output(&o, c) == 0 && run_open_figure(&fo, c) != 0) {
+        output_close(&o, false);
+        status = EXIT_FAILURE;
+    } else if (o.fp) {
+        run_write_meta(o.fp, c, "modes", NULL);
+        fputs("mode,frequency_hz", o.fp);
+        for (int i = 1; i <= n; i++)
+            fprintf(o.fp, ",x%d", i);
+        fputs(",damping_ratio,damped_frequency_hz\n", o.fp);
+        for (int j = 0; j < n; j++) {
+            fprintf(o.fp, "%d,%.12g", j + 1, f[j]);
+            for (int i = 0; i < n; i++)
+                fprintf(o.fp, ",%.12g", shapes[(size_t)j * n + i]);
+            fprintf(o.fp, ",%.12g,%.12g\n", ratio[j], damped_hz[j]);
+        }
+        status = run_close_output(&o, c, status);
+        if (c->figure) {
+            char settings[400];
+            report_settings(c, m, settings, sizeof settings);
+            int draw = status == EXIT_SUCCESS ? report_modes(fo.fp, fig_format_of(c->figure), m,
+                                                             f, shapes, settings)
+                                              : 0;
+            status = run_close_figure(&fo, c, draw, status);
+        }
+    } else {
+        status = EXIT_FAILURE;
+    }
+    free(f);
+    free(shapes);
+    return status;
+}
+
+/* Parses FMIN:FMAX:COUNT, each part a number as every option reads it (no blanks);
+ * on error says why and returns -1. */
+static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count)
+{
+    const char *expect = "expected FMIN:FMAX:COUNT with 0 < FMIN < FMAX <= 1e6 and "
+                         "2 <= COUNT <= 1000000";
+    char buf[128], q[4 * CONFIG_QUOTE_MAX + 48];
+    config_quote(spec, strlen(spec), q, sizeof q);
+    if (strlen(spec) >= sizeof buf) {
+        options_say("--sweep: %s is too long (%s)", q, expect);
+        return -1;
+    }
+    strcpy(buf, spec);
+    char *a = buf, *b = strchr(a, ':'), *cnt = b ? strchr(b + 1, ':') : NULL;
+    if (!b || !cnt || strchr(cnt + 1, ':')) {
+        options_say("--sweep: %s is not three values separated by ':' (%s)", q, expect);
+        return -1;
+    }
+    *b++ = '\0';
+    *cnt++ = '\0';
+    double c;
+    const char *digits = cnt + (cnt[0] == '+');
+    if (config_parse_number(a, fmin) || config_parse_number(b, fmax) ||
+        config_parse_number(cnt, &c)) {
+        options_say("--sweep: %s has a value that is not a number (%s)", q, expect);
+        return -1;
+    }
+    /* A number, but not a count: say which is wrong (-5 is out of range, 1.5 not whole). */
+    if (!*digits || strspn(digits, "0123456789") != strlen(digits)) {
+        char qc[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(cnt, strlen(cnt), qc, sizeof qc);
+        options_say("--sweep: %s has COUNT %s, which %s (%s)", q, qc,
+                    c != floor(c) ? "is not a whole number"
+                    : c < 2.0     ? "is out of range"
+                                  : "is not written in digits", expect);
+        return -1;
+    }
+    *count = c > SWEEP_MAX ? SWEEP_MAX + 1 : (long)c;
+    if (!(*fmin > 0.0 && *fmin < *fmax && *fmax <= 1e6 && *count >= 2 && *count <= SWEEP_MAX)) {
+        options_say("--sweep: %s is out of range (%s)", q, expect);
+        return -1;
+    }
+    return 0;
+}
+
+int run_sweep(const struct config *c, const struct model *m, const char *spec)
+{
+    double fmin, fmax;
+    long count;
+    if (parse_sweep(spec, &fmin, &fmax, &count) != 0)
+        return EXIT_USAGE;
+    if (m->boundary != BOUNDARY_MOTOR) {
+        options_say("--sweep: the right end is '%s', which does not drive the chain (expected "
+            "--boundary motor)", model_boundary_name(m->boundary));
+        return EXIT_USAGE;
+    }
+    int n = m->n, status = EXIT_SUCCESS;
+    double *amp = malloc((size_t)(2 * n) * sizeof *amp), *phase = amp ? amp + n : NULL;
+    struct output o;
+    if (!amp) {
+        options_say("out of memory");
+        return EXIT_FAILURE;
+    }
+    struct output fo;
+    struct report_data *fig = c->figure ? report_data_new(2 * n, (double)count) : NULL;
+    if (c->figure && !fig) {
+        options_say("out of memory");
+        free(amp);
+        return EXIT_FAILURE;
+    }
+    if (run_open_output(&o, c) != 0) {
+        free(amp);
+        report_data_free(fig);
+        return EXIT_FAILURE;
+    }
+    if (run_open_figure(&fo, c) != 0) {
+        output_close(&o, false);
+        free(amp);
+        report_data_free(fig);
+        return EXIT_FAILURE;
+    }
+    run_write_meta(o.fp, c, "sweep", spec);
+    fputs("frequency_hz", o.fp);
+    for (int i = 1; i <= n; i++)
+        fprintf(o.fp, ",amp%d", i);
+    for (int i = 1; i <= n; i++)
+        fprintf(o.fp, ",phase%d", i);
+    fputc('\n', o.fp);
+    for (long r = 0; r < count; r++) {
+        double f = r == count - 1 ? fmax : fmin + (fmax - fmin) * ((double)r / (count - 1));
+        if (modes_response_phase(m, f, amp, phase) != 0) {
+            /* An undamped chain exactly at a natural frequency has no steady state. */
+            for (int i = 0; i < n; i++)
+                amp[i] = INFINITY, phase[i] = NAN;
+        }
+        fprintf(o.fp, "%.12g", f);
+        for (int i = 0; i < 2 * n; i++)
+            fprintf(o.fp, isfinite(amp[i]) ? ",%.12g" : isnan(amp[i]) ? ",nan" : ",inf", amp[i]);
+        fputc('\n', o.fp);
+        if (fig)
+            report_data_add(fig, f, amp);
+        if (ferror(o.fp))
+            break;
+    }
+    status = run_close_output(&o, c, status);
+    if (fig) {
+        char settings[400];
+        report_settings(c, m, settings, sizeof settings);
+        int draw = status == EXIT_SUCCESS
+                       ? report_sweep(fo.fp, fig_format_of(c->figure), fig, n, settings)
+                       : 0;
+        status = run_close_figure(&fo, c, draw, status);
+    }
+    report_data_free(fig);
+    free(amp);
+    return status;
+}
+
