@@ -10,34 +10,6 @@ NAME=harden-hostile
 
 plain_env
 
-show() { head -c 300 "$1" | tr '\n' '|'; }
-
-# refused NEEDLE ARGS...: exit 2, exactly one line on stderr that holds NEEDLE and no
-# control byte, nothing on stdout.
-refused() {
-    needle=$1
-    shift
-    run "$@"
-    lines=$(awk 'END { print NR }' "$err")
-    if [ "$rc" -ne 2 ] || [ -s "$out" ] || [ "$lines" -ne 1 ] ||
-        ! grep -qF -- "$needle" "$err" || LC_ALL=C grep -q '[[:cntrl:]]' "$err"; then
-        fail "$cmd: expected exit 2 and one clean line with '$needle', got exit $rc," \
-            "$lines lines: $(show "$err")"
-    else
-        pass
-    fi
-}
-
-# accepted ARGS...: exit 0, nothing on stderr.
-accepted() {
-    run "$@"
-    if [ "$rc" -ne 0 ] || [ -s "$err" ]; then
-        fail "$cmd: expected exit 0, got $rc: $(show "$err")"
-    else
-        pass
-    fi
-}
-
 # no_inf_nan FILE WHAT: FILE holds no inf, nan and no number of more than 20 digits.
 no_inf_nan() {
     if grep -qiE '(^|[^a-z])(-?inf|-?nan)([^a-z]|$)|[0-9]{21}' "$1"; then

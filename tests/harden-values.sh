@@ -19,32 +19,6 @@ vt=$(printf '\013')
 
 show() { head -c 300 "$1" | od -c | head -5 | tr '\n' '|'; }
 
-# refused NEEDLE ARGS...: exit 2, exactly one line on stderr that holds NEEDLE and no
-# control byte, nothing on stdout.
-refused() {
-    needle=$1
-    shift
-    run "$@"
-    lines=$(awk 'END { print NR }' "$err")
-    if [ "$rc" -ne 2 ] || [ -s "$out" ] || [ "$lines" -ne 1 ] ||
-        ! grep -qF -- "$needle" "$err" || LC_ALL=C grep -q '[[:cntrl:]]' "$err"; then
-        fail "$cmd: expected exit 2 and one clean line with '$needle', got exit $rc," \
-            "$lines lines: $(show "$err")"
-    else
-        pass
-    fi
-}
-
-# accepted ARGS...: exit 0, nothing on stderr.
-accepted() {
-    run "$@"
-    if [ "$rc" -ne 0 ] || [ -s "$err" ]; then
-        fail "$cmd: expected exit 0, got $rc: $(show "$err")"
-    else
-        pass
-    fi
-}
-
 # --- 9: one rule for blanks: none before, after or inside a number ---
 refused "starts with a blank" --modes --dt " 0.01"
 refused "starts with a blank" --modes --dt "${nl}0.01"

@@ -183,6 +183,39 @@ static void draw_help(const struct overlay *o, const struct layout *l)
     draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), foot);
 }
 
+/* A menu's rows in box r, scrolled to keep the selected row shown: each the name
+ * padded to name_w and its text (row(o, i, &name, &text)); the keys it takes below. */
+static void draw_menu(const struct overlay *o, struct rect r, int n, int sel, int name_w,
+                      void (*row)(const struct overlay *o, int i, const char **name,
+                                  const char **text),
+                      const char *keys)
+{
+    int rows = r.h - 4, first = sel >= rows ? sel - rows + 1 : 0;
+    for (int i = first; i < n && i - first < rows; i++) {
+        const char *name, *text;
+        row(o, i, &name, &text);
+        if (i == sel)
+            attron(term_attr(PAIR_SELECT));
+        mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
+        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-*s %s", name_w, name, text);
+        if (i == sel)
+            attroff(term_attr(PAIR_SELECT));
+    }
+    draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), keys);
+}
+
+static void preset_row(const struct overlay *o, int i, const char **name, const char **text)
+{
+    *name = o->presets[i].name;
+    *text = o->presets[i].description;
+}
+
+static void lesson_row(const struct overlay *o, int i, const char **name, const char **text)
+{
+    *name = o->lessons[i].name;
+    *text = o->lessons[i].title;
+}
+
 static void draw_presets(const struct overlay *o, const struct layout *l)
 {
     int n = o->npresets, longest = 0;
@@ -193,46 +226,20 @@ static void draw_presets(const struct overlay *o, const struct layout *l)
     }
     int w = 2 + 15 + 1 + longest + 2;
     struct rect r = overlay_box(l, (n ? n : 1) + 4, w > 76 ? w : 76, "Presets");
-    if (n == 0) {
+    if (n == 0)
         draw_text(r.y + 1, r.x + 2, r.w - 4, "No presets found on the search path.");
-        return;
-    }
-    int rows = r.h - 4, first = o->preset_sel >= rows ? o->preset_sel - rows + 1 : 0;
-    for (int i = first; i < n && i - first < rows; i++) {
-        bool sel = i == o->preset_sel;
-        if (sel)
-            attron(term_attr(PAIR_SELECT));
-        mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
-        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-15s %s", o->presets[i].name,
-                    o->presets[i].description);
-        if (sel)
-            attroff(term_attr(PAIR_SELECT));
-    }
-    draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE),
-                   "↑↓ choose   Enter load   Esc close");
+    else
+        draw_menu(o, r, n, o->preset_sel, 15, preset_row, "↑↓ choose   Enter load   Esc close");
 }
 
 static void draw_lessons(const struct overlay *o, const struct layout *l)
 {
     int n = o->nlessons;
     struct rect r = overlay_box(l, (n ? n : 1) + 4, 96, "Lessons");
-    if (n == 0) {
+    if (n == 0)
         draw_text(r.y + 1, r.x + 2, r.w - 4, "No lessons found on the search path.");
-        return;
-    }
-    int rows = r.h - 4, first = o->lesson_sel >= rows ? o->lesson_sel - rows + 1 : 0;
-    for (int i = first; i < n && i - first < rows; i++) {
-        bool sel = i == o->lesson_sel;
-        if (sel)
-            attron(term_attr(PAIR_SELECT));
-        mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
-        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-10s %s", o->lessons[i].name,
-                    o->lessons[i].title);
-        if (sel)
-            attroff(term_attr(PAIR_SELECT));
-    }
-    draw_text_attr(r.y + r.h - 2, r.x + 2, r.w - 4, term_attr(PAIR_TITLE),
-                   "↑↓ choose   Enter start   Esc close");
+    else
+        draw_menu(o, r, n, o->lesson_sel, 10, lesson_row, "↑↓ choose   Enter start   Esc close");
 }
 
 /* What the prompt says for the text being typed. */
