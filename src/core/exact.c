@@ -39,6 +39,8 @@
  * first-order step of the difference, then the cached one. */
 #include "exact.h"
 
+#include <float.h>
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,13 +51,12 @@
 #include <gsl/gsl_matrix.h>
 #include <lapacke.h>
 
+#include "exact_modal.h"
+
 #define MAX_SLOTS 4                      /* cached steps, for small chains */
 #define SLOT_BUDGET (32.0 * 1024 * 1024) /* bytes of cache beyond the first slot */
 #define BASE_NORM 0.5                    /* ||A|| times the quadrature's base interval */
-#define GSL_ROW_TOP 100.0                /* see expm_into */
 #define REUSE 1e-8                       /* ||A|| |h - cached h| up to which a step is reused */
-
-enum drive_kind { DRIVE_NONE, DRIVE_SINE, DRIVE_LINE };
 
 /* One cached step: everything that depends on (model, drive kind, w, h) but not on z. */
 struct slot {
@@ -63,7 +64,7 @@ struct slot {
     gsl_matrix gram;     /* Gd: the dampers' loss as a quadratic form */
     double *nw;          /* Nw_s then Nw_r (d each): the motor's work */
     unsigned long model; /* the model's generation; 0: empty */
-    enum drive_kind kind;
+    enum exact_kind kind;
     double omega, h;    /* the sine's angular frequency (sine only), the step */
     double norm;        /* ||A|| */
     unsigned long used; /* when last used, for replacement */
@@ -82,8 +83,11 @@ struct exact {
     int damped;         /* some c_i > 0 */
     gsl_matrix s, x, t; /* generator, an exponential, product scratch */
     double *z, *z1, *y; /* state vectors (dmax), y also 2 dmax of scratch */
-    double *mem;        /* the matrices' storage (not GSL's: its allocation aborts) */
+    double *mem;        /* the matrices' storage (not GSL's: its allocation aborts); NULL
+                           until a model needs the dense exponential */
     struct slot slot[MAX_SLOTS];
+    struct modal *md;   /* the modes' propagator (exact_modal.c) */
+    int use_modal;      /* the saved model's dampers are proportional to its masses */
 };
 
 /* 6-point Gauss-Legendre on [-1, 1]: nodes +-gl_x[i], weights gl_w[i]. */
@@ -107,15 +111,33 @@ struct exact *exact_new(int n)
     e->slots = slots;
     e->saved = malloc((size_t)(3 * n + 1) * sizeof(double));
     e->sqm = malloc((size_t)(4 * n) * sizeof(double));
-    e->z = malloc((size_t)(4 * d + 2 * d * slots) * sizeof(double));
-    e->mem = malloc((size_t)(3 + 2 * slots) * dd * sizeof(double));
-    if (!e->saved || !e->sqm || !e->z || !e->mem) {
+    e->md = modal_new(n);
+    if (!e->saved || !e->sqm || !e->md) {
         exact_free(e);
         return NULL;
     }
     e->ld = e->sqm + n;
     e->ls = e->ld + n;
     e->gam = e->ls + n;
+    return e;
+}
+
+/* The dense exponential's matrices and vectors, made the first time a model needs them
+ * (160 MB at n = 1000). 0, or -1 on no memory. */
+static int dense_alloc(struct exact *e)
+{
+    if (e->mem)
+        return 0;
+    int d = e->dmax, slots = e->slots;
+    size_t dd = (size_t)d * (size_t)d;
+    e->z = malloc((size_t)(4 * d + 2 * d * slots) * sizeof(double));
+    e->mem = malloc((size_t)(3 + 2 * slots) * dd * sizeof(double));
+    if (!e->z || !e->mem) {
+        free(e->z);
+        free(e->mem);
+        e->z = e->mem = NULL;
+        return -1;
+    }
     e->z1 = e->z + d;
     e->y = e->z1 + d;
     e->s = gsl_matrix_view_array(e->mem, (size_t)d, (size_t)d).matrix;
@@ -127,14 +149,16 @@ struct exact *exact_new(int n)
         sl->prop = gsl_matrix_view_array(at, (size_t)d, (size_t)d).matrix;
         sl->gram = gsl_matrix_view_array(at + dd, (size_t)d, (size_t)d).matrix;
         sl->nw = e->y + 2 * d + 2 * (size_t)d * (size_t)i;
+        sl->model = 0;
     }
-    return e;
+    return 0;
 }
 
 void exact_free(struct exact *e)
 {
     if (!e)
         return;
+    modal_free(e->md);
     free(e->mem);
     free(e->z);
     free(e->sqm);
@@ -142,14 +166,20 @@ void exact_free(struct exact *e)
     free(e);
 }
 
-void exact_copy(struct exact *dst, const struct exact *src)
+int exact_copy(struct exact *dst, const struct exact *src)
 {
     int n = src->n, d = src->dmax, slots = src->slots;
     size_t dd = (size_t)d * (size_t)d;
+    if (src->mem && dense_alloc(dst))
+        return -1;
     memcpy(dst->saved, src->saved, (size_t)(3 * n + 1) * sizeof(double));
     memcpy(dst->sqm, src->sqm, (size_t)(4 * n) * sizeof(double));
-    memcpy(dst->z, src->z, (size_t)(4 * d + 2 * d * slots) * sizeof(double));
-    memcpy(dst->mem, src->mem, (size_t)(3 + 2 * slots) * dd * sizeof(double));
+    if (src->mem) {
+        memcpy(dst->z, src->z, (size_t)(4 * d + 2 * d * slots) * sizeof(double));
+        memcpy(dst->mem, src->mem, (size_t)(3 + 2 * slots) * dd * sizeof(double));
+    }
+    modal_copy(dst->md, src->md);
+    dst->use_modal = src->use_modal;
     dst->boundary = src->boundary;
     dst->valid = src->valid;
     dst->model = src->model;
@@ -161,13 +191,14 @@ void exact_copy(struct exact *dst, const struct exact *src)
         /* The values only: each keeps its own views of its own memory. */
         struct slot *a = &dst->slot[i];
         const struct slot *b = &src->slot[i];
-        a->model = b->model;
+        a->model = src->mem ? b->model : 0;
         a->kind = b->kind;
         a->omega = b->omega;
         a->h = b->h;
         a->norm = b->norm;
         a->used = b->used;
     }
+    return 0;
 }
 
 /* Takes in model m if it differs from the one seen last: a new generation (every cached
@@ -220,13 +251,19 @@ static void take_model(struct exact *e, const struct model *m)
     }
     e->sk = m->boundary == BOUNDARY_FREE ? 0.0 : sqrt(m->k[n]);
     e->wscale = sqrt(wmax);
-    e->valid = 1;
+    /* Dampers proportional to the masses (to rounding) keep the modes apart: the modes'
+     * propagator. Otherwise, or if LAPACK fails there, the dense exponential. */
+    int proportional = 1;
+    for (int i = 1; i < n; i++)
+        proportional &= fabs(e->gam[i] - e->gam[0]) <= 4.0 * DBL_EPSILON * e->gam[0];
+    e->use_modal = proportional && modal_take(e->md, m, e->gam[0]) == 0;
+    e->valid = e->use_modal || dense_alloc(e) == 0;
 }
 
 /* tau A into s (d x d), A the generator for drive kind and angular frequency omega;
  * returns ||tau A||, the larger of its 1- and infinity-norms (so above its spectral radius
  * and its 2-norm). */
-static double generator(const struct exact *e, enum drive_kind kind, double omega, double tau,
+static double generator(const struct exact *e, enum exact_kind kind, double omega, double tau,
                         gsl_matrix *s)
 {
     int n = e->n;
@@ -240,9 +277,9 @@ static double generator(const struct exact *e, enum drive_kind kind, double omeg
             gsl_matrix_set(s, n + i + 1, i, -tau * e->ls[i]);
         }
     }
-    if (kind != DRIVE_NONE) {
+    if (kind != EXACT_NONE) {
         gsl_matrix_set(s, 2 * n - 1, 2 * n, tau * e->sk / e->sqm[n - 1]);
-        if (kind == DRIVE_SINE) {
+        if (kind == EXACT_SINE) {
             gsl_matrix_set(s, 2 * n, 2 * n + 1, tau * omega);
             gsl_matrix_set(s, 2 * n + 1, 2 * n, -tau * omega);
         } else {
@@ -262,7 +299,7 @@ static double generator(const struct exact *e, enum drive_kind kind, double omeg
 }
 
 /* A z into out (dim entries), from the generator's nonzeros. */
-static void generator_apply(const struct exact *e, enum drive_kind kind, double omega,
+static void generator_apply(const struct exact *e, enum exact_kind kind, double omega,
                             const double *z, double *out)
 {
     int n = e->n;
@@ -271,51 +308,22 @@ static void generator_apply(const struct exact *e, enum drive_kind kind, double 
         out[n + i] =
             -e->ld[i] * z[i] - (i > 0 ? e->ls[i - 1] * z[i - 1] : 0.0) - e->gam[i] * z[n + i];
     }
-    if (kind != DRIVE_NONE) {
+    if (kind != EXACT_NONE) {
         out[2 * n - 1] += e->sk / e->sqm[n - 1] * z[2 * n];
-        out[2 * n] = (kind == DRIVE_SINE ? omega : e->wscale) * z[2 * n + 1];
-        out[2 * n + 1] = kind == DRIVE_SINE ? -omega * z[2 * n] : 0.0;
+        out[2 * n] = (kind == EXACT_SINE ? omega : e->wscale) * z[2 * n + 1];
+        out[2 * n + 1] = kind == EXACT_SINE ? -omega * z[2 * n] : 0.0;
     }
 }
 
 /* The motor's power k_N (u - x_N) u' as (ax q_N + as s) br r: x_N = q_N / (L_NN sqrt(m_N)),
  * k_N u = sqrt(k_N) s, and u' = w r / sqrt(k_N) for a sine, w_s r / sqrt(k_N) for a line. */
-static void motor_power(const struct exact *e, enum drive_kind kind, double omega, double *ax,
+static void motor_power(const struct exact *e, enum exact_kind kind, double omega, double *ax,
                         double *as, double *br)
 {
     int n = e->n;
     *ax = -e->sk * e->sk / (e->ld[n - 1] * e->sqm[n - 1]);
     *as = e->sk;
-    *br = (kind == DRIVE_SINE ? omega : e->wscale) / e->sk;
-}
-
-/* expm(s) into out; s is overwritten, t is scratch. GSL takes its Taylor degree and
- * squarings from Moler and Van Loan's table (SIAM Rev. 20, 1978) by the largest |entry|:
- * from 100 up its rows use 8 terms, whose truncation leaves about 1.2e-12 relative
- * (measured on a rotation of 100 to 800 radians). Halving s into the [10, 100) row (10
- * terms, 10 squarings) and squaring the result back leaves 1.5e-13 at 120 radians, 7e-13
- * at 500: rounding in the squarings, about 2^squarings eps. */
-static int expm_into(gsl_matrix *s, gsl_matrix *out, gsl_matrix *t)
-{
-    double lo, hi;
-    gsl_matrix_minmax(s, &lo, &hi);
-    double big = fmax(fabs(lo), fabs(hi));
-    if (!isfinite(big))
-        return -1;
-    int halvings = 0;
-    while (big >= GSL_ROW_TOP) {
-        big *= 0.5;
-        halvings++;
-    }
-    if (halvings)
-        gsl_matrix_scale(s, ldexp(1.0, -halvings));
-    if (gsl_linalg_exponential_ss(s, out, GSL_PREC_DOUBLE) != GSL_SUCCESS)
-        return -1;
-    for (int i = 0; i < halvings; i++) {
-        gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, out, out, 0.0, t);
-        gsl_matrix_memcpy(out, t);
-    }
-    return 0;
+    *br = (kind == EXACT_SINE ? omega : e->wscale) / e->sk;
 }
 
 /* The d x d leading block of a workspace matrix. */
@@ -325,7 +333,7 @@ static gsl_matrix_view lead(gsl_matrix *a, int d)
 }
 
 /* Fills slot sl for a step h: E(h), Gd and Nw (see the top of the file). */
-static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, double omega, double h,
+static int fill_slot(struct exact *e, struct slot *sl, enum exact_kind kind, double omega, double h,
                      int d)
 {
     int n = e->n;
@@ -333,7 +341,7 @@ static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, dou
     gsl_matrix_view gv = lead(&sl->gram, d), pv = lead(&sl->prop, d);
     gsl_matrix *s = &sv.matrix, *x = &xv.matrix, *t = &tv.matrix, *g = &gv.matrix;
     double *nw = sl->nw, *y = e->y;
-    int r = 2 * n + 1, driven = kind != DRIVE_NONE;
+    int r = 2 * n + 1, driven = kind != EXACT_NONE;
 
     double norm = generator(e, kind, omega, 1.0, s);
     int levels = 0;
@@ -351,7 +359,7 @@ static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, dou
         double node = 0.5 * base * (1.0 + (i < 3 ? -gl_x[i] : gl_x[i - 3]));
         double w = 0.5 * base * gl_w[i % 3];
         generator(e, kind, omega, node, s);
-        if (expm_into(s, x, t))
+        if (exact_expm(s, x, t))
             return -1;
         if (e->damped) {
             /* Gd += w F^T F, F = G^(1/2) (p rows of E) */
@@ -380,7 +388,7 @@ static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, dou
 
     for (int level = 0; level < levels; level++) {
         generator(e, kind, omega, ldexp(base, level), s);
-        if (expm_into(s, x, t))
+        if (exact_expm(s, x, t))
             return -1;
         if (e->damped) {
             gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, g, x, 0.0, t);
@@ -403,7 +411,7 @@ static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, dou
     }
 
     generator(e, kind, omega, h, s);
-    if (expm_into(s, &pv.matrix, t))
+    if (exact_expm(s, &pv.matrix, t))
         return -1;
     sl->model = e->model;
     sl->kind = kind;
@@ -416,14 +424,14 @@ static int fill_slot(struct exact *e, struct slot *sl, enum drive_kind kind, dou
 /* The cached step for (kind, omega, h), filled if need be; NULL when that fails. A step
  * within REUSE / ||A|| of a cached one is that one, corrected to first order by the caller:
  * the steps of a long run differ by the rounding of their times. */
-static struct slot *find_slot(struct exact *e, enum drive_kind kind, double omega, double h, int d)
+static struct slot *find_slot(struct exact *e, enum exact_kind kind, double omega, double h, int d)
 {
     struct slot *old = &e->slot[0];
     e->clock++;
     for (int i = 0; i < e->slots; i++) {
         struct slot *sl = &e->slot[i];
         if (sl->model == e->model && sl->kind == kind &&
-            (kind != DRIVE_SINE || sl->omega == omega) && fabs(sl->h - h) * sl->norm <= REUSE) {
+            (kind != EXACT_SINE || sl->omega == omega) && fabs(sl->h - h) * sl->norm <= REUSE) {
             sl->used = e->clock;
             return sl;
         }
@@ -450,17 +458,19 @@ int exact_advance(struct exact *e, const struct model *m, const struct exact_dri
         return -1;
 
     int n = e->n;
-    enum drive_kind kind = DRIVE_NONE;
+    enum exact_kind kind = EXACT_NONE;
     if (m->boundary == BOUNDARY_MOTOR && d) {
         if (d->sine && d->amp != 0.0)
-            kind = DRIVE_SINE;
+            kind = EXACT_SINE;
         else if (!d->sine && (d->u0 != 0.0 || d->du != 0.0))
-            kind = DRIVE_LINE;
+            kind = EXACT_LINE;
     }
-    int dim = kind == DRIVE_NONE ? 2 * n : 2 * n + 2;
-    double omega = kind == DRIVE_SINE ? d->omega : 0.0;
+    int dim = kind == EXACT_NONE ? 2 * n : 2 * n + 2;
+    double omega = kind == EXACT_SINE ? d->omega : 0.0;
     if (!isfinite(omega))
         return -1;
+    if (e->use_modal)
+        return modal_advance(e->md, kind, d, a, b, x, v, diss, work);
     struct slot *sl = find_slot(e, kind, omega, h, dim);
     if (!sl)
         return -1;
@@ -472,11 +482,11 @@ int exact_advance(struct exact *e, const struct model *m, const struct exact_dri
         z[i] = e->ld[i] * q + (i < n - 1 ? e->ls[i] * e->sqm[i + 1] * x[i + 1] : 0.0);
         z[n + i] = e->sqm[i] * v[i];
     }
-    if (kind == DRIVE_SINE) {
+    if (kind == EXACT_SINE) {
         double th = d->omega * a + d->phi;
         z[2 * n] = e->sk * d->amp * sin(th);
         z[2 * n + 1] = e->sk * d->amp * cos(th);
-    } else if (kind == DRIVE_LINE) {
+    } else if (kind == EXACT_LINE) {
         z[2 * n] = e->sk * (d->u0 + d->du * (a - d->t0));
         z[2 * n + 1] = e->sk * d->du / e->wscale;
     }
@@ -488,7 +498,7 @@ int exact_advance(struct exact *e, const struct model *m, const struct exact_dri
     if (delta != 0.0) {
         for (int i = 0; i < n; i++)
             dd += delta * e->gam[i] * z[n + i] * z[n + i];
-        if (kind != DRIVE_NONE) {
+        if (kind != EXACT_NONE) {
             double ax, as, br;
             motor_power(e, kind, omega, &ax, &as, &br);
             ww += delta * (ax * z[n - 1] + as * z[2 * n]) * br * z[2 * n + 1];
@@ -509,7 +519,7 @@ int exact_advance(struct exact *e, const struct model *m, const struct exact_dri
         gsl_blas_ddot(&zv.vector, &yv.vector, &q);
         dd += q;
     }
-    if (kind != DRIVE_NONE) {
+    if (kind != EXACT_NONE) {
         for (int c = 0; c < 2; c++) {
             double s = 0.0;
             for (int j = 0; j < dim; j++)

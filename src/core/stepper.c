@@ -139,8 +139,8 @@ int stepper_copy(struct stepper *dst, const struct stepper *src)
 {
     if (src->exact && !dst->exact && !(dst->exact = exact_new(src->n)))
         return -1;
-    if (src->exact)
-        exact_copy(dst->exact, src->exact);
+    if (src->exact && exact_copy(dst->exact, src->exact) != 0)
+        return -1;
     stepper_set_model(dst, src->model, src->dt);
     dst->rot_w = src->rot_w, dst->rot_h = src->rot_h;
     dst->rot_s1 = src->rot_s1, dst->rot_c1 = src->rot_c1;

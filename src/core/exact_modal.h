@@ -1,0 +1,45 @@
+/* exact_modal.h: exact.c's propagator for chains whose dampers are proportional to their
+ * masses (c_i / m_i the same for every mass, undamped included): the undamped modes
+ * (LAPACK's dstevr on M^(-1/2) K M^(-1/2)) stay uncoupled under such damping, so each
+ * step is the modes' own 4 x 4 exponentials (a mode and the drive's two states) between
+ * two products with the modes' matrix: O(N^2) a step, O(N) a new step length. Internal to
+ * exact.c; also home of the small matrix exponential both use. */
+#ifndef SPRINGSIM_EXACT_MODAL_H
+#define SPRINGSIM_EXACT_MODAL_H
+
+#include <gsl/gsl_matrix.h>
+
+#include "exact.h"
+#include "model.h"
+
+/* The drive's form over a piece (exact.c's terms). */
+enum exact_kind { EXACT_NONE, EXACT_SINE, EXACT_LINE };
+
+struct modal;
+
+/* Workspace for chains of n masses (about 8 n^2 + 300 n bytes), or NULL on no memory. */
+struct modal *modal_new(int n);
+
+/* Frees it. */
+void modal_free(struct modal *md);
+
+/* Makes dst (made for the same n) hold what src holds, its cached steps included. */
+void modal_copy(struct modal *dst, const struct modal *src);
+
+/* Takes in model m (its values checked by the caller: m, k > 0, c >= 0, finite) whose
+ * c_i / m_i all equal gamma: its modes, and a new generation (cached steps are stale).
+ * 0, or -1 when LAPACK fails or a mode's frequency is not positive (the caller then uses
+ * the dense exponential). */
+int modal_take(struct modal *md, const struct model *m, double gamma);
+
+/* Advances x, v (n each) from a to b > a on the drive's form kind (d read for EXACT_SINE
+ * and EXACT_LINE) and adds the piece's dissipation and motor work to *diss and *work, as
+ * exact_advance does. 0, or -1 (an exponential failed or a result is not finite: nothing
+ * is changed). */
+int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_drive *d, double a,
+                  double b, double *x, double *v, double *diss, double *work);
+
+/* expm(s) into out (square, same size); s is overwritten, t is scratch. 0 or -1. */
+int exact_expm(gsl_matrix *s, gsl_matrix *out, gsl_matrix *t);
+
+#endif
