@@ -210,16 +210,28 @@ done
 [ "$both" -eq 0 ] && pass ||
     fail "two --plain saving 'race' at once: not exactly one 'ok saved' in $both of 20 rounds"
 
-# --- 3: --integrator exact where it would look hung is refused, with the reason ---
-refused "'exact' takes at most 20 masses with collisions" --headless --integrator exact -n 1000
-refused "'exact' takes at most 20 masses with collisions" --headless --integrator exact -n 21
+# --- 3: --integrator exact takes any N when its dampers are proportional to the masses
+# (stepped in the modes); otherwise it is refused where it would look hung, with the reason
+dampers() { awk -v n="$1" 'BEGIN { for (i = 0; i < n; i++) printf "%s%g", i ? "," : "", 0.1 + 0.01 * i }'; }
+refused "'exact' takes at most 20 masses with collisions (100 without) when the dampers are not proportional" \
+    --headless --integrator exact -n 1000 --damping "$(dampers 1000)"
+refused "'exact' takes at most 20 masses with collisions" --headless --integrator exact -n 21 \
+    --damping "$(dampers 21)"
 refused "'exact' takes at most 100 masses without collisions" --headless --integrator exact \
-    -n 101 --no-collisions
+    -n 101 --no-collisions --mass "$(dampers 101)"
 printf '[system]\nmasses = 300\nintegrator = exact\n' >"$tmp/exact.ini"
-refused "exact.ini:3: integrator: 'exact' takes at most" --headless -p "$tmp/exact.ini"
-accepted --headless --integrator exact -n 20 --duration 0.05
-accepted --headless --integrator exact -n 100 --no-collisions --duration 0
-accepted --modes --integrator exact -n 200
+refused "exact.ini:3: integrator: 'exact' takes at most" --headless -p "$tmp/exact.ini" \
+    --damping "$(dampers 300)"
+accepted --headless --integrator exact -n 20 --duration 0.05 --damping "$(dampers 20)"
+accepted --headless --integrator exact -n 100 --no-collisions --duration 0 --damping "$(dampers 100)"
+accepted --modes --integrator exact -n 200 --damping "$(dampers 200)"
+# proportional dampers: the default chain, an undamped one, c_i = 0.3 m_i
+accepted --headless --integrator exact -n 1000 --duration 0.05
+accepted --headless --integrator exact -n 300 --damping 0 --duration 0.05
+accepted --headless --integrator exact -n 300 --mass "$(dampers 300)" \
+    --damping "$(awk 'BEGIN { for (i = 0; i < 300; i++) printf "%s%.17g", i ? "," : "", 0.3 * (0.1 + 0.01 * i) }')" \
+    --duration 0.05
+accepted --headless -p "$tmp/exact.ini" --duration 0.05
 
 # --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---
 refused "--energy: applies to --headless's rows" --summary --energy

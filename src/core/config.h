@@ -201,15 +201,18 @@ void config_quote(const char *value, size_t n, char *buf, size_t len);
  * as 0). NULL, or the reason it is not one ("is not a number", ...). */
 const char *config_parse_number(const char *s, double *out);
 
-/* The exact integrator's reach: each new step length (every contact makes one) costs the
- * matrix exponential of a (2N+2)-square matrix and its integrals, O(N^3): 0.7 s at 100
- * masses, and with collisions a second of motion costs 0.4 s at 20, 1.2 s at 30, 13 s at
- * 50 (159 s for one step at 1000). */
+/* The exact integrator's reach when the dampers are not proportional to the masses (it
+ * then steps by the dense exponential, exact.c): each new step length (every contact
+ * makes one) costs the matrix exponential of a (2N+2)-square matrix and its integrals,
+ * O(N^3): 0.7 s at 100 masses, and with collisions a second of motion costs 0.4 s at 20,
+ * 1.2 s at 30, 13 s at 50 (159 s for one step at 1000). Proportional dampers (the default
+ * chain, undamped ones) are stepped in the modes at any N (exact_modal.c). */
 #define CONFIG_EXACT_MAX_MASSES 100
 #define CONFIG_EXACT_MAX_MASSES_CONTACTS 20
 
 /* CFG_INTEGRATOR when c asks for the exact integrator on more masses than it can step in
- * reasonable time (above), with the reason and what to use instead in err; -1 if not. */
+ * reasonable time (above: dampers not proportional to the masses), with the reason and
+ * what to use instead in err; -1 if not. */
 int config_check_exact(const struct config *c, char *err, size_t errlen);
 
 /* The key to blame when a headless run of c would take more than CONFIG_MAX_STEPS steps

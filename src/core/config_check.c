@@ -3,6 +3,8 @@
  * ranges, the exact integrator's reach, and the length of a headless run. */
 #include "config.h"
 
+#include "exact.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -65,8 +67,16 @@ int config_check_exact(const struct config *c, char *err, size_t errlen)
     int most = c->no_collisions ? CONFIG_EXACT_MAX_MASSES : CONFIG_EXACT_MAX_MASSES_CONTACTS;
     if (c->integrator != INTEGRATOR_EXACT || c->masses <= most)
         return -1;
-    snprintf(err, errlen, "'exact' takes at most %d masses %s, not %d: %s (expected rk4, "
-             "verlet, semi-implicit or euler, or fewer masses)", most,
+    int bad;
+    char why[8];
+    struct model *m = config_model(c, &bad, why, sizeof why);
+    int modes = !m || exact_proportional(m);
+    model_free(m);
+    if (modes)
+        return -1; /* stepped in its modes at any N (or refused elsewhere) */
+    snprintf(err, errlen, "'exact' takes at most %d masses %s when the dampers are not "
+             "proportional to the masses, not %d: %s (expected dampers in proportion to the "
+             "masses, rk4, verlet, semi-implicit or euler, or fewer masses)", most,
              c->no_collisions ? "without collisions" : "with collisions (100 without)",
              c->masses,
              c->no_collisions ? "its set-up is a matrix exponential of order 2N+2 (0.7 s at "

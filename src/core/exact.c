@@ -122,6 +122,15 @@ struct exact *exact_new(int n)
     return e;
 }
 
+int exact_proportional(const struct model *m)
+{
+    double g0 = m->c[0] / m->m[0];
+    for (int i = 1; i < m->n; i++)
+        if (!(fabs(m->c[i] / m->m[i] - g0) <= 4.0 * DBL_EPSILON * g0))
+            return 0;
+    return 1;
+}
+
 /* The dense exponential's matrices and vectors, made the first time a model needs them
  * (160 MB at n = 1000). 0, or -1 on no memory. */
 static int dense_alloc(struct exact *e)
@@ -253,10 +262,7 @@ static void take_model(struct exact *e, const struct model *m)
     e->wscale = sqrt(wmax);
     /* Dampers proportional to the masses (to rounding) keep the modes apart: the modes'
      * propagator. Otherwise, or if LAPACK fails there, the dense exponential. */
-    int proportional = 1;
-    for (int i = 1; i < n; i++)
-        proportional &= fabs(e->gam[i] - e->gam[0]) <= 4.0 * DBL_EPSILON * e->gam[0];
-    e->use_modal = proportional && modal_take(e->md, m, e->gam[0]) == 0;
+    e->use_modal = exact_proportional(m) && modal_take(e->md, m, e->gam[0]) == 0;
     e->valid = e->use_modal || dense_alloc(e) == 0;
 }
 

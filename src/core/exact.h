@@ -17,6 +17,11 @@ struct exact;
  * 42 KB at n = 10, 160 MB at n = 1000. */
 struct exact *exact_new(int n);
 
+/* 1 when m's dampers are proportional to its masses (c_i / m_i all equal to rounding:
+ * undamped chains and the default one included), so that exact steps it in its modes,
+ * whose cost does not grow with the step lengths it meets; 0 otherwise. */
+int exact_proportional(const struct model *m);
+
 /* Frees it. */
 void exact_free(struct exact *e);
 
