@@ -36,7 +36,12 @@
  * not on z: they are kept for the last few steps, so a run of equal steps costs one
  * matrix-vector product and one quadratic form, O((2N)^2). A step within 1e-8 / ||A|| of
  * a cached one (late in a run, b - a carries the rounding of the times) is taken as a
- * first-order step of the difference, then the cached one. */
+ * first-order step of the difference, then the cached one.
+ *
+ * All of the above is the dense path, for dampers that are not proportional to the masses.
+ * When they are (c_i / m_i all equal: the default chain, undamped ones) the same method
+ * runs mode by mode on 4 x 4 matrices (exact_modal.c), which contacts' step lengths do not
+ * make expensive, and the dense matrices are never made. */
 #include "exact.h"
 
 #include <float.h>

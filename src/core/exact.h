@@ -46,8 +46,12 @@ struct exact_drive {
  * were. a == b does nothing. The drive is read for a motor end only (d may be NULL: u = 0);
  * a jump of u between pieces is the caller's to book (its work is the change of the end
  * spring's energy).
- * Cost: a step with the same model values, drive form, omega (sine) and b - a as one of
- * the last few (within 1e-8 / ||A||, the difference corrected to first order: a long run's
+ * Cost, dampers proportional to the masses (exact_proportional): two N x N products a
+ * step, and a new step length (every contact makes one) seven 4 x 4 exponentials a mode;
+ * the modes themselves once per model values: a second of motion at dt = 0.01 with
+ * collisions 0.15 s at n = 100, 2.2 s at n = 1000 (make bench).
+ * Cost, other dampers: a step with the same model values, drive form, omega (sine) and
+ * b - a as one of the last few (within 1e-8 / ||A||, the difference corrected to first order: a long run's
  * steps differ by the rounding of its times) is one matrix-vector product and one
  * quadratic form: 0.1 us at n = 2, 0.5 us at n = 10, 47 us at n = 100, 6.5 ms at n = 1000;
  * amplitude, phase, t0, u0 and du may change freely. Any other step takes about eight

@@ -6,7 +6,13 @@
  *     the same equations (the core's own model_accel), with the same contact handling
  *     after each step;
  *  2. time per step and mass for N = 10, 100, 1000;
- *  3. --headless CSV rows per second against bare stepping. */
+ *  3. --headless CSV rows per second against bare stepping;
+ *  4. the exact integrator on the default chain (proportional dampers: stepped in its
+ *     modes) at N = 100, 300, 1000 with and without collisions: the first step (the
+ *     set-up: the modes and the step's exponentials), the steps after it, a second of
+ *     motion at dt = 0.01 as `--headless --integrator exact -n N --duration 1` runs it, and
+ *     the memory the run added (resident, from /proc/self/statm). BENCH_EXACT_MAX caps N;
+ *     BENCH_EXACT_ONLY=1 prints these rows alone. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,6 +26,8 @@
 #include "core/model.h"
 #include "core/output.h"
 #include "core/sim.h"
+
+#include <unistd.h>
 
 #define ROUNDS 5
 
@@ -102,9 +110,59 @@ static double theirs(const struct model *m, double dt, long steps, double *check
     return rate;
 }
 
+/* Resident memory (MB), or -1. */
+static double resident_mb(void)
+{
+    FILE *f = fopen("/proc/self/statm", "r");
+    long size, res;
+    int got = f && fscanf(f, "%ld %ld", &size, &res) == 2;
+    if (f)
+        fclose(f);
+    return got ? (double)res * (double)sysconf(_SC_PAGESIZE) / 1048576.0 : -1.0;
+}
+
+/* 4. The exact integrator at large N. */
+static void exact_rows(void)
+{
+    const char *cap = getenv("BENCH_EXACT_MAX");
+    int most = cap ? atoi(cap) : 1000;
+    printf("\n| exact, default chain, dt 0.01 | set-up (first step) | per step after | 1 s of "
+           "motion | contacts | memory added |\n| --- | --- | --- | --- | --- | --- |\n");
+    const int sizes[] = {100, 300, 1000};
+    for (int i = 0; i < 3; i++)
+        for (int c = 0; c < 2; c++) {
+            if (sizes[i] > most)
+                continue;
+            struct model *m = model_new(sizes[i]);
+            m->collisions = c == 0;
+            double r0 = resident_mb();
+            struct sim *s = sim_new(m, 0.01);
+            sim_set_integrator(s, INTEGRATOR_EXACT);
+            double t0 = now_s();
+            int contacts = 0;
+            sim_step(s);
+            contacts += sim_last_contacts(s);
+            double t1 = now_s();
+            for (int k = 1; k < 100; k++) {
+                sim_step(s);
+                contacts += sim_last_contacts(s);
+            }
+            double t2 = now_s();
+            printf("| N = %d, collisions %s | %.1f ms | %.2f ms | %.2f s | %d | %.1f MB |\n",
+                   sizes[i], c == 0 ? "on" : "off", 1e3 * (t1 - t0), 1e3 * (t2 - t1) / 99,
+                   t2 - t0, contacts, resident_mb() - r0);
+            sim_free(s);
+            model_free(m);
+        }
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    if (getenv("BENCH_EXACT_ONLY")) {
+        exact_rows();
+        return 0;
+    }
     printf("springsim core benchmark (medians of %d alternated rounds)\n\n", ROUNDS);
 
     /* 1. Against GSL. */
@@ -178,5 +236,6 @@ int main(void)
     printf("| bare steps | %.3g |\n| steps with a CSV row each | %.3g |\n",
            median(bare, ROUNDS), median(csv, ROUNDS));
     model_free(m);
+    exact_rows();
     return 0;
 }
