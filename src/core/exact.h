@@ -51,10 +51,10 @@ struct exact_drive {
  * the modes themselves once per model values: a second of motion at dt = 0.01 with
  * collisions 0.15 s at n = 100, 2.2 s at n = 1000 (make bench).
  * Cost, other dampers: a step with the same model values, drive form, omega (sine) and
- * b - a as one of the last few (within 1e-8 / ||A||, the difference corrected to first order: a long run's
- * steps differ by the rounding of its times) is one matrix-vector product and one
- * quadratic form: 0.1 us at n = 2, 0.5 us at n = 10, 47 us at n = 100, 6.5 ms at n = 1000;
- * amplitude, phase, t0, u0 and du may change freely. Any other step takes about eight
+ * b - a as one of the last few (within 1e-8 / ||A||, the difference corrected to first
+ * order: a long run's steps differ by the rounding of its times) is one matrix-vector
+ * product and one quadratic form: 0.1 us at n = 2, 0.5 us at n = 10, 47 us at n = 100,
+ * 6.5 ms at n = 1000; amplitude, phase, t0, u0 and du may change freely. Any other step takes about eight
  * exponentials of (2n+2)-square matrices from GSL (which allocates inside them): 0.2 ms
  * at n = 10, 33 ms at n = 100, 30 s at n = 1000 for the default chain at dt = 0.01; each
  * doubling of ||A|| (b - a) past 1/2 adds one exponential and two products. */
