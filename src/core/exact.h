@@ -54,9 +54,9 @@ struct exact_drive {
  * b - a as one of the last few (within 1e-8 / ||A||, the difference corrected to first
  * order: a long run's steps differ by the rounding of its times) is one matrix-vector
  * product and one quadratic form: 0.1 us at n = 2, 0.5 us at n = 10, 47 us at n = 100,
- * 6.5 ms at n = 1000; amplitude, phase, t0, u0 and du may change freely. Any other step takes about eight
- * exponentials of (2n+2)-square matrices from GSL (which allocates inside them): 0.2 ms
- * at n = 10, 33 ms at n = 100, 30 s at n = 1000 for the default chain at dt = 0.01; each
+ * 6.5 ms at n = 1000; amplitude, phase, t0, u0 and du may change freely. Any other step
+ * takes about eight exponentials of (2n+2)-square matrices from GSL (which allocates
+ * inside them): 0.2 ms at n = 10, 33 ms at n = 100, 30 s at n = 1000 at dt = 0.01; each
  * doubling of ||A|| (b - a) past 1/2 adds one exponential and two products. */
 int exact_advance(struct exact *e, const struct model *m, const struct exact_drive *d,
                   double a, double b, double *x, double *v, double *diss, double *work);
