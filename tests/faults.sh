@@ -135,7 +135,7 @@ if command -v tmux >/dev/null 2>&1; then
         if has 'low refresh' && has 'Refresh    low (slow link)' && ! has 'Bandwidth'; then pass; else
             fail "--low-bandwidth: not shown in the status ('low refresh') and the Refresh control ('low (slow link)'); screen: $(brief "$scr" 'Refresh|Bandwidth')"
         fi
-        keys Up Right
+        keys Up Up Right # Graphics is the last control, Refresh the one above it
         if wait_for 'Refresh    normal' 3; then pass; else fail "the Refresh control did not turn the low refresh off"; fi
     fi
     tm kill-server 2>/dev/null

@@ -7,7 +7,9 @@
 # has its size in pixels, a cosine's peaks lie on the pixel rows the y labels give for
 # +-0.5 m, each mass's colour is there; images go only where the terminal says it shows
 # them, only when they changed, not over an overlay and again after it. A terminal that
-# does not answer, tmux, --graphics braille and --low-bandwidth get braille.
+# does not answer, tmux, --graphics braille and --low-bandwidth get braille. The Graphics
+# control switches at run time: to braille the images stop (kitty's are deleted) and the
+# charts are braille again; back, they are sent again; a terminal never asked is asked then.
 # Ends with "pixels: N passed, M failed".
 NAME=pixels
 . "$(dirname "$0")/lib/check.sh"
@@ -139,5 +141,52 @@ fi
 # Asked for by name in a terminal that gives its cell size: believed.
 term vt220 '~q' --graphics sixel
 [ "$(images sixel)" -ge 1 ] && pass || fail "$cmd: --graphics sixel sent no image"
+
+# 6. The Graphics control at run time (k selects it from Preset, the last control; h and l
+# step it): auto -> braille stops the images and draws braille; braille -> auto sends them.
+# braille_at WHEN: braille in the displacement plot's drawing area on the screen as it was
+# after the WHEN-th image ("end": at the end).
+braille_at() {
+    $screen chart "$tmp/out" 100 30 Displacement "$1" >"$tmp/chart6"
+    set -- $(head -n 1 "$tmp/chart6") "$1"
+    $screen show "$tmp/out" 100 30 "$5" | /usr/bin/python3 -c '
+import sys
+ay, ax, aw, ah = (int(v) for v in sys.argv[1:])
+rows = sys.stdin.read().split("\n")[ay - 1:ay - 1 + ah]
+sys.exit(0 if any(0x2801 <= ord(c) <= 0x28ff for r in rows for c in r[ax - 1:ax - 1 + aw]) else 1)
+' "$1" "$2" "$3" "$4"
+}
+shown() { $screen show "$tmp/out" 100 30 end >"$tmp/end" && grep -q -- "$1" "$tmp/end"; }
+term sixel '~~k~h~~~q'
+n=$(images sixel)
+if [ "$n" -ge 2 ] && [ "$n" = "$(places)" ] && ! braille_at "$n" && braille_at end &&
+    shown '▸Graphics   braille'; then pass; else
+    fail "$cmd: Graphics auto -> braille: expected each chart's image once ($(places) charts, $n images), then braille on the charts and 'Graphics braille'; end: $($screen show "$tmp/out" 100 30 end | grep Graphics)"
+fi
+term sixel '~~k~h~~~l~~~q'
+n=$(images sixel)
+if [ "$(places)" -ge 2 ] && [ "$n" = "$((2 * $(places)))" ] && ! braille_at end &&
+    shown '▸Graphics   auto (sixel)'; then pass; else
+    fail "$cmd: Graphics auto -> braille -> auto: expected each chart's image twice ($(places) charts, $n images), no braille under them at the end, 'Graphics auto (sixel)'"
+fi
+# kitty's images are deleted when leaving kitty (text does not cover them)
+term kitty '~~k~h~~q'
+if [ "$(images kitty)" -ge 2 ] && LC_ALL=C grep -q "$(printf '\033_Ga=d,d=a')" "$tmp/out" &&
+    braille_at end; then pass; else
+    fail "$cmd: Graphics kitty -> braille: expected kitty's images deleted (a=d) and braille"
+fi
+# never asked (--graphics braille): switching to auto asks the terminal then, and shows
+# images where it says it can
+term sixel '~~k~l~~~q' --graphics braille
+if [ "$(LC_ALL=C grep -c "$(printf '\033\\[c')" "$tmp/out")" = 1 ] && [ "$(images sixel)" -ge 2 ] &&
+    shown '▸Graphics   auto (sixel)'; then pass; else
+    fail "$cmd: --graphics braille, then Graphics auto: expected one query at the switch and images; $(images sixel) images"
+fi
+# a terminal that answers nothing: sixel by name stays braille and says why
+term none '~~k~l~~q'
+if [ "$(images sixel)" = 0 ] && braille_at end && shown 'Graphics sixel: the terminal did not say its cell size' &&
+    shown '▸Graphics   sixel: braille'; then pass; else
+    fail "$cmd: Graphics sixel in a silent terminal: expected braille, 'sixel: braille' and why; $(images sixel) images; end: $($screen show "$tmp/out" 100 30 end | grep -i graphics)"
+fi
 
 summary

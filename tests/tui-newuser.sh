@@ -1,7 +1,9 @@
 #!/bin/sh
 # tests/tui-newuser.sh: what a new user met (issue 22), as a person sees it in tmux: at
 # 60x20 the controls scroll to the selection and the frame says how many are out of
-# sight; with ten masses at 80x24 the legends and the natural frequencies end in "…"
+# sight (at 80x24 the list scrolls by one and the frequency bar and the natural frequencies
+# stay); the Graphics control shows braille in tmux and says why sixel and kitty cannot be
+# (issue 18); with ten masses at 80x24 the legends and the natural frequencies end in "…"
 # and keep the motor; the energy view's drift is never cut; while dt is past a limit the
 # status line says so after the warning has gone. Run from the repository root as
 # `sh tests/tui-newuser.sh`, SPRINGSIM naming the binary. Ends with "tui-newuser: N
@@ -11,6 +13,7 @@ NAME=tui-newuser
 . "$(dirname "$0")/lib/tmux.sh"
 
 start small 60 20 -- -p 3-mass-chain
+start gfx 80 24 -- -p 3-mass-chain
 start ten 80 24 -- -n 10 --random --seed 5
 start energy 60 20 -- -p 3-mass-chain
 start euler 80 24 -- --integrator euler --dt 0.05
@@ -30,23 +33,79 @@ start top 100 30 -- -p 3-mass-chain
 row() { sed -n "${1}p" "$scr"; }
 controls() { LC_ALL=$U8 sed -n '/┌ Controls/,/^.*┘$/p' "$scr" | LC_ALL=$U8 sed 's/.*\(┌ Controls\)/\1/; s/.*││//; s/.*┘└/└/'; }
 
-# ---- 60x20: 14 controls in 12 rows ----
+# ---- 60x20: 14 controls in 11 rows ----
 if up small; then
-    if has_re '└─+ ↓ 2 more ─┘' && lacks '↑ 2 more' && has 'Frequency' && lacks 'Refresh'; then
+    if has_re '└─+ ↓ 3 more ─┘' && lacks '↑ 3 more' && has 'Frequency' && lacks 'Refresh'; then
         pass
     else
-        fail "60x20: the controls' frame should say '↓ 2 more' below Frequency; screen: $(brief "$scr" 'more|Frequency')"
+        fail "60x20: the controls' frame should say '↓ 3 more' below Frequency; screen: $(brief "$scr" 'more|Frequency')"
     fi
-    keys Up # wraps to the last control, Refresh
-    if wait_re '▸Refresh +normal' 3 && has_re 'Controls ─+ ↑ 2 more ─┐' && has 'Speed' &&
-        lacks '↓ 2 more' && lacks 'Preset '; then
+    keys Up # wraps to the last control, Graphics
+    if wait_re '▸Graphics +auto \(braille\)' 3 && has_re 'Controls ─+ ↑ 3 more ─┐' &&
+        has_re 'Refresh +normal' && has 'Speed' && lacks '↓ 3 more' && lacks 'Preset '; then
         pass
     else
-        fail "60x20: ↑ from Preset should scroll to ▸Refresh, Speed above it, the frame saying '↑ 2 more'; screen: $(brief "$scr" 'more|Refresh|Speed')"
+        fail "60x20: ↑ from Preset should scroll to ▸Graphics 'auto (braille)' (tmux), Refresh and Speed above it, the frame saying '↑ 3 more'; screen: $(brief "$scr" 'more|Graphics|Refresh|Speed')"
     fi
-    keys Down # wraps to Preset: the list scrolls back
-    if wait_re '▸Preset' 3 && has '↓ 2 more' && lacks '↑ 2 more'; then pass; else
-        fail "60x20: ↓ from Refresh should scroll back to ▸Preset; screen: $(brief "$scr" 'more|Preset')"
+    keys Up # Refresh: the list stays where it is
+    if wait_re '▸Refresh +normal' 3 && has_re 'Controls ─+ ↑ 3 more ─┐' && has 'Graphics'; then pass; else
+        fail "60x20: ↑ from Graphics should select ▸Refresh, the list still scrolled ('↑ 3 more'); screen: $(brief "$scr" 'more|Graphics|Refresh')"
+    fi
+    keys Down Down # wraps to Preset: the list scrolls back
+    if wait_re '▸Preset' 3 && has '↓ 3 more' && lacks '↑ 3 more'; then pass; else
+        fail "60x20: ↓ from Graphics should scroll back to ▸Preset; screen: $(brief "$scr" 'more|Preset')"
+    fi
+fi
+
+# ---- 80x24: 13 of 14 controls, the bar and the natural frequencies; Graphics ----
+# the bottom line of the controls' frame, and the row of its natural frequencies
+bottom_more() { has_re '└─+ ↓ 1 more ─┘$' && has_re '│ [0-9.]+ [0-9.]+ [0-9.]+ Hz +│$' && has '5Hz'; }
+if up gfx; then
+    if bottom_more && has_re 'Refresh +normal' && lacks 'Graphics'; then pass; else
+        fail "80x24: the controls should end at Refresh with '↓ 1 more', the frequency bar and the natural frequencies kept; screen: $(brief "$scr" 'more|Refresh|Hz')"
+    fi
+    keys Up # wraps to Graphics: one row up, the bar and the frequencies stay
+    if wait_re '▸Graphics +auto \(braille\)' 3 && has_re 'Controls ─+ ↑ 1 more ─┐' &&
+        lacks 'Preset ' && has_re '│ [0-9.]+ [0-9.]+ [0-9.]+ Hz +│$'; then pass; else
+        fail "80x24: ↑ from Preset should show ▸Graphics 'auto (braille)' (tmux), '↑ 1 more', the natural frequencies kept; screen: $(brief "$scr" 'more|Graphics|Hz')"
+    fi
+    # sixel and kitty cannot be inside tmux: the control and the status line say so
+    keys Right
+    if wait_re '▸Graphics +sixel: braille' 3 && has 'Graphics sixel: braille inside tmux or screen'; then
+        pass
+    else
+        fail "80x24 in tmux: Graphics → sixel should show 'sixel: braille' and say why; screen: $(brief "$scr" 'Graphics')"
+    fi
+    keys Right
+    if wait_re '▸Graphics +kitty: braille' 3 && has 'Graphics kitty: braille inside tmux or screen'; then
+        pass
+    else
+        fail "80x24 in tmux: Graphics → kitty should show 'kitty: braille' and say why; screen: $(brief "$scr" 'Graphics')"
+    fi
+    keys Right
+    if wait_re '▸Graphics +braille +│' 3 && lacks 'inside tmux'; then pass; else
+        fail "80x24: Graphics → braille should show 'braille' and no reason; screen: $(brief "$scr" 'Graphics|tmux')"
+    fi
+    # typed: a bad value names itself and what is allowed; a good one is set
+    keys Enter
+    wait_for 'Graphics =' 3
+    text sepia
+    keys Enter
+    if wait_for "graphics: 'sepia'" 3 && has 'braille' && has_re '▸Graphics +braille +│'; then pass; else
+        fail "80x24: typing sepia into Graphics should be refused with what it allows, the control kept; screen: $(brief "$scr" 'sepia|Graphics')"
+    fi
+    keys Enter
+    wait_for 'Graphics =' 3
+    text auto
+    keys Enter
+    if wait_re '▸Graphics +auto \(braille\)' 3; then pass; else
+        fail "80x24: typing auto into Graphics should set it back ('auto (braille)'); screen: $(brief "$scr" 'Graphics')"
+    fi
+    # the braille plots went on all along (a plot's row: "│" and blanks, then braille; the
+    # chain's rows start "│▓▓")
+    keys Space
+    if wait_t 1 10 && LC_ALL=C grep -q "$(printf '^\342\224\202  .*\342[\240-\243]')" "$scr"; then pass; else
+        fail "80x24: the plots should be braille after the Graphics control went round; screen: $(brief)"
     fi
 fi
 

@@ -40,7 +40,7 @@ enum app_change {
     APP_CHANGED_SIZE = 1u << 2,     /* the number of masses: what is sized by N follows */
     APP_CHANGED_STATE = 1u << 3,    /* the state moved or jumped: step, back, reset, a
                                      * mass moved; plots and history follow */
-    APP_CHANGED_PLAYBACK = 1u << 4, /* running, speed, bandwidth */
+    APP_CHANGED_PLAYBACK = 1u << 4, /* running, speed, bandwidth, graphics */
     APP_CHANGED_WINDOW = 1u << 5,   /* the time plots' window */
     APP_CHANGED_MESSAGE = 1u << 6,  /* the status message */
     APP_CHANGED_DT = 1u << 7,       /* the time step (and so the plots' sampling) */
@@ -79,6 +79,7 @@ enum control {
     CTL_FREQUENCY,
     CTL_SPEED,
     CTL_BANDWIDTH,
+    CTL_GRAPHICS,
     CTL_COUNT
 };
 
@@ -127,6 +128,9 @@ struct app {
     double energy0;          /* the energy balance at t = 0 */
     struct ghost *ghost;     /* a frozen copy run beside the chain (ghost.h), or NULL */
     struct scope scope;      /* time cursors, scroll-back, the mass measured (scope.h) */
+    enum config_graphics graphics_now; /* what the front end draws the charts with now
+                                        * (sixel, kitty or braille; AUTO: no charts, the
+                                        * line mode): the Graphics control shows it */
 };
 
 /* Sets up app from cfg (N already checked to be 1..APP_MAX_MASSES); 0, or -1 on no memory. */

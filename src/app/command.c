@@ -78,7 +78,7 @@ static const char *const control_names[CTL_COUNT] = {
     [CTL_INTEGRATOR] = "integrator", [CTL_DAMPING] = "damping",   [CTL_SPRING] = "spring",
     [CTL_MASS] = "mass",           [CTL_BOUNDARY] = "boundary",   [CTL_WAVE] = "wave",
     [CTL_AMPLITUDE] = "amplitude", [CTL_FREQUENCY] = "frequency", [CTL_SPEED] = "speed",
-    [CTL_BANDWIDTH] = "bandwidth",
+    [CTL_BANDWIDTH] = "bandwidth", [CTL_GRAPHICS] = "graphics",
 };
 
 #define RUN_MAX 1000.0 /* simulated seconds one run may take */

@@ -16,6 +16,7 @@ static const char *const labels[CTL_COUNT] = {
     [CTL_DAMPING] = "Damping",    [CTL_SPRING] = "Spring k",   [CTL_MASS] = "Mass",
     [CTL_BOUNDARY] = "Right end", [CTL_WAVE] = "Waveform",     [CTL_AMPLITUDE] = "Amplitude",
     [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Refresh",
+    [CTL_GRAPHICS] = "Graphics",
 };
 
 /* What ends a sweep, for its message. */
@@ -218,6 +219,13 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
             return 0;
         app->cfg.low_bandwidth = !app->cfg.low_bandwidth;
         return APP_CHANGED_PLAYBACK;
+    case CTL_GRAPHICS:
+        next.graphics = (enum config_graphics)(((int)next.graphics + steps % CONFIG_GRAPHICS_COUNT +
+                                                CONFIG_GRAPHICS_COUNT) % CONFIG_GRAPHICS_COUNT);
+        if (next.graphics == app->cfg.graphics)
+            return 0;
+        app->cfg.graphics = next.graphics;
+        return APP_CHANGED_PLAYBACK;
     case CTL_SPEED: {
         int i = 0;
         while (i < NSPEEDS - 1 && speeds[i] < app->speed - 1e-9)
@@ -268,7 +276,7 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
         [CTL_INTEGRATOR] = CFG_INTEGRATOR,
         [CTL_DAMPING] = CFG_DAMPING,   [CTL_SPRING] = CFG_SPRING,   [CTL_MASS] = CFG_MASS,
         [CTL_BOUNDARY] = CFG_BOUNDARY, [CTL_WAVE] = CFG_WAVE,       [CTL_AMPLITUDE] = CFG_AMPLITUDE,
-        [CTL_FREQUENCY] = CFG_FREQUENCY,
+        [CTL_FREQUENCY] = CFG_FREQUENCY, [CTL_GRAPHICS] = CFG_GRAPHICS,
     };
     char err[300];
     if ((unsigned)ctl >= CTL_COUNT || ctl == CTL_PRESET)
@@ -306,6 +314,12 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
         return 0;
     }
     unsigned what = 0;
+    if (ctl == CTL_GRAPHICS) {
+        /* The front end follows it (tui.c); the chain is not touched. */
+        what = next.graphics != app->cfg.graphics ? APP_CHANGED_PLAYBACK : 0;
+        app->cfg.graphics = next.graphics;
+        return say_set(app, ctl, what);
+    }
     if (ctl == CTL_MASSES ? new_masses(app, next.masses, &what)
                           : app_change(app, &next, ctl == CTL_FREQUENCY ? CHANGE_SETS_FREQUENCY : 0,
                                        whys[ctl], &what))
@@ -489,6 +503,19 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
     case CTL_BANDWIDTH:
         snprintf(buf, len, "%s", app->cfg.low_bandwidth ? "low (slow link)" : "normal");
         return;
+    case CTL_GRAPHICS: {
+        /* What it asks for, and what the charts are drawn with where that is not it:
+         * "auto (sixel)", "sixel: braille" (the message said why). */
+        const char *want = config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics);
+        const char *now = config_options[CFG_GRAPHICS].choice_name((int)app->graphics_now);
+        if (app->graphics_now == CONFIG_GRAPHICS_AUTO || app->graphics_now == app->cfg.graphics)
+            snprintf(buf, len, "%s", want);
+        else if (app->cfg.graphics == CONFIG_GRAPHICS_AUTO)
+            snprintf(buf, len, "%s (%s)", want, now);
+        else
+            snprintf(buf, len, "%s: %s", want, now);
+        return;
+    }
     default:
         break;
     }

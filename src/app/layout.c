@@ -140,11 +140,21 @@ double layout_scene_metres(const struct layout *l, int col)
     return (col + 0.5 - l->scene_x0) / l->scene_cpm;
 }
 
+int layout_control_rows(const struct layout *l, int ncontrols)
+{
+    int rows = l->controls.h - 2;
+    if (rows >= ncontrols + 2)
+        return ncontrols;
+    if (rows - 2 >= ncontrols - 1)
+        return rows - 2;
+    return rows >= ncontrols ? ncontrols : rows > 0 ? rows : 0;
+}
+
 int layout_control_at(const struct layout *l, int y, int x, int ncontrols, int top)
 {
     struct rect c = l->controls;
     if (l->too_small || x <= c.x || x >= c.x + c.w - 1)
         return -1;
     int i = y - c.y - 1;
-    return i >= 0 && i + top < ncontrols && i < c.h - 2 ? i + top : -1;
+    return i >= 0 && i + top < ncontrols && i < layout_control_rows(l, ncontrols) ? i + top : -1;
 }

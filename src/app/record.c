@@ -149,6 +149,7 @@ void record_mark(struct record *r, const struct app *app)
     k->boundary = (int)m->boundary;
     k->wave = (int)m->motor.wave;
     k->low_bandwidth = app->cfg.low_bandwidth;
+    k->graphics = (int)app->cfg.graphics;
     k->sweeping = app->sweep->active;
     k->mass = app->cfg.mass;
     k->damping = app->cfg.damping;
@@ -244,6 +245,9 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         }
         if (app->cfg.low_bandwidth != k->low_bandwidth)
             put(r, "set bandwidth %s", app->cfg.low_bandwidth ? "low" : "normal");
+        if ((int)app->cfg.graphics != k->graphics)
+            put(r, "set graphics %s",
+                config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics));
         /* A mass placed (the others start where the chain stood): the one whose start is
          * not where it stood, or the first if it was put back there. */
         bool moved = false;

@@ -25,6 +25,7 @@ struct record_mark {
     double dt, amplitude, frequency, speed;
     int integrator, boundary, wave;
     bool low_bandwidth, sweeping;
+    int graphics; /* the Graphics control (enum config_graphics) */
     struct config_list mass, damping, spring; /* as the settings hold them */
     double x[CONFIG_INTERACTIVE_MAX_MASSES];  /* the chain's displacements */
     double x0[CONFIG_INTERACTIVE_MAX_MASSES]; /* its initial ones */

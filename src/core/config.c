@@ -155,7 +155,7 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                       .help = "interactive: the charts' drawing areas as images (sixel or "
                               "kitty's protocol) where the terminal says it can show them "
                               "(auto), or braille; braille inside tmux or screen and with low "
-                              "bandwidth",
+                              "bandwidth; the Graphics control changes it",
                       .def = CONFIG_GRAPHICS_AUTO, .choice_name = graphics_choice,
                       .choices = CONFIG_GRAPHICS_COUNT, .symbol = "a graphics setting",
                       .offset = AT(graphics)},

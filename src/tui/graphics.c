@@ -151,25 +151,14 @@ static bool multiplexed(void)
            (term && (strncmp(term, "screen", 6) == 0 || strncmp(term, "tmux", 4) == 0));
 }
 
-void graphics_detect(struct graphics *g, const struct config *c)
+/* Asks the terminal what it shows, its cell size and its background. */
+static void query(struct graphics *g)
 {
-    memset(g, 0, sizeof *g);
-    g->mode = g->can = GRAPHICS_BRAILLE;
-    g->bg[0] = g->bg[1] = g->bg[2] = 1.0;
-    g->said[0] = '\0';
-    if (c->graphics == CONFIG_GRAPHICS_BRAILLE || !isatty(STDIN_FILENO) ||
-        !isatty(STDOUT_FILENO))
-        return;
-    if (c->low_bandwidth || multiplexed()) {
-        if (c->graphics != CONFIG_GRAPHICS_AUTO)
-            snprintf(g->said, sizeof g->said, "--graphics %s: braille %s",
-                     config_options[CFG_GRAPHICS].choice_name((int)c->graphics),
-                     c->low_bandwidth ? "with low bandwidth" : "inside tmux or screen");
-        return;
-    }
     struct answers a = {0};
+    g->asked = true;
     ask(&a);
     struct winsize ws;
+    g->cw = g->ch = 0;
     if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_xpixel && ws.ws_ypixel && ws.ws_col &&
         ws.ws_row)
         g->cw = ws.ws_xpixel / ws.ws_col, g->ch = ws.ws_ypixel / ws.ws_row;
@@ -182,35 +171,79 @@ void graphics_detect(struct graphics *g, const struct config *c)
         memcpy(g->bg, a.rgb, sizeof g->bg);
         g->dark = 0.2126 * a.rgb[0] + 0.7152 * a.rgb[1] + 0.0722 * a.rgb[2] < 0.5;
     }
-    bool sized = g->cw >= 2 && g->ch >= 4 && g->cw <= 200 && g->ch <= 400;
-    g->can = !sized ? GRAPHICS_BRAILLE
+    g->sized = g->cw >= 2 && g->ch >= 4 && g->cw <= 200 && g->ch <= 400;
+    g->can = !g->sized ? GRAPHICS_BRAILLE
              : a.kitty ? GRAPHICS_KITTY
              : a.sixel ? GRAPHICS_SIXEL
                        : GRAPHICS_BRAILLE;
-    enum graphics_mode want = c->graphics == CONFIG_GRAPHICS_SIXEL   ? GRAPHICS_SIXEL
-                              : c->graphics == CONFIG_GRAPHICS_KITTY ? GRAPHICS_KITTY
-                                                                     : g->can;
-    /* Asked for by name: believed where the cell size is known, said otherwise. */
-    if (want != GRAPHICS_BRAILLE && sized) {
-        g->can = want;
-        graphics_set(g, want);
-    } else if (want != GRAPHICS_BRAILLE) {
-        snprintf(g->said, sizeof g->said, "--graphics %s: the terminal did not say its cell "
-                 "size in pixels; braille", graphics_name(want));
-    }
 }
 
-bool graphics_set(struct graphics *g, enum graphics_mode mode)
+void graphics_detect(struct graphics *g, const struct config *c)
 {
-    if (mode != GRAPHICS_BRAILLE && mode != g->can)
-        return false;
-    if (g->mode == GRAPHICS_KITTY && mode != GRAPHICS_KITTY)
+    memset(g, 0, sizeof *g);
+    g->mode = g->can = GRAPHICS_BRAILLE;
+    g->bg[0] = g->bg[1] = g->bg[2] = 1.0;
+    g->want = (enum config_graphics)-1;
+    g->tty = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);
+    g->multiplexed = multiplexed();
+    graphics_follow(g, c->graphics, c->low_bandwidth);
+}
+
+/* Switches to mode: kitty's images deleted when leaving kitty; the screen drawn again,
+ * which clears sixel's (and the braille under a new image). */
+static void set_mode(struct graphics *g, enum graphics_mode mode)
+{
+    if (mode == g->mode)
+        return;
+    if (g->mode == GRAPHICS_KITTY)
         fputs("\033_Ga=d,d=a,q=2\033\\", stdout);
     g->mode = mode;
     chart_use_pixels(mode != GRAPHICS_BRAILLE);
     graphics_invalidate(g);
-    clearok(curscr, TRUE); /* what was drawn the other way goes */
+    if (curscr)
+        clearok(curscr, TRUE);
+}
+
+bool graphics_follow(struct graphics *g, enum config_graphics want, bool low)
+{
+    if (want == g->want && low == g->low)
+        return false;
+    g->want = want, g->low = low;
+    g->said[0] = '\0';
+    enum graphics_mode named = want == CONFIG_GRAPHICS_SIXEL   ? GRAPHICS_SIXEL
+                               : want == CONFIG_GRAPHICS_KITTY ? GRAPHICS_KITTY
+                                                               : GRAPHICS_BRAILLE;
+    enum graphics_mode mode = GRAPHICS_BRAILLE;
+    if (want == CONFIG_GRAPHICS_BRAILLE || !g->tty) {
+        mode = GRAPHICS_BRAILLE;
+    } else if (low) {
+        snprintf(g->said, sizeof g->said, "braille while the refresh is low (the Refresh "
+                 "control)");
+    } else if (g->multiplexed) {
+        snprintf(g->said, sizeof g->said, "braille inside tmux or screen");
+    } else {
+        if (!g->asked)
+            query(g);
+        /* Asked for by name: believed where the cell size is known, said otherwise. */
+        if (named != GRAPHICS_BRAILLE && g->sized)
+            mode = named;
+        else if (named != GRAPHICS_BRAILLE)
+            snprintf(g->said, sizeof g->said, "the terminal did not say its cell size in "
+                     "pixels; braille");
+        else
+            mode = g->can;
+    }
+    if (want == CONFIG_GRAPHICS_AUTO)
+        g->said[0] = '\0'; /* auto takes what there is, and the control shows it */
+    set_mode(g, mode);
     return true;
+}
+
+enum config_graphics graphics_now(const struct graphics *g)
+{
+    return g->mode == GRAPHICS_SIXEL   ? CONFIG_GRAPHICS_SIXEL
+           : g->mode == GRAPHICS_KITTY ? CONFIG_GRAPHICS_KITTY
+                                       : CONFIG_GRAPHICS_BRAILLE;
 }
 
 void graphics_invalidate(struct graphics *g)

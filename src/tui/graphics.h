@@ -29,6 +29,13 @@ enum graphics_mode { GRAPHICS_BRAILLE, GRAPHICS_SIXEL, GRAPHICS_KITTY };
 struct graphics {
     enum graphics_mode mode;   /* what the charts are drawn with now */
     enum graphics_mode can;    /* what the terminal said it shows (BRAILLE: no images) */
+    bool tty;                  /* standard input and output are a terminal */
+    bool multiplexed;          /* inside tmux or screen */
+    bool asked;                /* the terminal was asked (at start, or when pixels were
+                                * first wanted) */
+    bool sized;                /* its cell size in pixels is known */
+    enum config_graphics want; /* what graphics_follow last followed (-1: nothing yet) */
+    bool low;                  /* ... and the low refresh then */
     int cw, ch;                /* a cell in pixels (0: not known) */
     bool dark;                 /* the background is dark */
     double bg[3];              /* the background (0..1) */
@@ -37,16 +44,25 @@ struct graphics {
     struct rect at[GRAPHICS_SLOTS];  /* where */
     uint64_t hash[GRAPHICS_SLOTS];   /* of what */
     struct fig_bytes img, out, rgb; /* the image, the bytes sent, the pixels on their way */
-    char said[160];            /* what start-up found, for the status line ("" if nothing) */
+    char said[160];            /* why the charts are braille though pixels were asked for
+                                * ("braille inside tmux or screen"), or "" */
     double next_at;            /* monotonic seconds before which no image is sent */
 };
 
 /* Asks the terminal (standard input and output, before curses starts) and chooses the
- * mode for want; low bandwidth, tmux and screen choose braille without asking. */
+ * mode for c's graphics and low bandwidth: braille without asking where they choose it,
+ * and inside tmux and screen. */
 void graphics_detect(struct graphics *g, const struct config *c);
 
-/* Switches to mode (braille, or what the terminal can show); false when it cannot. */
-bool graphics_set(struct graphics *g, enum graphics_mode mode);
+/* Follows the Graphics control (want) and the low refresh (low) where they changed since
+ * the last call: braille, or pixels where the terminal shows them (asking it first if
+ * pixels were never wanted before); leaving pixels clears the images, and the screen is
+ * drawn again. True when it changed something; g->said then says why it is braille if
+ * pixels were asked for by name. */
+bool graphics_follow(struct graphics *g, enum config_graphics want, bool low);
+
+/* The mode in force as --graphics spells it (CONFIG_GRAPHICS_SIXEL, _KITTY, _BRAILLE). */
+enum config_graphics graphics_now(const struct graphics *g);
 
 /* The images on the screen are gone (resize, Ctrl+L, a new layout): send them again. */
 void graphics_invalidate(struct graphics *g);

@@ -107,8 +107,8 @@ void panel_controls(const struct layout *l, const struct app *app, struct select
     int last = r.y + r.h - 2; /* the last row inside the frame */
     /* Where they do not all fit, the list scrolls to the selected one and the frame
      * says how many are above and below. */
-    int rows = last - r.y, top = select_control_top(sel, rows, CTL_COUNT);
-    for (int i = top; i < CTL_COUNT && r.y + 1 + i - top <= last; i++) {
+    int rows = layout_control_rows(l, CTL_COUNT), top = select_control_top(sel, rows, CTL_COUNT);
+    for (int i = top; i < CTL_COUNT && i - top < rows; i++) {
         char value[96], line[160];
         app_control_value(app, (enum control)i, value, sizeof value);
         bool hot = sel->focus == FOCUS_CONTROLS && sel->control == i;
@@ -137,7 +137,7 @@ void panel_controls(const struct layout *l, const struct app *app, struct select
                       more);
         }
     }
-    int y = r.y + 1 + CTL_COUNT;
+    int y = r.y + 1 + rows;
     if (y > last || !app->modes_ok)
         return;
     frequency_bar(r, y++, app);

@@ -571,12 +571,28 @@ static void watch_backlog(struct tui *t, double spent)
     bool slow = queued > BACKLOG || spent > 0.5 / frame_hz(t);
     t->backlog_frames = slow ? t->backlog_frames + 1 : 0;
     if (t->backlog_frames >= 3 || spent > 1.0) {
-        t->app.cfg.low_bandwidth = true;
-        graphics_set(&t->gfx, GRAPHICS_BRAILLE);
+        t->app.cfg.low_bandwidth = true; /* braille too: follow_graphics */
         t->backlog_frames = 0;
         app_say(&t->app, true, "the terminal is not keeping up: refresh low (the Refresh "
                 "control turns it back)");
     }
+}
+
+/* The charts drawn as the Graphics and Refresh controls say, whatever changed them (a
+ * key, the mouse, a typed value, a lesson, a slow link); a Graphics control asking for
+ * pixels that cannot be says why. */
+static void follow_graphics(struct tui *t)
+{
+    struct app *app = &t->app;
+    bool asked = t->gfx.want != app->cfg.graphics;
+    if (!graphics_follow(&t->gfx, app->cfg.graphics, app->cfg.low_bandwidth))
+        return;
+    if (app->graphics_now != graphics_now(&t->gfx))
+        t->plots_dirty = true;
+    app->graphics_now = graphics_now(&t->gfx);
+    if (asked && t->gfx.said[0])
+        app_say(app, true, "Graphics %s: %s",
+                config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
 }
 
 /* Advances the simulation to follow the wall clock times the playback speed. */
@@ -639,6 +655,7 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         return EXIT_FAILURE;
     }
     graphics_detect(&t.gfx, cfg); /* before curses: the terminal is asked directly */
+    t.app.graphics_now = graphics_now(&t.gfx);
     if (!term_start(cfg->color, cfg->glyphs)) {
         record_abandon(&t.rec);
         app_free(&t.app);
@@ -651,7 +668,8 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         after_teach(&t, false);
     }
     if (t.gfx.said[0])
-        app_say(&t.app, true, "%s", t.gfx.said);
+        app_say(&t.app, true, "--graphics %s: %s",
+                config_options[CFG_GRAPHICS].choice_name((int)cfg->graphics), t.gfx.said);
     if (t.app.message[0] == '\0')
         app_say(&t.app, false, "space starts; ? lists every key");
 
@@ -660,6 +678,7 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
     while (go && !term_quit_signal()) {
         double now = now_s();
         advance(&t, &debt, now - last);
+        follow_graphics(&t);
         last = now;
         if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
             record_time(&t.rec, &t.app);

@@ -4,7 +4,8 @@
 kitty escapes; tests/sixelcheck.c reads those).
 
   screen.py show OUT COLS ROWS [UPTO]
-      the screen, one line a row, as it was after the UPTO-th image (default: the last)
+      the screen, one line a row, as it was after the UPTO-th image (default: the last;
+      "end": after everything written)
   screen.py chart OUT COLS ROWS TITLE [UPTO]
       the chart whose title holds TITLE: "AY AX AW AH" (its drawing area: the first row
       and column, 1-based as a CSI H counts them, and its size in cells), then one line
@@ -20,7 +21,7 @@ def screen(path, cols, rows, upto=None):
     data = open(path, 'rb').read()
     ends = [m.end() for m in re.finditer(rb'\x1bP.*?\x1b\\|\x1b_Ga=T.*?\x1b\\(?!\x1b_Gm)',
                                          data, flags=re.S)]
-    if ends:
+    if ends and upto != 'end':
         data = data[:ends[-1] if upto is None else ends[upto - 1]]
     data = re.sub(rb'\x1bP.*?\x1b\\', b'', data, flags=re.S)
     data = re.sub(rb'\x1b_.*?\x1b\\', b'', data, flags=re.S)
@@ -51,10 +52,12 @@ def chart(lines, title):
 def main():
     cmd, path, cols, rows = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
     if cmd == 'show':
-        upto = int(sys.argv[5]) if len(sys.argv) > 5 else None
+        upto = sys.argv[5] if len(sys.argv) > 5 else None
+        upto = upto if upto in (None, 'end') else int(upto)
         print('\n'.join(screen(path, cols, rows, upto)))
     elif cmd == 'chart':
-        upto = int(sys.argv[6]) if len(sys.argv) > 6 else None
+        upto = sys.argv[6] if len(sys.argv) > 6 else None
+        upto = upto if upto in (None, 'end') else int(upto)
         chart(screen(path, cols, rows, upto), sys.argv[5])
 
 

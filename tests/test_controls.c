@@ -1,0 +1,101 @@
+/* test_controls.c: the Graphics control (issue 18): the arrows go round auto, sixel,
+ * kitty, braille; a typed value is checked as --graphics checks it; the chain is never
+ * touched; its value says what the front end draws with where that is not what it asks
+ * ("auto (sixel)", "sixel: braille"); the plain mode's `set graphics` and `controls`
+ * name it as the panel does. The app under test comes from tests/app_fixture.c. */
+#include "app_fixture.h"
+
+#include <string.h>
+
+#include "app/command.h"
+
+static const char *value(void)
+{
+    static char buf[96];
+    app_control_value(&app, CTL_GRAPHICS, buf, sizeof buf);
+    return buf;
+}
+
+static void arrows_go_round(void **state)
+{
+    (void)state;
+    unsigned version = app.version;
+    double t = sim_time(app.sim);
+    assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_AUTO);
+    assert_string_equal(app_control_label(CTL_GRAPHICS), "Graphics");
+    const enum config_graphics order[] = {CONFIG_GRAPHICS_SIXEL, CONFIG_GRAPHICS_KITTY,
+                                          CONFIG_GRAPHICS_BRAILLE, CONFIG_GRAPHICS_AUTO};
+    for (int i = 0; i < 4; i++) {
+        assert_int_equal(app_adjust(&app, CTL_GRAPHICS, 1, false), APP_CHANGED_PLAYBACK);
+        assert_int_equal(app.cfg.graphics, order[i]);
+    }
+    assert_int_equal(app_adjust(&app, CTL_GRAPHICS, -1, true), APP_CHANGED_PLAYBACK);
+    assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_BRAILLE);
+    assert_int_equal(app_adjust(&app, CTL_GRAPHICS, 0, false), 0);
+    assert_int_equal(app.version, version); /* the chain is as it was */
+    assert_true(sim_time(app.sim) == t);
+}
+
+static void typed_values(void **state)
+{
+    (void)state;
+    assert_int_equal(app_set_text(&app, CTL_GRAPHICS, "kitty"),
+                     APP_CHANGED_PLAYBACK | APP_CHANGED_MESSAGE);
+    assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_KITTY);
+    assert_string_equal(app.message, "Graphics kitty");
+    assert_int_equal(app_set_text(&app, CTL_GRAPHICS, "kitty"), APP_CHANGED_MESSAGE);
+    /* A bad value: refused with what is allowed, nothing changed. */
+    assert_int_equal(app_set_text(&app, CTL_GRAPHICS, "png"), 0);
+    assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_KITTY);
+    assert_true(app.message_is_error);
+    assert_non_null(strstr(app.message, "graphics"));
+    assert_non_null(strstr(app.message, "png"));
+    assert_non_null(strstr(app.message, "braille"));
+}
+
+/* What the value says, for what is asked and what the front end draws with. */
+static void value_says_what_is_drawn(void **state)
+{
+    (void)state;
+    /* The line mode draws no charts (graphics_now AUTO): what is asked alone. */
+    assert_int_equal(app.graphics_now, CONFIG_GRAPHICS_AUTO);
+    assert_string_equal(value(), "auto");
+    app.graphics_now = CONFIG_GRAPHICS_SIXEL;
+    assert_string_equal(value(), "auto (sixel)");
+    app.graphics_now = CONFIG_GRAPHICS_BRAILLE;
+    assert_string_equal(value(), "auto (braille)");
+    app.cfg.graphics = CONFIG_GRAPHICS_SIXEL;
+    assert_string_equal(value(), "sixel: braille");
+    app.graphics_now = CONFIG_GRAPHICS_SIXEL;
+    assert_string_equal(value(), "sixel");
+    app.cfg.graphics = CONFIG_GRAPHICS_BRAILLE;
+    app.graphics_now = CONFIG_GRAPHICS_BRAILLE;
+    assert_string_equal(value(), "braille");
+}
+
+static void plain_mode_names_it(void **state)
+{
+    (void)state;
+    char answer[4096];
+    double seconds;
+    assert_int_equal(command_do(&app, "set graphics braille", answer, sizeof answer, &seconds),
+                     REPLY_OK);
+    assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_BRAILLE);
+    assert_int_equal(command_do(&app, "controls", answer, sizeof answer, &seconds), REPLY_OK);
+    assert_non_null(strstr(answer, "; graphics braille"));
+    assert_int_equal(command_do(&app, "set graphics sepia", answer, sizeof answer, &seconds),
+                     REPLY_ERROR);
+    assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_BRAILLE);
+    assert_int_equal(command_do(&app, "set nosuch 1", answer, sizeof answer, &seconds),
+                     REPLY_ERROR);
+    assert_non_null(strstr(answer, "bandwidth, graphics"));
+}
+
+int main(void)
+{
+#define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
+    const struct CMUnitTest tests[] = {
+        T(arrows_go_round), T(typed_values), T(value_says_what_is_drawn), T(plain_mode_names_it),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
