@@ -10,6 +10,9 @@
 # does not answer, tmux, --graphics braille and --low-bandwidth get braille. The Graphics
 # control switches at run time: to braille the images stop (kitty's are deleted) and the
 # charts are braille again; back, they are sent again; a terminal never asked is asked then.
+# The modes view's shapes are images too, under their cells' text, in the masses' colours.
+# A terminal that says it has fewer than 256 sixel colour registers (XTSMGRAPHICS) gets
+# images of no more colours than that.
 # Ends with "pixels: N passed, M failed".
 NAME=pixels
 . "$(dirname "$0")/lib/check.sh"
@@ -188,5 +191,67 @@ if [ "$(images sixel)" = 0 ] && braille_at end && shown 'Graphics sixel: the ter
     shown '▸Graphics   sixel: braille'; then pass; else
     fail "$cmd: Graphics sixel in a silent terminal: expected braille, 'sixel: braille' and why; $(images sixel) images; end: $($screen show "$tmp/out" 100 30 end | grep -i graphics)"
 fi
+
+# 7. The modes view (m) of three equal masses between fixed ends: each mode's shape is an
+# image placed three rows under its title ("mode K", its first column), no braille under
+# it, the three masses' colours in each; mode 2 has its node at mass 2 (phi = 1, 0, -1):
+# mass 2's disc centred on the image's middle row and masses 1 and 3 mirrored about it in
+# every frame of the swing; in mode 1 masses 1 and 3 move together (the same rows).
+term sixel '~m~~~q' -n 3
+$screen show "$tmp/out" 100 30 end >"$tmp/end"
+if grep '^sixel ' "$tmp/images" | /usr/bin/python3 -c '
+import sys
+screen = open(sys.argv[1]).read().split("\n")
+places, bad, seen = set(), [], False
+for line in sys.stdin:
+    f = line.split()
+    row, col, w, h = (int(v) for v in f[1:5])
+    discs = [tuple(int(v) for v in c.split(":")) for c in f[5:8]]
+    title = screen[row - 4][col - 1:].lstrip("▸> ") if row > 3 else ""
+    if not title.startswith("mode "):
+        if seen:
+            bad.append("an image with no mode title 3 rows above: " + line.strip())
+        continue  # the plots, before m
+    seen = True
+    mode = title.split()[1]
+    places.add((row, col, mode))
+    mid = (h - 1) / 2
+    centre = [(t + b) / 2 for t, b, n in discs]
+    if h % 20 or w % 10 or any(n < 100 for t, b, n in discs):
+        bad.append("size or colours: " + line.strip())
+    elif mode == "2" and (abs(centre[1] - mid) > 1 or abs(centre[0] + centre[2] - 2 * mid) > 1):
+        bad.append("mode 2 not about its node: " + line.strip())
+    elif mode == "1" and abs(centre[0] - centre[2]) > 1:
+        bad.append("mode 1 masses 1 and 3 apart: " + line.strip())
+    area = [r[col - 1:col - 1 + w // 10] for r in screen[row - 1:row - 1 + h // 20]]
+    if any(0x2801 <= ord(c) <= 0x28ff for r in area for c in r):
+        bad.append("braille under the image: " + line.strip())
+modes = sorted(m for r, c, m in places)
+print("; ".join(bad[:3]), modes)
+sys.exit(0 if not bad and modes == ["1", "2", "3"] else 1)
+' "$tmp/end" >"$tmp/modes"; then pass; else
+    fail "$cmd: the modes view's shapes as images: $(cat "$tmp/modes")"
+fi
+
+# 8. Sixel colour registers: three masses running, every image decoded. Without an answer
+# to XTSMGRAPHICS (xterm's 256 colours) the anti-aliased lines take more than 16 colours;
+# a terminal that says 16 or 8 gets images of at most that many, still more than the
+# background and one line.
+# colours_ok MIN MAX: every sixel image holds at most MAX colours, the most coloured at
+# least MIN (and there are some).
+colours_ok() {
+    grep '^sixel ' "$tmp/images" | awk -v lo="$1" -v hi="$2" '
+        { split($NF, c, "="); n++; if (c[2] + 0 > hi + 0) bad++; if (c[2] + 0 > top) top = c[2] + 0 }
+        END { exit !(n >= 2 && !bad && top >= lo + 0) }'
+}
+colours() { grep '^sixel ' "$tmp/images" | sed 's/.*colours=//' | sort -n | uniq | tr '\n' ' '; }
+term sixel ' ~~q' -n 3
+if colours_ok 17 256; then pass; else fail "$cmd: expected images of more than 16 colours; got $(colours)"; fi
+for k in 16 8; do
+    term "sixel/$k" ' ~~q' -n 3
+    if colours_ok 3 "$k"; then pass; else
+        fail "$cmd: $k colour registers: expected images of 3 to $k colours; got $(colours)"
+    fi
+done
 
 summary

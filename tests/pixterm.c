@@ -2,7 +2,8 @@
  * pseudo-terminal of COLS x ROWS cells, answers its queries as a terminal of the kind
  * given would, types keys, and keeps every byte the program wrote in OUT.
  *   sixel  primary device attributes with 4 (sixel), its cell size (CSI 16 t), its
- *          background (OSC 11)
+ *          background (OSC 11); "sixel/N" also says it has N colour registers
+ *          (XTSMGRAPHICS), which plain "sixel" leaves unanswered as many terminals do
  *   kitty  kitty's graphics query answered OK, device attributes without 4, cell size
  *   vt220  device attributes without 4, cell size: a terminal without images
  *   none   answers nothing
@@ -38,8 +39,9 @@ static void answer(int fd, const char *kind, const char *tail, int cw, int ch, i
                    int rows, const char *bg)
 {
     char buf[128];
-    bool none = strcmp(kind, "none") == 0, sixel = strcmp(kind, "sixel") == 0,
+    bool none = strcmp(kind, "none") == 0, sixel = strncmp(kind, "sixel", 5) == 0,
          kitty = strcmp(kind, "kitty") == 0;
+    int registers = strchr(kind, '/') ? atoi(strchr(kind, '/') + 1) : 0;
     if (none)
         return;
     /* In the order asked. */
@@ -56,6 +58,9 @@ static void answer(int fd, const char *kind, const char *tail, int cw, int ch, i
         } else if (strncmp(q, "\033]11;?", 6) == 0) {
             snprintf(buf, sizeof buf, "\033]11;rgb:%.2s%.2s/%.2s%.2s/%.2s%.2s\033\\", bg, bg,
                      bg + 2, bg + 2, bg + 4, bg + 4);
+            say(fd, buf);
+        } else if (strncmp(q, "\033[?1;1;0S", 9) == 0 && registers > 0) {
+            snprintf(buf, sizeof buf, "\033[?1;0;%dS", registers);
             say(fd, buf);
         } else if (strncmp(q, "\033[c", 3) == 0) {
             say(fd, sixel ? "\033[?63;1;2;4;6;9;15;22c" : "\033[?62;1;2;6;9;15;22c");

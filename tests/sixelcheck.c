@@ -3,7 +3,8 @@
  * joined, decoded with GLib). One line an image: "sixel|kitty ROW COL WIDTH HEIGHT",
  * ROW and COL the cell it was placed at (the CSI H before it, 1-based), then for each
  * colour asked " TOP:BOTTOM:COUNT": the first and last pixel row holding that colour
- * (within 8 of each of red, green and blue) and how many pixels do (-1:-1:0: none).
+ * (within 8 of each of red, green and blue) and how many pixels do (-1:-1:0: none); for
+ * sixel, last, " colours=K": how many different colours the decoded image holds.
  * usage: sixelcheck OUT [RRGGBB...] */
 #include <cairo.h>
 #include <glib.h>
@@ -16,8 +17,10 @@
 static int ncolors;
 static unsigned want[16][3];
 
-/* Prints the colour report of an image of w x h pixels, pixel (x, y) given by get. */
-static void report(int w, int h, void (*get)(const void *, int, int, unsigned *), const void *img)
+/* Prints the colour report of an image of w x h pixels, pixel (x, y) given by get, then
+ * distinct (when not negative) as its count of different colours. */
+static void report(int w, int h, void (*get)(const void *, int, int, unsigned *), const void *img,
+                   int distinct)
 {
     for (int c = 0; c < ncolors; c++) {
         int top = -1, bottom = -1;
@@ -36,6 +39,8 @@ static void report(int w, int h, void (*get)(const void *, int, int, unsigned *)
             }
         printf(" %d:%d:%ld", top, bottom, count);
     }
+    if (distinct >= 0)
+        printf(" colours=%d", distinct);
     printf("\n");
 }
 
@@ -49,6 +54,29 @@ static void get_indexed(const void *img, int x, int y, unsigned *p)
     const struct indexed *ix = img;
     const unsigned char *c = ix->palette + 3 * ix->pixels[(size_t)y * ix->w + x];
     p[0] = c[0], p[1] = c[1], p[2] = c[2];
+}
+
+/* How many different colours (RGB) the pixels of an indexed image hold. */
+static int distinct_colours(const struct indexed *ix, int w, int h)
+{
+    static bool used[256];
+    unsigned seen[256];
+    int n = 0;
+    memset(used, 0, sizeof used);
+    for (size_t i = 0; i < (size_t)w * (size_t)h; i++)
+        used[ix->pixels[i]] = true;
+    for (int k = 0; k < 256; k++) {
+        if (!used[k])
+            continue;
+        const unsigned char *c = ix->palette + 3 * k;
+        unsigned rgb = (unsigned)c[0] << 16 | (unsigned)c[1] << 8 | c[2];
+        int j = 0;
+        while (j < n && seen[j] != rgb)
+            j++;
+        if (j == n)
+            seen[n++] = rgb;
+    }
+    return n;
 }
 
 static void get_cairo(const void *img, int x, int y, unsigned *p)
@@ -118,7 +146,7 @@ int main(int argc, char **argv)
                              &ncol, NULL) == SIXEL_OK) {
             printf("sixel %d %d %d %d", row, col, w, h);
             struct indexed ix = {pixels, palette, w};
-            report(w, h, get_indexed, &ix);
+            report(w, h, get_indexed, &ix, distinct_colours(&ix, w, h));
         } else {
             printf("sixel %d %d undecodable\n", row, col);
         }
@@ -150,7 +178,7 @@ int main(int argc, char **argv)
             printf("kitty %d %d %d %d", row, col, cairo_image_surface_get_width(s),
                    cairo_image_surface_get_height(s));
             report(cairo_image_surface_get_width(s), cairo_image_surface_get_height(s), get_cairo,
-                   s);
+                   s, -1);
         } else {
             printf("kitty %d %d undecodable\n", row, col);
         }

@@ -8,7 +8,12 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-enum stroke_kind { STROKE_LINE, STROKE_DASHED, STROKE_DOTS };
+enum stroke_kind {
+    STROKE_LINE,
+    STROKE_DASHED,
+    STROKE_DOTS,
+    STROKE_MARKS, /* a mass's mark at each point: a disc 5 dots across */
+};
 
 /* One stroke: points [start, start + count) of the list, in one colour. */
 struct stroke {

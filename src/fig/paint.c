@@ -23,10 +23,11 @@ void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double c
         fig_rgb(s->color ? s->color : FIG_WALL, dark, c);
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);
         cairo_new_path(cr);
-        if (s->kind == STROKE_DOTS) {
+        if (s->kind == STROKE_DOTS || s->kind == STROKE_MARKS) {
+            double r = s->kind == STROKE_MARKS ? 2.5 * fmin(sx, sy) : 1.2 * lw;
             for (int j = 0; j < s->count; j++) {
                 cairo_new_sub_path(cr);
-                cairo_arc(cr, (p[2 * j] + 0.5) * sx, (p[2 * j + 1] + 0.5) * sy, 1.2 * lw, 0.0,
+                cairo_arc(cr, (p[2 * j] + 0.5) * sx, (p[2 * j + 1] + 0.5) * sy, r, 0.0,
                           2.0 * M_PI);
             }
             cairo_fill(cr);

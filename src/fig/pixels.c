@@ -1,6 +1,7 @@
 /* pixels.c: drawing areas as sixel or PNG images. Sixel uses xterm's 256 colours, which
  * hold every colour of the program exactly, mapped without diffusion: a colour drawn is
- * a colour sent, and the anti-aliased edges take the nearest of the others. */
+ * a colour sent, and the anti-aliased edges take the nearest of the others (in a terminal
+ * with fewer colour registers, libsixel's palette of that many for each image). */
 #include "pixels.h"
 
 #include <cairo.h>
@@ -95,14 +96,25 @@ static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch, bool d
         fig_paint_strokes(cr, c->strokes, cw, ch, dark);
 }
 
-static int encode_sixel(unsigned char *rgb, int w, int h, struct fig_bytes *out)
+static int encode_sixel(unsigned char *rgb, int w, int h, int registers, struct fig_bytes *out)
 {
     /* xterm's 256 colours: the program's colours are among them (its 6x6x6 cube), and
      * libsixel maps onto a built-in palette through its cache, fast enough for every
-     * refresh. */
-    sixel_dither_t *dither = sixel_dither_get(SIXEL_BUILTIN_XTERM256);
+     * refresh. A terminal with fewer registers gets a palette of its size that libsixel
+     * chooses from the image (median cut). */
+    sixel_dither_t *dither = NULL;
+    SIXELSTATUS st = SIXEL_OK;
+    if (registers >= 2 && registers < 256) {
+        st = sixel_dither_new(&dither, registers, NULL);
+        if (SIXEL_SUCCEEDED(st))
+            st = sixel_dither_initialize(dither, rgb, w, h, SIXEL_PIXELFORMAT_RGB888,
+                                         SIXEL_LARGE_AUTO, SIXEL_REP_AUTO, SIXEL_QUALITY_AUTO);
+    } else {
+        dither = sixel_dither_get(SIXEL_BUILTIN_XTERM256);
+    }
     sixel_output_t *output = NULL;
-    SIXELSTATUS st = dither ? sixel_output_new(&output, sixel_write, out, NULL) : SIXEL_BAD_ALLOCATION;
+    if (SIXEL_SUCCEEDED(st))
+        st = dither ? sixel_output_new(&output, sixel_write, out, NULL) : SIXEL_BAD_ALLOCATION;
     if (SIXEL_SUCCEEDED(st)) {
         sixel_dither_set_diffusion_type(dither, SIXEL_DIFFUSE_NONE);
         sixel_dither_set_pixelformat(dither, SIXEL_PIXELFORMAT_RGB888);
@@ -116,7 +128,8 @@ static int encode_sixel(unsigned char *rgb, int w, int h, struct fig_bytes *out)
 }
 
 int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
-               enum fig_encoding e, struct fig_bytes *out, struct fig_bytes *scratch)
+               enum fig_encoding e, int registers, struct fig_bytes *out,
+               struct fig_bytes *scratch)
 {
     int w = c->aw * cw, h = c->ah * ch;
     out->len = 0;
@@ -152,7 +165,7 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
                     p[2] = (unsigned char)row[x];
                 }
             }
-            err = encode_sixel(rgb, w, h, out);
+            err = encode_sixel(rgb, w, h, registers, out);
         }
     }
     cairo_surface_destroy(s);

@@ -1,7 +1,7 @@
 /* pixels.h: a chart's drawing area as an image for the terminal: painted with cairo (the
  * background, gridlines on the ticks, the zero line, the strokes) at the terminal's cell
  * size, then encoded as sixel (libsixel, on xterm's 256 colours, which hold the program's)
- * or as PNG (for kitty's protocol). No curses here:
+ * or fewer where the terminal has fewer colour registers, or as PNG (for kitty's protocol). No curses here:
  * tui/graphics.c sends the bytes. */
 #ifndef SPRINGSIM_PIXELS_H
 #define SPRINGSIM_PIXELS_H
@@ -23,9 +23,12 @@ enum fig_encoding { FIG_SIXEL, FIG_KITTY_PNG };
 /* The image of c's drawing area (aw * cw by ah * ch pixels) on a dark or light background
  * bg (red, green, blue, 0..1), encoded e into out (emptied first): a whole sixel sequence
  * (DCS ... ST), or the PNG file; scratch holds the pixels on their way (kept for the next
- * image). Returns 0 or an errno value. */
+ * image). Sixel on xterm's 256 colours, or, for a terminal with 2 to 255 colour registers,
+ * on a palette of that many that libsixel chooses for the image. Returns 0 or an errno
+ * value. */
 int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
-               enum fig_encoding e, struct fig_bytes *out, struct fig_bytes *scratch);
+               enum fig_encoding e, int registers, struct fig_bytes *out,
+               struct fig_bytes *scratch);
 
 /* The pixel row and column of dot coordinate (x, y) in such an image (the centre of the
  * line drawn through it): ((x + 0.5) cw / 2, (y + 0.5) ch / 4). */

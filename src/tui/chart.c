@@ -19,6 +19,11 @@ void chart_use_pixels(bool on)
     pixels = on;
 }
 
+bool chart_pixels(void)
+{
+    return pixels;
+}
+
 bool chart_place(struct chart *c, struct rect frame, int header_rows)
 {
     struct rect a = layout_drawing(frame);

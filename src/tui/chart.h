@@ -53,6 +53,9 @@ bool chart_place(struct chart *c, struct rect frame, int header_rows);
  * area blank (no braille, no gridline dots) for the image to show. */
 void chart_use_pixels(bool on);
 
+/* Whether they are (what is drawn around a canvas of its own leaves it blank too). */
+bool chart_pixels(void);
+
 /* Frees the canvas. */
 void chart_free(struct chart *c);
 

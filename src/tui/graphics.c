@@ -25,6 +25,7 @@ static const char queries[] = "\033_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\033\\" /* ki
                               "\033[16t"                                   /* cell size */
                               "\033[14t"                                   /* text area */
                               "\033]11;?\033\\"                            /* background */
+                              "\033[?1;1;0S"      /* XTSMGRAPHICS: sixel's colour registers */
                               "\033[c";                                    /* DA1 */
 
 const char *graphics_name(enum graphics_mode mode)
@@ -46,6 +47,7 @@ struct answers {
     int area_w, area_h;  /* CSI 14 t */
     bool bg;
     double rgb[3];
+    int registers;       /* XTSMGRAPHICS: sixel's colour registers (0: not said) */
 };
 
 /* The numbers of a CSI answer "ESC [ ? a ; b ; ... F" at p (F its final byte). */
@@ -92,6 +94,8 @@ static void parse(const char *buf, struct answers *a)
                 a->cell_h = v[1], a->cell_w = v[2];
             } else if (final == 't' && n == 3 && v[0] == 4) {
                 a->area_h = v[1], a->area_w = v[2];
+            } else if (final == 'S' && p[2] == '?' && n == 3 && v[0] == 1 && v[1] == 0) {
+                a->registers = v[2];
             }
         } else if (p[1] == '_' && p[2] == 'G') {
             const char *semi = strchr(p, ';');
@@ -171,6 +175,7 @@ static void query(struct graphics *g)
         memcpy(g->bg, a.rgb, sizeof g->bg);
         g->dark = 0.2126 * a.rgb[0] + 0.7152 * a.rgb[1] + 0.0722 * a.rgb[2] < 0.5;
     }
+    g->registers = a.registers;
     g->sized = g->cw >= 2 && g->ch >= 4 && g->cw <= 200 && g->ch <= 400;
     g->can = !g->sized ? GRAPHICS_BRAILLE
              : a.kitty ? GRAPHICS_KITTY
@@ -345,7 +350,7 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         if (i < g->n && g->hash[i] == h && memcmp(&g->at[i], &r, sizeof r) == 0)
             continue;
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
-        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, &g->img, &g->rgb) != 0)
+        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, g->registers, &g->img, &g->rgb) != 0)
             continue;
         char pos[32];
         int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);

@@ -1,7 +1,7 @@
 /* graphics.h: the charts' drawing areas as images in terminals that show them: the
  * terminal asked once at start (before curses) what it can do (primary device attributes:
  * 4 is sixel; kitty's graphics query), its cell size in pixels (TIOCGWINSZ, CSI 16 t, CSI
- * 14 t) and its background (OSC 11); each chart's image sent at its drawing area's cell
+ * 14 t), its background (OSC 11) and sixel's colour registers (XTSMGRAPHICS); each chart's image sent at its drawing area's cell
  * only when its content changed, never over an overlay, again after a resize, Ctrl+L or
  * an overlay closing. Braille otherwise: inside tmux or screen, with low bandwidth, in a
  * terminal that does not answer. */
@@ -16,7 +16,7 @@
 #include "chart.h"
 
 #define GRAPHICS_TIMEOUT_MS 100 /* how long the terminal has to answer at start */
-#define GRAPHICS_SLOTS 8        /* charts shown at once, at most */
+#define GRAPHICS_SLOTS 12       /* images shown at once, at most (the modes view's ten) */
 /* The images' pace: a batch of P pixels and B bytes is followed by none for P / PIXELS_S or
  * B / BYTES_S seconds, the longer (so a large terminal refreshes its images less often,
  * as the braille plots do, and the link and the CPU are spared). */
@@ -37,6 +37,8 @@ struct graphics {
     enum config_graphics want; /* what graphics_follow last followed (-1: nothing yet) */
     bool low;                  /* ... and the low refresh then */
     int cw, ch;                /* a cell in pixels (0: not known) */
+    int registers;             /* sixel's colour registers, as the terminal said (XTSMGRAPHICS;
+                                * 0: not said) */
     bool dark;                 /* the background is dark */
     double bg[3];              /* the background (0..1) */
     bool overlay;              /* an overlay was open at the last frame */

@@ -90,12 +90,16 @@ static void relayout(struct tui *t)
     t->plots_dirty = true;
 }
 
-/* The charts on the screen (the plots, or the analysis view's): into out, how many. */
-static int shown_charts(struct tui *t, struct chart **out)
+/* The charts on the screen (the plots, or the analysis view's): into out (room for
+ * GRAPHICS_SLOTS), how many; with images, the modes view's shapes too, which are drawn
+ * as charts' areas are but are not charts in a picture of the view (X). */
+static int shown_charts(struct tui *t, struct chart **out, bool images)
 {
     int n = 0;
     if (t->layout.too_small)
         return 0;
+    if (images && t->views.shown == VIEW_MODES)
+        return modes_view_cells(&t->views.modes, out, GRAPHICS_SLOTS);
     if (t->views.shown != VIEW_PLOTS)
         return views_charts(&t->views, out, PLOT_COUNT);
     for (int k = 0; k < t->layout.nplots && n < PLOT_COUNT; k++)
@@ -135,8 +139,9 @@ static double draw(struct tui *t, bool refresh)
     wnoutrefresh(stdscr);
     double start = now_s();
     doupdate();
-    struct chart *charts[PLOT_COUNT];
-    graphics_frame(&t->gfx, charts, shown_charts(t, charts), t->overlay.kind != OVERLAY_NONE);
+    struct chart *charts[GRAPHICS_SLOTS];
+    graphics_frame(&t->gfx, charts, shown_charts(t, charts, true),
+                   t->overlay.kind != OVERLAY_NONE);
     return now_s() - start;
 }
 
@@ -206,9 +211,9 @@ static unsigned cursor_action(struct tui *t, enum action a)
 /* X: the charts on the screen (the plots, or the analysis view's) as SVG and PNG. */
 static void save_view(struct tui *t)
 {
-    struct chart *charts[PLOT_COUNT];
-    struct fig_chart pics[PLOT_COUNT];
-    int n = shown_charts(t, charts);
+    struct chart *charts[GRAPHICS_SLOTS];
+    struct fig_chart pics[GRAPHICS_SLOTS];
+    int n = shown_charts(t, charts, false);
     for (int i = 0; i < n; i++)
         chart_picture(charts[i], &pics[i]);
     if (t->layout.too_small)

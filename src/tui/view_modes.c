@@ -7,6 +7,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "../app/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
 #include "term.h"
@@ -26,8 +27,8 @@ bool modes_view_place(struct modes_view *v, struct rect area)
 {
     chart_free(&v->chart);
     v->chart.frame = area;
-    canvas_free(v->canvas);
-    v->canvas = NULL;
+    for (int j = 0; j < APP_MAX_MASSES; j++)
+        v->cell[j].drawn = false;
     if (v->clock0 == 0.0)
         v->clock0 = wall_s();
     return true;
@@ -36,8 +37,17 @@ bool modes_view_place(struct modes_view *v, struct rect area)
 void modes_view_free(struct modes_view *v)
 {
     chart_free(&v->chart);
-    canvas_free(v->canvas);
-    v->canvas = NULL;
+    for (int j = 0; j < APP_MAX_MASSES; j++)
+        chart_free(&v->cell[j]);
+}
+
+int modes_view_cells(struct modes_view *v, struct chart **out, int max)
+{
+    int k = 0;
+    for (int j = 0; j < APP_MAX_MASSES && k < max; j++)
+        if (v->cell[j].drawn)
+            out[k++] = &v->cell[j];
+    return k;
 }
 
 /* The factor every mode is slowed by so the fastest swings at most MODES_VIEW_FASTEST
@@ -126,45 +136,69 @@ static void draw_bar(const struct modes_view *v, int j, int y, int x, int w)
     draw_text_attr(y, x + 2 + cells, (int)strlen(pct), A_BOLD, pct);
 }
 
-/* Mode j's shape at this instant of the animation, in the rows of r below the text. */
+/* Mode j's shape at this instant of the animation, in the rows of r below the text: in
+ * braille, and kept as strokes at full precision for an image (the middle line, the chain
+ * through the masses, a disc at each mass), its canvas left off the screen then. */
 static void draw_shape(struct modes_view *v, const struct app *app, int j, struct rect r)
 {
     const struct model *m = app->model;
     int n = m->n, dw = r.w - 2, dh = r.h - CELL_TEXT_ROWS;
+    struct chart *cell = &v->cell[j];
+    cell->drawn = false;
     if (dh < 1 || dw < 4)
         return;
-    if (!v->canvas || v->canvas->cols != dw || v->canvas->rows != dh) {
-        canvas_free(v->canvas);
-        v->canvas = canvas_new(dw, dh);
-        if (!v->canvas)
+    if (!cell->canvas || cell->canvas->cols != dw || cell->canvas->rows != dh) {
+        chart_free(cell);
+        cell->canvas = canvas_new(dw, dh);
+        if (!cell->canvas)
             return;
+        canvas_keep_strokes(cell->canvas);
     }
-    struct canvas *c = v->canvas;
+    struct canvas *c = cell->canvas;
+    int top = r.y + CELL_TEXT_ROWS;
+    cell->frame = cell->area = (struct rect){top, r.x + 1, dh, dw};
     canvas_clear(c);
     const double *phi = app->shapes + (size_t)j * n;
     double swing = cos(2.0 * M_PI * app->modes[j] * v->shown_t);
     int H = 4 * dh, W = 2 * dw, mark = dh >= 2 ? 2 : 1;
     double mid = 0.5 * (H - 1), amp = 0.5 * (H - 1) - mark;
-    int top = r.y + CELL_TEXT_ROWS;
+    /* The joints, wall to wall (or to the free end), unrounded. */
+    double x[APP_MAX_MASSES + 2], y[APP_MAX_MASSES + 2];
+    int joints = m->boundary == BOUNDARY_FREE ? n + 1 : n + 2;
+    x[0] = 0.0, y[0] = mid;
+    for (int i = 1; i < joints; i++) {
+        x[i] = i <= n ? (double)i * (W - 1) / (n + 1) : W - 1;
+        y[i] = mid - amp * swing * (i <= n ? phi[i - 1] : 0.0);
+    }
+    struct strokes *k = c->strokes;
+    if (k) {
+        strokes_begin(k, PAIR_GRID, STROKE_LINE);
+        strokes_point(k, 0.0, mid);
+        strokes_point(k, W - 1, mid);
+        strokes_begin(k, 0, STROKE_LINE);
+        for (int i = 0; i < joints; i++)
+            strokes_point(k, x[i], y[i]);
+        for (int i = 0; i < n; i++) {
+            strokes_begin(k, (uint8_t)(PAIR_MASS + i % 10), STROKE_MARKS);
+            strokes_point(k, x[i + 1], y[i + 1]);
+        }
+    }
+    c->mute++; /* the strokes are kept above, unrounded */
+    for (int i = 1; i < joints; i++)
+        canvas_line(c, (int)lround(x[i - 1]), (int)lround(y[i - 1]), (int)lround(x[i]),
+                    (int)lround(y[i]), 0);
+    for (int i = 1; i <= n; i++)
+        for (int dx = -mark; dx <= mark; dx++)
+            for (int dy = -mark; dy <= mark; dy++)
+                canvas_set(c, (int)lround(x[i]) + dx, (int)lround(y[i]) + dy,
+                           (uint8_t)(PAIR_MASS + (i - 1) % 10));
+    c->mute--;
+    cell->drawn = true;
+    if (chart_pixels())
+        return; /* the image shows it */
     attron(term_attr(PAIR_GRID));
     mvhline(top + (int)lround(mid) / 4, r.x + 1, term_utf8() ? ACS_HLINE : '-', dw);
     attroff(term_attr(PAIR_GRID));
-    int x0 = 0, y0 = (int)lround(mid);
-    for (int i = 0; i <= n; i++) {
-        if (i == n && m->boundary == BOUNDARY_FREE)
-            break;
-        int x = i < n ? (int)lround((double)(i + 1) * (W - 1) / (n + 1)) : W - 1;
-        int y = (int)lround(mid - amp * swing * (i < n ? phi[i] : 0.0));
-        canvas_line(c, x0, y0, x, y, 0);
-        x0 = x, y0 = y;
-    }
-    for (int i = 0; i < n; i++) {
-        int x = (int)lround((double)(i + 1) * (W - 1) / (n + 1));
-        int y = (int)lround(mid - amp * swing * phi[i]);
-        for (int dx = -mark; dx <= mark; dx++)
-            for (int dy = -mark; dy <= mark; dy++)
-                canvas_set(c, x + dx, y + dy, (uint8_t)(PAIR_MASS + i % 10));
-    }
     draw_canvas(c, top, r.x + 1);
 }
 
@@ -236,6 +270,8 @@ void modes_view_draw(struct modes_view *v, const struct app *app, int selected, 
     }
     if (refresh || v->shown_t == 0.0)
         take_now(v, app);
+    for (int j = 0; j < APP_MAX_MASSES; j++)
+        v->cell[j].drawn = false; /* until drawn below */
     /* The grid that gives each shape the most room, cells wide enough for the numbers. */
     int best_cols = 1;
     double best = -1.0;

@@ -17,7 +17,8 @@
 
 struct modes_view {
     struct chart chart;       /* the frame (no axes) */
-    struct canvas *canvas;    /* one cell's drawing, reused for every mode */
+    struct chart cell[APP_MAX_MASSES]; /* each mode's shape: its area, canvas and strokes
+                                        * (as an image where the charts are pixels) */
     double clock0;            /* wall time the animation counts from (s) */
     double shown_t;           /* the animation's time in the frame on screen (s, slowed) */
     double share[APP_MAX_MASSES]; /* each mode's share of the energy, as last refreshed */
@@ -29,6 +30,10 @@ bool modes_view_place(struct modes_view *v, struct rect area);
 
 /* Frees what it holds. */
 void modes_view_free(struct modes_view *v);
+
+/* The modes' shapes as last drawn, as charts without axes for images (tui/graphics.c):
+ * into out, at most max; how many. */
+int modes_view_cells(struct modes_view *v, struct chart **out, int max);
 
 /* Draws it; with refresh, the animation moves on and the energies are taken anew.
  * selected is the mode Enter would start (-1: none). */
