@@ -59,7 +59,7 @@ COMPLETIONS = $(BUILD)/completions/springsim.bash $(BUILD)/completions/_springsi
               $(BUILD)/completions/springsim.fish
 
 .PHONY: all run check check-long sanitize valgrind bench fuzz install uninstall clean deps deps-test \
-        completions deb FORCE
+        completions docs deb FORCE
 
 all: $(BIN) completions
 
@@ -139,6 +139,16 @@ $(BUILD)/mk/completions: mk/completions.c $(CORE_LIB)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc $(LDFLAGS) -o $@ $< \
 	    $(CORE_LIB) $(CORE_LIBS)
 
+# The README's and the man page's generated sections (keys, options, presets, the Debian
+# packages) from the program's tables; tests/docs.sh fails in make check when one is stale.
+$(BUILD)/mk/docgen: mk/docgen.c $(CORE_LIB)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc $(LDFLAGS) -o $@ $< \
+	    $(CORE_LIB) $(CORE_LIBS)
+
+docs: $(BIN) $(BUILD)/mk/docgen
+	sh mk/docs.sh ./$(BIN) $(BUILD)/mk/docgen
+
 $(BUILD)/completions/springsim.bash: SHELL_NAME = bash
 $(BUILD)/completions/_springsim: SHELL_NAME = zsh
 $(BUILD)/completions/springsim.fish: SHELL_NAME = fish
@@ -204,10 +214,10 @@ $(BUILD)/tests/sixelcheck: tests/sixelcheck.c | $(BUILD)/.deps-build
 # tests/deb.sh builds the Debian package (make deb) unless DEB_CHECK=no.
 DEB_CHECK ?= yes
 check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm $(BUILD)/tests/pixterm $(BUILD)/tests/sixelcheck \
-    completions | $(BUILD)/.deps-test
+    completions $(BUILD)/mk/docgen | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm PIXTERM=$(BUILD)/tests/pixterm \
 	    SIXELCHECK=$(BUILD)/tests/sixelcheck COMPLETIONS=$(BUILD)/completions \
-	    BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) sh tests/run.sh $(TEST_BIN)
+	    DOCGEN=$(BUILD)/mk/docgen BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
