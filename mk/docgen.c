@@ -8,7 +8,9 @@
  *     docgen man-option NAME    the head of one option's man page entry (.TP, the
  *                               spelling, what it does with its range and default, and
  *                               the preset section it can also be given in)
+ *     docgen man-preset-keys    each preset section with its keys, in the table's order
  */
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -104,6 +106,32 @@ static void man_option(FILE *out, int k)
     }
 }
 
+/* Each section the rows name, in the order they first name it, with its keys. */
+static void man_preset_keys(FILE *out)
+{
+    for (int k = 0; k < CFG_KEY_COUNT; k++) {
+        const char *sec = config_options[k].section;
+        bool first = sec != NULL;
+        for (int j = 0; j < k && first; j++)
+            if (config_options[j].section && strcmp(config_options[j].section, sec) == 0)
+                first = false;
+        if (!first)
+            continue;
+        fprintf(out, ".TP\n.B [%s]\n", sec);
+        int last = k;
+        for (int j = k; j < CFG_KEY_COUNT; j++)
+            if (config_options[j].section && strcmp(config_options[j].section, sec) == 0)
+                last = j;
+        for (int j = k; j <= last; j++) {
+            if (!config_options[j].section || strcmp(config_options[j].section, sec) != 0)
+                continue;
+            fputs(j == last ? ".B " : ".BR ", out);
+            roff(out, config_options[j].name);
+            fputs(j == last ? "\n" : " ,\n", out);
+        }
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "names") == 0) {
@@ -111,6 +139,8 @@ int main(int argc, char **argv)
             printf("%s\n", config_options[k].name);
     } else if (argc == 2 && strcmp(argv[1], "md-options") == 0) {
         md_options(stdout);
+    } else if (argc == 2 && strcmp(argv[1], "man-preset-keys") == 0) {
+        man_preset_keys(stdout);
     } else if (argc == 3 && strcmp(argv[1], "man-option") == 0) {
         int k = config_find(argv[2]);
         if (k < 0) {
@@ -119,7 +149,7 @@ int main(int argc, char **argv)
         }
         man_option(stdout, k);
     } else {
-        fputs("usage: docgen names | md-options | man-option NAME\n", stderr);
+        fputs("usage: docgen names | md-options | man-preset-keys | man-option NAME\n", stderr);
         return 2;
     }
     return fflush(stdout) == 0 && !ferror(stdout) ? 0 : 1;

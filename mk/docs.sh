@@ -5,7 +5,8 @@
 #
 #   keys     the key table (`BINARY --keys`, src/tui/input.c): README and man KEYS
 #   options  the option table (DOCGEN, a build tool linked with src/core/config.c):
-#            README's table and each man page entry's first lines
+#            README's table, each man page entry's first lines, and the man page's
+#            list of each preset section's keys
 #   presets  the built-in presets (`BINARY --list-presets` over presets/*.ini, and
 #            `--modes` for their natural frequencies): README and man
 #   deps     the Debian packages of mk/deps.sh's build and test groups: README set-up
@@ -135,6 +136,8 @@ update "$readme" md presets "$tmp/md-presets"
 update "$readme" md deps "$tmp/md-deps"
 update "$man" roff keys "$tmp/man-keys"
 update "$man" roff presets "$tmp/man-presets"
+"$docgen" man-preset-keys >"$tmp/man-preset-keys" || exit 1
+update "$man" roff preset-keys "$tmp/man-preset-keys"
 
 # The man page's OPTIONS: each option's entry begins with a generated head (its
 # spelling, what it does, its range and default), in the table's order; what follows
