@@ -131,4 +131,12 @@ for g in build test; do
     fi
 done
 
+# 6. docs/design.md says what every source file owns: each src/ file is named there.
+missing=
+for f in src/*.c src/*/*.c; do
+    b=$(basename "$f" .c)
+    grep -qE "\`$b(\.c)?\`|$b\.c" docs/design.md || missing="$missing $f"
+done
+if [ -z "$missing" ]; then pass; else fail "docs/design.md does not name:$missing"; fi
+
 summary
