@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "contact_reference.h"
+#include "core/config.h"
 #include "core/model.h"
 #include "core/sim.h"
 #include "core/summary.h"
@@ -167,6 +168,17 @@ static void settings_as_the_command_line_spells_them(void **state)
         assert_string_equal(t.head[i], want[i][0]);
         assert_string_equal(t.row[i], want[i][1]);
     }
+    /* Each is a setting of the table, its value one the option takes back. */
+    static struct config c;
+    config_init(&c);
+    for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
+        char err[256];
+        int key = config_find(t.head[i]);
+        assert_true(key >= 0 && config_options[key].section);
+        if (config_set(&c, key, t.row[i], err, sizeof err) != 0)
+            fail_msg("--%s %s: %s", t.head[i], t.row[i], err);
+    }
+    assert_true(c.masses == 2 && c.mass.count == 2 && c.mass.v[1] == 2.5 && c.dt == 0.005);
     free(t.text);
     summary_free(sum);
     sim_free(s);

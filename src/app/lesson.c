@@ -7,11 +7,13 @@
 #include <ctype.h>
 #include <dirent.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "../core/lines.h"
 #include "../core/search.h"
 #include "command.h"
 
@@ -182,26 +184,25 @@ static int read_line(struct reader *r, char *s)
 
 /* A setup block, from the line after `setup` to its `end`: the preset text, with as many
  * newlines before it as lines before the block, so that its errors name the file's line. */
-static int read_setup(struct reader *r, char **s, char *end)
+static int read_setup(struct reader *r, struct lines *in)
 {
     int first = r->line;
-    size_t cap = (size_t)(end - *s) + (size_t)first + 2;
+    size_t cap = (size_t)(in->end - in->s) + (size_t)first + 2;
     char *text = malloc(cap), *o = text;
     if (!text)
         return 1;
     memset(o, '\n', (size_t)first);
     o += first;
-    while (*s < end) {
-        char *nl = memchr(*s, '\n', (size_t)(end - *s));
-        char *eol = nl ? nl : end;
-        r->line++;
-        const char *w = *s + strspn(*s, " \t");
+    const char *s, *eol;
+    /* Every line as it is: the preset's own reading says what is wrong with one. */
+    while (lines_next(in, SIZE_MAX, &s, &eol) != LINES_END) {
+        r->line = in->line;
+        const char *w = s + strspn(s, " \t");
         size_t n = (size_t)(eol - w);
         while (n && (w[n - 1] == ' ' || w[n - 1] == '\t' || w[n - 1] == '\r'))
             n--;
         if (n == 3 && strncmp(w, "end", 3) == 0) {
             *o = '\0';
-            *s = nl ? nl + 1 : end;
             struct lesson_item *it = add(r, LESSON_SETUP, text);
             if (it)
                 it->line = first;
@@ -209,10 +210,9 @@ static int read_setup(struct reader *r, char **s, char *end)
             r->commands++;
             return it ? 0 : 1;
         }
-        memcpy(o, *s, (size_t)(eol - *s));
-        o += eol - *s;
+        memcpy(o, s, (size_t)(eol - s));
+        o += eol - s;
         *o++ = '\n';
-        *s = nl ? nl + 1 : end;
     }
     free(text);
     r->line = first;
@@ -253,24 +253,25 @@ int lesson_read(const char *path, struct lesson *l, char *err, size_t errlen)
     if (st)
         return st;
     struct reader r = {.l = l, .path = path, .err = err, .errlen = errlen, .ask = -1};
-    char *s = text, *end = text + size;
-    while (s < end && !st) {
-        char *nl = memchr(s, '\n', (size_t)(end - s));
-        char *eol = nl ? nl : end;
-        r.line++;
-        if (memchr(s, '\0', (size_t)(eol - s))) {
+    struct lines in = lines_of(text, size);
+    const char *from, *to;
+    enum lines_status got;
+    while (!st && (got = lines_next(&in, LESSON_MAX_LINE, &from, &to)) != LINES_END) {
+        r.line = in.line;
+        if (got == LINES_NUL) {
             st = bad(&r, "contains a NUL byte (a lesson is text)");
             break;
         }
-        if (eol - s > LESSON_MAX_LINE) {
+        if (got == LINES_LONG) {
             st = bad(&r, "line is longer than %d characters", LESSON_MAX_LINE);
             break;
         }
-        if (eol > s && eol[-1] == '\r')
+        /* The text is the reader's own copy: each line is cut out of it in place. */
+        char *line = text + (from - text), *eol = text + (to - text);
+        if (eol > line && eol[-1] == '\r')
             eol[-1] = '\0';
         *eol = '\0';
-        char *w = s + strspn(s, " \t");
-        s = nl ? nl + 1 : end;
+        char *w = line + strspn(line, " \t");
         if (strcmp(w, "setup") == 0 || strncmp(w, "setup ", 6) == 0 ||
             strncmp(w, "setup\t", 6) == 0) {
             st = close_ask(&r);
@@ -278,7 +279,7 @@ int lesson_read(const char *path, struct lesson *l, char *err, size_t errlen)
                 st = bad(&r, "setup takes nothing on its line (the preset's lines follow, "
                          "then 'end')");
             if (!st)
-                st = read_setup(&r, &s, end);
+                st = read_setup(&r, &in);
             continue;
         }
         st = read_line(&r, w);

@@ -123,6 +123,7 @@ struct config_option {
     int choices;         /* choices: how many */
     const char *expect;  /* text keys: what is expected */
     size_t offset;       /* where the value lives in struct config */
+    bool saved;          /* a saved preset writes it (preset_write), where in force */
 };
 
 /* The settings, indexed by enum config_key. */
@@ -247,6 +248,28 @@ int config_find(const char *name);
 
 /* The shortest text that reads back (strtod) as exactly v. */
 void config_format_exact(double v, char *buf, size_t len);
+
+/* A setting's value as config_get reads it: numbers (a list's one per element, or one),
+ * or, where count is 0, text (a choice's name, true or false, a whole number, the seed,
+ * start-mode's K:AMP, a file name). */
+struct config_value {
+    int count;        /* numbers in v; 0: the value is str */
+    const double *v;  /* the numbers: the model's or the config's, or one */
+    double one;       /* where a single number is kept */
+    const char *str;  /* the text: text, or a text setting's own string */
+    char text[48];
+};
+
+/* key's value in force: from model m where the model holds it (N, its lists with one
+ * value per element, the right end, the drive, collisions), else from c (a list c never
+ * set: its default, once). m may be NULL. The value lives in out, c or m. */
+void config_get(int key, const struct config *c, const struct model *m,
+                struct config_value *out);
+
+/* Whether key is in force in c: of the initial conditions, start-mode when c starts
+ * along a mode, else random and seed when positions are random, else x0 and v0; every
+ * other key always. */
+bool config_in_force(int key, const struct config *c);
 
 /* Writes c's settings (every row with a preset section, in the table's order) as command
  * line options, each preceded by a space: " --masses 2 --mass 1 ... --seed 7". Read back

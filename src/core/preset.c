@@ -15,6 +15,7 @@
 
 #include <ini.h>
 
+#include "lines.h"
 #include "search.h"
 
 #ifndef PRESETDIR
@@ -104,22 +105,22 @@ static int prescan(struct parse *p, const char *text, size_t size)
     char seen[64][64];
     int seen_line[64], nseen = 0;
     char key[64];
-    int have_key = 0, line = 0;
-    const char *s = text, *end = text + size;
+    int have_key = 0, line;
+    struct lines r = lines_of(text, size);
+    const char *s, *eol;
+    enum lines_status st;
 
     /* A BOM counts towards the first line's length (inih reads it as part of the line)
      * but not towards what the line says. */
-    int bom = size >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
-    while (s < end) {
-        const char *nl = memchr(s, '\n', (size_t)(end - s));
-        const char *eol = nl ? nl : end;
-        line++;
-        if (memchr(s, '\0', (size_t)(eol - s))) {
+    int bom = size >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
+    while ((st = lines_next(&r, PRESET_MAX_LINE, &s, &eol)) != LINES_END) {
+        line = r.line;
+        if (st == LINES_NUL) {
             snprintf(p->msg, sizeof p->msg, "contains a NUL byte (a preset is text)");
             return line;
         }
         const char *start = skip_blank(line == 1 ? s + bom : s, eol);
-        if (eol - s > PRESET_MAX_LINE) {
+        if (st == LINES_LONG) {
             too_long(p, start, eol, have_key && start > s ? key : NULL);
             return line;
         }
@@ -175,7 +176,6 @@ static int prescan(struct parse *p, const char *text, size_t size)
             p->cont[p->nlines] = 0;
             p->lines[p->nlines++] = line;
         }
-        s = nl ? nl + 1 : end;
     }
     return 0;
 }

@@ -1,9 +1,12 @@
 /* summary.c: the one-row summary of a headless run (--summary): peaks, rms and contacts
- * gathered step by step, then written as one CSV row after the settings that made it. */
+ * gathered step by step, then written as one CSV row after the settings that made it,
+ * each named and read through its row of the settings table. */
 #include "summary.h"
 
 #include <math.h>
 #include <stdlib.h>
+
+#include "config.h"
 
 struct summary {
     int n;          /* masses */
@@ -51,24 +54,31 @@ void summary_add(struct summary *s, const struct sim *sim, double step, double t
         s->contacts += sim_last_contacts(sim) - sim_last_capped(sim);
 }
 
+/* The settings a study varies, in the order of the columns. */
+static const enum config_key columns[] = {CFG_MASSES,   CFG_MASS,      CFG_SPRING,
+                                          CFG_DAMPING,  CFG_FREQUENCY, CFG_AMPLITUDE,
+                                          CFG_WAVE,     CFG_DT,        CFG_INTEGRATOR};
+#define NCOLUMNS (int)(sizeof columns / sizeof *columns)
+
 void summary_header(FILE *fp, int n)
 {
     static const char *const groups[] = {"max_abs_x", "rms_x", "max_abs_v"};
-    fputs("masses,mass,spring,damping,frequency,amplitude,wave,dt,integrator", fp);
+    for (int k = 0; k < NCOLUMNS; k++)
+        fprintf(fp, k ? ",%s" : "%s", config_options[columns[k]].name);
     for (int g = 0; g < 3; g++)
         for (int i = 1; i <= n; i++)
             fprintf(fp, ",%s%d", groups[g], i);
     fputs(",contacts,dissipated,motor_work\n", fp);
 }
 
-/* A list as --mass takes it: one value when all are equal, else all of them in quotes
- * (CSV's way of keeping the commas inside one field). */
-static void write_list(FILE *fp, const double *v, int n)
+/* A list as --mass takes it, after sep: one value when all are equal, else all of them
+ * in quotes (CSV's way of keeping the commas inside one field). */
+static void write_list(FILE *fp, const char *sep, const double *v, int n)
 {
     int same = 1;
     for (int i = 1; i < n; i++)
         same &= v[i] == v[0];
-    fputs(same ? "," : ",\"", fp);
+    fprintf(fp, same ? "%s" : "%s\"", sep);
     for (int i = 0; i < (same ? 1 : n); i++)
         fprintf(fp, i ? ",%.12g" : "%.12g", v[i]);
     if (!same)
@@ -77,15 +87,21 @@ static void write_list(FILE *fp, const double *v, int n)
 
 void summary_row(FILE *fp, const struct summary *s, const struct sim *sim)
 {
-    const struct model *m = sim_model(sim);
+    /* The settings as the sim ran them: its model's, and its step and integrator. */
+    static struct config ran;
+    config_init(&ran);
+    ran.dt = sim_dt(sim);
+    ran.integrator = sim_integrator(sim);
     struct energy e;
     sim_energy(sim, &e);
-    fprintf(fp, "%d", m->n);
-    write_list(fp, m->m, m->n);
-    write_list(fp, m->k, m->n + 1);
-    write_list(fp, m->c, m->n);
-    fprintf(fp, ",%.12g,%.12g,%s,%.12g,%s", m->motor.frequency, m->motor.amplitude,
-            motor_wave_name(m->motor.wave), sim_dt(sim), integrator_name(sim_integrator(sim)));
+    for (int k = 0; k < NCOLUMNS; k++) {
+        struct config_value v;
+        config_get(columns[k], &ran, sim_model(sim), &v);
+        if (v.count)
+            write_list(fp, k ? "," : "", v.v, v.count);
+        else
+            fprintf(fp, "%s%s", k ? "," : "", v.str);
+    }
     for (int i = 0; i < s->n; i++)
         fprintf(fp, ",%.12g", s->max_x[i]);
     for (int i = 0; i < s->n; i++)
