@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "app/change.h"
+#include "app/ghost.h"
 #include "core/preset.h"
 
 /* One value for every element of a list. */
@@ -515,6 +516,33 @@ static void back_across_retune(void **state)
                 2 * M_PI * 2.0 * app.model->motor.amplitude * 0.01 + 1e-9);
 }
 
+/* The parameters have one owner, the sim: app.model is a pointer to them through every
+ * kind of change (in place, a rebuild, a preset, a step back across a retune that moved
+ * the drive's phase, a reset), so no copy can lag behind it; the ghost's likewise. */
+static void parameters_have_one_owner(void **state)
+{
+    (void)state;
+    assert_ptr_equal(app.model, sim_model(app.sim));
+    run(30);
+    assert_true(app_set_text(&app, CTL_FREQUENCY, "1.7"));
+    run(30);
+    assert_ptr_equal(app.model, sim_model(app.sim));
+    for (int i = 0; i < 40; i++)
+        assert_true(app_back(&app));
+    assert_ptr_equal(app.model, sim_model(app.sim));
+    assert_true(app.model->motor.frequency == 1.7); /* the drive in force, re-anchored */
+    assert_true(app_toggle_ghost(&app) & APP_CHANGED_GHOST);
+    assert_ptr_equal(app.ghost->model, sim_model(app.ghost->sim));
+    app_reset(&app);
+    assert_ptr_equal(app.model, sim_model(app.sim));
+    assert_true(app.model->motor.phase == 0.0 && app.ghost->model->motor.phase == 0.0);
+    new_n();
+    assert_ptr_equal(app.model, sim_model(app.sim));
+    assert_int_equal(app.model->n, 5);
+    preset();
+    assert_ptr_equal(app.model, sim_model(app.sim));
+}
+
 /* Stepping back across a change of dt takes the dt of the state, by the change path. */
 static void back_across_dt(void **state)
 {
@@ -639,6 +667,7 @@ int main(void)
         T(branch_from_history),
         T(back_across_retune),
         T(back_across_dt),
+        T(parameters_have_one_owner),
         T(integrator_and_limits),
         T(cap_is_reported),
         T(extremes_shown),

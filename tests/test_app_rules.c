@@ -17,7 +17,7 @@
 /* Everything a refused change must leave as it was. */
 struct snapshot {
     struct config cfg;     /* byte for byte */
-    struct model *model;   /* the same objects */
+    const struct model *model; /* the same objects */
     struct sim *sim;
     struct history *hist;
     struct trail *trail, *coarse;

@@ -17,9 +17,9 @@
 static const double windows[] = {1.0, 2.0, 5.0, 10.0, 20.0, 30.0, 60.0};
 #define NWINDOWS (int)(sizeof windows / sizeof *windows)
 
-/* The chain-sized parts, made together and swapped in together. */
+/* The chain-sized parts, made together and swapped in together. The parameters are the
+ * sim's own: the app reads them through app->model, a pointer to them. */
 struct parts {
-    struct model *model;
     struct sim *sim;
     struct history *hist;
     struct trail *trail;
@@ -34,15 +34,14 @@ static void parts_free(struct parts *p)
     trail_free(p->coarse);
     sweep_free(p->sweep);
     sim_free(p->sim);
-    model_free(p->model);
     *p = (struct parts){0};
 }
 
-/* Builds the parts around model m, which they take over (freed on failure too); 0, or
- * -1 on no memory with nothing left allocated. */
+/* Builds the parts around model m, which the sim copies (m is freed, on failure too); 0,
+ * or -1 on no memory with nothing left allocated. */
 static int parts_new(struct parts *p, struct model *m, const struct config *next)
 {
-    *p = (struct parts){.model = m};
+    *p = (struct parts){0};
     p->sim = sim_new(m, next->dt);
     if (p->sim)
         sim_set_integrator(p->sim, next->integrator);
@@ -50,6 +49,7 @@ static int parts_new(struct parts *p, struct model *m, const struct config *next
     p->trail = trail_new(m->n, TRAIL_FINE_RECORDS);
     p->coarse = trail_new(m->n, TRAIL_COARSE_RECORDS);
     p->sweep = sweep_new(m->n, APP_SWEEP_POINTS);
+    model_free(m);
     if (p->sim && p->hist && p->trail && p->coarse && p->sweep)
         return 0;
     parts_free(p);
@@ -59,9 +59,9 @@ static int parts_new(struct parts *p, struct model *m, const struct config *next
 /* Puts p's parts into the app and the app's old ones into p. */
 static void parts_swap(struct app *app, struct parts *p)
 {
-    struct parts old = {app->model, app->sim, app->hist, app->trail, app->coarse, app->sweep};
-    app->model = p->model;
+    struct parts old = {app->sim, app->hist, app->trail, app->coarse, app->sweep};
     app->sim = p->sim;
+    app->model = app->sim ? sim_model(app->sim) : NULL;
     app->hist = p->hist;
     app->trail = p->trail;
     app->coarse = p->coarse;
@@ -141,8 +141,7 @@ static void fix_initial(struct app *app)
  * cleared. */
 static void restart(struct app *app)
 {
-    app->model->motor.phase = 0.0;
-    sim_set_model(app->sim, app->model);
+    sim_set_phase(app->sim, 0.0);
     sim_set_dt(app->sim, app->cfg.dt);
     sim_reset(app->sim, app->cfg.x0.v, app->cfg.v0.v);
     sim_set_dt(app->sim, app->cfg.dt);
@@ -235,9 +234,8 @@ static void apply_in_place(struct app *app, const struct config *next, struct mo
     struct motor keep = app->model->motor;
     motor_retune(&keep, m->motor.frequency, sim_time(app->sim));
     m->motor.phase = keep.phase;
-    model_copy(app->model, m);
+    sim_set_model(app->sim, m);
     model_free(m);
-    sim_set_model(app->sim, app->model);
     app->cfg = *next;
     if (what & APP_CHANGED_DT) {
         sim_set_dt(app->sim, app->cfg.dt);
@@ -377,11 +375,10 @@ double app_energy_drift(const struct app *app)
     return e.balance - app->energy0;
 }
 
-/* The state was put back from history: the app's copy of the drive takes the phase the
- * sim re-anchored for the frequency in force. */
+/* The state was put back from history (the sim re-anchored its drive's phase for the
+ * frequency in force): the samples follow it. */
 static void follow_restored(struct app *app)
 {
-    app->model->motor.phase = sim_model(app->sim)->motor.phase;
     trail_follow(app->trail, app->sim);
     trail_follow(app->coarse, app->sim);
     app->runaway_base_ok = false; /* the books went back */

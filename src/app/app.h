@@ -85,7 +85,8 @@ enum control {
 
 struct app {
     struct config cfg;       /* settings in force; cfg.x0/v0 are the initial conditions */
-    struct model *model;     /* parameters in force */
+    const struct model *model; /* parameters in force: the sim's own (sim_model), the one
+                                * copy; they change through app_change alone */
     struct sim *sim;         /* the running chain */
     struct history *hist;    /* states to step back to */
     struct trail *trail;     /* fine samples for the plots (about 11 s), and for export */

@@ -17,7 +17,6 @@ static void ghost_free(struct ghost *g)
     trail_free(g->coarse);
     history_free(g->hist);
     sim_free(g->sim);
-    model_free(g->model);
     free(g);
 }
 
@@ -39,8 +38,7 @@ static struct ghost *ghost_new(const struct app *app)
     if (!g)
         return NULL;
     g->cfg = app->cfg;
-    g->model = model_new(live->n);
-    g->sim = g->model ? sim_new(live, dt) : NULL;
+    g->sim = sim_new(live, dt);
     g->hist = g->sim ? history_new(g->sim, HISTORY_DEPTH) : NULL;
     /* No energy plot shows the ghost: its samples keep the motion alone. */
     g->trail = trail_new_motion(live->n, records(TRAIL_FINE_RECORDS, TRAIL_FINE_SPACING,
@@ -52,7 +50,7 @@ static struct ghost *ghost_new(const struct app *app)
         ghost_free(g);
         return NULL;
     }
-    model_copy(g->model, live);
+    g->model = sim_model(g->sim);
     g->unstable = limits_unstable(&app->limits);
     g->sample_every = app->sample_every;
     g->since_sample = app->since_sample;
@@ -123,8 +121,7 @@ void ghost_restart(struct app *app)
     struct ghost *g = app->ghost;
     if (!g)
         return;
-    g->model->motor.phase = 0.0;
-    sim_set_model(g->sim, g->model);
+    sim_set_phase(g->sim, 0.0);
     sim_set_dt(g->sim, g->cfg.dt);
     sim_reset(g->sim, g->cfg.x0.v, g->cfg.v0.v);
     history_clear(g->hist);

@@ -20,7 +20,8 @@
 
 struct ghost {
     struct config cfg;      /* its settings: dt, integrator, initial conditions */
-    struct model *model;    /* its parameters, as they were when it was made */
+    const struct model *model; /* its parameters, as they were when it was made: its
+                                * sim's own (sim_model) */
     struct sim *sim;        /* its chain */
     struct history *hist;   /* its state before each live step since it was made */
     struct trail *trail;    /* fine samples for the plots, as the app's */

@@ -126,6 +126,11 @@ const struct model *sim_model(const struct sim *s)
     return stepper_model(s->st);
 }
 
+void sim_set_phase(struct sim *s, double phase)
+{
+    stepper_set_phase(s->st, phase, s->dt);
+}
+
 void sim_set_model(struct sim *s, const struct model *model)
 {
     stepper_set_model(s->st, model, s->dt);

@@ -43,6 +43,10 @@ const struct model *sim_model(const struct sim *s);
 /* Replaces every parameter with those of model (same n); takes effect at the next step. */
 void sim_set_model(struct sim *s, const struct model *model);
 
+/* Sets the drive's phase (cycles at t = 0) in the simulation's own model, every other
+ * parameter kept: a restart from t = 0 sets it to 0. */
+void sim_set_phase(struct sim *s, double phase);
+
 /* Chooses the integrator for the steps from now on (rk4 unless set). */
 void sim_set_integrator(struct sim *s, enum integrator i);
 
