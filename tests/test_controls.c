@@ -5,6 +5,7 @@
  * name it as the panel does. The app under test comes from tests/app_fixture.c. */
 #include "app_fixture.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "app/command.h"
@@ -91,11 +92,52 @@ static void plain_mode_names_it(void **state)
     assert_non_null(strstr(answer, "bandwidth, graphics"));
 }
 
+/* Every control is one row of controls.c's table over a setting of config.c's: its name
+ * for set is unique and, where it has a setting, the setting's; a choice typed shows as
+ * its name; a number typed shows with the setting's decimals and unit. */
+static void every_control_from_its_setting(void **state)
+{
+    (void)state;
+    char buf[96], text[64], want[64];
+    int settings = 0;
+    for (int c = 0; c < CTL_COUNT; c++) {
+        const char *name = app_control_name((enum control)c);
+        assert_true(name[0] && app_control_label((enum control)c)[0]);
+        for (int d = 0; d < c; d++)
+            assert_string_not_equal(name, app_control_name((enum control)d));
+        int key = config_find(name);
+        if (key < 0)
+            continue; /* the speed and the refresh: the app's own words */
+        settings++;
+        const struct config_option *o = &config_options[key];
+        if (o->kind == CONFIG_CHOICE && c != CTL_GRAPHICS) {
+            for (int i = o->choices - 1; i >= 0; i--) {
+                assert_true(app_set_text(&app, (enum control)c, o->choice_name(i)));
+                app_control_value(&app, (enum control)c, buf, sizeof buf);
+                assert_string_equal(buf, o->choice_name(i));
+            }
+        } else if (o->kind == CONFIG_NUMBER || o->kind == CONFIG_LIST) {
+            struct config_value now;
+            config_get(key, &app.cfg, app.model, &now);
+            double unit = pow(10.0, -o->digits), v = round(1.25 * now.v[0] / unit) * unit;
+            assert_true(v != now.v[0]);
+            snprintf(text, sizeof text, "%g", v);
+            assert_true(app_set_text(&app, (enum control)c, text));
+            app_control_value(&app, (enum control)c, buf, sizeof buf);
+            snprintf(want, sizeof want, "%.*f %s", o->digits, v, o->unit);
+            if (strncmp(buf, want, strlen(want)) != 0)
+                fail_msg("%s set to %s shows '%s', expected '%s'", name, text, buf, want);
+        }
+    }
+    assert_int_equal(settings, CTL_COUNT - 2);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
     const struct CMUnitTest tests[] = {
         T(arrows_go_round), T(typed_values), T(value_says_what_is_drawn), T(plain_mode_names_it),
+        T(every_control_from_its_setting),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

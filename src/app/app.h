@@ -253,6 +253,8 @@ double app_energy_drift(const struct app *app);
 
 /* The control's label and its value with units, for the panel. */
 const char *app_control_label(enum control ctl);
+/* The name `set` takes for a control: its setting's ("dt", "boundary"), or its own. */
+const char *app_control_name(enum control ctl);
 void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len);
 
 /* Sets the status message (printf-style); returns APP_CHANGED_MESSAGE. */

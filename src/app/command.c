@@ -72,20 +72,11 @@ int command_find(const char *name, size_t n)
     return -1;
 }
 
-/* The names set takes, one per control (the settings' names where there is one). */
-static const char *const control_names[CTL_COUNT] = {
-    [CTL_PRESET] = "preset",       [CTL_MASSES] = "masses",       [CTL_DT] = "dt",
-    [CTL_INTEGRATOR] = "integrator", [CTL_DAMPING] = "damping",   [CTL_SPRING] = "spring",
-    [CTL_MASS] = "mass",           [CTL_BOUNDARY] = "boundary",   [CTL_WAVE] = "wave",
-    [CTL_AMPLITUDE] = "amplitude", [CTL_FREQUENCY] = "frequency", [CTL_SPEED] = "speed",
-    [CTL_BANDWIDTH] = "bandwidth", [CTL_GRAPHICS] = "graphics",
-};
-
 #define RUN_MAX 1000.0 /* simulated seconds one run may take */
 
 const char *command_control_name(int ctl)
 {
-    return ctl >= 0 && ctl < CTL_COUNT ? control_names[ctl] : "";
+    return app_control_name((enum control)ctl);
 }
 
 /* The control named by word (its name, or its label in lower case with '-' for a
@@ -99,7 +90,7 @@ static int find_control(const char *word)
         for (i = 0; l[i] && i < sizeof label - 1; i++)
             label[i] = l[i] == ' ' ? '-' : (char)tolower((unsigned char)l[i]);
         label[i] = '\0';
-        if (strcmp(word, control_names[c]) == 0 || strcmp(word, label) == 0)
+        if (strcmp(word, app_control_name((enum control)c)) == 0 || strcmp(word, label) == 0)
             return c;
     }
     return -1;
@@ -123,7 +114,7 @@ static void control_list(char *buf, size_t len)
     buf[0] = '\0';
     for (int c = 0; c < CTL_COUNT && used < len; c++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", c ? ", " : "",
-                                 control_names[c]);
+                                 app_control_name((enum control)c));
     if (used < len) /* a setting with keys (< and >) but no row of the panel */
         snprintf(buf + used, len - used, ", window");
 }
@@ -177,7 +168,7 @@ static enum command_reply say_controls(const struct app *app, char *answer, size
         char value[96];
         app_control_value(app, (enum control)c, value, sizeof value);
         used += (size_t)snprintf(answer + used, len - used, "%s%s %s", c ? "; " : "controls: ",
-                                 control_names[c], value);
+                                 app_control_name((enum control)c), value);
     }
     if (used < len)
         snprintf(answer + used, len - used, "; window %g s", app_window(app));

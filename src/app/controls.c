@@ -10,60 +10,83 @@
 
 #include "../core/modes.h"
 
-static const char *const labels[CTL_COUNT] = {
-    [CTL_PRESET] = "Preset",      [CTL_MASSES] = "Masses",     [CTL_DT] = "dt",
-    [CTL_INTEGRATOR] = "Integrator",
-    [CTL_DAMPING] = "Damping",    [CTL_SPRING] = "Spring k",   [CTL_MASS] = "Mass",
-    [CTL_BOUNDARY] = "Right end", [CTL_WAVE] = "Waveform",     [CTL_AMPLITUDE] = "Amplitude",
-    [CTL_FREQUENCY] = "Frequency", [CTL_SPEED] = "Speed",   [CTL_BANDWIDTH] = "Refresh",
-    [CTL_GRAPHICS] = "Graphics",
-};
-
-/* What ends a sweep, for its message. */
-static const char *const whys[CTL_COUNT] = {
-    [CTL_MASSES] = "the new number of masses", [CTL_DAMPING] = "the change of damping",
-    [CTL_SPRING] = "the change of springs",    [CTL_MASS] = "the change of masses",
-    [CTL_BOUNDARY] = "the change of right end", [CTL_WAVE] = "the change of waveform",
-    [CTL_AMPLITUDE] = "the change of amplitude", [CTL_FREQUENCY] = "the change of frequency",
-    [CTL_DT] = "the change of dt",
+/* One row per control, the one place a control is described: what the panel calls it,
+ * the name `set` takes (NULL: its setting's), the setting it shows and sets (NONE: the
+ * app's own, the speed), what a change of it ends a sweep with (NULL: none), whether it
+ * is the front end's alone (set in place, the chain untouched), and a numeric control's
+ * arrows: their range inside the setting's, fine and coarse steps. Units, decimals,
+ * ranges, choices and the checks of a typed value come from the setting's row (config.c). */
+#define NONE (-1)
+static const struct control_row {
+    const char *label;
+    const char *name;
+    int key;
+    const char *why;
+    bool front;
+    double lo, hi, fine, coarse;
+} rows[CTL_COUNT] = {
+    [CTL_PRESET] = {"Preset", NULL, CFG_PRESET, NULL, false, 0, 0, 0, 0},
+    [CTL_MASSES] = {"Masses", NULL, CFG_MASSES, "the new number of masses", false, 0, 0, 0, 0},
+    [CTL_DT] = {"dt", NULL, CFG_DT, "the change of dt", false, 0.0, INFINITY, 0.001, 0.005},
+    [CTL_INTEGRATOR] = {"Integrator", NULL, CFG_INTEGRATOR, NULL, false, 0, 0, 0, 0},
+    [CTL_DAMPING] = {"Damping", NULL, CFG_DAMPING, "the change of damping", false, 0.0, 2.0,
+                     0.01, 0.1},
+    [CTL_SPRING] = {"Spring k", NULL, CFG_SPRING, "the change of springs", false, 1.0, 50.0,
+                    0.5, 5.0},
+    [CTL_MASS] = {"Mass", NULL, CFG_MASS, "the change of masses", false, 0.1, 10.0, 0.1, 1.0},
+    [CTL_BOUNDARY] = {"Right end", NULL, CFG_BOUNDARY, "the change of right end", false, 0, 0,
+                      0, 0},
+    [CTL_WAVE] = {"Waveform", NULL, CFG_WAVE, "the change of waveform", false, 0, 0, 0, 0},
+    [CTL_AMPLITUDE] = {"Amplitude", NULL, CFG_AMPLITUDE, "the change of amplitude", false, 0.0,
+                       3.0, 0.05, 0.5},
+    [CTL_FREQUENCY] = {"Frequency", NULL, CFG_FREQUENCY, "the change of frequency", false,
+                       APP_FMIN, APP_FMAX, 0.01, 0.1},
+    [CTL_SPEED] = {"Speed", "speed", NONE, NULL, true, 0, 0, 0, 0},
+    [CTL_BANDWIDTH] = {"Refresh", "bandwidth", CFG_LOW_BANDWIDTH, NULL, true, 0, 0, 0, 0},
+    [CTL_GRAPHICS] = {"Graphics", NULL, CFG_GRAPHICS, NULL, true, 0, 0, 0, 0},
 };
 
 /* Playback speeds offered by the Speed control. */
 static const double speeds[] = {0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 4.0, 5.0, 10.0};
 #define NSPEEDS (int)(sizeof speeds / sizeof *speeds)
 
-/* Numeric controls: the setting each shows (its unit and decimals from the settings
- * table), and the range and fine and coarse steps of the arrows. */
-static const struct {
-    enum config_key key;
-    double lo, hi, fine, coarse;
-} ranges[CTL_COUNT] = {
-    [CTL_DT] = {CFG_DT, 0.0, INFINITY, 0.001, 0.005}, /* the range is the table's */
-    [CTL_DAMPING] = {CFG_DAMPING, 0.0, 2.0, 0.01, 0.1},
-    [CTL_SPRING] = {CFG_SPRING, 1.0, 50.0, 0.5, 5.0},
-    [CTL_MASS] = {CFG_MASS, 0.1, 10.0, 0.1, 1.0},
-    [CTL_AMPLITUDE] = {CFG_AMPLITUDE, 0.0, 3.0, 0.05, 0.5},
-    [CTL_FREQUENCY] = {CFG_FREQUENCY, APP_FMIN, APP_FMAX, 0.01, 0.1},
-};
+/* Whether a control is numeric: arrows that step its value. */
+static bool numeric(enum control ctl)
+{
+    return rows[ctl].fine > 0.0;
+}
+
+/* The setting of a control that has one. */
+static const struct config_option *setting(enum control ctl)
+{
+    return &config_options[rows[ctl].key];
+}
 
 /* The arrows' range of a numeric control, inside its setting's (interactive) range. */
 static double arrow_lo(enum control ctl)
 {
-    const struct config_option *o = &config_options[ranges[ctl].key];
-    return fmax(ranges[ctl].lo, fmax(o->lo, o->ilo));
+    const struct config_option *o = setting(ctl);
+    return fmax(rows[ctl].lo, fmax(o->lo, o->ilo));
 }
 
 static double arrow_hi(enum control ctl)
 {
-    const struct config_option *o = &config_options[ranges[ctl].key];
+    const struct config_option *o = setting(ctl);
     /* A list's row has a lower bound only (its hi is left 0). */
     double hi = o->ihi > 0.0 ? o->ihi : o->hi > o->lo ? o->hi : INFINITY;
-    return fmin(ranges[ctl].hi, hi);
+    return fmin(rows[ctl].hi, hi);
 }
 
 const char *app_control_label(enum control ctl)
 {
-    return (unsigned)ctl < CTL_COUNT ? labels[ctl] : "";
+    return (unsigned)ctl < CTL_COUNT ? rows[ctl].label : "";
+}
+
+const char *app_control_name(enum control ctl)
+{
+    if ((unsigned)ctl >= CTL_COUNT)
+        return "";
+    return rows[ctl].name ? rows[ctl].name : setting(ctl)->name;
 }
 
 double app_freq_fraction(double f)
@@ -103,53 +126,35 @@ static void set_all(struct config_list *l, double v)
     l->v[0] = v;
 }
 
+/* The values of a numeric control's setting in force (a list's one per element); a free
+ * right end's last spring holds nothing and is left out. */
+static void numeric_values(const struct app *app, enum control ctl, struct config_value *v)
+{
+    config_get(rows[ctl].key, &app->cfg, app->model, v);
+    if (ctl == CTL_SPRING && app->model->boundary == BOUNDARY_FREE)
+        v->count = app->model->n;
+}
+
 /* The current value of a numeric control (NAN for mixed per-element values). */
 static double numeric_value(const struct app *app, enum control ctl)
 {
-    const struct model *m = app->model;
-    switch (ctl) {
-    case CTL_DT:
-        return app->cfg.dt;
-    case CTL_DAMPING:
-        return common(m->c, m->n);
-    case CTL_SPRING:
-        return common(m->k, m->boundary == BOUNDARY_FREE ? m->n : m->n + 1);
-    case CTL_MASS:
-        return common(m->m, m->n);
-    case CTL_AMPLITUDE:
-        return m->motor.amplitude;
-    case CTL_FREQUENCY:
-        return m->motor.frequency;
-    default:
+    if (!numeric(ctl))
         return NAN;
-    }
+    struct config_value v;
+    numeric_values(app, ctl, &v);
+    return common(v.v, v.count);
 }
 
-/* Puts a numeric control's value into the settings next. */
+/* Puts a numeric control's value into the settings next: one value for every element of
+ * a list. */
 static void set_numeric(struct config *next, enum control ctl, double v)
 {
-    switch (ctl) {
-    case CTL_DT:
-        next->dt = v;
-        break;
-    case CTL_DAMPING:
-        set_all(&next->damping, v);
-        break;
-    case CTL_SPRING:
-        set_all(&next->spring, v);
-        break;
-    case CTL_MASS:
-        set_all(&next->mass, v);
-        break;
-    case CTL_AMPLITUDE:
-        next->amplitude = v;
-        break;
-    case CTL_FREQUENCY:
-        next->frequency = v;
-        break;
-    default:
-        break;
-    }
+    const struct config_option *o = setting(ctl);
+    char *at = (char *)next + o->offset;
+    if (o->kind == CONFIG_LIST)
+        set_all((struct config_list *)(void *)at, v);
+    else
+        memcpy(at, &v, sizeof v);
 }
 
 /* Puts next in force for control ctl; what changed, 0 if refused. */
@@ -157,7 +162,7 @@ static unsigned change_control(struct app *app, struct config *next, enum contro
 {
     unsigned what = 0;
     unsigned how = ctl == CTL_FREQUENCY ? CHANGE_SETS_FREQUENCY : 0;
-    app_change(app, next, how, whys[ctl], &what);
+    app_change(app, next, how, rows[ctl].why, &what);
     return what;
 }
 
@@ -180,12 +185,25 @@ static int new_masses(struct app *app, int n, unsigned *what)
     next.x0.count = next.v0.count = 0;
     next.random = false;
     bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
-    if (app_change(app, &next, CHANGE_REBUILD, whys[CTL_MASSES], what) != 0)
+    if (app_change(app, &next, CHANGE_REBUILD, rows[CTL_MASSES].why, what) != 0)
         return -1;
     *what |= APP_CHANGED_PENDING |
              app_say(app, false, "%d mass%s, at rest%s", n, n == 1 ? "" : "es",
                      ghost ? "; ghost dropped with the old chain" : "");
     return 0;
+}
+
+/* Puts next, which may differ from the settings in force in control ctl, one of the front
+ * end's alone (refresh, graphics), in force: the chain is not touched. */
+static unsigned set_front(struct app *app, enum control ctl, const struct config *next)
+{
+    struct config_value was, now;
+    config_get(rows[ctl].key, &app->cfg, NULL, &was);
+    config_get(rows[ctl].key, next, NULL, &now);
+    if (strcmp(was.str, now.str) == 0)
+        return 0;
+    app->cfg = *next;
+    return APP_CHANGED_PLAYBACK;
 }
 
 unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
@@ -203,29 +221,6 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         return APP_CHANGED_PENDING |
                app_say(app, false, "Enter applies %d masses (a reset)", app->masses_pending);
     }
-    case CTL_BOUNDARY:
-        next.boundary = (enum boundary)(((int)next.boundary + steps % BOUNDARY_COUNT +
-                                         BOUNDARY_COUNT) % BOUNDARY_COUNT);
-        return change_control(app, &next, ctl);
-    case CTL_WAVE:
-        next.wave = (enum wave)(((int)next.wave + steps % WAVE_COUNT + WAVE_COUNT) % WAVE_COUNT);
-        return change_control(app, &next, ctl);
-    case CTL_INTEGRATOR:
-        next.integrator = (enum integrator)(((int)next.integrator + steps % INTEGRATOR_COUNT +
-                                             INTEGRATOR_COUNT) % INTEGRATOR_COUNT);
-        return change_control(app, &next, ctl);
-    case CTL_BANDWIDTH:
-        if (steps == 0)
-            return 0;
-        app->cfg.low_bandwidth = !app->cfg.low_bandwidth;
-        return APP_CHANGED_PLAYBACK;
-    case CTL_GRAPHICS:
-        next.graphics = (enum config_graphics)(((int)next.graphics + steps % CONFIG_GRAPHICS_COUNT +
-                                                CONFIG_GRAPHICS_COUNT) % CONFIG_GRAPHICS_COUNT);
-        if (next.graphics == app->cfg.graphics)
-            return 0;
-        app->cfg.graphics = next.graphics;
-        return APP_CHANGED_PLAYBACK;
     case CTL_SPEED: {
         int i = 0;
         while (i < NSPEEDS - 1 && speeds[i] < app->speed - 1e-9)
@@ -237,21 +232,36 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         app->speed = v;
         return APP_CHANGED_PLAYBACK;
     }
-    case CTL_DT:
-    case CTL_DAMPING:
-    case CTL_SPRING:
-    case CTL_MASS:
-    case CTL_AMPLITUDE:
-    case CTL_FREQUENCY:
-        break;
     default:
-        return 0;
+        break;
     }
-    double step = coarse ? ranges[ctl].coarse : ranges[ctl].fine;
+    if ((unsigned)ctl >= CTL_COUNT || rows[ctl].key == NONE)
+        return 0;
+    const struct config_option *o = setting(ctl);
+    char *at = (char *)&next + o->offset;
+    if (o->kind == CONFIG_CHOICE || o->kind == CONFIG_FLAG) {
+        /* Round the choices (a flag: on and off), steps places. */
+        int count = o->kind == CONFIG_FLAG ? 2 : o->choices, i;
+        if (o->kind == CONFIG_FLAG)
+            i = *(bool *)(void *)at;
+        else
+            memcpy(&i, at, sizeof i);
+        i = (i + steps % count + count) % count;
+        if (o->kind == CONFIG_FLAG)
+            *(bool *)(void *)at = i;
+        else
+            memcpy(at, &i, sizeof i);
+        return rows[ctl].front ? set_front(app, ctl, &next) : change_control(app, &next, ctl);
+    }
+    if (!numeric(ctl))
+        return 0;
+    double step = coarse ? rows[ctl].coarse : rows[ctl].fine;
     double v = numeric_value(app, ctl);
-    if (isnan(v))
-        v = ctl == CTL_SPRING ? app->model->k[0] : ctl == CTL_MASS ? app->model->m[0]
-                                                                   : app->model->c[0];
+    if (isnan(v)) { /* mixed values: from the first element's */
+        struct config_value first;
+        numeric_values(app, ctl, &first);
+        v = first.v[0];
+    }
     /* Snap onto the step grid, then move. */
     v = round(v / step) * step + steps * step;
     v = fmin(fmax(v, arrow_lo(ctl)), arrow_hi(ctl));
@@ -266,18 +276,11 @@ static unsigned say_set(struct app *app, enum control ctl, unsigned what)
         return what;
     char value[64];
     app_control_value(app, ctl, value, sizeof value);
-    return what | app_say(app, false, "%s %s", labels[ctl], value);
+    return what | app_say(app, false, "%s %s", rows[ctl].label, value);
 }
 
 unsigned app_set_text(struct app *app, enum control ctl, const char *text)
 {
-    static const enum config_key keys[CTL_COUNT] = {
-        [CTL_PRESET] = CFG_PRESET,     [CTL_MASSES] = CFG_MASSES,   [CTL_DT] = CFG_DT,
-        [CTL_INTEGRATOR] = CFG_INTEGRATOR,
-        [CTL_DAMPING] = CFG_DAMPING,   [CTL_SPRING] = CFG_SPRING,   [CTL_MASS] = CFG_MASS,
-        [CTL_BOUNDARY] = CFG_BOUNDARY, [CTL_WAVE] = CFG_WAVE,       [CTL_AMPLITUDE] = CFG_AMPLITUDE,
-        [CTL_FREQUENCY] = CFG_FREQUENCY, [CTL_GRAPHICS] = CFG_GRAPHICS,
-    };
     char err[300];
     if ((unsigned)ctl >= CTL_COUNT || ctl == CTL_PRESET)
         return 0;
@@ -309,20 +312,16 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
     }
     /* Checked on a copy, so a bad value changes nothing. */
     struct config next = app->cfg;
-    if (config_set(&next, (int)keys[ctl], text, err, sizeof err) != 0) {
-        app_say(app, true, "%s: %s", config_options[keys[ctl]].name, err);
+    if (config_set(&next, rows[ctl].key, text, err, sizeof err) != 0) {
+        app_say(app, true, "%s: %s", setting(ctl)->name, err);
         return 0;
     }
     unsigned what = 0;
-    if (ctl == CTL_GRAPHICS) {
-        /* The front end follows it (tui.c); the chain is not touched. */
-        what = next.graphics != app->cfg.graphics ? APP_CHANGED_PLAYBACK : 0;
-        app->cfg.graphics = next.graphics;
-        return say_set(app, ctl, what);
-    }
+    if (rows[ctl].front) /* the front end follows it (tui.c); the chain is not touched */
+        return say_set(app, ctl, set_front(app, ctl, &next));
     if (ctl == CTL_MASSES ? new_masses(app, next.masses, &what)
                           : app_change(app, &next, ctl == CTL_FREQUENCY ? CHANGE_SETS_FREQUENCY : 0,
-                                       whys[ctl], &what))
+                                       rows[ctl].why, &what))
         return 0;
     return say_set(app, ctl, what);
 }
@@ -488,15 +487,6 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         else
             snprintf(buf, len, "%d", m->n);
         return;
-    case CTL_BOUNDARY:
-        snprintf(buf, len, "%s", model_boundary_name(m->boundary));
-        return;
-    case CTL_WAVE:
-        snprintf(buf, len, "%s", motor_wave_name(m->motor.wave));
-        return;
-    case CTL_INTEGRATOR:
-        snprintf(buf, len, "%s", integrator_name(app->cfg.integrator));
-        return;
     case CTL_SPEED:
         snprintf(buf, len, "%gx", app->speed);
         return;
@@ -519,21 +509,27 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
     default:
         break;
     }
-    if ((unsigned)ctl >= CTL_COUNT) {
+    if ((unsigned)ctl >= CTL_COUNT || rows[ctl].key == NONE) {
         snprintf(buf, len, "%s", "");
+        return;
+    }
+    if (!numeric(ctl)) { /* a choice: its name */
+        struct config_value c;
+        config_get(rows[ctl].key, &app->cfg, m, &c);
+        snprintf(buf, len, "%s", c.str);
         return;
     }
     double v = numeric_value(app, ctl);
     if (isnan(v)) {
-        snprintf(buf, len, "mixed %s", config_options[ranges[ctl].key].unit);
+        snprintf(buf, len, "mixed %s", setting(ctl)->unit);
         return;
     }
-    int decimals = config_options[ranges[ctl].key].digits;
+    int decimals = setting(ctl)->digits;
     if (ctl == CTL_DT && app_time_decimals(v) > decimals)
         decimals = app_time_decimals(v); /* 0.0075 s, not 0.007 */
     char number[32];
     format_value(v, decimals, number, sizeof number);
-    snprintf(buf, len, "%s %s", number, config_options[ranges[ctl].key].unit);
+    snprintf(buf, len, "%s %s", number, setting(ctl)->unit);
     if (ctl == CTL_FREQUENCY && app->modes_ok && m->boundary == BOUNDARY_MOTOR) {
         /* Driving on a natural frequency (within 0.5 %): say which. */
         int j = modes_nearest(app->modes, m->n, v);
