@@ -93,6 +93,21 @@ if up ghost; then
     if [ -s "$tmp/with" ] && ! cmp -s "$tmp/with" "$tmp/without"; then pass; else
         fail "the ghost that parted from the live chain should show dots of its own in plots 1 and 4"
     fi
+    # Paused, the plots keep their scales however often a key redraws them: 40 keys that
+    # move the selection there and back, and the dots are as they were (the scales
+    # shrink to the live chain's smaller swing only once it runs again).
+    i=0
+    while [ $i -lt 20 ]; do
+        keys Up
+        poll 2 sel_not Damping
+        keys Down
+        poll 2 sel_is Damping
+        i=$((i + 1))
+    done
+    dots_of "$tmp/again"
+    if [ -s "$tmp/again" ] && cmp -s "$tmp/without" "$tmp/again"; then pass; else
+        fail "paused, 40 keys that change nothing in the plots rescaled them: plots 1 and 4 differ; screen: $(brief "$scr" '1 Displacement')"
+    fi
 fi
 
 S=ascii

@@ -3,6 +3,7 @@
  * time the data is looked at: frames in between redraw the canvas as it was left. */
 #include "chart.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -77,11 +78,22 @@ static int max_ticks(int cells, int per_tick)
     return n < 2 ? 2 : n > 8 ? 8 : n;
 }
 
+/* Fits scale s to data in [lo, hi]: it grows at once and shrinks after 30 refreshes of
+ * data that would fit in half of it, counted only while the data moves, so that a paused
+ * plot keeps its scale however often a key redraws it. */
+static void scale_fit(const struct chart *c, struct scale *s, double lo, double hi, int ticks)
+{
+    int quiet = s->quiet;
+    plot_scale_update(s, lo, hi, ticks, c->still ? INT_MAX : 30);
+    if (c->still && s->quiet > quiet)
+        s->quiet = quiet;
+}
+
 void chart_fit_y(struct chart *c, double lo, double hi)
 {
     int h = c->area.h > 1 ? c->area.h : 1;
     int ticks = max_ticks(h, 2);
-    plot_scale_update(&c->ys, lo, hi, ticks, 30);
+    scale_fit(c, &c->ys, lo, hi, ticks);
     axis_fit(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
     chart_ticks_from_axis(&c->yt, &c->ya);
 }
@@ -107,7 +119,7 @@ static void fit_x(struct chart *c, double lo, double hi, bool anchored)
 void chart_fit_x(struct chart *c, double lo, double hi)
 {
     int w = c->area.w > 1 ? c->area.w : 1;
-    plot_scale_update(&c->xs, lo, hi, max_ticks(w, 8), 30);
+    scale_fit(c, &c->xs, lo, hi, max_ticks(w, 8));
     fit_x(c, c->xs.lo, c->xs.hi, false);
 }
 

@@ -32,6 +32,7 @@ struct chart {
     struct rect frame, area;   /* the frame, and the drawing area inside it */
     struct canvas *canvas;     /* the drawing area's dots */
     struct scale xs, ys;       /* autoscaling memory (grows at once, shrinks after a while) */
+    bool still;                /* the data stands still (paused): the scales do not shrink */
     struct axis xa, ya;        /* the axes as last fitted */
     struct chart_ticks xt, yt; /* what the axes show */
     bool zero_line;            /* the y = 0 gridline drawn solid */

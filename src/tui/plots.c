@@ -166,6 +166,7 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     }
     for (int s = 0; motor && s < k; s++)
         ylo = fmin(ylo, rec[s * w + TRAIL_U]), yhi = fmax(yhi, rec[s * w + TRAIL_U]);
+    c->still = !app->running;
     if (k > 0) {
         chart_fit_y(c, ylo, yhi);
         if (xq)
