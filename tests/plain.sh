@@ -245,16 +245,34 @@ finish() {
     wait "$pid" 2>/dev/null # (dash says "Terminated" of a job a signal ended)
     rc=$?
 }
+# answered REGEX: waits (10 s at most) for a line of $out matching REGEX
+answered() {
+    a_n=0
+    while ! grep -qE -- "$1" "$out" && [ $a_n -lt 200 ]; do sleep 0.05; a_n=$((a_n + 1)); done
+    grep -qE -- "$1" "$out"
+}
+now() { date +%s.%N; }
+# Simulated time follows the clock: between "ok started" (seen at $t1, so it started
+# before) and "pause" (written at $t2, so read after) at least t2 - t1 went by, less
+# the 20 ms at most that time waits to be brought up to the clock; between writing
+# "start" ($t0) and seeing "ok paused" ($t3) at most t3 - t0. Bounds from the clock, not
+# from how long a sleep was hoped to take on a busy machine.
 background
+t0=$(now)
 echo start >&3
-sleep 1.5
+answered '^ok started' && t1=$(now)
+sleep 1.5 # how long it runs (measured: t1, t2), not a wait for it
+t2=$(now)
 echo pause >&3
+answered '^ok paused' && t3=$(now)
 exec 3>&-
 finish
 t=$(sed -n 's/^ok paused at t = \([0-9.]*\) s$/\1/p' "$out")
-if [ "$rc" -eq 0 ] && awk -v t="$t" 'BEGIN { exit !(t != "" && t >= 1.2 && t <= 2.5) }' &&
+if [ "$rc" -eq 0 ] && [ -n "$t1" ] && [ -n "$t3" ] &&
+    awk -v t="$t" -v t0="$t0" -v t1="$t1" -v t2="$t2" -v t3="$t3" \
+        'BEGIN { exit !(t != "" && t >= t2 - t1 - 0.03 && t <= t3 - t0 + 0.01) }' &&
     tail -n 1 "$out" | grep -q '^event t=.* end of input: quit$'; then pass; else
-    fail "start, 1.5 s, pause, end of input: expected t near 1.5 s, exit 0, 'end of input' last; t='$t', exit $rc: $(tail -n 2 "$out" | tr '\n' '|')"
+    fail "start, 1.5 s, pause, end of input: expected t between $(awk -v a="$t2" -v b="$t1" 'BEGIN { printf "%.3f", a - b - 0.03 }') and $(awk -v a="$t3" -v b="$t0" 'BEGIN { printf "%.3f", a - b + 0.01 }') s of the clock, exit 0, 'end of input' last; t='$t', exit $rc: $(tail -n 2 "$out" | tr '\n' '|')"
 fi
 plain </dev/null
 if [ "$rc" -eq 0 ] && [ "$(answers)" -eq 0 ]; then pass; else fail "empty input: exit $rc: $(show "$out")"; fi
@@ -294,7 +312,7 @@ rc=$?
 # ---- SIGTERM: a last line, then it dies of the signal ----
 background
 echo start >&3
-sleep 0.5
+answered '^ok started' # running, its handlers in place: then the signal
 kill -TERM "$pid"
 finish
 exec 3>&-
@@ -307,11 +325,24 @@ fi
 rm -f "$tmp/fifo" "$tmp/pid" "$tmp/rc"
 mkfifo "$tmp/fifo"
 { sh -c 'echo $$ >"$1"; exec "$2" --plain --plain-every 0.01' sh "$tmp/pid" "$SPRINGSIM" \
-    <"$tmp/fifo" 2>/dev/null; echo $? >"$tmp/rc"; } | sleep 15 >/dev/null &
+    <"$tmp/fifo" 2>/dev/null; echo $? >"$tmp/rc"; } | sleep 60 >/dev/null &
 reader=$!
 exec 3>"$tmp/fifo"
 printf 'start\nset speed 10\n' >&3
-sleep 2.5 # 1000 status lines a second: the 64 KB pipe is full
+# in_write PID: the process sleeps in a write to a pipe (the kernel's wait channel, or the
+# number of the system call it is in: write is 1 on x86_64, 64 on aarch64)
+in_write() {
+    case $(cat "/proc/$1/wchan" 2>/dev/null) in *pipe_write*) return 0 ;; esac
+    iw_nr=$(cut -d ' ' -f 1 "/proc/$1/syscall" 2>/dev/null)
+    case $(uname -m) in x86_64) [ "$iw_nr" = 1 ] ;; aarch64) [ "$iw_nr" = 64 ] ;; *) false ;; esac
+}
+# 1000 status lines a second: the 64 KB pipe fills within a second or so; waited for
+i=0
+while [ ! -s "$tmp/pid" ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done
+i=0
+while ! in_write "$(cat "$tmp/pid")" && [ $i -lt 150 ]; do sleep 0.1; i=$((i + 1)); done
+in_write "$(cat "$tmp/pid")" && pass ||
+    fail "plain --plain-every 0.01 at 10x into a pipe nobody reads: its write never blocked in 15 s"
 kill -TERM "$(cat "$tmp/pid")"
 i=0
 while [ ! -s "$tmp/rc" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done

@@ -38,7 +38,7 @@ if up d80; then
     keys Space
     t0=$(settled_t)
     keys 1 '|'
-    if wait_for '┌ Cursor ' 3 && has 'measured: mass 1' && has_re 'T 1\.4[0-9]* s  f 0\.71[0-9]* Hz' &&
+    if settle_for '┌ Cursor ' 3 && has 'measured: mass 1' && has_re 'T 1\.4[0-9]* s  f 0\.71[0-9]* Hz' &&
         has 'theory ζ 0.01118 (mode 1)'; then pass; else
         fail "80x24: | should show the readout with T, f and the theory's zeta; screen: $(brief "$scr" 'Cursor|measured|T |ζ')"
     fi
@@ -58,14 +58,14 @@ if up d80; then
     # ← moves the cursor, not the control selected (Preset: it would load another)
     tc=$(value 47 t)
     keys Left Left Left Left Left
-    if poll 3 eval '[ "$(value 47 t)" != "$tc" ]' &&
+    if settle 3 eval '[ "$(value 47 t)" != "$tc" ]' &&
         awk -v a="$(value 47 t)" -v b="$tc" 'BEGIN { d = b - a; exit !(d > 0.0499 && d < 0.0501) }' &&
         [ "$(status_t)" = "$t0" ] && lacks 'Preset'; then pass; else
         fail "80x24: five ← should move the cursor 0.05 s back (from $tc), t staying $t0; screen: $(brief "$scr" 'Cursor|t ')"
     fi
     # the readout is the exported CSV at the cursor's time, to the digits shown
     keys x
-    if wait_for 'exported ' 5; then
+    if settle_for 'exported ' 5; then
         csv=$(ls "$tmp/d80"/springsim-*.csv 2>/dev/null | head -n 1)
         t=$(value 47 t)
         row=$(awk -F, -v t="$t" 'NR > 1 && !/^#/ && $1 + 0 > t - 1e-9 && $1 + 0 < t + 1e-9' "$csv")
@@ -83,12 +83,12 @@ if up d80; then
     fi
     # a second cursor a tenth of the window on: Δt 1 s, 1/Δt 1 Hz, Δx
     keys '|'
-    if wait_for '┌ Cursors ' 3 && has_re 'Δt 1 s  1/Δt 1 Hz' && has 'Δx'; then pass; else
+    if settle_for '┌ Cursors ' 3 && has_re 'Δt 1 s  1/Δt 1 Hz' && has 'Δx'; then pass; else
         fail "80x24: | again should add a second cursor (Δt 1 s, 1/Δt 1 Hz, Δx); screen: $(brief "$scr" 'Cursor|Δ')"
     fi
     # paused, PgUp scrolls back a window and says so; running again shows the present
     keys PgUp
-    if wait_re 'shown 0\.0–10\.0 s, [0-9.]+ s back' 3; then pass; else
+    if settle_re 'shown 0\.0–10\.0 s, [0-9.]+ s back' 3; then pass; else
         fail "80x24: PgUp should show the window a window back; screen: $(brief "$scr" 'shown')"
     fi
     keys Space
@@ -96,7 +96,7 @@ if up d80; then
         fail "80x24: running again should show the present (live); screen: $(brief "$scr" 'shown')"
     fi
     keys Space Escape
-    if wait_for '┌ Controls' 3 && lacks 'Cursor'; then pass; else
+    if settle_all 3 "has '┌ Controls' && lacks Cursor"; then pass; else
         fail "80x24: Esc should remove the cursors and give the controls back; screen: $(brief)"
     fi
     keys '|'
@@ -114,7 +114,7 @@ if up c120; then
     keys Space
     t0=$(settled_t)
     keys '|' '|'
-    if wait_for '┌ Cursors ' 3; then
+    if settle_for '┌ Cursors ' 3; then
         rows=$(panel 83)
         if echo "$rows" | grep -qE '^│1 ' && echo "$rows" | grep -qE '^│2 ' &&
             echo "$rows" | grep -qE '^│3 ' && echo "$rows" | grep -qE '^│u ' &&
@@ -128,7 +128,7 @@ if up c120; then
             fail "120x40: the phase portraits should mark the points at both cursors (● ◆); screen: $(brief "$scr" '●|◆')"
         fi
         keys Down
-        if wait_for 'measured: mass 2' 3; then pass; else
+        if settle_for 'measured: mass 2' 3; then pass; else
             fail "120x40: ↓ should measure mass 2; screen: $(brief "$scr" 'measured')"
         fi
     else
@@ -139,7 +139,7 @@ fi
 # ---- 80x24, ten masses: the rows that do not fit say so ----
 if up n10; then
     keys '|'
-    if wait_for '┌ Cursor ' 3 && has_re '… [0-9]+ more masses' && has 'measured: mass 1' &&
+    if settle_for '┌ Cursor ' 3 && has_re '… [0-9]+ more masses' && has 'measured: mass 1' &&
         has 'not enough peaks (0)'; then pass; else
         fail "80x24, 10 masses: the readout should end its mass rows with '… N more masses' and keep the measurements; screen: $(brief "$scr" 'more|measured|peaks')"
     fi
@@ -150,7 +150,7 @@ if up fresh; then
     keys Down Down Down Down Down Down Down Down Down Down
     wait_re '▸Frequency' 3
     keys Right
-    if wait_re 'Frequency +1\.010? Hz' 3 && lacks 'Cursor'; then pass; else
+    if settle_all 3 "has_re 'Frequency +1\.010? Hz' && lacks Cursor"; then pass; else
         fail "no cursor: → should adjust the selected control; screen: $(brief "$scr" 'Frequency')"
     fi
 fi

@@ -43,7 +43,7 @@ legends() { grep -o '┄ghost' "$scr" | wc -l | tr -d ' '; }
 
 if up ghost; then
     keys g
-    if wait_re '│ ghost = live' && has 'ghost made'; then pass; else
+    if settle_re '│ ghost = live' && has 'ghost made'; then pass; else
         fail "g at 120x40: the status should say '│ ghost = live' and the message 'ghost made'; screen: $(brief "$scr" 'ghost|springsim')"
     fi
     if [ "$(legends)" -eq 6 ]; then pass; else
@@ -53,7 +53,7 @@ if up ghost; then
     keys Space
     wait_t 3
     keys Space
-    if wait_for Paused && ! ghost_in_scene && has '│ ghost = live'; then pass; else
+    if settle_for Paused && ! ghost_in_scene && has '│ ghost = live'; then pass; else
         fail "an unchanged ghost should be hidden under the live chain in the scene; screen: $(brief "$scr" 'Chain|▓▓|ghost')"
     fi
     dots_of "$tmp/with"
@@ -73,7 +73,7 @@ if up ghost; then
     keys Enter C-u
     text 2
     keys Enter
-    if wait_re "│ ghost c $c_old" && has_re '▸Damping +2\.00'; then pass; else
+    if settle_all 5 "has_re '│ ghost c $c_old' && has_re '▸Damping +2\.00'"; then pass; else
         fail "with the live damping 2 the status should name the ghost's, '│ ghost c $c_old'; screen: $(brief "$scr" 'ghost|Damping')"
     fi
     keys Space
@@ -83,10 +83,10 @@ if up ghost; then
         fail "after 6 s with the damping changed the ghost's outlined blocks should show in the scene; screen: $(brief "$scr" 'Chain|▓▓')"
     fi
     keys Space
-    wait_for Paused
+    settle_for Paused
     dots_of "$tmp/with"
     keys g
-    if wait_gone '┄ghost' && lacks '│ ghost' && has 'ghost dropped' && ! ghost_in_scene; then pass; else
+    if settle_gone '┄ghost' && lacks '│ ghost' && has 'ghost dropped' && ! ghost_in_scene; then pass; else
         fail "g again should drop the ghost from the legends, status and scene; screen: $(brief "$scr" 'ghost|Chain')"
     fi
     dots_of "$tmp/without"

@@ -89,7 +89,7 @@ phase_is() {
 for s in below at above; do
     if up $s; then
         keys f
-        if wait_for 'Phase of each mass to the drive' 3; then
+        if settle_for 'Phase of each mass to the drive' 3; then
             for label in 180 90 0 -90 -180; do
                 if has_re "│ +$label┤"; then pass; else fail "phase ($s): no tick label $label; screen: $(brief "$scr" 'Phase|┤')"; fi
             done
@@ -106,11 +106,11 @@ done
 # ---- 80x24: both views still show what matters ----
 if up small; then
     keys m
-    if wait_re 'mode 3  0\.930 Hz' 3 && has_re 'Q [0-9]'; then pass; else
+    if wait_all 3 "has_re 'mode 3  0\.930 Hz' && has_re 'Q [0-9]'"; then pass; else
         fail "modes view at 80x24: all three modes with Q; screen: $(brief)"
     fi
     keys m f
-    if wait_re 'Phase' 3 && has_re '│ +-180┤'; then pass; else
+    if settle_all 3 "has_re 'Phase' && has_re '│ +-180┤'"; then pass; else
         fail "response at 80x24: the phase panel should show; screen: $(brief)"
     fi
 fi
@@ -118,7 +118,7 @@ fi
 # ---- zeta = c / (2 sqrt(k m)) = 7 / (2 sqrt(20)) = 0.783: no peak, no -3 dB band ----
 if up heavy; then
     keys m
-    if wait_re 'ζ 0\.783  Q 0\.639  no resonant peak' 3 && lacks '-3 dB'; then pass; else
+    if wait_all 3 "has_re 'ζ 0\.783  Q 0\.639  no resonant peak' && lacks '-3 dB'"; then pass; else
         fail "modes view with zeta 0.783: expected 'ζ 0.783  Q 0.639  no resonant peak' and no '-3 dB'; screen: $(brief "$scr" 'ζ')"
     fi
 fi
@@ -135,7 +135,7 @@ fi
 # ---- a wall end does not drive: no mode mark on the Frequency control ----
 if up wallend; then
     keys m
-    if wait_re 'mode 3  0\.930 Hz' 3 && has_re 'Frequency +0\.712 Hz' && ! has_re 'Frequency.*◆'; then pass; else
+    if wait_all 3 "has_re 'mode 3  0\.930 Hz' && has_re 'Frequency +0\.712 Hz' && ! has_re 'Frequency.*◆'"; then pass; else
         fail "wall end: the Frequency control should not say it drives a mode; screen: $(brief "$scr" 'Frequency')"
     fi
 fi
@@ -156,7 +156,7 @@ fi
 # ---- no drive: the response view says why, with no empty axes under the words ----
 if up amp0; then
     keys f
-    if wait_for "The motor's amplitude is 0" 3 && ! has_re '1e-?[0-9]+┤|└┬|│ +-?[0-9]+┤'; then pass; else
+    if settle_all 3 "has \"The motor's amplitude is 0\" && ! has_re '1e-?[0-9]+┤|└┬|│ +-?[0-9]+┤'"; then pass; else
         fail "response view without a drive: the reason alone, no axes; screen: $(brief "$scr" 'amplitude|┤|└')"
     fi
 fi

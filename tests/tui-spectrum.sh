@@ -78,16 +78,17 @@ label_col() { awk -v t="$1" '$1 == "label" && $2 == t { print $3; exit }' "$geo"
 near() { [ -n "$1" ] && [ -n "$2" ] && awk -v a="$1" -v b="$2" 'BEGIN { exit !(a - b <= 1.5 && b - a <= 1.5) }'; }
 geo=$tmp/geometry
 
-# spectrum SESSION: waits for t >= 40 s, presses F, and waits for the chart
+# spectrum SESSION: waits for t >= 40 s, pauses, presses F, and waits for the chart,
+# drawn whole (the screen standing still), for what follows to measure
 spectrum() {
     S=$1
     if ! wait_t 40 30; then
         fail "$1: the run should reach t = 40 s at 10x; screen: $(brief)"
         return 1
     fi
-    keys F
-    if wait_re "┌─+ Spectrum of mass 1's displacement: dB re 1 m, Hann window over" 3 &&
-        wait_re '┊ natural' 3; then
+    keys Space F
+    if settle_all 5 "has_re \"┌─+ Spectrum of mass 1's displacement: dB re 1 m, Hann window over\" &&
+        has_re '┊ natural' && has Paused"; then
         pass
     else
         fail "$1: F should open a frame titled 'Spectrum of mass 1's displacement: dB re 1 m, Hann window over ...'; screen: $(brief "$scr" 'Spectrum')"
@@ -126,24 +127,24 @@ if spectrum square; then
     fi
     # Tab, ↓ ↓: mass 2, named in the title and the legend
     keys Tab Down Down
-    if wait_re "┌─+ Spectrum of mass 2's displacement" 3 && has '━ mass 2'; then pass; else
+    if settle_all 3 "has_re \"┌─+ Spectrum of mass 2's displacement\" && has '━ mass 2'"; then pass; else
         fail "square: Tab ↓ ↓ should select mass 2 and the spectrum follow it; screen: $(brief "$scr" 'Spectrum|━ mass')"
     fi
     keys Tab
-    if wait_re "┌─+ Spectrum of mass 2's" 3 && has Controls; then pass; else
+    if settle_all 3 "has_re \"┌─+ Spectrum of mass 2's\" && has Controls"; then pass; else
         fail "square: back to the controls (Tab), the spectrum should stay on mass 2; screen: $(brief "$scr" 'Spectrum')"
     fi
-    # a ghost: named in the legend while there is one
-    keys g
+    # a ghost: named in the legend while there is one (running again, for its samples)
+    keys Space g
     if wait_re '└─━ mass 2─peak [^─]*─┄ghost─┃ drive' 3; then pass; else
         fail "square: with a ghost (g) the legend should name it after the peak, '┄ghost'; screen: $(brief "$scr" '└─━')"
     fi
     keys g
-    if wait_re '└─━ mass 2─peak [^─]*─┃ drive' 3 && lacks '┄ghost'; then pass; else
+    if wait_all 3 "has_re '└─━ mass 2─peak [^─]*─┃ drive' && lacks '┄ghost'"; then pass; else
         fail "square: g again should drop the ghost and its legend; screen: $(brief "$scr" '└─━')"
     fi
     keys F
-    if wait_for '1 Displacement (m)' 3 && lacks "$TITLE"; then pass; else
+    if wait_all 3 "has '1 Displacement (m)' && lacks \"\$TITLE\""; then pass; else
         fail "square: F again should bring back the plots; screen: $(brief)"
     fi
 fi
@@ -198,8 +199,8 @@ fi
 # ---- 80x24, LANG=C, NO_COLOR: ASCII, every label whole ----
 S=ascii
 if wait_t 40 30; then
-    keys F
-    if wait_re '^\+-+ Spectrum of mass 1 \(dB\), the last 60 s -+\+' 3; then pass; else
+    keys Space F
+    if settle_all 5 "has_re '^\+-+ Spectrum of mass 1 \(dB\), the last 60 s -+\+' && has Paused"; then pass; else
         fail "ascii 80x24: F should show the short title 'Spectrum of mass 1 (dB), the last 60 s'; screen: $(brief "$scr" 'Spectrum')"
     fi
     if has_re '^\| +f1 +f2 +\|' && has_re '^\| +dB +1x +3x +5x +7x +9x +11x +\|' &&
@@ -219,21 +220,21 @@ S=early
 if up early; then
     # 0.06 s: the unpadded bins 16.7 Hz apart against an axis to 2 Hz (twice f2)
     keys F . . . . . .
-    if wait_t 0.06 3 && wait_re '│ needs [0-9.]+ s of samples: 0\.[0-9] s so far' 3 && lacks 'peak' &&
-        lacks '-300'; then pass; else
+    if wait_t 0.06 3 && settle_all 3 "has_re '│ needs [0-9.]+ s of samples: 0\.[0-9] s so far' &&
+        lacks peak && lacks -300"; then pass; else
         fail "early: 6 steps should say 'needs .. s of samples: .. s so far', no peak, no -300 dB floor; screen: $(brief "$scr" 'Spectrum|needs|peak')"
     fi
     # once the record holds 8 bins of the axis (4 s for an axis to 2 Hz) the spectrum is drawn
     keys Space
-    if wait_t 4.2 10 && wait_re '└─━ mass 1─peak 0\.[0-9]+ Hz' 3 && lacks 'needs'; then pass; else
+    if wait_t 4.2 10 && wait_all 3 "has_re '└─━ mass 1─peak 0\.[0-9]+ Hz' && lacks needs"; then pass; else
         fail "early: after 4 s the spectrum and its peak should be drawn; screen: $(brief "$scr" 'Spectrum|needs|peak')"
     fi
 fi
 S=still
 if up still; then
     keys F Space
-    if wait_t 5 10 && wait_for 'mass 1 has not moved: no spectrum to show' 3 && lacks 'peak' &&
-        lacks '-300'; then pass; else
+    if wait_t 5 10 && wait_all 3 "has 'mass 1 has not moved: no spectrum to show' && lacks peak &&
+        lacks -300"; then pass; else
         fail "still: with amplitude 0 the view should say 'mass 1 has not moved', no peak, no -300 dB; screen: $(brief "$scr" 'Spectrum|moved|peak')"
     fi
 fi
@@ -246,7 +247,7 @@ if up young; then
             fail "young: right after g the spectrum should wait for samples 'since the ghost was made'; screen: $(brief "$scr" 'Spectrum|needs')"
         fi
         # at t >= 14 s: a span of about t - 8 s, not the live chain's 14 s
-        if wait_t 14 15 && wait_for '┄ghost' 3; then
+        if wait_t 14 15 && wait_all 3 "has '┄ghost' && has 'Hann window over'"; then
             t=$(sed -n '1s/.*t = \([0-9.]*\) s.*/\1/p' "$scr")
             span=$(sed -n "s/.*Hann window over \([0-9]*\) s so far.*/\1/p" "$scr")
             if [ -n "$span" ] && awk -v t="$t" -v s="$span" 'BEGIN { exit !(s >= t - 9.5 && s <= t - 6.5) }'; then pass; else

@@ -58,8 +58,9 @@ run_recorded mono 120 40 NO_COLOR=1 -- -p resonance
 run_recorded preset 120 40 -- -p "$tmp/plain.ini"
 
 # exercise SESSION: runs it for a second of simulated time, a plot enlarged, the help
-# shown and closed, so every part of the screen has been drawn; the screen as seen after
-# in $scr, and as capture-pane -e gives it in $tmp/SESSION.e.
+# shown and closed, so every part of the screen has been drawn, then pauses; the screen
+# as seen after (standing still, drawn whole) in $scr, and as capture-pane -e gives it in
+# $tmp/SESSION.e.
 exercise() {
     up "$1" || return 1
     keys Space
@@ -68,13 +69,14 @@ exercise() {
     wait_for '0 all plots' || fail "$1: 4 should enlarge the x-v plot; screen: $(brief)"
     keys '?'
     # the whole help, to its coarse keys (a slow build draws it in pieces)
-    wait_for 'preset menu' && wait_for 'increase, coarse' ||
+    wait_all 5 "has 'preset menu' && has 'increase, coarse' && has 'decrease, coarse'" ||
         fail "$1: ? should show the help; screen: $(brief)"
     cp "$scr" "$tmp/$1.help"
     keys Escape
     wait_gone 'preset menu'
-    keys 0
-    wait_gone '0 all plots'
+    keys 0 Space
+    settle_all 5 "lacks '0 all plots' && has_re '(▸|>) Paused'" ||
+        fail "$1: 0 and space should show all the plots, paused; screen: $(brief)"
     tm capture-pane -e -p -t "$1" >"$tmp/$1.e"
 }
 
@@ -119,7 +121,7 @@ if exercise blocks; then
     # the x-v plot's trace is there, drawn in blocks: its area holds block characters
     PLOT_SCR=$tmp/blocks.plot
     keys 4
-    if wait_for '0 all plots'; then
+    if settle_for '0 all plots'; then
         cp "$scr" "$PLOT_SCR"
         cells=$(plot_awk 'END { if (!plot("4 x")) { print -1; exit }
             for (r = axtop; r < axr; r++) for (k = axc + 1; k < right; k++)

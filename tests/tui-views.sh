@@ -36,10 +36,17 @@ done
 
 # ---- m: the modes view ----
 # modes SIZE: the modes view of -p 3-mass-chain
+modes_whole() { # the three frequencies, the mark on mode 2 only, the control's mark, the titles
+    has 'mode 1  0.385 Hz' && has 'mode 2  0.712 Hz' && has 'mode 3  0.930 Hz' &&
+        has_re 'mode 2 +0\.712 Hz +◆' && ! has_re 'mode [13] +0\.[0-9]+ Hz +◆' &&
+        has_re 'Frequency +0\.712 Hz ◆ f2'
+}
 modes() {
     keys m
     if wait_re '┌─+ Modes'; then
         pass
+        # the shapes swing, the screen never stands still: wait for a frame with it all
+        poll 3 modes_whole
         missing=
         for f in 'mode 1  0.385 Hz' 'mode 2  0.712 Hz' 'mode 3  0.930 Hz'; do has "$f" || missing="$missing '$f'"; done
         if [ -z "$missing" ]; then pass; else
@@ -58,7 +65,7 @@ modes() {
             fail "modes ($1): expected the three modes' titles on two or three rows; screen: $(brief "$scr" 'mode ')"
         fi
         keys m
-        if wait_for '1 Displacement (m)' 3 && ! has_re '┌─+ Modes'; then pass; else
+        if wait_all 3 "has '1 Displacement (m)' && ! has_re '┌─+ Modes'"; then pass; else
             fail "modes ($1): m again should bring back the plots; screen: $(brief "$scr" 'Modes|Displacement')"
         fi
     else
@@ -75,7 +82,7 @@ if up near; then
     fi
     keys n
     if wait_re 'Frequency +0\.930 Hz ◆ f3' 3; then
-        if sed -n 1p "$scr" | grep -qF ' 0.93 Hz'; then pass; else
+        if wait_all 3 "sed -n 1p \"\$scr\" | grep -qF ' 0.93 Hz'"; then pass; else
             fail "n: the status line's motor should say 0.93 Hz; screen: $(brief)"
         fi
     else
@@ -86,7 +93,7 @@ fi
 # ---- f: the frequency response view ----
 if up resp; then
     keys f
-    if wait_re '┌─+ Frequency response'; then
+    if settle_re '┌─+ Frequency response'; then
         pass
         if has_re ' 1e-1┤' && has_re ' 1e-2┤'; then pass; else
             fail "response (f): expected decade labels 1e-1, 1e-2 on the amplitude axis; screen: $(brief "$scr" '┤')"
@@ -103,7 +110,7 @@ if up resp; then
             fail "response: expected a legend for masses 1-3; screen: $(brief "$scr" '━')"
         fi
         keys f
-        if wait_for '1 Displacement (m)' 3 && lacks 'Frequency response'; then pass; else
+        if wait_all 3 "has '1 Displacement (m)' && lacks 'Frequency response'"; then pass; else
             fail "response: f again should bring back the plots; screen: $(brief)"
         fi
     else
@@ -112,11 +119,11 @@ if up resp; then
 fi
 if up wall; then
     keys f
-    if wait_for 'Frequency response' && wait_for 'does not drive the chain' 2; then pass; else
+    if wait_for 'Frequency response' && settle_for 'does not drive the chain' 2; then pass; else
         fail "response with --boundary wall: expected 'does not drive the chain'; screen: $(brief "$scr" 'drive|response')"
     fi
     keys w
-    if wait_for 'a sweep needs the motor' 3 && has Paused && lacks 'sweep 1/'; then pass; else
+    if settle_for 'a sweep needs the motor' 3 && has Paused && lacks 'sweep 1/'; then pass; else
         fail "w with --boundary wall: no sweep should start, a message should say it needs the motor; screen: $(brief)"
     fi
 fi
@@ -125,9 +132,9 @@ amp_frame() { awk '/Response|Frequency response/ { on = 1 } on && /Phase/ { exit
 if up to-wall; then
     # the curves of the driven chain, then Right end (the 8th control) set to wall
     keys f
-    if wait_re '^│ +1e0┤' 3; then
+    if settle_re '^│ +1e0┤' 3; then
         keys Down Down Down Down Down Down Down Right
-        if wait_for 'does not drive the chain' 3 && [ "$(amp_frame | grep -c '1e[0-9]')" = 0 ] &&
+        if settle_for 'does not drive the chain' 3 && [ "$(amp_frame | grep -c '1e[0-9]')" = 0 ] &&
             ! amp_frame | LC_ALL=C grep -q "$(printf '\342[\240-\243]')"; then pass; else
             fail "response after Right end = wall: the old curves and their 1e.. axis should be cleared, not left under the message; screen: $(brief "$scr" 'drive|1e')"
         fi
@@ -141,7 +148,7 @@ if up sweep; then
     keys w
     if wait_re 'sweep 1/40 at [0-9.]+ Hz'; then
         pass
-        if has 'Frequency response' && has Running; then pass; else
+        if wait_all 3 "has 'Frequency response' && has Running"; then pass; else
             fail "sweep (w from the plots): expected the response view, running; screen: $(brief)"
         fi
         # the motor runs at the frequency the sweep says
@@ -152,7 +159,7 @@ if up sweep; then
         fi
         keys w
         if wait_for 'sweep stopped after' 3; then
-            if lacks 'sweep 1/40'; then pass; else
+            if wait_gone 'sweep 1/40' 3; then pass; else
                 fail "sweep: after w the bottom border should no longer show the sweep; screen: $(brief "$scr" sweep)"
             fi
         else
@@ -167,7 +174,7 @@ fi
 # sweep_ends HOW WANT: the sweep of $S, changed by HOW, is over (the border offers
 # "w: sweep" again, no "sweep k/40"), the motor stays at WANT Hz, and the message says so.
 sweep_ends() {
-    if ! poll 3 has_re '└.*w: sweep' || has_re 'sweep [0-9]+/40'; then
+    if ! wait_all 3 "has_re '└.*w: sweep' && ! has_re 'sweep [0-9]+/40'"; then
         fail "sweep, $1: the sweep should end (border 'w: sweep', no 'sweep k/40'); screen: $(brief "$scr" 'sweep')"
         return
     fi

@@ -107,6 +107,7 @@ start_shell() {
 # colour escapes are dropped.
 S=
 scr=$tmp/screen
+cap_s= cap_s1= cap_s2=
 ACS_AWK='BEGIN {
     from = "jklmnqtuvwx`afg~yz{|}"
     split("┘ ┐ ┌ └ ┼ ─ ├ ┤ ┴ ┬ │ ◆ ▒ ° ± · ≤ ≥ π ≠ £", to, " ")
@@ -126,9 +127,13 @@ ACS_AWK='BEGIN {
     sub(/ +$/, "", out)
     print out
 }'
+# The two captures before it are kept in $scr.1 and $scr.2 (for steady).
 cap() {
     tm capture-pane -e -p -t "$S" 2>/dev/null | awk "$ACS_AWK" >"$scr.new"
+    [ -f "$scr.1" ] && mv -f "$scr.1" "$scr.2"
+    [ -f "$scr" ] && mv -f "$scr" "$scr.1"
     mv -f "$scr.new" "$scr"
+    cap_s2=$cap_s1 cap_s1=$cap_s cap_s=$S
 }
 # cap_raw: the plain capture (for the check that no byte >= 0x80 reaches the terminal)
 cap_raw() { tm capture-pane -p -t "$S" >"$scr" 2>/dev/null || : >"$scr"; }
@@ -166,6 +171,32 @@ poll() {
         sleep 0.1
     done
 }
+# steady: this capture of $S is the same as the two before it (0.1 s apart at least, in
+# the same session): the frame on the screen is drawn whole. A terminal shows a frame as
+# its bytes arrive, so a capture taken while they do shows the new frame's top over the
+# old one's bottom (a status line twice, a title above the old view's axes).
+steady() {
+    [ "$cap_s2" = "$S" ] && [ "$cap_s1" = "$S" ] && cmp -s "$scr" "$scr.1" && cmp -s "$scr" "$scr.2"
+}
+# settle SECONDS CMD [ARG...]: poll until CMD holds on a steady screen. For a screen that
+# does not move (paused, not the modes view's swinging shapes): what is asserted on it
+# then is what a person sees, not a frame half sent. False after SECONDS, as poll.
+settle() {
+    st_n=$1
+    shift
+    poll "$st_n" steady_and "$@"
+}
+steady_and() { steady && "$@"; }
+# wait_all SECONDS EXPR, settle_all SECONDS EXPR: the same for a shell expression (which
+# looks at $scr), when what is asserted is several things on one screen: wait for them
+# all together, not for one and then look for the others on a capture that may be older
+# than the frame they are in.
+holds() { eval "$1"; }
+wait_all() { poll "$1" holds "$2"; }
+settle_all() { settle "$1" holds "$2"; }
+settle_for() { settle "${2:-5}" has "$1"; }
+settle_re() { settle "${2:-5}" has_re "$1"; }
+settle_gone() { settle "${2:-5}" lacks "$1"; }
 wait_for() { poll "${2:-5}" has "$1"; }
 wait_re() { poll "${2:-5}" has_re "$1"; }
 wait_gone() { poll "${2:-5}" lacks "$1"; }
@@ -184,11 +215,10 @@ t_plus() {
         d = 2; s = dt ""; if (index(s, ".")) { d = length(s) - index(s, ".") } if (d < 2) d = 2
         printf "%.*f", d, t + k * dt }'
 }
-# paused, with a t that no longer moves: echoes that t
-t_settled() { has Paused && [ -n "$(status_t)" ] && [ "$(status_t)" = "$ts_prev" ] || { ts_prev=$(status_t); false; }; }
+# paused, on a steady screen (a whole frame): echoes the t
+t_settled() { has Paused && [ -n "$(status_t)" ] && steady; }
 settled_t() {
-    ts_prev=
-    poll 5 t_settled
+    settle 5 t_settled
     status_t
 }
 
