@@ -1,7 +1,8 @@
 # springsim: a terminal simulator of a driven spring-mass-damper chain.
 # make            build ./springsim
 # make run        build and start it on the default configuration
-# make check      build and run every test
+# make check      build and run every test, J at a time (default: the processors, at least 2)
+#                 T="tui-ghost plain test_app": only those (scripts without .sh, unit tests)
 # make sanitize   the tests under AddressSanitizer + UndefinedBehaviorSanitizer
 # make install    PREFIX=/usr/local DESTDIR=: binary, man page, presets, lessons, shell completions
 # make deb        an unsigned Debian package in build/ (debhelper, checked by lintian)
@@ -217,7 +218,8 @@ check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm $(BUILD)/tests/pixterm $(BUILD
     completions $(BUILD)/mk/docgen | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm PIXTERM=$(BUILD)/tests/pixterm \
 	    SIXELCHECK=$(BUILD)/tests/sixelcheck COMPLETIONS=$(BUILD)/completions \
-	    DOCGEN=$(BUILD)/mk/docgen BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) sh tests/run.sh $(TEST_BIN)
+	    DOCGEN=$(BUILD)/mk/docgen BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) T="$(T)" TESTS="$(TESTS)" J="$(J)" \
+	    sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
 SAN_FLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
