@@ -30,12 +30,12 @@ for S in $sessions; do
     cap
     clean "$S, the chain view"
     keys Space
-    sleep 0.5
-    for v in m e f; do
-        keys "$v"
-        sleep 0.5
-        cap
-        clean "$S, view $v"
+    wait_for Running
+    # each view, once its frame is up (m again leaves the modes view, and so on)
+    for v in 'm:┌─+ Modes' 'm:1 Displacement' 'e:┌─+ Energy' 'e:1 Displacement' 'f:┌─+ (Frequency r|R)esponse'; do
+        keys "${v%%:*}"
+        wait_re "${v#*:}" 3 || fail "$S: ${v%%:*} should show '${v#*:}'; screen: $(brief)"
+        clean "$S, after ${v%%:*}"
     done
 done
 S=stiff

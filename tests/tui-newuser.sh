@@ -146,9 +146,9 @@ fi
 if up euler; then
     wait_re 'unstable' 3
     keys Space
-    sleep 1
-    cap
-    if row 1 | grep -qE '(Running|Paused) t = [0-9.]+ s │ dt unstable │' && ! row 24 | grep -q 'unstable with'; then
+    # once it has run (t past 0): the status line, and the message gone from the last row
+    wait_re '(Running|Paused) t = (0\.0*[1-9]|[1-9])' 5
+    if wait_all 3 "row 1 | grep -qE '(Running|Paused) t = [0-9.]+ s │ dt unstable │' && ! row 24 | grep -q 'unstable with'"; then
         pass
     else
         fail "euler at dt 0.05: after space the status line should still say 'dt unstable'; screen: $(brief "$scr")"
@@ -217,8 +217,7 @@ for s in c8 c256; do
         keys Space
         wait_t 3 10
         keys Space 1
-        sleep 1
-        cap
+        settle_all 5 "has_re '(▸|>) Paused' && has '0 all plots'"
         # 8 colours tell five masses apart: the six curves end in their digits; 256 tell ten
         if [ $s = c8 ]; then want=123456; else want=; fi
         if [ "$(ends)" = "$want" ]; then pass; else
@@ -238,8 +237,7 @@ if up mono; then
     keys Space
     wait_t 3 10
     keys Space 1
-    sleep 1
-    cap
+    settle_all 5 "has_re '(▸|>) Paused' && has '0 all plots'"
     # without colour each curve ends in its digit, in reverse video
     if [ "$(ends)" = 123 ] && [ "$(rev_ends)" = 123 ]; then pass; else
         fail "NO_COLOR: the three curves should end in 1, 2, 3 in reverse video; ends '$(ends)', in reverse '$(rev_ends)'; screen: $(brief "$scr" '││')"
@@ -333,12 +331,11 @@ if up top; then
     keys Space
     wait_t 4 10
     keys Space 1
-    sleep 1
+    settle_all 5 "has_re '(▸|>) Paused' && has '0 all plots'"
     c2=$(attr '━2' | sed 's/^fg=\([^ ]*\).*/\1/')
     before=$(cells "$c2")
     keys Tab Down Down # mass 2 selected: drawn last, it keeps the cells it shares
-    wait_re '└─ mass 2: m' 3
-    sleep 0.5
+    settle_re '└─ mass 2: m' 3
     after=$(cells "$c2")
     if [ "$before" -gt 0 ] && [ "$after" -gt "$before" ]; then pass; else
         fail "selecting mass 2 should draw it over masses 1 and 3: its cells in plot 1 were $before, are $after (colour $c2)"

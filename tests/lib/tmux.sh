@@ -46,9 +46,21 @@ SOCK=springsim-$NAME-$$
 tm() { LC_ALL=$U8 LANG=$U8 tmux -u -L "$SOCK" -f /dev/null "$@"; }
 
 sockpath=
+# cleanup: the server killed, then its programs waited for (2 s at most: a program may
+# still be writing into $tmp as the hang-up ends it) before $tmp goes.
 cleanup() {
     tm kill-server >/dev/null 2>&1
     [ -n "$sockpath" ] && rm -f "$sockpath"
+    cl_n=0
+    while [ $cl_n -lt 20 ]; do
+        cl_alive=
+        for cl_p in "$tmp"/*.pid; do
+            [ -s "$cl_p" ] && kill -0 "$(cat "$cl_p")" 2>/dev/null && cl_alive=1
+        done
+        [ -z "$cl_alive" ] && break
+        sleep 0.1
+        cl_n=$((cl_n + 1))
+    done
     rm -rf "$tmp"
 }
 trap cleanup EXIT
