@@ -98,7 +98,7 @@ if command -v tmux >/dev/null 2>&1; then
         fail "interactive: no stability warning at start with dt 0.05 and k 5000; bottom line: $(last_line)"
     fi
     keys Space
-    if wait_for 'unstable with rk4: dt < 0.0' 3 && has 's is stable' && has Paused; then
+    if wait_all 3 "has 'unstable with rk4: dt < 0.0' && has 's is stable' && has Paused"; then
         pass
     else
         fail "interactive: running an unstable chain did not pause with the limit; bottom line: $(last_line)"

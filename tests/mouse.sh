@@ -68,7 +68,7 @@ for s in big small; do
         fi
         # r restarts from the new initial position: the label stays where it was left
         keys r
-        if wait_gone 'mass 1 starts at' && has 't = 0.00 s' && mass1_at $((col + 8)); then pass; else
+        if wait_all 5 "lacks 'mass 1 starts at' && has 't = 0.00 s' && mass1_at $((col + 8))"; then pass; else
             fail "$size: r should restart with mass 1 where it was dragged (column $((col + 8))); label at $(cell_of 1 MOTOR); screen: $(brief)"
         fi
     else

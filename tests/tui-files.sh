@@ -27,7 +27,7 @@ save_as() { # save_as NAME: s, NAME, Enter; true once the prompt is gone
     wait_gone 'save preset as' 3
 }
 if up save; then
-    if save_as mychain && wait_for 'saved ' 3 && has 'springsim/presets/mychain.ini'; then pass; else
+    if save_as mychain && wait_all 3 "has 'saved ' && has 'springsim/presets/mychain.ini'"; then pass; else
         fail "save: s, mychain, Enter should say 'saved' and the path; screen: $(brief)"
     fi
     if [ -f "$pdir/mychain.ini" ]; then
@@ -126,7 +126,7 @@ if up edit; then
             keys Enter
             text 22
             keys Enter
-            if wait_for 'spring 2 (1–2): k = 22 N/m' 3 && has_re 'Spring k +mixed N/m'; then pass; else
+            if wait_all 3 "has 'spring 2 (1–2): k = 22 N/m' && has_re 'Spring k +mixed N/m'"; then pass; else
                 fail "per-element: spring 2 Enter 22 Enter should say 'spring 2 (1–2): k = 22 N/m' and Spring k 'mixed N/m'; screen: $(brief "$scr" 'Spring k')"
             fi
         else
@@ -137,7 +137,7 @@ if up edit; then
             keys c
             text 0.3
             keys Enter
-            if wait_for 'mass 1: c = 0.3 N·s/m' 3 && has_re 'Damping +mixed'; then pass; else
+            if wait_all 3 "has 'mass 1: c = 0.3 N·s/m' && has_re 'Damping +mixed'"; then pass; else
                 fail "per-element: c, 0.3, Enter on mass 1 should set its damping ('mass 1: c = 0.3 N·s/m', Damping 'mixed'); screen: $(brief "$scr" 'Damping')"
             fi
         else

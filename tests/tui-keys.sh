@@ -223,7 +223,7 @@ if up help; then
         fi
         p=$(help_pos)
         keys PgUp
-        if poll 3 pos_not "$p" && lacks '(end)'; then pass; else
+        if wait_all 3 "pos_not '$p' && lacks '(end)'"; then pass; else
             fail "help: PgUp from the end should scroll back up; screen: $(brief "$scr" 'lines')"
         fi
         home
@@ -239,7 +239,7 @@ if up help; then
         keys Up
         if poll 3 lacks '(end)'; then pass; else fail "help: ↑ at the end should scroll up; screen: $(brief "$scr" 'lines')"; fi
         keys Escape
-        if wait_gone 'Keys' 3 && has Paused && has_re 'space start'; then pass; else
+        if settle_all 3 "lacks Keys && has Paused && has_re 'space start'"; then pass; else
             fail "help: Esc should close it, leaving the program as it was (paused); screen: $(brief)"
         fi
     else
@@ -416,7 +416,7 @@ if up chain; then
         fi
         keys r
         # any key clears the message line, so r has been handled once this one is gone
-        if wait_gone 'mass 1 starts at' 3 && has 't = 0.00 s'; then
+        if wait_all 3 "lacks 'mass 1 starts at' && has 't = 0.00 s'"; then
             sed -n '3,5p' "$scr" >"$tmp/scene2"
             if cmp -s "$tmp/scene1" "$tmp/scene2"; then pass; else
                 fail "chain: r should restart from the moved position (scene as right after the move); scene: $(brief "$tmp/scene2")"

@@ -56,25 +56,25 @@ for size in 80 120; do
         fail "$S: the caption panel's top edge should span the screen: $(sed -n "${top}p" "$scr")"
     fi
     keys 2
-    if wait_for 'You chose 2: right.' 3 && has 'Lesson 2/7' && has 'modes: 1: 0.7118 Hz'; then pass; else
+    if wait_all 3 "has 'You chose 2: right.' && has 'Lesson 2/7' && has 'modes: 1: 0.7118 Hz'"; then pass; else
         fail "$S: 2 should answer the question (right), go on to step 2 and show modes' answer; screen: $(brief)"
     fi
     keys Space
-    if wait_for 'Lesson 3/7' 3 && wait_re 't = 30\.00 s' 3 && has "First the web page's 0.5 Hz"; then pass; else
+    if wait_all 3 "has 'Lesson 3/7' && has_re 't = 30\.00 s' && has \"First the web page's 0.5 Hz\""; then pass; else
         fail "$S: space should go on to step 3, the 0.5 Hz run done at once (t = 30.00 s); screen: $(brief)"
     fi
     shot "lesson-$size-step3"
     keys ,
-    if wait_for 'back to step 2 of 7' 3 && has 'Lesson 2/7' && wait_re 't = 0\.00 s' 3; then pass; else
+    if wait_all 3 "has 'back to step 2 of 7' && has 'Lesson 2/7' && has_re 't = 0\.00 s'"; then pass; else
         fail "$S: , should go back to step 2 (t = 0.00 s again); screen: $(brief)"
     fi
     keys Space Space
-    if wait_for 'Lesson 4/7' 3 && has 'Now 0.60 Hz' && wait_re 't = 30\.00 s' 3; then pass; else
+    if wait_all 3 "has 'Lesson 4/7' && has 'Now 0.60 Hz' && has_re 't = 30\.00 s'"; then pass; else
         fail "$S: space twice should reach step 4 (0.60 Hz, run to t = 30); screen: $(brief)"
     fi
     keys Escape
-    if wait_for 'left the lesson resonance: the chain is as it is' 3 && lacks 'Lesson 4/7' &&
-        has_re 't = 30\.00 s' && has '0.600 Hz'; then pass; else
+    if wait_all 3 "has 'left the lesson resonance: the chain is as it is' && lacks 'Lesson 4/7' &&
+        has_re 't = 30\.00 s' && has '0.600 Hz'"; then pass; else
         fail "$S: Esc should leave the lesson, the chain as it is (t = 30.00, 0.600 Hz); screen: $(brief)"
     fi
     # the keys are the program's own again: space starts it
@@ -86,6 +86,8 @@ done
 
 # ---- every built-in lesson's first question reads whole at 80x24: its step's caption,
 # the question and each choice on a line of its own ----
+# step_of: the step the caption shows ("Lesson 3/7": 3)
+step_of() { sed -n 's/.*Lesson \([0-9]*\)\/.*/\1/p' "$scr" | head -n 1; }
 for f in "$root"/lessons/*.lesson; do
     n=$(basename "$f" .lesson)
     S=ask-$n
@@ -96,7 +98,15 @@ for f in "$root"/lessons/*.lesson; do
          q && $1 == "choice" { sub(/^[ \t]*choice[ \t]+/, ""); print ++k ") " $0; next }
          q && $1 != "choice" { exit }' "$f" >"$tmp/ask-$n"
     i=0
-    while ! has ' answers ' && [ $i -lt 6 ]; do keys Space; sleep 0.3; cap; i=$((i + 1)); done
+    # space until the question's step is shown, each step waited for (a second space
+    # before the step it goes on to is shown would pass the question by)
+    while ! has ' answers ' && [ $i -lt 6 ]; do
+        st=$(step_of)
+        keys Space
+        wait_all 3 "[ \"\$(step_of)\" != '$st' ]"
+        i=$((i + 1))
+    done
+    has ' answers ' && settle 2 has ' answers '
     missing=
     while IFS= read -r line; do has "$line" || missing="$missing|$line"; done <"$tmp/ask-$n"
     if [ -s "$tmp/ask-$n" ] && has ' answers ' && [ -z "$missing" ]; then pass; else
@@ -123,7 +133,7 @@ for size in 80 120; do
         fail "$S: the lesson menu should list every lesson with its title; missing:$missing; screen: $(brief)"
     fi
     keys Down Enter
-    if wait_for 'Lesson 1/3: Damping' 3 && has 'Each swing is smaller than the one before'; then pass; else
+    if wait_all 3 "has 'Lesson 1/3: Damping' && has 'Each swing is smaller than the one before'"; then pass; else
         fail "$S: Down, Enter should start the second lesson (damping); screen: $(brief)"
     fi
 done
@@ -134,8 +144,8 @@ if up bad; then
     keys L
     wait_for 'broken' 3
     keys Down Enter
-    if wait_for 'broken.lesson:4:' 3 && has "'wobble' is not" && lacks 'Lesson 1/' &&
-        has_re 't = 0\.00 s' && lacks 'Broken'; then pass; else
+    if settle_all 3 "has 'broken.lesson:4:' && has \"'wobble' is not\" && lacks 'Lesson 1/' &&
+        has_re 't = 0\.00 s' && lacks Broken"; then pass; else
         fail "bad: a lesson with an unknown command should be refused with FILE:4 and nothing run; screen: $(brief)"
     fi
 fi
@@ -184,7 +194,7 @@ if up rec; then
     fi
     start replay 80 24 -- --replay "$f"
     S=replay
-    if up replay && wait_for 'is the one recorded, bit for bit' 5 && has 'the end'; then pass; else
+    if up replay && wait_all 5 "has 'is the one recorded, bit for bit' && has 'the end'"; then pass; else
         fail "replay: --replay in the program should end in the recorded state bit for bit; screen: $(brief)"
     fi
     shot "replay-80"

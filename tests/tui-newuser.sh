@@ -52,7 +52,7 @@ if up small; then
         fail "60x20: ↑ from Graphics should select ▸Refresh, the list still scrolled ('↑ 3 more'); screen: $(brief "$scr" 'more|Graphics|Refresh')"
     fi
     keys Down Down # wraps to Preset: the list scrolls back
-    if wait_re '▸Preset' 3 && has '↓ 3 more' && lacks '↑ 3 more'; then pass; else
+    if settle_all 3 "has_re '▸Preset' && has '↓ 3 more' && lacks '↑ 3 more'"; then pass; else
         fail "60x20: ↓ from Graphics should scroll back to ▸Preset; screen: $(brief "$scr" 'more|Preset')"
     fi
 fi
@@ -134,8 +134,8 @@ if up energy; then
     keys Space
     wait_t 2 10
     keys e
-    if wait_re '│ drift [0-9.]+e[-+][0-9]+ of the peak +│' 3 && has_re '━kin [0-9.e+-]+ ━pot' &&
-        has_re '━damp [0-9.e+-]+ ━motor [0-9.e+-]+ +… │'; then
+    if wait_all 3 "has_re '│ drift [0-9.]+e[-+][0-9]+ of the peak +│' && has_re '━kin [0-9.e+-]+ ━pot' &&
+        has_re '━damp [0-9.e+-]+ ━motor [0-9.e+-]+ +… │'"; then
         pass
     else
         fail "60x20 energy view: brief names ('━kin', '━pot', '━damp', '━motor', then '…') and the whole 'drift … of the peak' line; screen: $(brief "$scr" 'drift|━')"
@@ -248,8 +248,8 @@ fi
 for s in help80 help60; do
     if up $s; then
         keys '?'
-        if wait_re '^ ┌─+ Keys ─+┐ ?$' 3 && has_re '^ │ space +start / pause +│ ?$' &&
-            ! has_re '^(┌┌|││|└│|┌│|└└)' && ! has_re '(┐┐|││|│┘|│┐|┘┘)$'; then pass; else
+        if settle_all 3 "has_re '^ ┌─+ Keys ─+┐ ?\$' && has_re '^ │ space +start / pause +│ ?\$' &&
+            ! has_re '^(┌┌|││|└│|┌│|└└)' && ! has_re '(┐┐|││|│┘|│┐|┘┘)\$'"; then pass; else
             fail "$s: the help box should stand a blank column inside the screen's edges, no frame beneath doubling its border; screen: $(brief "$scr" '┌┌|││|Keys')"
         fi
     fi
@@ -258,7 +258,7 @@ S=help80
 if alive help80; then
     keys Escape p
     # the highlighted row beneath (the Preset control) shows nowhere at the menu's edge
-    if wait_re '^ ┌─+ Presets ─+┐ ?$' 3 && has_re '^ │ beating  ' && ! has_re '─┐ ?▸|│ ?▸|┐▸'; then pass; else
+    if settle_all 3 "has_re '^ ┌─+ Presets ─+┐ ?\$' && has_re '^ │ beating  ' && ! has_re '─┐ ?▸|│ ?▸|┐▸'"; then pass; else
         fail "80x24: the preset menu should stand clear of the controls' highlighted row; screen: $(brief "$scr" 'Presets|beating|▸')"
     fi
 fi
@@ -286,7 +286,7 @@ if up hide; then
     keys Space 1 Tab Down Down # mass 2
     wait_re '└─ mass 2: m' 3
     keys v
-    if wait_for 'mass 2 hidden in the plots' 3 && [ "$(ends)" = 13 ] && has_re '━1·2━3|━1─·2─━3'; then
+    if wait_all 3 "has 'mass 2 hidden in the plots' && [ \"\$(ends)\" = 13 ] && has_re '━1·2━3|━1─·2─━3'"; then
         pass
     else
         fail "v on mass 2 should leave its curve out (ends 13, legend ·2): ends '$(ends)'; screen: $(brief "$scr" 'hidden|━1')"

@@ -164,7 +164,7 @@ if up big; then
             wait_re '┌─* 6 ' 3
             continue
         fi
-        if poll 1 area_at_least "$t" 70 24 && has Controls; then pass; else
+        if wait_all 1 "area_at_least '$t' 70 24 && has Controls"; then pass; else
             fail "120x40: plot $d enlarged should draw on at least 70x24 cells beside the controls, has '$(plot_area "$t")'; screen: $(brief "$scr" '┌─* [1-6] ')"
         fi
         case $d in 1 | 2 | 3)
@@ -218,7 +218,7 @@ if wait_t 3; then
         fi
     done
     keys 0
-    if poll 3 shown_is 1 && lacks '0 all plots'; then pass; else
+    if wait_all 3 "shown_is 1 && lacks '0 all plots'"; then pass; else
         fail "60x20: 0 should give the grid back; screen: $(brief)"
     fi
 else
@@ -268,7 +268,7 @@ if wait_t 10 14; then
     fi
     ticks_ok "80x24 grid, -p resonance"
     keys 1
-    if wait_for '0 all plots' 3 && [ "$(shown)" = 1 ] && has " $t1 "; then
+    if wait_all 3 "has '0 all plots' && shown_is 1 && has ' $t1 '"; then
         pass
         if poll 1 area_at_least "$t1" 40 12; then pass; else
             fail "80x24: plot 1 enlarged should draw on at least 40x12 cells, has '$(plot_area "$t1")'; screen: $(brief "$scr" '┌─* [1-6] ')"
@@ -302,7 +302,7 @@ if wait_t 10 14; then
         for d in 2 3 4 5 6; do
             keys "$d"
             t=$(title "$d")
-            if poll 3 shown_is "$d" && has " $t "; then
+            if wait_all 3 "shown_is '$d' && has ' $t '"; then
                 if poll 1 area_at_least "$t" 40 12; then pass; else
                     fail "80x24: plot $d enlarged should draw on at least 40x12 cells, has '$(plot_area "$t")'"
                 fi

@@ -95,14 +95,14 @@ if up resize; then
         fi
     fi
     tm resize-window -t resize -x 40 -y 12
-    if wait_for 'Terminal too small' && has 'need 60x20, have 40x12'; then pass; else
+    if settle_all 5 "has 'Terminal too small' && has 'need 60x20, have 40x12'"; then pass; else
         fail "resize to 40x12: expected 'Terminal too small' and 'need 60x20, have 40x12'; screen: $(brief "$scr" 'small|need')"
     fi
     tm resize-window -t resize -x 1 -y 1
     wait_re '^.$' 3
     tm resize-window -t resize -x 100 -y 30
-    if wait_for Controls && has Paused && has MOTOR && lacks 'too small' &&
-        [ "$(awk 'END { print NR }' "$scr")" -eq 30 ]; then pass; else
+    if settle_all 5 "has Controls && has Paused && has MOTOR && lacks 'too small' &&
+        [ \"\$(awk 'END { print NR }' \"\$scr\")\" -eq 30 ]"; then pass; else
         fail "resize 1x1 -> 100x30: expected the normal screen (Paused, MOTOR, Controls); screen: $(brief)"
     fi
     # a storm of sizes, then back to 120x40
@@ -122,7 +122,7 @@ fi
 
 # ---- tiny sizes: the message fits, nothing crashes ----
 S=tiny
-if wait_for '60x20' && has_re '(^| )small( |$)'; then
+if settle_all 5 "has '60x20' && has_re '(^| )small( |\$)'"; then
     if grep -qE '(^| )60x20( |$)' "$scr"; then pass; else
         fail "20x5: the size needed should be shown whole ('60x20'); screen: $(tr '\n' '|' <"$scr")"
     fi
@@ -135,7 +135,7 @@ else
     fail "20x5: expected a too-small message with '60x20' whole; screen: $(tr '\n' '|' <"$scr")"
 fi
 tm resize-window -t tiny -x 60 -y 20
-if wait_for Controls && lacks 'too small'; then pass; else
+if settle_all 5 "has Controls && lacks 'too small'"; then pass; else
     fail "20x5 -> 60x20: expected the normal screen; screen: $(brief)"
 fi
 S=one
@@ -144,7 +144,7 @@ if poll 3 has_re '^[^ ]$' && alive one; then pass; else
     fail "1x1: expected one character drawn and the program alive; screen: '$(cat "$scr")'"
 fi
 tm resize-window -t one -x 80 -y 24
-if wait_for Controls && has Paused; then pass; else fail "1x1 -> 80x24: expected the normal screen; screen: $(brief)"; fi
+if settle_all 5 "has Controls && has Paused"; then pass; else fail "1x1 -> 80x24: expected the normal screen; screen: $(brief)"; fi
 
 # ---- LANG=C: ASCII only ----
 if up ascii; then
@@ -210,7 +210,7 @@ fi
 # TERM=dumb (Emacs' shell, some CI logs) cannot move the cursor: the plain mode, lines a
 # person can read there, no escape sequence drawn
 S=dumb
-if wait_for 'event t=0.00 ready: 2 masses' 3 && has 'status t=0.00 x1=0.0000'; then pass; else
+if wait_all 3 "has 'event t=0.00 ready: 2 masses' && has 'status t=0.00 x1=0.0000'"; then pass; else
     fail "TERM=dumb: expected the plain mode's lines; the screen shows only: $(grep -n . "$scr" | cut -c 1-100 | tr '\n' '|')"
 fi
 if ended && ! has 'TERMINAL SAME'; then fail "TERM=dumb: the terminal modes differ after exit"; fi
