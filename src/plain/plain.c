@@ -22,10 +22,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "../app/app.h"
+#include "../app/clock.h"
 #include "../app/command.h"
 #include "../app/lesson.h"
 #include "../app/record.h"
@@ -89,13 +89,6 @@ static void catch_signals(void)
     struct sigaction alarm_sa = {.sa_handler = on_alarm}; /* no SA_RESTART */
     sigemptyset(&alarm_sa.sa_mask);
     sigaction(SIGALRM, &alarm_sa, NULL);
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* Writes one line "KIND text"; a failed write means standard output has gone. */
@@ -186,28 +179,11 @@ static bool step(struct plain *p)
     return true;
 }
 
-/* Brings simulated time up to the clock times the playback speed, spending at most
- * STEP_BUDGET at a time: a chain too slow to follow falls behind rather than stop
- * listening. */
-static void advance(struct plain *p, double *debt, double elapsed)
+/* One step while following the clock: none once a quit signal came or the reader went. */
+static bool clock_step(void *ctx)
 {
-    struct app *app = &p->app;
-    if (!app->running) {
-        *debt = 0.0;
-        return;
-    }
-    *debt += elapsed * app->speed;
-    double start = now_s();
-    while (*debt >= app->cfg.dt && app->running && !quit_signal && !p->closed) {
-        if (!step(p))
-            break;
-        *debt -= app->cfg.dt;
-        if (now_s() - start > STEP_BUDGET) {
-            if (*debt > 0.25 * app->speed)
-                *debt = 0.0;
-            return;
-        }
-    }
+    struct plain *p = ctx;
+    return !quit_signal && !p->closed && step(p);
 }
 
 /* run SECONDS: steps at once to that much later, then pauses. */
@@ -520,11 +496,14 @@ int plain_run(const struct config *cfg, const char *exe_dir, const struct lesson
             lesson->steps == 1 ? "" : "s");
         lesson_play_on(&p);
     }
-    double last = now_s(), debt = 0.0;
+    double last = app_clock_now();
+    struct app_clock clock = {0};
     bool go = true;
     while (go && !quit_signal && !p.closed) {
-        double now = now_s();
-        advance(&p, &debt, now - last);
+        double now = app_clock_now();
+        /* At most STEP_BUDGET at a time: a chain too slow to follow falls behind rather
+         * than stop listening. */
+        app_clock_follow(&clock, &p.app, now - last, STEP_BUDGET, clock_step, &p);
         last = now;
         /* Standard output is watched too: a reader that went (POLLERR on a pipe) ends
          * the session even while nothing is being written. */

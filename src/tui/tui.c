@@ -7,11 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <curses.h>
 
+#include "../app/clock.h"
 #include "../app/ghost.h"
 #include "../app/layout.h"
 #include "../app/record.h"
@@ -48,7 +48,7 @@ struct tui {
     int enlarged;         /* the plot enlarged, or -1 for the grid */
     double plot_due;      /* wall time of the next plot refresh */
     bool plots_dirty;     /* refresh the plots at the next frame */
-    bool behind;          /* the core could not keep up */
+    struct app_clock clock; /* simulated time following the wall clock */
     int backlog_frames;   /* frames in a row with output piling up unread */
     bool dragging;        /* a mass is being dragged with the mouse */
     struct teach teach;   /* a lesson being played, its caption panel */
@@ -56,13 +56,6 @@ struct tui {
     char said[64];        /* the command the key being handled stands for, or "" */
     struct graphics gfx;  /* the charts as images, where the terminal shows them */
 };
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* True while time cursors are shown on the plots: their keys come first. */
 static bool cursors_shown(const struct tui *t)
@@ -115,7 +108,7 @@ static double draw(struct tui *t, bool refresh)
     if (l->too_small) {
         panel_too_small(l);
     } else {
-        panel_status(l, &t->app, t->behind);
+        panel_status(l, &t->app, t->clock.behind);
         scene_draw(&t->scene, l, &t->app, &t->sel);
         /* The spectrum follows the mass last selected in the chain. */
         if (select_mass(&t->sel) >= 0)
@@ -137,12 +130,12 @@ static double draw(struct tui *t, bool refresh)
     }
     term_park_cursor();
     wnoutrefresh(stdscr);
-    double start = now_s();
+    double start = app_clock_now();
     doupdate();
     struct chart *charts[GRAPHICS_SLOTS];
     graphics_frame(&t->gfx, charts, shown_charts(t, charts, true),
                    t->overlay.kind != OVERLAY_NONE);
-    return now_s() - start;
+    return app_clock_now() - start;
 }
 
 /* An arrow's adjustment: +-1, fine or coarse, on the control or the chain's mass; in
@@ -600,33 +593,6 @@ static void follow_graphics(struct tui *t)
                 config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
 }
 
-/* Advances the simulation to follow the wall clock times the playback speed. */
-static void advance(struct tui *t, double *debt, double elapsed)
-{
-    struct app *app = &t->app;
-    if (!app->running) {
-        *debt = 0.0;
-        t->behind = false;
-        return;
-    }
-    *debt += elapsed * app->speed;
-    double dt = app->cfg.dt;
-    double start = now_s();
-    while (*debt >= dt && app->running) {
-        if (!app_step(app))
-            break;
-        *debt -= dt;
-        /* Never spend more than half a frame computing: fall behind and say so. */
-        if (now_s() - start > 0.5 / frame_hz(t)) {
-            t->behind = *debt > 2.0 * dt;
-            if (*debt > 0.25 * app->speed)
-                *debt = 0.0;
-            return;
-        }
-    }
-    t->behind = false;
-}
-
 static void tui_free(struct tui *t)
 {
     scene_free(&t->scene);
@@ -678,11 +644,12 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
     if (t.app.message[0] == '\0')
         app_say(&t.app, false, "space starts; ? lists every key");
 
-    double last = now_s(), debt = 0.0, next_frame = last;
+    double last = app_clock_now(), next_frame = last;
     bool go = true;
     while (go && !term_quit_signal()) {
-        double now = now_s();
-        advance(&t, &debt, now - last);
+        double now = app_clock_now();
+        /* Never spend more than half a frame computing: fall behind and say so. */
+        app_clock_follow(&t.clock, &t.app, now - last, 0.5 / frame_hz(&t), NULL, NULL);
         follow_graphics(&t);
         last = now;
         if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
@@ -702,7 +669,7 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
             next_frame = now + 1.0 / hz;
         /* Wait for input until the next frame; take every key that is there. */
         for (;;) {
-            int ms = (int)((next_frame - now_s()) * 1000.0);
+            int ms = (int)((next_frame - app_clock_now()) * 1000.0);
             timeout(ms > 0 ? ms : 0);
             int ch = getch();
             if (ch == ERR) {
