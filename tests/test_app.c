@@ -69,20 +69,20 @@ static void masks_say_what_changed(void **state)
     assert_int_equal(w & ~APP_CHANGED_MESSAGE, APP_CHANGED_DT);
     /* A dt past the stability limit says so, and so do springs that make it so. */
     w = app_set_text(&app, CTL_DT, "0.05");
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     w = app_set_text(&app, CTL_SPRING, "5000");
     assert_true(w & APP_CHANGED_CHAIN);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_WARNING);
     assert_non_null(strstr(app.message, "stability limit"));
     w = app_set_text(&app, CTL_SPRING, "10");
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     w = app_set_text(&app, CTL_SPRING, "5000");
     w = app_set_text(&app, CTL_DT, "0.001"); /* at 0.01 its top mode is only roughly right */
     assert_true(w & APP_CHANGED_DT);
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     w = app_set_text(&app, CTL_DT, "0.05");
     assert_true(w & APP_CHANGED_DT);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_WARNING);
     assert_non_null(strstr(app.message, "stability limit"));
     assert_true(app_set_text(&app, CTL_DT, "0.01"));
     assert_true(app_set_text(&app, CTL_SPRING, "10"));
@@ -212,7 +212,7 @@ static void window_from_settings(void **state)
     assert_close(app_window(&app), 5.0, 0.0);
 
     assert_int_equal(app_set_window(&app, "61"), 0);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_ERROR);
     assert_string_equal(app.message, "window: '61' is out of range (expected 1 <= window <= 60)");
     assert_close(app_window(&app), 5.0, 0.0);
     assert_int_equal(app_set_window(&app, "12.5"), APP_CHANGED_WINDOW | APP_CHANGED_MESSAGE);
@@ -468,7 +468,7 @@ static void export_csv(void **state)
     /* Nowhere to write: 0, and why. */
     rmdir(dir);
     assert_int_equal(app_export(&app, dir, path, sizeof path), 0);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_ERROR);
 }
 
 /* Step back, change a parameter, go on: the run continues from the earlier state and
@@ -580,7 +580,7 @@ static void integrator_and_limits(void **state)
     assert_true(app_adjust(&app, CTL_INTEGRATOR, 1, false)); /* round to euler */
     assert_int_equal(sim_integrator(app.sim), INTEGRATOR_EULER);
     /* Euler on the lightly damped chain at dt = 0.01: unstable, and said so. */
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_WARNING);
     assert_non_null(strstr(app.message, "above the stability limit of euler"));
     assert_true(app.stable_dt < rk4_limit);
     assert_int_equal(app_set_text(&app, CTL_INTEGRATOR, "leapfrog"), 0);
@@ -588,7 +588,7 @@ static void integrator_and_limits(void **state)
     assert_int_equal(app.cfg.integrator, INTEGRATOR_EULER);
     assert_true(app_set_text(&app, CTL_INTEGRATOR, "verlet"));
     assert_int_equal(sim_integrator(app.sim), INTEGRATOR_VERLET);
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     /* A new chain keeps it. */
     assert_true(new_n());
     assert_int_equal(sim_integrator(app.sim), INTEGRATOR_VERLET);
@@ -605,15 +605,15 @@ static void integrator_and_limits(void **state)
     next.frequency = 0.5;
     next.x0.count = next.v0.count = 0;
     assert_int_equal(app_load_config(&next), 0);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_WARNING);
     assert_non_null(strstr(app.message, "7.05 Hz mode 82 % off in a period with rk4"));
     assert_true(app_set_text(&app, CTL_DT, "0.01"));
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     /* A drive too fast for dt is said when it becomes so, not at every change after. */
     assert_true(app_set_text(&app, CTL_DT, "0.014"));
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     assert_true(app_set_text(&app, CTL_FREQUENCY, "4.6")); /* near a mode, undamped */
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_WARNING);
     assert_non_null(strstr(app.message, "motion at the 4.6 Hz drive 1.77 % off with rk4"));
     assert_true(limits_rough_drive(&app.limits));
     assert_int_equal(app_adjust(&app, CTL_FREQUENCY, 1, false), APP_CHANGED_DRIVE);
@@ -634,13 +634,13 @@ static void cap_is_reported(void **state)
     next.no_collisions = true;
     next.dt = 0.001;
     assert_int_equal(app_load_config(&next), 0);
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     unsigned w = 0;
     int steps = 0;
     while (!(w & APP_CHANGED_MESSAGE) && steps++ < 100)
         w = app_step(&app);
     assert_true(w & APP_CHANGED_STATE);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_CAP);
     assert_non_null(strstr(app.message, "velocity cap (50 m/s) acted 1 time, first at t = 0.014 s"));
     while (app.capped < 2 && steps++ < 1000)
         app_step(&app);

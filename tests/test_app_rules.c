@@ -320,7 +320,7 @@ static int rebuild_failing(unsigned (*rebuild)(void), int n_after)
             return k - 1;
         }
         unchanged(&before);
-        assert_true(app.message_is_error);
+        assert_int_equal(app.said, SAID_ERROR);
         assert_non_null(strstr(app.message, "out of memory"));
         /* Still a working chain: a step forward, a step back, and the sweep goes on. */
         assert_true(app_step(&app));
@@ -397,7 +397,7 @@ static void refused_input_changes_nothing(void **state)
             fail_msg("%s '%s' was taken", app_control_label(bad[i].ctl), bad[i].text);
         unchanged(&before);
         assert_close(app.speed, speed, 0.0);
-        if (bad[i].ctl != CTL_PRESET && !(app.message_is_error && app.message[0]))
+        if (bad[i].ctl != CTL_PRESET && !(app.said == SAID_ERROR && app.message[0]))
             fail_msg("%s '%s': no reason given", app_control_label(bad[i].ctl), bad[i].text);
     }
     struct snapshot before;
@@ -433,7 +433,7 @@ static void preset_out_of_range(void **state)
         take(&before);
         assert_int_equal(app_load_preset(&app, path, "p"), 0);
         unchanged(&before);
-        assert_true(app.message_is_error);
+        assert_int_equal(app.said, SAID_ERROR);
         assert_non_null(strstr(app.message, path));
     }
     /* Typed, the same limits hold (issue 11, defect 8). */

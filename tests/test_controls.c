@@ -48,7 +48,7 @@ static void typed_values(void **state)
     /* A bad value: refused with what is allowed, nothing changed. */
     assert_int_equal(app_set_text(&app, CTL_GRAPHICS, "png"), 0);
     assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_KITTY);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_ERROR);
     assert_non_null(strstr(app.message, "graphics"));
     assert_non_null(strstr(app.message, "png"));
     assert_non_null(strstr(app.message, "braille"));

@@ -81,7 +81,7 @@ static void sweep_points_beside_the_theory(void **state)
     assert_non_null(mkdtemp(dir));
     /* Nothing measured yet: said, nothing written. */
     assert_int_equal(app_export_sweep(&app, dir, path, sizeof path), APP_CHANGED_MESSAGE);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_ERROR);
     assert_non_null(strstr(app.message, "no sweep measured yet"));
     assert_true(app_set_text(&app, CTL_SPRING, "50"));
     assert_true(app_set_text(&app, CTL_DAMPING, "5"));
@@ -91,7 +91,7 @@ static void sweep_points_beside_the_theory(void **state)
         app_step(&app);
     assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
     assert_int_equal(app_export_sweep(&app, dir, path, sizeof path), APP_CHANGED_MESSAGE);
-    assert_false(app.message_is_error);
+    assert_int_equal(app.said, SAID_NOTE);
     assert_non_null(strstr(app.message, "exported the sweep's 40 points beside the theory to "));
     assert_non_null(strstr(path, "/springsim-sweep-"));
     int n = read_lines(path, lines, 5200);

@@ -276,7 +276,7 @@ static void ghost_out_of_memory(void **state)
         fail_allocation(0);
         assert_null(app.ghost);
         assert_false(w & APP_CHANGED_GHOST);
-        assert_true(app.message_is_error);
+        assert_int_equal(app.said, SAID_ERROR);
         assert_non_null(strstr(app.message, "out of memory"));
         run(10);
     }

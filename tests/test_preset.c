@@ -534,7 +534,7 @@ static void saved_names(void **state)
     assert_int_equal(app_init(&app, &c, NULL), 0);
 
     assert_int_equal(app_save(&app, "r\xc3\xa9sum\xc3\xa9", false), SAVE_BAD_NAME);
-    assert_true(app.message_is_error);
+    assert_int_equal(app.said, SAID_ERROR);
     assert_says(app.message, "ASCII");
     snprintf(path, sizeof path, "%s/springsim/presets/rsum.ini", dir);
     assert_int_equal(access(path, F_OK), -1);

@@ -227,24 +227,24 @@ static void refused_commands_change_nothing(void **state)
                                "set frequency 0", "set dt 0.2", "set masses 11", "mode 3",
                                "run 0", "run 1001", "start now", "help bogus", "preset nosuch",
                                "back", "save"};
-    char answer[2048];
-    double seconds;
+    static struct command_result res;
+    const char *answer = res.answer;
     for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
         memcpy(&before, &app.cfg, sizeof before);
         double t = sim_time(app.sim);
-        assert_int_equal(command_do(&app, bad[i], answer, sizeof answer, &seconds), REPLY_ERROR);
+        assert_int_equal(command_do(&app, bad[i], &res), REPLY_ERROR);
         assert_memory_equal(&before, &app.cfg, sizeof before);
         assert_true(sim_time(app.sim) == t);
         assert_null(strchr(answer, '\n'));
         assert_true(strlen(answer) > 10);
     }
-    assert_int_equal(command_do(&app, "set frequency 0.712", answer, sizeof answer, &seconds),
+    assert_int_equal(command_do(&app, "set frequency 0.712", &res),
                      REPLY_OK);
     assert_true(app.model->motor.frequency == 0.712);
-    assert_int_equal(command_do(&app, "  ", answer, sizeof answer, &seconds), REPLY_NONE);
-    assert_int_equal(command_do(&app, "run 2.5", answer, sizeof answer, &seconds), REPLY_RUN);
-    assert_true(seconds == 2.5);
-    assert_int_equal(command_do(&app, "quit", answer, sizeof answer, &seconds), REPLY_QUIT);
+    assert_int_equal(command_do(&app, "  ", &res), REPLY_NONE);
+    assert_int_equal(command_do(&app, "run 2.5", &res), REPLY_RUN);
+    assert_true(res.seconds == 2.5);
+    assert_int_equal(command_do(&app, "quit", &res), REPLY_QUIT);
     app_free(&app);
 }
 

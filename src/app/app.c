@@ -111,7 +111,7 @@ static unsigned say_limits(struct app *app, unsigned what, bool drive_was_rough)
     } else if ((what & APP_CHANGED_DRIVE) && !drive_was_rough && !limits_unstable(l)) {
         limits_say_drive(l, true, line, sizeof line);
     }
-    return line[0] ? app_say(app, true, "%s", line) : 0;
+    return line[0] ? app_say(app, SAID_WARNING, "%s", line) : 0;
 }
 
 /* Steps between samples for the current dt, fine and coarse. */
@@ -203,9 +203,9 @@ static unsigned say_sweep_end(struct app *app, const char *why, int measured, in
 {
     double f = app->model->motor.frequency;
     if (!why)
-        return app_say(app, false, "sweep stopped after %d of %d frequencies; back at %.3f Hz",
+        return app_say(app, SAID_NOTE, "sweep stopped after %d of %d frequencies; back at %.3f Hz",
                        measured, points, f);
-    return app_say(app, false, "sweep stopped by %s; %s %.3f Hz", why,
+    return app_say(app, SAID_NOTE, "sweep stopped by %s; %s %.3f Hz", why,
                    f == app->sweep_from ? "back at" : "now", f);
 }
 
@@ -215,7 +215,7 @@ static int rebuild_from(struct app *app, const struct config *next, struct model
 {
     struct parts p;
     if (parts_new(&p, m, next) != 0) {
-        app_say(app, true, "out of memory: the chain is as it was");
+        app_say(app, SAID_ERROR, "out of memory: the chain is as it was");
         return -1;
     }
     parts_swap(app, &p);
@@ -256,15 +256,15 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
      * route (a value the program made too: the nearest mode, a sweep's frequency). */
     if ((bad = config_check_ranges(next, err, sizeof err)) >= 0 ||
         (bad = config_check_interactive(next, err, sizeof err)) >= 0) {
-        app_say(app, true, "%s: %s", config_options[bad].name, err);
+        app_say(app, SAID_ERROR, "%s: %s", config_options[bad].name, err);
         return -1;
     }
     struct model *m = config_model(next, &bad, err, sizeof err);
     if (!m) {
         if (bad >= 0)
-            app_say(app, true, "%s: %s", config_options[bad].name, err);
+            app_say(app, SAID_ERROR, "%s: %s", config_options[bad].name, err);
         else
-            app_say(app, true, "%s: the chain is as it was", err);
+            app_say(app, SAID_ERROR, "%s: the chain is as it was", err);
         return -1;
     }
     bool sweeping = app->sweep && app->sweep->active && !(how & CHANGE_BY_SWEEP);
@@ -326,7 +326,7 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
         return -1;
     /* The seed --random chose, so that the start can be repeated. */
     if (cfg->random && !cfg->seed_set && app->message[0] == '\0')
-        app_say(app, false, "random positions from seed %llu (--seed repeats them); space starts",
+        app_say(app, SAID_NOTE, "random positions from seed %llu (--seed repeats them); space starts",
                 (unsigned long long)cfg->seed);
     return 0;
 }
@@ -393,11 +393,9 @@ static unsigned note_cap(struct app *app)
     if (app->capped == 0)
         app->first_cap = sim_time(app->sim);
     app->capped += capped;
-    unsigned what = app_say(app, true, "the velocity cap (%g m/s) acted %ld time%s, first at "
-                            "t = %.*f s", MODEL_VMAX, app->capped, app->capped == 1 ? "" : "s",
-                            app_time_decimals(app->cfg.dt), app->first_cap);
-    app->message_is_cap = true;
-    return what;
+    return app_say(app, SAID_CAP, "the velocity cap (%g m/s) acted %ld time%s, first at "
+                   "t = %.*f s", MODEL_VMAX, app->capped, app->capped == 1 ? "" : "s",
+                   app_time_decimals(app->cfg.dt), app->first_cap);
 }
 
 unsigned app_step(struct app *app)
@@ -424,11 +422,11 @@ unsigned app_step(struct app *app)
         follow_restored(app);
         app->running = false;
         if (unstable && isfinite(app->stable_dt))
-            app_say(app, true, "unstable with %s: dt < %.3g s is stable; paused at t = %.2f s",
+            app_say(app, SAID_ERROR, "unstable with %s: dt < %.3g s is stable; paused at t = %.2f s",
                     integrator_name(app->cfg.integrator), limits_round_down(app->stable_dt),
                     sim_time(app->sim));
         else
-            app_say(app, true, "unstable: the numbers ran away; paused at t = %.2f s",
+            app_say(app, SAID_ERROR, "unstable: the numbers ran away; paused at t = %.2f s",
                     sim_time(app->sim));
         return 0;
     }
@@ -444,7 +442,7 @@ unsigned app_step(struct app *app)
         break;
     case SWEEP_DONE:
         what |= retune(app, app->sweep_from);
-        what |= app_say(app, false, "sweep done: %d frequencies measured (f shows them); back "
+        what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured (f shows them); back "
                         "at %.3f Hz", app->sweep->points, app->sweep_from);
         break;
     default:
@@ -456,11 +454,11 @@ unsigned app_step(struct app *app)
 unsigned app_back(struct app *app)
 {
     if (app->running) {
-        app_say(app, false, "pause first (space) to step back");
+        app_say(app, SAID_NOTE, "pause first (space) to step back");
         return 0;
     }
     if (history_pop(app->hist, app->sim) != 0) {
-        app_say(app, false, sim_time(app->sim) <= 0.0 ? "at t = 0: nothing before it"
+        app_say(app, SAID_NOTE, sim_time(app->sim) <= 0.0 ? "at t = 0: nothing before it"
                                                        : "no earlier state kept (%d at most)",
                 HISTORY_DEPTH);
         return 0;
@@ -504,7 +502,7 @@ unsigned app_random_seed(struct app *app, uint64_t seed)
     for (int i = 0; i < app->model->n; i++)
         app->cfg.v0.v[i] = 0.0;
     unsigned what = app_reset(app);
-    return what | app_say(app, false, "random initial positions (seed %llu)",
+    return what | app_say(app, SAID_NOTE, "random initial positions (seed %llu)",
                           (unsigned long long)seed);
 }
 
@@ -522,7 +520,7 @@ unsigned app_place_start(struct app *app, int i, double x0)
     if (i < 0 || i >= n)
         return 0;
     if (app->running) {
-        app_say(app, false, "pause first (space) to move a mass");
+        app_say(app, SAID_NOTE, "pause first (space) to move a mass");
         return 0;
     }
     double w = model_block_width(m), eq = model_equilibrium(m, i);
@@ -546,7 +544,7 @@ unsigned app_place_start(struct app *app, int i, double x0)
     app->cfg.v0.count = n;
     app->cfg.random = false;
     unsigned what = app_reset(app);
-    return what | app_say(app, false, "mass %d starts at %+.2f m", i + 1, app->cfg.x0.v[i]);
+    return what | app_say(app, SAID_NOTE, "mass %d starts at %+.2f m", i + 1, app->cfg.x0.v[i]);
 }
 
 unsigned app_move_mass(struct app *app, int i, double dx)
@@ -561,9 +559,9 @@ unsigned app_toggle_sweep(struct app *app)
     if (app->sweep->active)
         return end_sweep(app, NULL);
     if (app->model->boundary != BOUNDARY_MOTOR)
-        return app_say(app, true, "a sweep needs the motor at the right end");
+        return app_say(app, SAID_ERROR, "a sweep needs the motor at the right end");
     if (!app->modes_ok)
-        return app_say(app, true, "a sweep needs the modes, and those of this chain are not "
+        return app_say(app, SAID_ERROR, "a sweep needs the modes, and those of this chain are not "
                                   "known");
     int n = app->model->n;
     /* Half the first mode to 1.5 times the last, as far as the drive goes (0.1 Hz up to
@@ -574,7 +572,7 @@ unsigned app_toggle_sweep(struct app *app)
     if (!(lo < hi)) {
         char range[64];
         config_expected(CFG_FREQUENCY, range, sizeof range);
-        return app_say(app, true, "a sweep needs a mode the drive reaches: the first is at "
+        return app_say(app, SAID_ERROR, "a sweep needs a mode the drive reaches: the first is at "
                                   "%.4g Hz (the drive: %s Hz)", app->modes[0], range);
     }
     /* Settle for a few damping times of the slowest-decaying mode, within reason. */
@@ -586,7 +584,7 @@ unsigned app_toggle_sweep(struct app *app)
     sweep_start(app->sweep, lo, hi, settle, sim_time(app->sim));
     unsigned what = retune(app, sweep_frequency(app->sweep)) | app_set_running(app, true);
     char a[32], b[32];
-    return what | app_say(app, false, "sweeping %s..%s Hz, %d steps of %.0f s or more; ] "
+    return what | app_say(app, SAID_NOTE, "sweeping %s..%s Hz, %d steps of %.0f s or more; ] "
                           "runs faster, w stops", app_fixed(lo, 2, a, sizeof a),
                           app_fixed(hi, 2, b, sizeof b), app->sweep->points, settle);
 }
@@ -614,7 +612,7 @@ unsigned app_window_step(struct app *app, int dir)
     unsigned what = w != app->cfg.window ? APP_CHANGED_WINDOW : 0;
     app->cfg.window = w;
     if (moved < places)
-        what |= app_say(app, false, "the time window is %g s at %s", w,
+        what |= app_say(app, SAID_NOTE, "the time window is %g s at %s", w,
                         dir < 0 ? "least" : "most");
     return what;
 }

@@ -61,6 +61,15 @@ const char *app_fixed(double v, int decimals, char *buf, size_t len);
 /* Position of frequency f on the control's range drawn on a log scale, 0 to 1. */
 double app_freq_fraction(double f);
 
+/* What the status message is, set where it is made. */
+enum app_said {
+    SAID_NOTE,    /* what was done, or a hint */
+    SAID_WARNING, /* done, with a caveat: dt is past a limit of the chain as it is now */
+    SAID_ERROR,   /* refused, or failed: nothing changed but the message */
+    SAID_CAP,     /* the velocity cap's count, said anew at every step it acts (a line
+                   * mode tells it at most once a second of simulated time) */
+};
+
 /* What a save of a preset came to. */
 enum app_save { SAVE_OK, SAVE_EXISTS, SAVE_BAD_NAME, SAVE_FAILED };
 
@@ -110,10 +119,9 @@ struct app {
     char preset_file[4400];  /* the file it was loaded from (app_load_preset), or "" */
     unsigned loads;          /* presets loaded from files so far */
     char message[200];       /* one line for the status bar, "" for none */
-    bool message_is_error;   /* shown as a warning */
-    bool message_is_cap;     /* the message is the velocity cap's note, said anew at every
-                              * step the cap acts (a line mode tells it at most once a
-                              * second of simulated time) */
+    enum app_said said;      /* what the message is, set with it (app_say): what is decided
+                              * on it is decided on this, never on its words */
+    unsigned says;           /* messages said so far (app_say): a new one moves it */
     const char *exe_dir;     /* for the preset search path */
     double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
@@ -257,8 +265,11 @@ const char *app_control_label(enum control ctl);
 const char *app_control_name(enum control ctl);
 void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len);
 
-/* Sets the status message (printf-style); returns APP_CHANGED_MESSAGE. */
-unsigned app_say(struct app *app, bool error, const char *fmt, ...)
+/* Sets the status message (printf-style) and what it is; returns APP_CHANGED_MESSAGE. */
+unsigned app_say(struct app *app, enum app_said said, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* No message (a note, so that nothing left of an old one is read as a warning). */
+void app_quiet(struct app *app);
 
 #endif

@@ -16,9 +16,9 @@
 
 const struct command commands[CMD_COUNT] = {
     [CMD_START] = {"start", ACT_RUN, "", "start the simulation; time follows the clock at the "
-                                         "Speed control's rate"},
-    [CMD_PAUSE] = {"pause", ACT_RUN, "", "pause it"},
-    [CMD_STEP] = {"step", ACT_STEP, "", "one step of dt forward (pauses)"},
+                                         "Speed control's rate", true},
+    [CMD_PAUSE] = {"pause", ACT_RUN, "", "pause it", true},
+    [CMD_STEP] = {"step", ACT_STEP, "", "one step of dt forward (pauses)", true},
     [CMD_BACK] = {"back", ACT_BACK, "", "one step back (paused; up to 500 states)"},
     [CMD_RESET] = {"reset", ACT_RESET, "", "back to the initial conditions, t = 0"},
     [CMD_RANDOM] = {"random", ACT_RANDOM, "[SEED]",
@@ -28,7 +28,7 @@ const struct command commands[CMD_COUNT] = {
     [CMD_PRESET] = {"preset", ACT_PRESETS, "NAME", "load a preset by name or file"},
     [CMD_PRESETS] = {"presets", ACT_PRESETS, "", "the presets' names"},
     [CMD_MODES] = {"modes", ACT_MODES, "", "each natural frequency with its damping ratio and Q"},
-    [CMD_MODE] = {"mode", ACT_ENTER, "K", "start the chain in mode K, at rest, running"},
+    [CMD_MODE] = {"mode", ACT_ENTER, "K", "start the chain in mode K, at rest, running", true},
     [CMD_PLACE] = {"place", ACT_LEFT, "MASS X0",
                    "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
                    "where they stand, at rest, t = 0 (paused)"},
@@ -47,7 +47,7 @@ const struct command commands[CMD_COUNT] = {
                      "period, frequency, peak-to-peak, rms, log decrement and zeta of a mass "
                      "over the time window"},
     [CMD_RUN] = {"run", ACT_NONE, "SECONDS",
-                 "run SECONDS of simulated time at once (not in real time), then pause"},
+                 "run SECONDS of simulated time at once (not in real time), then pause", true},
     [CMD_VIEW] = {"view", ACT_NONE, "NAME",
                   "what the interactive program shows (lessons set the scene with it): plots, "
                   "x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
@@ -192,19 +192,19 @@ static enum command_reply say_presets(const struct app *app, char *answer, size_
 /* A change made, whose message is a warning (dt near a limit of the new chain): done. */
 static bool warned(const struct app *app, unsigned changed)
 {
-    return (changed & ~(unsigned)APP_CHANGED_MESSAGE) && app->message_is_error &&
-           strncmp(app->message, "warning: ", strlen("warning: ")) == 0;
+    return (changed & ~(unsigned)APP_CHANGED_MESSAGE) && app->said == SAID_WARNING;
 }
 
-/* The answer an app action left in its message: an error if it says so (not a warning of
- * a change made) or did nothing. */
+/* The answer an app action left in its message: an error if the message is one (or the
+ * cap's note), or nothing was done and nothing said; a warning of a change made is a
+ * change made. */
 static enum command_reply from_message(const struct app *app, unsigned changed, char *answer,
                                        size_t len)
 {
     snprintf(answer, len, "%s", app->message[0] ? app->message : "nothing changed");
     if (warned(app, changed))
-        return REPLY_OK;
-    return app->message_is_error || (!changed && !app->message[0]) ? REPLY_ERROR : REPLY_OK;
+        return REPLY_WARNING;
+    return app->said != SAID_NOTE || (!changed && !app->message[0]) ? REPLY_ERROR : REPLY_OK;
 }
 
 /* t now, as the status line writes it. */
@@ -218,7 +218,7 @@ static enum command_reply load_preset(struct app *app, const char *name, char *a
 {
     char path[4400];
     if (preset_find(name, app->exe_dir, path, sizeof path) != PRESET_OK) {
-        snprintf(answer, len, "preset: %s", path);
+        snprintf(answer, len, "preset: %.*s", (int)(len > 9 ? len - 9 : 0), path);
         return REPLY_ERROR;
     }
     return from_message(app, app_load_preset(app, path, name), answer, len);
@@ -251,7 +251,7 @@ static enum command_reply set_control(struct app *app, const char *name, const c
         char now[96];
         app_control_value(app, (enum control)c, now, sizeof now);
         snprintf(answer, len, "%s %s; %s", app_control_label((enum control)c), now, app->message);
-        return REPLY_OK;
+        return REPLY_WARNING;
     }
     return from_message(app, changed, answer, len);
 }
@@ -265,8 +265,10 @@ static int whole(const char *text, int hi)
     return (int)v;
 }
 
-enum command_reply command_do(struct app *app, const char *line, char *answer, size_t len,
-                              double *seconds)
+/* One line: its reply, the answer into answer, a run's seconds or a view's number into
+ * *value, the command's row into *cmd (-1 for none). */
+static enum command_reply dispatch(struct app *app, const char *line, char *answer, size_t len,
+                                   double *seconds, int *row)
 {
     char buf[2048], q[4 * CONFIG_QUOTE_MAX + 48], list[600];
     snprintf(buf, sizeof buf, "%s", line);
@@ -287,6 +289,7 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         return REPLY_ERROR;
     }
     const struct command *c = &commands[cmd];
+    *row = cmd;
     bool wants = c->args[0] && c->args[0] != '[';
     if (cmd == CMD_SET && !*rest)
         return set_control(app, "", "", answer, len);
@@ -299,8 +302,7 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         snprintf(answer, len, "%s: takes nothing, but was given %s", c->name, q);
         return REPLY_ERROR;
     }
-    app->message[0] = '\0';
-    app->message_is_error = false;
+    app_quiet(app);
     int d;
     double t;
     unsigned changed;
@@ -409,7 +411,7 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
     case CMD_NEAREST:
         changed = app_nearest_mode(app);
         if (!changed && !app->message[0])
-            snprintf(app->message, sizeof app->message, "nearest: the modes are not known");
+            app_say(app, SAID_NOTE, "nearest: the modes are not known");
         return from_message(app, changed, answer, len);
     case CMD_SWEEP:
         return from_message(app, app_toggle_sweep(app), answer, len);
@@ -451,7 +453,7 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         size_t used = strlen(answer);
         app_export_sweep(app, NULL, path, sizeof path);
         snprintf(answer + used, len - used, "; %s", app->message);
-        return app->message_is_error ? REPLY_ERROR : REPLY_OK;
+        return app->said != SAID_NOTE ? REPLY_ERROR : REPLY_OK;
     }
     case CMD_CURSOR:
         return scope_say_cursor(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;
@@ -513,4 +515,21 @@ enum command_reply command_do(struct app *app, const char *line, char *answer, s
         break;
     }
     return REPLY_NONE;
+}
+
+enum command_reply command_do(struct app *app, const char *line, struct command_result *res)
+{
+    double value = 0.0;
+    int row = -1;
+    res->answer[0] = '\0';
+    res->reply = dispatch(app, line, res->answer, sizeof res->answer, &value, &row);
+    res->seconds = res->reply == REPLY_RUN ? value : 0.0;
+    res->view = res->reply == REPLY_VIEW ? (int)value : -1;
+    res->says_play = row >= 0 && commands[row].says_play;
+    return res->reply;
+}
+
+bool command_done(enum command_reply r)
+{
+    return r == REPLY_OK || r == REPLY_WARNING || r == REPLY_VIEW;
 }

@@ -5,6 +5,7 @@
 #ifndef SPRINGSIM_COMMAND_H
 #define SPRINGSIM_COMMAND_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 struct app;
@@ -93,6 +94,8 @@ struct command {
     enum action action; /* the key table's action it stands for (ACT_NONE: no key) */
     const char *args;   /* its arguments, for help ("" for none) */
     const char *help;   /* what it does */
+    bool says_play;     /* its answer says whether the chain runs now (start, pause, step,
+                         * run, mode): a start or a pause it made is no event of its own */
 };
 
 /* The commands, indexed by enum command_id. */
@@ -123,22 +126,37 @@ extern const char *const command_views[CV_COUNT];
 
 /* What a command line came to. */
 enum command_reply {
-    REPLY_NONE,  /* a blank line: nothing to answer */
-    REPLY_OK,    /* done; the answer says what it did */
-    REPLY_ERROR, /* refused, nothing changed; the answer says what was wrong and what is
-                  * allowed */
+    REPLY_NONE,    /* a blank line: nothing to answer */
+    REPLY_OK,      /* done; the answer says what it did */
+    REPLY_WARNING, /* done, with a caveat the answer carries (dt past a limit of the chain
+                    * now): an ok all the same */
+    REPLY_ERROR,   /* refused, nothing changed; the answer says what was wrong and what is
+                    * allowed */
     REPLY_RUN,   /* run: the caller runs *seconds of simulated time, then pauses */
     REPLY_VIEW,  /* view: the interactive program shows view *seconds (enum command_view);
                   * the answer says so */
     REPLY_QUIT   /* quit */
 };
 
+/* What a command line came to, its answer beside it (tmux's cmd_retval and the
+ * message): what is decided on it is decided on reply and says_play, never on answer's
+ * words. */
+struct command_result {
+    enum command_reply reply;
+    char answer[2048]; /* one line without a newline (text of the app's messages and of the
+                        * line itself included as they are: the caller escapes what it
+                        * prints), "" for REPLY_NONE */
+    double seconds;    /* REPLY_RUN: the simulated seconds to run */
+    int view;          /* REPLY_VIEW: what to show (enum command_view) */
+    bool says_play;    /* the answer says whether the chain runs now (struct command) */
+};
+
 /* Does what one line of the plain mode asks of app, going through the same app_*
- * functions as the keys; its answer, one line without a newline (text of the app's
- * messages and of the line itself included as they are: the caller escapes what it
- * prints), into answer. */
-enum command_reply command_do(struct app *app, const char *line, char *answer, size_t len,
-                              double *seconds);
+ * functions as the keys; returns res->reply. */
+enum command_reply command_do(struct app *app, const char *line, struct command_result *res);
+
+/* Whether a reply is of a command done (ok, or ok with a warning; a view shown). */
+bool command_done(enum command_reply r);
 
 /* The status line: t, each mass's displacement and velocity, the drive's position. */
 void command_status(const struct app *app, char *buf, size_t len);

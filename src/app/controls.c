@@ -188,7 +188,7 @@ static int new_masses(struct app *app, int n, unsigned *what)
     if (app_change(app, &next, CHANGE_REBUILD, rows[CTL_MASSES].why, what) != 0)
         return -1;
     *what |= APP_CHANGED_PENDING |
-             app_say(app, false, "%d mass%s, at rest%s", n, n == 1 ? "" : "es",
+             app_say(app, SAID_NOTE, "%d mass%s, at rest%s", n, n == 1 ? "" : "es",
                      ghost ? "; ghost dropped with the old chain" : "");
     return 0;
 }
@@ -219,7 +219,7 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         if (n == app->model->n)
             return APP_CHANGED_PENDING;
         return APP_CHANGED_PENDING |
-               app_say(app, false, "Enter applies %d masses (a reset)", app->masses_pending);
+               app_say(app, SAID_NOTE, "Enter applies %d masses (a reset)", app->masses_pending);
     }
     case CTL_SPEED: {
         int i = 0;
@@ -276,7 +276,7 @@ static unsigned say_set(struct app *app, enum control ctl, unsigned what)
         return what;
     char value[64];
     app_control_value(app, ctl, value, sizeof value);
-    return what | app_say(app, false, "%s %s", rows[ctl].label, value);
+    return what | app_say(app, SAID_NOTE, "%s %s", rows[ctl].label, value);
 }
 
 unsigned app_set_text(struct app *app, enum control ctl, const char *text)
@@ -295,7 +295,7 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
         }
         char q[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(text, strlen(text), q, sizeof q);
-        app_say(app, true, "speed: %s is not a number from 0.1 to 10", q);
+        app_say(app, SAID_ERROR, "speed: %s is not a number from 0.1 to 10", q);
         return 0;
     }
     if (ctl == CTL_BANDWIDTH) {
@@ -307,13 +307,13 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text)
         }
         char q[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(text, strlen(text), q, sizeof q);
-        app_say(app, true, "refresh: %s is not low or normal", q);
+        app_say(app, SAID_ERROR, "refresh: %s is not low or normal", q);
         return 0;
     }
     /* Checked on a copy, so a bad value changes nothing. */
     struct config next = app->cfg;
     if (config_set(&next, rows[ctl].key, text, err, sizeof err) != 0) {
-        app_say(app, true, "%s: %s", setting(ctl)->name, err);
+        app_say(app, SAID_ERROR, "%s: %s", setting(ctl)->name, err);
         return 0;
     }
     unsigned what = 0;
@@ -331,12 +331,12 @@ unsigned app_set_window(struct app *app, const char *text)
     struct config next = app->cfg;
     char err[300];
     if (config_set(&next, CFG_WINDOW, text, err, sizeof err) != 0) {
-        app_say(app, true, "window: %s", err);
+        app_say(app, SAID_ERROR, "window: %s", err);
         return 0;
     }
     unsigned what = next.window != app->cfg.window ? APP_CHANGED_WINDOW : 0;
     app->cfg.window = next.window;
-    return what | app_say(app, false, "window %g s", next.window);
+    return what | app_say(app, SAID_NOTE, "window %g s", next.window);
 }
 
 unsigned app_apply_masses(struct app *app)
@@ -371,7 +371,7 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
             config_quote(text, strlen(text), q, sizeof q);
             snprintf(err, sizeof err, "%s is more than one value", q);
         }
-        app_say(app, true, "%s: %s", noun, err);
+        app_say(app, SAID_ERROR, "%s: %s", noun, err);
         return 0;
     }
     double v = (what == 'm' ? next.mass : what == 'c' ? next.damping : next.spring).v[0];
@@ -392,7 +392,7 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
         return changed;
     const char *symbol = what == 'm' ? "m" : what == 'c' ? "c" : "k";
     const char *unit = config_options[key].unit;
-    return changed | app_say(app, false, "%s: %s = %g %s", noun, symbol, v, unit);
+    return changed | app_say(app, SAID_NOTE, "%s: %s = %g %s", noun, symbol, v, unit);
 }
 
 void app_spring_name(const struct model *m, int j, char *buf, size_t len)
@@ -420,13 +420,13 @@ unsigned app_nearest_mode(struct app *app)
     if (app->modes[j] > config_options[CFG_FREQUENCY].hi) {
         char range[64];
         config_expected(CFG_FREQUENCY, range, sizeof range);
-        return app_say(app, true, "mode %d is at %.4g Hz, past the drive's range (%s Hz); the "
+        return app_say(app, SAID_ERROR, "mode %d is at %.4g Hz, past the drive's range (%s Hz); the "
                                   "drive is as it was", j + 1, app->modes[j], range);
     }
     next.frequency = app->modes[j];
     if (app_change(app, &next, CHANGE_SETS_FREQUENCY, "the nearest mode", &what) != 0)
         return 0;
-    return what | app_say(app, false, "%sdriving at mode %d, %.3f Hz",
+    return what | app_say(app, SAID_NOTE, "%sdriving at mode %d, %.3f Hz",
                           what & APP_CHANGED_MESSAGE ? "sweep stopped; " : "", j + 1,
                           app->modes[j]);
 }
@@ -454,7 +454,7 @@ unsigned app_start_mode(struct app *app, int j)
     const struct model *m = app->model;
     int n = m->n;
     if (!app->modes_ok || j < 0 || j >= n)
-        return app_say(app, true, "the modes of this chain are not known"), 0u;
+        return app_say(app, SAID_ERROR, "the modes of this chain are not known"), 0u;
     const double *phi = app->shapes + (size_t)j * n;
     double amp = mode_amplitude(m, phi);
     for (int i = 0; i < n; i++) {
@@ -467,7 +467,7 @@ unsigned app_start_mode(struct app *app, int j)
     unsigned what = app_reset(app) | app_set_running(app, true);
     bool driven = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
     char hz[32];
-    return what | app_say(app, false, "%sstarted in mode %d (%s Hz), largest |x| %.2f m%s",
+    return what | app_say(app, SAID_NOTE, "%sstarted in mode %d (%s Hz), largest |x| %.2f m%s",
                           sweeping ? "sweep stopped; " : "", j + 1,
                           app_fixed(app->modes[j], 3, hz, sizeof hz), amp,
                           driven ? "; the motor still drives (Amplitude 0 leaves it alone)"

@@ -110,13 +110,13 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
     const struct sweep *s = app->sweep;
     int measured = sweep_measured(s);
     if (measured == 0)
-        return app_say(app, true, "export: no sweep measured yet (w runs one)");
+        return app_say(app, SAID_ERROR, "export: no sweep measured yet (w runs one)");
     if (app->model->boundary != BOUNDARY_MOTOR)
-        return app_say(app, true, "export: the right end is '%s' now: no drive, no theory to "
+        return app_say(app, SAID_ERROR, "export: the right end is '%s' now: no drive, no theory to "
                        "set beside the sweep", model_boundary_name(app->model->boundary));
     double *amp = malloc((size_t)(2 * s->n) * sizeof *amp);
     if (!amp)
-        return app_say(app, true, "export: out of memory");
+        return app_say(app, SAID_ERROR, "export: out of memory");
     sweep_name(dir, path, len);
     struct config c = app->cfg;
     c.frequency = s->active ? app->sweep_from : c.frequency;
@@ -141,7 +141,7 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
     }
     free(amp);
     if (e)
-        return app_say(app, true, "export: %s: %s", path, strerror(e));
-    return app_say(app, false, "exported the sweep's %d point%s beside the theory to %s", rows,
+        return app_say(app, SAID_ERROR, "export: %s: %s", path, strerror(e));
+    return app_say(app, SAID_NOTE, "exported the sweep's %d point%s beside the theory to %s", rows,
                    rows == 1 ? "" : "s", path);
 }

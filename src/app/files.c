@@ -35,17 +35,17 @@ static unsigned load_config(struct app *app, struct config *next_in, const char 
     bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
     if (app_change(app, &next, CHANGE_REBUILD | CHANGE_SETS_FREQUENCY, "the preset", &what)) {
         snprintf(err, sizeof err, "%s", app->message);
-        app_say(app, true, "%s: %s", path, err);
+        app_say(app, SAID_ERROR, "%s: %s", path, err);
         return 0;
     }
     snprintf(app->preset, sizeof app->preset, "%s", next.name[0] ? next.name : name);
     const char *dropped = ghost ? ", ghost dropped" : "";
     const char *sep = next.description[0] ? ": " : ""; /* a preset may have none */
     if (next.random && !next.seed_set) /* the seed chosen, so the start can be repeated */
-        return what | app_say(app, false, "preset %s (random positions, seed %llu%s)%s%s",
+        return what | app_say(app, SAID_NOTE, "preset %s (random positions, seed %llu%s)%s%s",
                               app->preset, (unsigned long long)next.seed, dropped, sep,
                               next.description);
-    return what | app_say(app, false, "preset %s%s%s%s", app->preset,
+    return what | app_say(app, SAID_NOTE, "preset %s%s%s%s", app->preset,
                           ghost ? " (ghost dropped)" : "", sep, next.description);
 }
 
@@ -55,7 +55,7 @@ unsigned app_load_preset(struct app *app, const char *path, const char *name)
     char err[600];
     config_init(&next);
     if (preset_load(path, &next, err, sizeof err) != PRESET_OK) {
-        app_say(app, true, "%s", err);
+        app_say(app, SAID_ERROR, "%s", err);
         return 0;
     }
     unsigned what = load_config(app, &next, path, name);
@@ -73,7 +73,7 @@ unsigned app_load_preset_text(struct app *app, const char *path, const char *tex
     char err[600];
     config_init(&next);
     if (preset_parse(path, text, size, &next, err, sizeof err) != PRESET_OK) {
-        app_say(app, true, "%s", err);
+        app_say(app, SAID_ERROR, "%s", err);
         return 0;
     }
     return load_config(app, &next, path, name);
@@ -132,20 +132,20 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
     }
     const char *why = bad_name(name);
     if (why) {
-        app_say(app, true, "save: '%.40s': %s", name, why);
+        app_say(app, SAID_ERROR, "save: '%.40s': %s", name, why);
         return SAVE_BAD_NAME;
     }
     if (preset_user_dir(dir, sizeof dir) != 0) {
-        app_say(app, true, "save: neither XDG_CONFIG_HOME nor HOME is set");
+        app_say(app, SAID_ERROR, "save: neither XDG_CONFIG_HOME nor HOME is set");
         return SAVE_FAILED;
     }
     snprintf(path, sizeof path, "%s/%s.ini", dir, name);
     if (!overwrite && access(path, F_OK) == 0) {
-        app_say(app, false, "preset %s exists: replace it? (y/n)", name);
+        app_say(app, SAID_NOTE, "preset %s exists: replace it? (y/n)", name);
         return SAVE_EXISTS;
     }
     if (make_dirs(dir) != 0) {
-        app_say(app, true, "save: %s: %s", dir, strerror(errno));
+        app_say(app, SAID_ERROR, "save: %s: %s", dir, strerror(errno));
         return SAVE_FAILED;
     }
     /* The set-up as it stands: every element's values, the initial conditions, and the
@@ -171,16 +171,16 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
         }
     }
     if (e == EEXIST && !overwrite) {
-        app_say(app, false, "preset %s appeared meanwhile (another springsim?): replace it? "
+        app_say(app, SAID_NOTE, "preset %s appeared meanwhile (another springsim?): replace it? "
                 "(y/n)", name);
         return SAVE_EXISTS;
     }
     if (e) {
-        app_say(app, true, "save: %s: %s", path, strerror(e));
+        app_say(app, SAID_ERROR, "save: %s: %s", path, strerror(e));
         return SAVE_FAILED;
     }
     snprintf(app->preset, sizeof app->preset, "%s", name);
-    app_say(app, false, "saved %s (springsim -p %s loads it)", path, name);
+    app_say(app, SAID_NOTE, "saved %s (springsim -p %s loads it)", path, name);
     return SAVE_OK;
 }
 
@@ -215,10 +215,10 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
         e = e ? e : closed;
     }
     if (e) {
-        app_say(app, true, "export: %s: %s", path, strerror(e));
+        app_say(app, SAID_ERROR, "export: %s: %s", path, strerror(e));
         return 0;
     }
     char what[120];
     app_export_summary(app, what, sizeof what);
-    return app_say(app, false, "exported %s to %s", what, path);
+    return app_say(app, SAID_NOTE, "exported %s to %s", what, path);
 }

@@ -67,7 +67,7 @@ unsigned ghost_drop(struct app *app, const char *why)
         return 0;
     ghost_free(app->ghost);
     app->ghost = NULL;
-    return APP_CHANGED_GHOST | (why ? app_say(app, false, "ghost dropped %s", why) : 0);
+    return APP_CHANGED_GHOST | (why ? app_say(app, SAID_NOTE, "ghost dropped %s", why) : 0);
 }
 
 unsigned app_toggle_ghost(struct app *app)
@@ -76,9 +76,9 @@ unsigned app_toggle_ghost(struct app *app)
         return ghost_drop(app, "(g makes a new one)");
     app->ghost = ghost_new(app);
     if (!app->ghost)
-        return app_say(app, true, "out of memory: no ghost");
+        return app_say(app, SAID_ERROR, "out of memory: no ghost");
     return APP_CHANGED_GHOST |
-           app_say(app, false, "ghost made at t = %.2f s: it keeps these settings; change the "
+           app_say(app, SAID_NOTE, "ghost made at t = %.2f s: it keeps these settings; change the "
                    "chain's and watch the two part (g drops it)", sim_time(app->sim));
 }
 

@@ -66,7 +66,7 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
                  char *err, size_t errlen)
 {
     static struct app app; /* large; one check at a time */
-    char answer[2048];
+    static struct command_result res;
     if (app_init(&app, base, exe_dir) != 0) {
         snprintf(err, errlen, "%s: out of memory", l->path);
         return 1;
@@ -74,7 +74,6 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
     int st = 0;
     for (int i = 0; i < l->count && !st; i++) {
         const struct lesson_item *it = &l->items[i];
-        double seconds = 0.0;
         if (it->kind == LESSON_SETUP) {
             if (setup_check(l, it, err, errlen) != 0) {
                 st = 2;
@@ -87,12 +86,12 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
         }
         if (it->kind != LESSON_COMMAND)
             continue;
-        enum command_reply r = command_do(&app, it->text, answer, sizeof answer, &seconds);
+        enum command_reply r = command_do(&app, it->text, &res);
         if (r == REPLY_ERROR) {
-            snprintf(err, errlen, "%s:%d: %s", l->path, it->line, answer);
+            snprintf(err, errlen, "%s:%d: %s", l->path, it->line, res.answer);
             st = 2;
         } else if (r == REPLY_RUN) {
-            lesson_run(&app, seconds);
+            lesson_run(&app, res.seconds);
         }
     }
     app_free(&app);

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-unsigned app_say(struct app *app, bool error, const char *fmt, ...)
+unsigned app_say(struct app *app, enum app_said said, const char *fmt, ...)
 {
     char line[sizeof app->message];
     va_list ap;
@@ -16,9 +16,15 @@ unsigned app_say(struct app *app, bool error, const char *fmt, ...)
     va_end(ap);
     /* Whatever went into it, the status line gets no control byte. */
     config_escape(line, strlen(line), sizeof line, app->message, sizeof app->message);
-    app->message_is_error = error;
-    app->message_is_cap = false;
+    app->said = said;
+    app->says++;
     return APP_CHANGED_MESSAGE;
+}
+
+void app_quiet(struct app *app)
+{
+    app->message[0] = '\0';
+    app->said = SAID_NOTE;
 }
 
 int app_time_decimals(double dt)

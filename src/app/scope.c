@@ -136,7 +136,7 @@ unsigned scope_move(struct app *app, int n)
         j = tr->count - 1;
     unsigned what = place(app, trail_time(tr, j));
     if (!what)
-        what = app_say(app, false, n < 0 ? "the cursor is at the oldest sample the window "
+        what = app_say(app, SAID_NOTE, n < 0 ? "the cursor is at the oldest sample the window "
                        "can show" : "the cursor is at the newest sample");
     return what;
 }
@@ -158,11 +158,11 @@ unsigned scope_jump(struct app *app, int dir)
 unsigned scope_page(struct app *app, int dir)
 {
     if (app->running)
-        return app_say(app, false, "pause (space) to scroll back through the recording");
+        return app_say(app, SAID_NOTE, "pause (space) to scroll back through the recording");
     double back = held_back(app) - dir * app_window(app), m = max_back(app);
     back = back < 0.0 ? 0.0 : back > m ? m : back;
     if (back == app->scope.back)
-        return app_say(app, false, dir < 0 ? "the window is at the oldest sample recorded"
+        return app_say(app, SAID_NOTE, dir < 0 ? "the window is at the oldest sample recorded"
                        : "the window is at the present");
     app->scope.back = back;
     return APP_CHANGED_WINDOW;

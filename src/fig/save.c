@@ -63,8 +63,8 @@ unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const 
     }
     fig_done();
     if (e == EDOM)
-        return app_say(app, true, "figure: the modes cannot be computed for this chain");
+        return app_say(app, SAID_ERROR, "figure: the modes cannot be computed for this chain");
     if (e)
-        return app_say(app, true, "figure: %s: %s", bad, strerror(e));
-    return app_say(app, false, "saved the view as %s.svg and .png", base);
+        return app_say(app, SAID_ERROR, "figure: %s: %s", bad, strerror(e));
+    return app_say(app, SAID_NOTE, "saved the view as %s.svg and .png", base);
 }

@@ -47,7 +47,7 @@ struct plain {
     bool closed;               /* standard output has gone */
     int out_error;             /* why a write failed (EPIPE: the reader went), or 0 */
     int in_error;              /* why reading standard input failed, or 0 */
-    char seen[sizeof ((struct app *)0)->message]; /* the app's message already told */
+    unsigned seen;             /* the app's messages already told (app->says) */
     char in[LINE_MAX_IN + 1];  /* the command line being read */
     size_t used;               /* bytes of it */
     bool too_long;             /* the line being read is too long: skipped to its end */
@@ -144,15 +144,15 @@ static void tell_message(struct plain *p)
 {
     /* The cap's note changes at every step the cap acts (its count): told at most once a
      * second of simulated time, as contacts are, the count in it saying how many since. */
-    if (p->app.message_is_cap && strcmp(p->app.message, p->seen) != 0) {
+    if (p->app.said == SAID_CAP && p->app.says != p->seen) {
         double second = floor(sim_time(p->app.sim));
         if (second == p->cap_second)
             return; /* told in the next second's first step, or not if something else is */
         p->cap_second = second;
     }
-    if (p->app.message[0] && strcmp(p->app.message, p->seen) != 0)
+    if (p->app.message[0] && p->app.says != p->seen)
         put_event(p, p->app.message);
-    memcpy(p->seen, p->app.message, sizeof p->seen);
+    p->seen = p->app.says;
 }
 
 /* One step and what it brought: its events, the status line when its time has come. A
@@ -164,7 +164,7 @@ static bool step(struct plain *p)
         char line[sizeof app->message + 16];
         snprintf(line, sizeof line, "blow-up: %s", app->message);
         put_event(p, line);
-        memcpy(p->seen, app->message, sizeof p->seen);
+        p->seen = app->says;
         watch_look(&p->watch, app, on_event, p);
         return false;
     }
@@ -206,25 +206,24 @@ static void run_for(struct plain *p, double seconds, char *answer, size_t len)
 static bool command(struct plain *p, const char *line)
 {
     struct app *app = &p->app;
-    char answer[2048];
-    double seconds = 0.0;
+    static struct command_result res; /* one command at a time */
     double t0 = sim_time(app->sim);
     bool was_running = app->running;
     record_time(&p->rec, app);
-    enum command_reply r = command_do(app, line, answer, sizeof answer, &seconds);
-    if (r == REPLY_OK || r == REPLY_VIEW)
+    enum command_reply r = command_do(app, line, &res);
+    if (command_done(r))
         record_command(&p->rec, app, line);
     if (r == REPLY_NONE)
         return true;
     if (r == REPLY_RUN)
-        run_for(p, seconds, answer, sizeof answer);
+        run_for(p, res.seconds, res.answer, sizeof res.answer);
     if (r == REPLY_QUIT)
         put_status(p);
-    put(p, r == REPLY_ERROR ? "error" : "ok", "%s", answer);
-    /* Started or paused as a side effect (a mode started, a sweep): said as an event. */
-    if (app->running != was_running && !strstr(answer, app->running ? "started" : "paused"))
+    put(p, r == REPLY_ERROR ? "error" : "ok", "%s", res.answer);
+    /* Started or paused as a side effect (a sweep, a preset): said as an event. */
+    if (app->running != was_running && !res.says_play)
         put_event(p, app->running ? "started" : "paused");
-    memcpy(p->seen, app->message, sizeof p->seen);
+    p->seen = app->says;
     watch_look(&p->watch, app, on_event, p);
     if (sim_time(app->sim) != t0 && r != REPLY_RUN) {
         /* step, back, reset, a restart: the status follows the jump */
@@ -266,7 +265,7 @@ static void lesson_item(struct plain *p, const struct lesson_item *it)
         break;
     case LESSON_SETUP:
         put(p, lesson_setup(app, p->lesson, it) == 0 ? "ok" : "error", "%s", app->message);
-        memcpy(p->seen, app->message, sizeof p->seen);
+        p->seen = app->says;
         plan_status(p);
         break;
     case LESSON_EXPECT:
@@ -318,7 +317,7 @@ static void lesson_back(struct plain *p)
             lesson_go_on(&p->play);
     }
     p->quiet = false;
-    memcpy(p->seen, p->app.message, sizeof p->seen);
+    p->seen = p->app.says;
     plan_status(p);
     put(p, "lesson", "back to step %d of %d", target + 1, l->steps);
     for (const char *c = p->play.caption; *c && !p->play.new_caption;) {

@@ -495,7 +495,7 @@ unsigned overlay_key(struct overlay *o, struct app *app, const struct selection 
         o->kind = OVERLAY_NONE;
         if (ch == 'y' || ch == 'Y')
             return app_save(app, o->save_name, true) == SAVE_OK ? APP_CHANGED_MESSAGE : 0;
-        app_say(app, false, "not saved: %s kept as it was", o->save_name);
+        app_say(app, SAID_NOTE, "not saved: %s kept as it was", o->save_name);
         return APP_CHANGED_MESSAGE;
     case OVERLAY_HELP:
         help_key(o, l, ch);

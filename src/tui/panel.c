@@ -184,7 +184,7 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
 {
     int y = l->hints.y;
     if (app->message[0]) {
-        attr_t a = app->message_is_error ? term_attr(PAIR_WARN) : A_BOLD;
+        attr_t a = app->said != SAID_NOTE ? term_attr(PAIR_WARN) : A_BOLD;
         draw_text_attr(y, 1, l->cols - 1, a, app->message);
         return;
     }

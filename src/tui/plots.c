@@ -293,17 +293,17 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
 void plots_toggle_mass(struct plots *p, struct app *app, int i)
 {
     if (i < 0 || i >= app->model->n) {
-        app_say(app, false, "v shows or hides a mass's curves: select it in the chain first "
+        app_say(app, SAID_NOTE, "v shows or hides a mass's curves: select it in the chain first "
                 "(Tab, then ↑↓)");
         return;
     }
     unsigned all = (1u << app->model->n) - 1u;
     if (!(p->hidden >> i & 1u) && (p->hidden | 1u << i) == all) {
-        app_say(app, true, "mass %d is the only one shown: the plots keep one", i + 1);
+        app_say(app, SAID_ERROR, "mass %d is the only one shown: the plots keep one", i + 1);
         return;
     }
     p->hidden ^= 1u << i;
-    app_say(app, false, "mass %d %s the plots (v again: %s)", i + 1,
+    app_say(app, SAID_NOTE, "mass %d %s the plots (v again: %s)", i + 1,
             p->hidden >> i & 1u ? "hidden in" : "shown in", p->hidden >> i & 1u ? "shown" :
             "hidden");
 }

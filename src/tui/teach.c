@@ -15,17 +15,16 @@
  * goes to the status line. */
 static void do_command(struct teach *t, struct app *app, const char *line)
 {
-    char answer[2048];
-    double seconds = 0.0;
-    enum command_reply r = command_do(app, line, answer, sizeof answer, &seconds);
+    static struct command_result res; /* one command at a time */
+    enum command_reply r = command_do(app, line, &res);
     if (r == REPLY_RUN)
-        lesson_run(app, seconds);
+        lesson_run(app, res.seconds);
     else if (r == REPLY_VIEW)
-        t->view = (int)seconds;
+        t->view = res.view;
     else if (r == REPLY_ERROR)
-        app_say(app, true, "%s: %s", t->lesson->name, answer);
+        app_say(app, SAID_ERROR, "%s: %s", t->lesson->name, res.answer);
     else if (r == REPLY_OK && !app->message[0])
-        app_say(app, false, "%s", answer);
+        app_say(app, SAID_NOTE, "%s", res.answer);
 }
 
 static void do_item(struct teach *t, struct app *app, const struct lesson_item *it)
@@ -41,10 +40,10 @@ static void do_item(struct teach *t, struct app *app, const struct lesson_item *
     case LESSON_EXPECT:
         lesson_state(app, now, sizeof now);
         if (strcmp(now, it->text) == 0)
-            app_say(app, false, "replayed: the state at t = %.*f s is the one recorded, bit "
+            app_say(app, SAID_NOTE, "replayed: the state at t = %.*f s is the one recorded, bit "
                     "for bit", app_time_decimals(sim_dt(app->sim)), sim_time(app->sim));
         else
-            app_say(app, true, "replayed, but the state differs from the one recorded");
+            app_say(app, SAID_ERROR, "replayed, but the state differs from the one recorded");
         break;
     default:
         break;
@@ -67,7 +66,7 @@ void teach_start(struct teach *t, const struct lesson *l, struct app *app)
     t->done = false;
     t->note[0] = '\0';
     t->view = -1;
-    app->message[0] = '\0';
+    app_quiet(app);
     lesson_play_start(&t->play, l);
     play_on(t, app);
 }
@@ -88,7 +87,7 @@ void teach_open(struct teach *t, const char *path, struct app *app)
     }
     if (st != 0) {
         lesson_free(&t->own);
-        app_say(app, true, "%s", err);
+        app_say(app, SAID_ERROR, "%s", err);
         return;
     }
     teach_start(t, &t->own, app);
@@ -103,7 +102,7 @@ bool teach_shown(const struct teach *t)
 static void leave(struct teach *t, struct app *app, bool said)
 {
     if (said)
-        app_say(app, false, "left the lesson %s: the chain is as it is", t->lesson->name);
+        app_say(app, SAID_NOTE, "left the lesson %s: the chain is as it is", t->lesson->name);
     t->lesson = NULL;
     t->done = false;
 }
@@ -114,7 +113,7 @@ static void back(struct teach *t, struct app *app)
 {
     int target = t->play.step - (t->done ? 0 : 1);
     if (target < 0) {
-        app_say(app, false, "the first step: space goes on");
+        app_say(app, SAID_NOTE, "the first step: space goes on");
         return;
     }
     int end = lesson_step_end(t->lesson, target);
@@ -127,7 +126,7 @@ static void back(struct teach *t, struct app *app)
     }
     t->done = false;
     t->note[0] = '\0';
-    app_say(app, false, "back to step %d of %d", target + 1, t->lesson->steps);
+    app_say(app, SAID_NOTE, "back to step %d of %d", target + 1, t->lesson->steps);
 }
 
 bool teach_key(struct teach *t, struct app *app, int ch)
@@ -154,7 +153,7 @@ bool teach_key(struct teach *t, struct app *app, int ch)
                      ask->answer);
         else
             snprintf(t->note, sizeof t->note, "You chose %d.", k);
-        app->message[0] = '\0';
+        app_quiet(app);
         lesson_go_on(&t->play);
         play_on(t, app);
         return true;
@@ -163,12 +162,12 @@ bool teach_key(struct teach *t, struct app *app, int ch)
         return false;
     if (t->done) {
         leave(t, app, false);
-        app_say(app, false, "end of the lesson: the chain is yours (? lists every key)");
+        app_say(app, SAID_NOTE, "end of the lesson: the chain is yours (? lists every key)");
     } else if (ask) {
-        app_say(app, false, "answer first: a digit from 1 to %d", ask->nchoices);
+        app_say(app, SAID_NOTE, "answer first: a digit from 1 to %d", ask->nchoices);
     } else {
         t->note[0] = '\0';
-        app->message[0] = '\0';
+        app_quiet(app);
         lesson_go_on(&t->play);
         play_on(t, app);
     }

@@ -151,7 +151,7 @@ static unsigned adjust(struct tui *t, int dir, bool coarse)
     int i = select_mass(&t->sel);
     if (i >= 0)
         return app_move_mass(&t->app, i, dir * (coarse ? 0.5 : 0.05));
-    app_say(&t->app, false, "a spring is selected: ↑↓ to a mass to move it");
+    app_say(&t->app, SAID_NOTE, "a spring is selected: ↑↓ to a mass to move it");
     return APP_CHANGED_MESSAGE;
 }
 
@@ -191,7 +191,7 @@ static unsigned cursor_action(struct tui *t, enum action a)
 {
     struct app *app = &t->app;
     if (t->views.shown != VIEW_PLOTS) {
-        app_say(app, false, "the cursors are on the plots: 0 shows them");
+        app_say(app, SAID_NOTE, "the cursors are on the plots: 0 shows them");
         return APP_CHANGED_MESSAGE;
     }
     /* The mass measured: the one selected in the chain, else the one last measured. */
@@ -210,7 +210,7 @@ static void save_view(struct tui *t)
     for (int i = 0; i < n; i++)
         chart_picture(charts[i], &pics[i]);
     if (t->layout.too_small)
-        app_say(&t->app, true, "figure: the terminal is too small to show the view");
+        app_say(&t->app, SAID_ERROR, "figure: the terminal is too small to show the view");
     else
         fig_save_view(&t->app, pics, n, NULL);
 }
@@ -269,7 +269,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
     struct app *app = &t->app;
     unsigned changed = 0;
     if (a != ACT_NONE && a != ACT_REDRAW)
-        app->message[0] = '\0';
+        app_quiet(app);
     switch (a) {
     case ACT_QUIT:
         return false;
@@ -285,7 +285,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_RESET:
         changed = app_reset(app);
-        app_say(app, false, "reset to t = 0");
+        app_say(app, SAID_NOTE, "reset to t = 0");
         break;
     case ACT_RANDOM:
         changed = app_random(app);
@@ -295,7 +295,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
         break;
     case ACT_LESSONS:
         if (t->rec.mem)
-            app_say(app, false, "no lessons while recording (--record): the recording would "
+            app_say(app, SAID_NOTE, "no lessons while recording (--record): the recording would "
                     "miss their commands");
         else
             overlay_lessons(&t->overlay, app);
@@ -330,7 +330,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
         if (select_mass(&t->sel) >= 0)
             overlay_edit(&t->overlay, EDIT_DAMPING);
         else
-            app_say(app, false, "select a mass in the chain first (Tab, then ↑↓)");
+            app_say(app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
         break;
     case ACT_FOCUS:
         select_toggle_focus(&t->sel, app->model, t->views.shown == VIEW_MODES);
@@ -469,7 +469,7 @@ static void on_mouse(struct tui *t)
             t->sel.elem = 2 * pick + 1;
             t->dragging = !t->app.running;
             if (t->app.running)
-                app_say(&t->app, false, "pause (space) to drag a mass");
+                app_say(&t->app, SAID_NOTE, "pause (space) to drag a mass");
         } else {
             /* Between masses: the spring there (spring j lies left of mass j+1). */
             int j = 0;
@@ -571,7 +571,7 @@ static void watch_backlog(struct tui *t, double spent)
     if (t->backlog_frames >= 3 || spent > 1.0) {
         t->app.cfg.low_bandwidth = true; /* braille too: follow_graphics */
         t->backlog_frames = 0;
-        app_say(&t->app, true, "the terminal is not keeping up: refresh low (the Refresh "
+        app_say(&t->app, SAID_ERROR, "the terminal is not keeping up: refresh low (the Refresh "
                 "control turns it back)");
     }
 }
@@ -589,7 +589,7 @@ static void follow_graphics(struct tui *t)
         t->plots_dirty = true;
     app->graphics_now = graphics_now(&t->gfx);
     if (asked && t->gfx.said[0])
-        app_say(app, true, "Graphics %s: %s",
+        app_say(app, SAID_ERROR, "Graphics %s: %s",
                 config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
 }
 
@@ -639,10 +639,10 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         after_teach(&t, false);
     }
     if (t.gfx.said[0])
-        app_say(&t.app, true, "--graphics %s: %s",
+        app_say(&t.app, SAID_ERROR, "--graphics %s: %s",
                 config_options[CFG_GRAPHICS].choice_name((int)cfg->graphics), t.gfx.said);
     if (t.app.message[0] == '\0')
-        app_say(&t.app, false, "space starts; ? lists every key");
+        app_say(&t.app, SAID_NOTE, "space starts; ? lists every key");
 
     double last = app_clock_now(), next_frame = last;
     bool go = true;
