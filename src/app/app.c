@@ -1,7 +1,8 @@
 /* app.c: the interactive program's state, independent of the terminal: its lifecycle,
  * the one path by which its parameters change (app_change, for controls.c and files.c),
  * and time: steps forward and back, resets, the initial positions, the sweep, and the
- * plots' samples and window. The ghost (ghost.c) follows each of these moves in time. */
+ * plots' samples (their window: window.c). The ghost (ghost.c) follows each of these
+ * moves in time. */
 #include "change.h"
 
 #include <math.h>
@@ -12,10 +13,6 @@
 #include "../core/limits.h"
 #include "../core/modes.h"
 #include "ghost.h"
-
-/* The time plots' windows (s) that < and > step through; --window may start between. */
-static const double windows[] = {1.0, 2.0, 5.0, 10.0, 20.0, 30.0, 60.0};
-#define NWINDOWS (int)(sizeof windows / sizeof *windows)
 
 /* The chain-sized parts, made together and swapped in together. The parameters are the
  * sim's own: the app reads them through app->model, a pointer to them. */
@@ -587,45 +584,4 @@ unsigned app_toggle_sweep(struct app *app)
     return what | app_say(app, SAID_NOTE, "sweeping %s..%s Hz, %d steps of %.0f s or more; ] "
                           "runs faster, w stops", app_fixed(lo, 2, a, sizeof a),
                           app_fixed(hi, 2, b, sizeof b), app->sweep->points, settle);
-}
-
-double app_window(const struct app *app)
-{
-    return app->cfg.window;
-}
-
-unsigned app_window_step(struct app *app, int dir)
-{
-    /* Place by place to the next window of the list past the one shown, which may lie
-     * between two of them (--window 33); a move past an end of the list stops there. */
-    double w = app->cfg.window;
-    int places = dir < 0 ? -dir : dir, moved = 0;
-    for (; moved < places; moved++) {
-        double to = w;
-        for (int i = 0; i < NWINDOWS; i++)
-            if (dir > 0 ? windows[i] > w && to == w : windows[i] < w)
-                to = windows[i];
-        if (to == w)
-            break;
-        w = to;
-    }
-    unsigned what = w != app->cfg.window ? APP_CHANGED_WINDOW : 0;
-    app->cfg.window = w;
-    if (moved < places)
-        what |= app_say(app, SAID_NOTE, "the time window is %g s at %s", w,
-                        dir < 0 ? "least" : "most");
-    return what;
-}
-
-const struct trail *app_trail(const struct app *app)
-{
-    /* The fine samples serve every window they span. */
-    return app_window(app) < TRAIL_FINE_RECORDS * TRAIL_FINE_SPACING ? app->trail : app->coarse;
-}
-
-const struct trail *app_ghost_trail(const struct app *app)
-{
-    if (!app->ghost)
-        return NULL;
-    return app_trail(app) == app->trail ? app->ghost->trail : app->ghost->coarse;
 }
