@@ -1,5 +1,6 @@
-/* command.c: the plain mode's commands, one row each, named after the key table's
- * actions (tui/input.c binds the keys; this names what they do in words). */
+/* command.c: the plain mode's commands, one row each naming its verb (verb.h: what the
+ * keys do too), and the line's words turned into the verb's arguments and its result
+ * into the answer. */
 #include "command.h"
 
 #include <ctype.h>
@@ -23,16 +24,16 @@ const struct command commands[CMD_COUNT] = {
     [CMD_RESET] = {"reset", ACT_RESET, "", "back to the initial conditions, t = 0"},
     [CMD_RANDOM] = {"random", ACT_RANDOM, "[SEED]",
                     "random initial positions (from SEED: the same each time), and a reset"},
-    [CMD_SET] = {"set", ACT_ENTER, "CONTROL VALUE",
+    [CMD_SET] = {"set", ACT_SET, "CONTROL VALUE",
                  "set a control as typed in the interactive program (controls lists them)"},
-    [CMD_PRESET] = {"preset", ACT_PRESETS, "NAME", "load a preset by name or file"},
+    [CMD_PRESET] = {"preset", ACT_PRESET, "NAME", "load a preset by name or file"},
     [CMD_PRESETS] = {"presets", ACT_PRESETS, "", "the presets' names"},
     [CMD_MODES] = {"modes", ACT_MODES, "", "each natural frequency with its damping ratio and Q"},
-    [CMD_MODE] = {"mode", ACT_ENTER, "K", "start the chain in mode K, at rest, running", true},
-    [CMD_PLACE] = {"place", ACT_LEFT, "MASS X0",
+    [CMD_MODE] = {"mode", ACT_MODE, "K", "start the chain in mode K, at rest, running", true},
+    [CMD_PLACE] = {"place", ACT_PLACE, "MASS X0",
                    "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
                    "where they stand, at rest, t = 0 (paused)"},
-    [CMD_ELEMENT] = {"element", ACT_ENTER, "m|c|k I VALUE",
+    [CMD_ELEMENT] = {"element", ACT_ELEMENT, "m|c|k I VALUE",
                      "one element: mass I's mass (m) or damping (c), or spring I's constant "
                      "(k; spring 0 is the wall's, spring N the motor's)"},
     [CMD_NEAREST] = {"nearest", ACT_NEAREST, "", "drive at the nearest natural frequency"},
@@ -189,22 +190,19 @@ static enum command_reply say_presets(const struct app *app, char *answer, size_
     return REPLY_OK;
 }
 
-/* A change made, whose message is a warning (dt near a limit of the new chain): done. */
-static bool warned(const struct app *app, unsigned changed)
+/* What a verb's result is as a reply. */
+static enum command_reply reply_of(enum result r)
 {
-    return (changed & ~(unsigned)APP_CHANGED_MESSAGE) && app->said == SAID_WARNING;
+    return r == RESULT_OK ? REPLY_OK : r == RESULT_WARNING ? REPLY_WARNING : REPLY_ERROR;
 }
 
-/* The answer an app action left in its message: an error if the message is one (or the
- * cap's note), or nothing was done and nothing said; a warning of a change made is a
- * change made. */
-static enum command_reply from_message(const struct app *app, unsigned changed, char *answer,
-                                       size_t len)
+/* Does verb a with arg; the answer is the message it left ("nothing changed" for none). */
+static enum command_reply verb(struct app *app, enum action a, const struct verb_arg *arg,
+                               char *answer, size_t len)
 {
+    enum result r = verb_do(app, a, arg, NULL);
     snprintf(answer, len, "%s", app->message[0] ? app->message : "nothing changed");
-    if (warned(app, changed))
-        return REPLY_WARNING;
-    return app->said != SAID_NOTE || (!changed && !app->message[0]) ? REPLY_ERROR : REPLY_OK;
+    return reply_of(r);
 }
 
 /* t now, as the status line writes it. */
@@ -221,7 +219,7 @@ static enum command_reply load_preset(struct app *app, const char *name, char *a
         snprintf(answer, len, "preset: %.*s", (int)(len > 9 ? len - 9 : 0), path);
         return REPLY_ERROR;
     }
-    return from_message(app, app_load_preset(app, path, name), answer, len);
+    return verb(app, ACT_PRESET, &(struct verb_arg){.text = path, .name = name}, answer, len);
 }
 
 static enum command_reply set_control(struct app *app, const char *name, const char *value,
@@ -245,15 +243,15 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     }
     if (c == CTL_PRESET)
         return load_preset(app, value, answer, len);
-    unsigned changed = app_set_text(app, (enum control)c, value);
-    if (warned(app, changed)) {
+    enum command_reply r = verb(app, ACT_SET, &(struct verb_arg){.index = c, .text = value},
+                                answer, len);
+    if (r == REPLY_WARNING) {
         /* The warning took the place of the value set: both are said. */
         char now[96];
         app_control_value(app, (enum control)c, now, sizeof now);
         snprintf(answer, len, "%s %s; %s", app_control_label((enum control)c), now, app->message);
-        return REPLY_WARNING;
     }
-    return from_message(app, changed, answer, len);
+    return r;
 }
 
 /* A whole number from 1 to hi, or 0. */
@@ -311,32 +309,29 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
     case CMD_PAUSE: {
         bool run = cmd == CMD_START;
         bool was = app->running;
-        app_set_running(app, run);
+        verb_do(app, ACT_RUN, &(struct verb_arg){.dir = run ? 1 : -1}, NULL);
         t = now_t(app, &d);
         snprintf(answer, len, "%s at t = %.*f s", was == run ? run ? "running already" :
                  "paused already" : run ? "started" : "paused", d, t);
         return REPLY_OK;
     }
     case CMD_STEP:
-        app_set_running(app, false);
-        if (!app_step(app))
-            return from_message(app, 0, answer, len);
+        if (verb(app, ACT_STEP, NULL, answer, len) != REPLY_OK)
+            return REPLY_ERROR; /* a blow-up: paused, and the message says why */
         t = now_t(app, &d);
         snprintf(answer, len, "stepped to t = %.*f s, paused", d, t);
         return REPLY_OK;
     case CMD_BACK:
-        if (!app_back(app))
+        if (verb_do(app, ACT_BACK, NULL, NULL) != RESULT_OK)
             return snprintf(answer, len, "back: %s", app->message), REPLY_ERROR;
         t = now_t(app, &d);
         snprintf(answer, len, "back to t = %.*f s", d, t);
         return REPLY_OK;
     case CMD_RESET:
-        app_reset(app);
-        snprintf(answer, len, "reset to t = 0, at the initial conditions");
-        return REPLY_OK;
+        return verb(app, ACT_RESET, NULL, answer, len);
     case CMD_RANDOM: {
         if (!*rest)
-            return from_message(app, app_random(app), answer, len);
+            return verb(app, ACT_RANDOM, NULL, answer, len);
         errno = 0;
         unsigned long long seed = strtoull(rest, NULL, 10);
         if (errno || strlen(rest) > 20 || strspn(rest, "0123456789") != strlen(rest)) {
@@ -345,7 +340,8 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
                      "to 2^64 - 1)", q);
             return REPLY_ERROR;
         }
-        return from_message(app, app_random_seed(app, seed), answer, len);
+        return verb(app, ACT_RANDOM, &(struct verb_arg){.seeded = true, .seed = seed}, answer,
+                    len);
     }
     case CMD_SET: {
         char *value = rest + strcspn(rest, " \t");
@@ -368,7 +364,7 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
                      q, app->model->n);
             return REPLY_ERROR;
         }
-        return from_message(app, app_start_mode(app, k - 1), answer, len);
+        return verb(app, ACT_MODE, &(struct verb_arg){.index = k - 1}, answer, len);
     }
     case CMD_PLACE: {
         char *x = rest + strcspn(rest, " \t");
@@ -384,7 +380,8 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
                      app->model->n);
             return REPLY_ERROR;
         }
-        return from_message(app, app_place_start(app, k - 1, x0), answer, len);
+        return verb(app, ACT_PLACE, &(struct verb_arg){.index = k - 1, .value = x0}, answer,
+                    len);
     }
     case CMD_ELEMENT: {
         char *i = rest + strcspn(rest, " \t"), *v;
@@ -405,19 +402,16 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
                      "%d: m its mass, c its damping; k spring I from 0 to %d)", n, n);
             return REPLY_ERROR;
         }
-        return from_message(app, app_set_element(app, kind, (int)idx - !spring, v), answer,
-                            len);
+        return verb(app, ACT_ELEMENT, &(struct verb_arg){.what = kind, .index = (int)idx - !spring,
+                    .text = v}, answer, len);
     }
     case CMD_NEAREST:
-        changed = app_nearest_mode(app);
-        if (!changed && !app->message[0])
-            app_say(app, SAID_NOTE, "nearest: the modes are not known");
-        return from_message(app, changed, answer, len);
+        return verb(app, ACT_NEAREST, NULL, answer, len);
     case CMD_SWEEP:
-        return from_message(app, app_toggle_sweep(app), answer, len);
+        return verb(app, ACT_SWEEP, NULL, answer, len);
     case CMD_FASTER:
     case CMD_SLOWER: {
-        changed = app_adjust(app, CTL_SPEED, cmd == CMD_FASTER ? 1 : -1, false);
+        verb_do(app, cmd == CMD_FASTER ? ACT_FASTER : ACT_SLOWER, NULL, &changed);
         char value[32];
         app_control_value(app, CTL_SPEED, value, sizeof value);
         snprintf(answer, len, "Speed %s%s", value,
@@ -445,15 +439,13 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
     }
     case CMD_EXPORT: {
         /* The samples; after a sweep, its points beside the theory too. */
-        char path[4200];
-        enum command_reply r = from_message(app, app_export(app, NULL, path, sizeof path),
-                                            answer, len);
+        enum command_reply r = verb(app, ACT_EXPORT, NULL, answer, len);
         if (r != REPLY_OK || sweep_measured(app->sweep) == 0)
             return r;
         size_t used = strlen(answer);
-        app_export_sweep(app, NULL, path, sizeof path);
+        r = reply_of(verb_do(app, ACT_EXPORT, &(struct verb_arg){.sweep = true}, NULL));
         snprintf(answer + used, len - used, "; %s", app->message);
-        return app->said != SAID_NOTE ? REPLY_ERROR : REPLY_OK;
+        return r;
     }
     case CMD_CURSOR:
         return scope_say_cursor(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;

@@ -1,61 +1,15 @@
-/* command.h: what the user can ask for, without a terminal in sight: the actions the
- * key table (tui/input.c) binds keys to, and the plain mode's commands (plain/), each
- * named after one of those actions, with their help. `help` in the plain mode, its
- * man page section and its README table come from this one table. */
+/* command.h: the plain mode's commands (plain/), each a row naming the verb it does
+ * (verb.h: the same verbs the key table binds keys to) with its help. `help` in the plain
+ * mode, its man page section and its README table come from this one table. */
 #ifndef SPRINGSIM_COMMAND_H
 #define SPRINGSIM_COMMAND_H
 
 #include <stdbool.h>
 #include <stddef.h>
 
-struct app;
+#include "verb.h"
 
-enum action {
-    ACT_NONE,
-    ACT_RUN,       /* start / pause */
-    ACT_STEP,      /* one step forward */
-    ACT_BACK,      /* one step back */
-    ACT_RESET,     /* back to the initial conditions */
-    ACT_RANDOM,    /* random initial positions */
-    ACT_PRESETS,   /* preset menu */
-    ACT_HELP,      /* help overlay */
-    ACT_QUIT,      /* quit */
-    ACT_UP,        /* previous control / mass */
-    ACT_DOWN,      /* next control / mass */
-    ACT_LEFT,      /* decrease, fine */
-    ACT_RIGHT,     /* increase, fine */
-    ACT_LEFT_BIG,  /* decrease, coarse */
-    ACT_RIGHT_BIG, /* increase, coarse */
-    ACT_ENTER,     /* type a value / apply / open */
-    ACT_FOCUS,     /* switch between the controls and the chain */
-    ACT_SLOWER,    /* playback speed down */
-    ACT_FASTER,    /* playback speed up */
-    ACT_ESCAPE,    /* close / cancel */
-    ACT_REDRAW,    /* repaint the whole screen */
-    ACT_MODES,     /* modes view */
-    ACT_RESPONSE,  /* frequency response view */
-    ACT_ENERGY,    /* energy view */
-    ACT_SPECTRUM,  /* spectrum view */
-    ACT_NEAREST,   /* drive at the nearest natural frequency */
-    ACT_SWEEP,     /* start / stop the sine-sweep experiment */
-    ACT_SAVE,      /* save the set-up as a preset */
-    ACT_EXPORT,    /* export the recorded samples as CSV */
-    ACT_FIGURE,    /* save the view as SVG and PNG */
-    ACT_DAMPING,   /* chain: the selected mass's own damping */
-    ACT_ENLARGE,   /* enlarge the plot of the digit pressed (again: the grid) */
-    ACT_GRID,      /* all plots again */
-    ACT_NARROWER,  /* shorter time window */
-    ACT_WIDER,     /* longer time window */
-    ACT_GHOST,     /* ghost on / off */
-    ACT_CURSOR,    /* time cursors: one, two, none */
-    ACT_CURSOR_STEP,  /* the cursor one sample earlier or later (by the key) */
-    ACT_CURSOR_JUMP,  /* a tenth of the window earlier or later */
-    ACT_CURSOR_PAGE,  /* the window a window earlier or later (paused) */
-    ACT_CURSOR_MASS,  /* measure the mass before or after */
-    ACT_CURSOR_OFF,         /* no cursors */
-    ACT_LESSONS,   /* lesson menu */
-    ACT_HIDE,      /* show / hide the selected mass's curves in the plots */
-};
+struct app;
 
 /* The plain mode's commands. */
 enum command_id {
@@ -91,7 +45,8 @@ enum command_id {
 
 struct command {
     const char *name;   /* the word typed */
-    enum action action; /* the key table's action it stands for (ACT_NONE: no key) */
+    enum action action; /* the verb it does (verb.h), or the key's action it answers to
+                         * in words (ACT_NONE: none) */
     const char *args;   /* its arguments, for help ("" for none) */
     const char *help;   /* what it does */
     bool says_play;     /* its answer says whether the chain runs now (start, pause, step,

@@ -266,42 +266,10 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         r->t = sim_time(app->sim);
 }
 
-void record_key(char *out, size_t len, enum action a, unsigned changed, bool running, int mode,
-                const char *view)
+void record_key(char *out, size_t len, enum action a, const struct verb_arg *arg,
+                unsigned changed, bool running, const char *view)
 {
-    const char *word = NULL;
-    out[0] = '\0';
     switch (a) {
-    case ACT_RUN:
-        /* pause is not written: in a lesson it waits for the user (a run ends paused) */
-        word = changed && running ? "start" : NULL;
-        break;
-    case ACT_STEP:
-        word = changed ? "step" : NULL;
-        break;
-    case ACT_BACK:
-        word = changed ? "back" : NULL;
-        break;
-    case ACT_RESET:
-        word = "reset";
-        break;
-    case ACT_RANDOM:
-        word = "random";
-        break;
-    case ACT_NEAREST:
-        word = changed ? "nearest" : NULL;
-        break;
-    case ACT_SWEEP:
-        word = changed ? "sweep" : NULL;
-        break;
-    case ACT_SLOWER:
-    case ACT_FASTER:
-        word = changed ? a == ACT_SLOWER ? "slower" : "faster" : NULL;
-        break;
-    case ACT_ENTER:
-        if (mode && changed)
-            snprintf(out, len, "mode %d", mode);
-        return;
     case ACT_MODES:
     case ACT_RESPONSE:
     case ACT_ENERGY:
@@ -311,10 +279,9 @@ void record_key(char *out, size_t len, enum action a, unsigned changed, bool run
         snprintf(out, len, "view %s", view);
         return;
     default:
+        verb_command(a, arg, changed, running, out, len);
         return;
     }
-    if (word)
-        snprintf(out, len, "%s", word);
 }
 
 void record_abandon(struct record *r)

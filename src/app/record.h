@@ -12,7 +12,7 @@
 #include <stdio.h>
 
 #include "../core/config.h"
-#include "command.h"
+#include "verb.h"
 
 struct app;
 
@@ -69,12 +69,11 @@ void record_mark(struct record *r, const struct app *app);
  * the key. */
 void record_changes(struct record *r, const struct app *app, const char *cmd);
 
-/* The command a key's action a stands for, into out ("" for none): changed is what it
- * changed but the message (0: it did nothing), running whether the chain runs after it,
- * mode the mode Enter started (1-based; 0 when Enter did something else), view the view
- * shown after it as `view` names it. */
-void record_key(char *out, size_t len, enum action a, unsigned changed, bool running, int mode,
-                const char *view);
+/* The command a key's action a stands for, into out ("" for none): a verb's (arg its
+ * argument, changed what it changed but the message, running whether the chain runs
+ * after it: verb_command), or a view shown, `view` naming the one shown after it. */
+void record_key(char *out, size_t len, enum action a, const struct verb_arg *arg,
+                unsigned changed, bool running, const char *view);
 
 /* Ends it: the time run, the expect line, the file written whole. 0, or -1 with "PATH:
  * reason" in err (the temporary file removed). */

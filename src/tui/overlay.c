@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../app/verb.h"
 #include "draw.h"
 #include "input.h"
 #include "term.h"
@@ -348,19 +349,32 @@ void overlay_free(struct overlay *o)
     o->nlessons = 0;
 }
 
+/* One element from the text typed (verb.h): what = 'm', 'c' or 'k'. */
+static unsigned set_element(const struct overlay *o, struct app *app, char what, int i)
+{
+    unsigned changed;
+    verb_do(app, ACT_ELEMENT, &(struct verb_arg){.what = what, .index = i, .text = o->edit},
+            &changed);
+    return changed;
+}
+
 /* Acts on the text typed, by what it was for; the app says what came of it. */
 static unsigned finish_edit(struct overlay *o, struct app *app, const struct selection *sel)
 {
     int i = sel->elem / 2;
+    unsigned changed = 0;
     switch (o->target) {
     case EDIT_CONTROL:
-        return o->edit_len ? app_set_text(app, (enum control)sel->control, o->edit) : 0;
+        if (o->edit_len)
+            verb_do(app, ACT_SET, &(struct verb_arg){.index = sel->control, .text = o->edit},
+                    &changed);
+        return changed;
     case EDIT_MASS:
-        return app_set_element(app, 'm', i, o->edit);
+        return set_element(o, app, 'm', i);
     case EDIT_DAMPING:
-        return app_set_element(app, 'c', i, o->edit);
+        return set_element(o, app, 'c', i);
     case EDIT_SPRING:
-        return app_set_element(app, 'k', i, o->edit);
+        return set_element(o, app, 'k', i);
     case EDIT_SAVE:
         if (app_save(app, o->edit, false) == SAVE_EXISTS) {
             snprintf(o->save_name, sizeof o->save_name, "%s", o->edit);
@@ -405,9 +419,14 @@ static unsigned preset_key(struct overlay *o, struct app *app, enum action a)
         return 0;
     case ACT_ENTER:
         o->kind = OVERLAY_NONE;
-        return o->npresets ? app_load_preset(app, o->presets[o->preset_sel].path,
-                                             o->presets[o->preset_sel].name)
-                           : 0;
+        if (o->npresets) {
+            unsigned changed;
+            const struct preset_entry *e = &o->presets[o->preset_sel];
+            verb_do(app, ACT_PRESET, &(struct verb_arg){.text = e->path, .name = e->name},
+                    &changed);
+            return changed;
+        }
+        return 0;
     case ACT_ESCAPE:
     case ACT_PRESETS:
     case ACT_QUIT:

@@ -1,0 +1,380 @@
+/* keys.c: keys and the mouse in the terminal program (keys.h). */
+#include "keys.h"
+
+#include <math.h>
+
+#include <curses.h>
+
+#include "../app/scope.h"
+#include "../app/verb.h"
+#include "../fig/save.h"
+#include "input.h"
+
+/* An arrow's adjustment: +-1, fine or coarse, on the control or the chain's mass; in
+ * the modes view, the next or the previous mode. */
+static unsigned adjust(struct tui *t, int dir, bool coarse)
+{
+    if (t->sel.focus == FOCUS_MODES) {
+        select_move(&t->sel, dir, CTL_COUNT, t->app.model);
+        return 0;
+    }
+    if (t->sel.focus != FOCUS_CHAIN)
+        return app_adjust(&t->app, (enum control)t->sel.control, dir, coarse);
+    int i = select_mass(&t->sel);
+    if (i >= 0)
+        return app_move_mass(&t->app, i, dir * (coarse ? 0.5 : 0.05));
+    app_say(&t->app, SAID_NOTE, "a spring is selected: ↑↓ to a mass to move it");
+    return APP_CHANGED_MESSAGE;
+}
+
+/* Shows analysis view v (or the plots again) and lays the area out for it. The modes
+ * view takes the arrows (a mode to choose); leaving it gives them back to the controls. */
+static void toggle_view(struct tui *t, enum view v)
+{
+    views_toggle(&t->views, v);
+    if (t->views.shown == VIEW_MODES)
+        t->sel.focus = FOCUS_MODES;
+    else if (t->sel.focus == FOCUS_MODES)
+        t->sel.focus = FOCUS_CONTROLS;
+    screen_relayout(t);
+}
+
+/* Enlarges plot p, or goes back to the grid (p < 0, or p already enlarged). */
+static void enlarge(struct tui *t, int p)
+{
+    t->enlarged = p < 0 || p == t->enlarged ? -1 : p;
+    t->views.shown = VIEW_PLOTS;
+    if (t->sel.focus == FOCUS_MODES)
+        t->sel.focus = FOCUS_CONTROLS;
+    screen_relayout(t);
+}
+
+/* The direction of a cursor key: -1 earlier (left, back, up), +1 later. */
+static int key_direction(int ch)
+{
+    bool back = ch == 'h' || ch == 'H' || ch == 'k' || ch == KEY_LEFT || ch == KEY_SLEFT ||
+                ch == KEY_PPAGE || ch == KEY_UP;
+    return back ? -1 : 1;
+}
+
+/* `|` (one cursor, two, none) and Esc (none) on the time plots. The readout takes the
+ * controls' column while a cursor is shown. */
+static unsigned cursor_action(struct tui *t, enum action a)
+{
+    struct app *app = &t->app;
+    if (t->views.shown != VIEW_PLOTS) {
+        app_say(app, SAID_NOTE, "the cursors are on the plots: 0 shows them");
+        return APP_CHANGED_MESSAGE;
+    }
+    /* The mass measured: the one selected in the chain, else the one last measured. */
+    unsigned changed = a == ACT_CURSOR_OFF ? scope_clear(app)
+                                           : scope_toggle(app, select_mass(&t->sel));
+    screen_relayout(t);
+    return changed;
+}
+
+/* X: the charts on the screen (the plots, or the analysis view's) as SVG and PNG. */
+static void save_view(struct tui *t)
+{
+    struct chart *charts[GRAPHICS_SLOTS];
+    struct fig_chart pics[GRAPHICS_SLOTS];
+    int n = screen_charts(t, charts, false);
+    for (int i = 0; i < n; i++)
+        chart_picture(charts[i], &pics[i]);
+    if (t->layout.too_small)
+        app_say(&t->app, SAID_ERROR, "figure: the terminal is too small to show the view");
+    else
+        fig_save_view(&t->app, pics, n, NULL);
+}
+
+/* What a lesson's `view` asked for, shown (the plots' grid, one enlarged, a view). */
+static void show_view(struct tui *t, int v)
+{
+    static const enum view views[CV_COUNT] = {
+        [CV_MODES] = VIEW_MODES, [CV_RESPONSE] = VIEW_RESPONSE, [CV_ENERGY] = VIEW_ENERGY,
+        [CV_SPECTRUM] = VIEW_SPECTRUM};
+    if (v < CV_MODES) {
+        t->enlarged = v == CV_PLOTS ? -1 : v - CV_X;
+        t->views.shown = VIEW_PLOTS;
+        if (t->sel.focus == FOCUS_MODES)
+            t->sel.focus = FOCUS_CONTROLS;
+        screen_relayout(t);
+    } else if (t->views.shown != views[v]) {
+        toggle_view(t, views[v]);
+    }
+}
+
+/* After the lesson took a key or started: the view it asked for, and the screen laid out
+ * again when its panel came or went. */
+void keys_after_teach(struct tui *t, bool was_shown)
+{
+    if (t->teach.view >= 0 && t->teach.view < CV_COUNT)
+        show_view(t, t->teach.view);
+    t->teach.view = -1;
+    if (teach_shown(&t->teach) != was_shown)
+        screen_relayout(t);
+    select_clamp(&t->sel, t->app.model);
+    t->plots_dirty = true;
+}
+
+/* What is shown, as the view command names it. */
+static const char *view_name(const struct tui *t)
+{
+    static const int of[] = {[VIEW_PLOTS] = CV_PLOTS, [VIEW_MODES] = CV_MODES,
+                             [VIEW_RESPONSE] = CV_RESPONSE, [VIEW_ENERGY] = CV_ENERGY,
+                             [VIEW_SPECTRUM] = CV_SPECTRUM};
+    if (t->views.shown == VIEW_PLOTS && t->enlarged >= 0)
+        return command_views[CV_X + t->enlarged];
+    return command_views[of[t->views.shown]];
+}
+
+/* The command action a stood for, for --record, once it has done what it did. */
+static void say_command(struct tui *t, enum action a, const struct verb_arg *arg,
+                        unsigned changed)
+{
+    record_key(t->said, sizeof t->said, a, arg, changed, t->app.running, view_name(t));
+}
+
+/* What Enter does where the selection is: start the mode chosen in the modes view, or
+ * apply a pending number of masses (verbs, with their argument into arg); else Enter as
+ * it is, which opens what the selection asks for. */
+static enum action enter_verb(const struct tui *t, struct verb_arg *arg)
+{
+    if (t->sel.focus == FOCUS_MODES) {
+        arg->index = t->sel.mode;
+        return ACT_MODE;
+    }
+    if (t->sel.focus == FOCUS_CONTROLS && t->sel.control == CTL_MASSES &&
+        t->app.masses_pending != t->app.model->n)
+        return ACT_APPLY;
+    return ACT_ENTER;
+}
+
+/* Enter where it is no verb: an overlay to type a value into, or the preset menu. */
+static void enter(struct tui *t)
+{
+    if (t->sel.focus == FOCUS_CHAIN)
+        overlay_edit(&t->overlay, select_mass(&t->sel) >= 0 ? EDIT_MASS : EDIT_SPRING);
+    else if (t->sel.control == CTL_PRESET)
+        overlay_presets(&t->overlay, &t->app);
+    else
+        overlay_edit(&t->overlay, EDIT_CONTROL);
+}
+
+/* What is only the screen's to do: overlays, focus, the arrows in the panels, views,
+ * cursors shown or not, a figure of what is shown. */
+static void on_screen_action(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    struct app *app = &t->app;
+    switch (a) {
+    case ACT_PRESETS:
+        overlay_presets(&t->overlay, app);
+        break;
+    case ACT_LESSONS:
+        if (t->rec.mem)
+            app_say(app, SAID_NOTE, "no lessons while recording (--record): the recording "
+                    "would miss their commands");
+        else
+            overlay_lessons(&t->overlay, app);
+        break;
+    case ACT_HELP:
+        overlay_help(&t->overlay);
+        break;
+    case ACT_UP:
+    case ACT_DOWN:
+        select_move(&t->sel, a == ACT_UP ? -1 : 1, CTL_COUNT, app->model);
+        break;
+    case ACT_LEFT:
+    case ACT_RIGHT:
+    case ACT_LEFT_BIG:
+    case ACT_RIGHT_BIG:
+        *changed = adjust(t, a == ACT_LEFT || a == ACT_LEFT_BIG ? -1 : 1,
+                          a == ACT_LEFT_BIG || a == ACT_RIGHT_BIG);
+        break;
+    case ACT_ENTER:
+        enter(t);
+        break;
+    case ACT_DAMPING:
+        if (select_mass(&t->sel) >= 0)
+            overlay_edit(&t->overlay, EDIT_DAMPING);
+        else
+            app_say(app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
+        break;
+    case ACT_FOCUS:
+        select_toggle_focus(&t->sel, app->model, t->views.shown == VIEW_MODES);
+        break;
+    case ACT_MODES:
+    case ACT_RESPONSE:
+    case ACT_ENERGY:
+    case ACT_SPECTRUM:
+        toggle_view(t, a == ACT_MODES      ? VIEW_MODES
+                       : a == ACT_RESPONSE ? VIEW_RESPONSE
+                       : a == ACT_ENERGY   ? VIEW_ENERGY
+                                           : VIEW_SPECTRUM);
+        break;
+    case ACT_HIDE:
+        plots_toggle_mass(&t->plots, app, select_mass(&t->sel));
+        break;
+    case ACT_SAVE:
+        overlay_edit(&t->overlay, EDIT_SAVE);
+        break;
+    case ACT_FIGURE:
+        save_view(t);
+        break;
+    case ACT_ENLARGE:
+        enlarge(t, ch - '1');
+        break;
+    case ACT_GRID:
+        enlarge(t, -1);
+        break;
+    case ACT_ESCAPE:
+        t->sel.focus = FOCUS_CONTROLS;
+        break;
+    case ACT_CURSOR:
+    case ACT_CURSOR_OFF:
+        *changed = cursor_action(t, a);
+        break;
+    case ACT_REDRAW:
+        clearok(curscr, TRUE);
+        graphics_invalidate(&t->gfx);
+        break;
+    default:
+        break;
+    }
+}
+
+/* Acts on a: a verb through the verb table (verb.h), with its argument from the screen;
+ * the rest on the screen. False to quit. */
+static bool on_action(struct tui *t, enum action a, int ch)
+{
+    struct app *app = &t->app;
+    unsigned changed = 0;
+    if (a == ACT_QUIT)
+        return false;
+    if (a != ACT_NONE && a != ACT_REDRAW)
+        app_quiet(app);
+    struct verb_arg arg = {0};
+    if (a == ACT_ENTER)
+        a = enter_verb(t, &arg);
+    if (a >= ACT_CURSOR_STEP && a <= ACT_CURSOR_MASS)
+        arg.dir = key_direction(ch);
+    /* In the response view, the sweep's points; elsewhere the recorded samples. */
+    arg.sweep = a == ACT_EXPORT && t->views.shown == VIEW_RESPONSE;
+    if (verb_bound(a)) {
+        verb_do(app, a, &arg, &changed);
+        if (a == ACT_SWEEP && app->sweep->active && t->views.shown != VIEW_RESPONSE)
+            toggle_view(t, VIEW_RESPONSE);
+    } else {
+        on_screen_action(t, a, ch, &changed);
+    }
+    if (changed & APP_CHANGED_SIZE)
+        select_clamp(&t->sel, app->model);
+    say_command(t, a, &arg, changed & ~(unsigned)APP_CHANGED_MESSAGE);
+    t->plots_dirty = true;
+    return true;
+}
+
+/* The mass nearest to column x of the scene, with its distance (m). */
+static int mass_near(const struct tui *t, double X, double *dist)
+{
+    const struct model *m = t->app.model;
+    int pick = -1;
+    *dist = INFINITY;
+    for (int i = 0; i < m->n; i++) {
+        double d = fabs(model_equilibrium(m, i) + sim_x(t->app.sim)[i] - X);
+        if (d < *dist)
+            *dist = d, pick = i;
+    }
+    return pick;
+}
+
+/* Mouse: click a control, wheel on it, drag a mass while paused. */
+static void on_mouse(struct tui *t)
+{
+    MEVENT ev;
+    const struct layout *l = &t->layout;
+    if (getmouse(&ev) != OK || l->too_small)
+        return;
+    t->plots_dirty = true;
+    /* The readout has the controls' place while a cursor is shown. */
+    int ctl = screen_cursors_shown(t) ? -1 : layout_control_at(l, ev.y, ev.x, CTL_COUNT, t->sel.control_top);
+    if (ctl >= 0) {
+        t->sel.focus = FOCUS_CONTROLS;
+        t->sel.control = ctl;
+        if (ev.bstate & BUTTON4_PRESSED)
+            app_adjust(&t->app, (enum control)ctl, 1, false);
+#ifdef BUTTON5_PRESSED
+        else if (ev.bstate & BUTTON5_PRESSED)
+            app_adjust(&t->app, (enum control)ctl, -1, false);
+#endif
+        return;
+    }
+    struct rect s = l->scene;
+    double X = layout_scene_metres(l, ev.x);
+    if (ev.y > s.y && ev.y < s.y + s.h - 1 && (ev.bstate & BUTTON1_PRESSED)) {
+        const struct model *m = t->app.model;
+        double dist;
+        int pick = mass_near(t, X, &dist);
+        t->sel.focus = FOCUS_CHAIN;
+        if (pick >= 0 && dist < model_block_width(m) + 1.0 / l->scene_cpm) {
+            t->sel.elem = 2 * pick + 1;
+            t->dragging = !t->app.running;
+            if (t->app.running)
+                app_say(&t->app, SAID_NOTE, "pause (space) to drag a mass");
+        } else {
+            /* Between masses: the spring there (spring j lies left of mass j+1). */
+            int j = 0;
+            while (j < m->n && model_equilibrium(m, j) + sim_x(t->app.sim)[j] < X)
+                j++;
+            if (2 * j < select_elements(m))
+                t->sel.elem = 2 * j;
+        }
+        return;
+    }
+    if (t->dragging && (ev.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED))) {
+        app_place_mass(&t->app, t->sel.elem / 2, X);
+        if (ev.bstate & BUTTON1_RELEASED)
+            t->dragging = false;
+    }
+}
+
+/* A key: the mouse, an open overlay, a lesson waiting for it come first. */
+static bool handle_key(struct tui *t, int ch)
+{
+    if (ch == KEY_MOUSE) {
+        if (t->overlay.kind == OVERLAY_NONE)
+            on_mouse(t);
+        return true;
+    }
+    bool shown = teach_shown(&t->teach);
+    if (t->overlay.kind != OVERLAY_NONE) {
+        unsigned changed = overlay_key(&t->overlay, &t->app, &t->sel, &t->layout, ch);
+        if (changed & APP_CHANGED_SIZE)
+            select_clamp(&t->sel, t->app.model);
+        t->plots_dirty = true;
+        if (t->overlay.chosen[0]) {
+            teach_open(&t->teach, t->overlay.chosen, &t->app);
+            t->overlay.chosen[0] = '\0';
+            keys_after_teach(t, shown);
+        }
+        return true;
+    }
+    if (teach_key(&t->teach, &t->app, ch)) {
+        keys_after_teach(t, shown);
+        return true;
+    }
+    return on_action(t, input_action(ch, screen_cursors_shown(t)), ch);
+}
+
+bool keys_on_key(struct tui *t, int ch)
+{
+    if (ch == KEY_RESIZE) {
+        screen_relayout(t);
+        return true;
+    }
+    t->said[0] = '\0';
+    record_mark(&t->rec, &t->app);
+    bool go = handle_key(t, ch);
+    record_changes(&t->rec, &t->app, t->said[0] ? t->said : NULL);
+    return go;
+}

@@ -1,0 +1,42 @@
+/* screen.c: the screen laid out for the terminal program's state (screen.h). */
+#include "screen.h"
+
+#include <curses.h>
+
+bool screen_cursors_shown(const struct tui *t)
+{
+    return t->app.scope.cursors > 0 && t->views.shown == VIEW_PLOTS;
+}
+
+void screen_relayout(struct tui *t)
+{
+    int rows, cols;
+    getmaxyx(stdscr, rows, cols);
+    layout_compute(&t->layout, cols, rows, t->enlarged, t->views.shown != VIEW_PLOTS);
+    if (screen_cursors_shown(t))
+        layout_scope(&t->layout, t->enlarged);
+    if (teach_shown(&t->teach))
+        layout_caption(&t->layout, layout_caption_rows(rows), t->enlarged,
+                       t->views.shown != VIEW_PLOTS);
+    if (!t->layout.too_small) {
+        scene_place(&t->scene, &t->layout);
+        plots_place(&t->plots, &t->layout);
+        views_place(&t->views, &t->layout);
+    }
+    graphics_invalidate(&t->gfx);
+    t->plots_dirty = true;
+}
+
+int screen_charts(struct tui *t, struct chart **out, bool images)
+{
+    int n = 0;
+    if (t->layout.too_small)
+        return 0;
+    if (images && t->views.shown == VIEW_MODES)
+        return modes_view_cells(&t->views.modes, out, GRAPHICS_SLOTS);
+    if (t->views.shown != VIEW_PLOTS)
+        return views_charts(&t->views, out, PLOT_COUNT);
+    for (int k = 0; k < t->layout.nplots && n < PLOT_COUNT; k++)
+        out[n++] = &t->plots.chart[t->layout.plot_id[k]];
+    return n;
+}

@@ -1,0 +1,52 @@
+/* screen.h: the terminal program's state (what keys.c changes and tui.c draws and
+ * paces), and the screen laid out for it. */
+#ifndef SPRINGSIM_SCREEN_H
+#define SPRINGSIM_SCREEN_H
+
+#include <stdbool.h>
+
+#include "../app/app.h"
+#include "../app/clock.h"
+#include "../app/layout.h"
+#include "../app/record.h"
+#include "../app/select.h"
+#include "chart.h"
+#include "graphics.h"
+#include "overlay.h"
+#include "plots.h"
+#include "scene.h"
+#include "teach.h"
+#include "views.h"
+
+struct tui {
+    struct app app;
+    struct layout layout;
+    struct selection sel;
+    struct scene scene;
+    struct plots plots;
+    struct views views;
+    struct overlay overlay;
+    int enlarged;         /* the plot enlarged, or -1 for the grid */
+    double plot_due;      /* wall time of the next plot refresh */
+    bool plots_dirty;     /* refresh the plots at the next frame */
+    struct app_clock clock; /* simulated time following the wall clock */
+    int backlog_frames;   /* frames in a row with output piling up unread */
+    bool dragging;        /* a mass is being dragged with the mouse */
+    struct teach teach;   /* a lesson being played, its caption panel */
+    struct record rec;    /* --record: the session being written */
+    char said[64];        /* the command the key being handled stands for, or "" */
+    struct graphics gfx;  /* the charts as images, where the terminal shows them */
+};
+
+/* True while time cursors are shown on the plots: their keys come first. */
+bool screen_cursors_shown(const struct tui *t);
+
+/* Lays the screen out again for its size and what is shown; the plots refresh. */
+void screen_relayout(struct tui *t);
+
+/* The charts on the screen (the plots, or the analysis view's): into out (room for
+ * GRAPHICS_SLOTS), how many; with images, the modes view's shapes too, which are drawn
+ * as charts' areas are but are not charts in a picture of the view (X). */
+int screen_charts(struct tui *t, struct chart **out, bool images);
+
+#endif
