@@ -243,6 +243,27 @@ static void every_command_row_names_its_verb(void **state)
     assert_int_equal(commands[CMD_PRESET].action, ACT_PRESET);
 }
 
+/* The terminal program refreshes the plots after a verb only when it changed something
+ * they draw (APP_CHANGED_DRAWN): a refusal, a note, a number of masses waiting for Enter
+ * change nothing drawn; a step, a wider window, a ghost, a new drive do. */
+static void what_is_drawn_is_in_the_mask(void **state)
+{
+    (void)state;
+    unsigned changed;
+    verb_do(&by_key, ACT_BACK, NULL, &changed); /* nothing before t = 0 */
+    assert_int_equal(changed & APP_CHANGED_DRAWN, 0);
+    verb_do(&by_key, ACT_SET, &(struct verb_arg){.index = CTL_DT, .text = "9"}, &changed);
+    assert_int_equal(changed & APP_CHANGED_DRAWN, 0);
+    assert_int_equal(app_adjust(&by_key, CTL_MASSES, 1, false) & APP_CHANGED_DRAWN, 0);
+    static const enum action drawn[] = {ACT_STEP, ACT_WIDER, ACT_GHOST, ACT_NEAREST,
+                                        ACT_RESET, ACT_SWEEP};
+    for (size_t i = 0; i < sizeof drawn / sizeof *drawn; i++) {
+        assert_int_equal(verb_do(&by_key, drawn[i], NULL, &changed), RESULT_OK);
+        assert_true(changed & APP_CHANGED_DRAWN);
+    }
+    assert_true(by_key.ghost && by_key.sweep->active);
+}
+
 /* Springs that leave dt past the stability limit are set all the same: a warning (an ok
  * to the plain mode), the message a warning too; back under it, a plain ok and a note. */
 static void a_change_past_a_limit_is_a_warning(void **state)
@@ -326,6 +347,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(exports_do_the_same, setup, teardown),
         cmocka_unit_test_setup_teardown(recorded_verbs_replay, setup, teardown),
         cmocka_unit_test_setup_teardown(every_command_row_names_its_verb, setup, teardown),
+        cmocka_unit_test_setup_teardown(what_is_drawn_is_in_the_mask, setup, teardown),
         cmocka_unit_test_setup_teardown(a_change_past_a_limit_is_a_warning, setup, teardown),
         cmocka_unit_test_setup_teardown(a_refusal_is_an_error, setup, teardown),
         cmocka_unit_test_setup_teardown(play_is_said_by_the_commands_that_play, setup, teardown),

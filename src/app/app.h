@@ -3,8 +3,13 @@
  * samples and their time window, playback, and the controls' values. The terminal front
  * end drives this.
  *
- * Every action returns what it changed, a mask of enum app_change (0: nothing), so the
- * loop redraws only what needs it (htop's Htop_Reaction). A rejected input returns 0 and
+ * Every action returns what it changed, a mask of enum app_change (0: nothing; htop's
+ * Htop_Reaction): the one change path (change.h) recomputes by it only what a change
+ * needs, a verb's result (verb.h) tells a change made from nothing done by it, --record
+ * writes a command only for a change, and the terminal program refreshes the plots'
+ * canvases (the costly part of a frame) after a key only when something they draw
+ * changed (APP_CHANGED_DRAWN); the rest of the screen is drawn whole from the state each
+ * frame, curses sending only the cells that differ. A rejected input returns 0 and
  * leaves everything as it was but the message, which says why. Every change of the
  * chain's or the drive's parameters, by any route, goes through one path that keeps the
  * rules: a running sweep ends (but for its own retunes) and gives the user's frequency
@@ -48,6 +53,10 @@ enum app_change {
     APP_CHANGED_INTEGRATOR = 1u << 9, /* the integrator (and so the limits of dt) */
     APP_CHANGED_GHOST = 1u << 10,   /* the ghost came or went (ghost.h) */
 };
+
+/* What the plots and the analysis views draw: every change but the message and a number
+ * of masses waiting for Enter. */
+#define APP_CHANGED_DRAWN (~(unsigned)(APP_CHANGED_MESSAGE | APP_CHANGED_PENDING))
 
 /* Digits after the point that time step dt needs (2 at least): t and dt are shown with
  * them, so t = 0.003 s after three steps of 0.001 s and dt 0.0075 s reads whole. */

@@ -254,6 +254,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
     if (a != ACT_NONE && a != ACT_REDRAW)
         app_quiet(app);
     struct verb_arg arg = {0};
+    bool verb = false;
     if (a == ACT_ENTER)
         a = enter_verb(t, &arg);
     if (a >= ACT_CURSOR_STEP && a <= ACT_CURSOR_MASS)
@@ -261,6 +262,7 @@ static bool on_action(struct tui *t, enum action a, int ch)
     /* In the response view, the sweep's points; elsewhere the recorded samples. */
     arg.sweep = a == ACT_EXPORT && t->views.shown == VIEW_RESPONSE;
     if (verb_bound(a)) {
+        verb = true;
         verb_do(app, a, &arg, &changed);
         if (a == ACT_SWEEP && app->sweep->active && t->views.shown != VIEW_RESPONSE)
             toggle_view(t, VIEW_RESPONSE);
@@ -270,7 +272,11 @@ static bool on_action(struct tui *t, enum action a, int ch)
     if (changed & APP_CHANGED_SIZE)
         select_clamp(&t->sel, app->model);
     say_command(t, a, &arg, changed & ~(unsigned)APP_CHANGED_MESSAGE);
-    t->plots_dirty = true;
+    /* A verb that changed nothing they draw (refused; only said something) leaves the
+     * plots as their last refresh left them; what the screen does may move the
+     * selection they follow, and refreshes them. */
+    if (!verb || (changed & APP_CHANGED_DRAWN))
+        t->plots_dirty = true;
     return true;
 }
 
