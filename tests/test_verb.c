@@ -49,9 +49,9 @@ static void snapshot(const struct app *app, char *buf, size_t len)
 {
     char exact[4096], value[96];
     lesson_state(app, exact, sizeof exact);
-    size_t used = (size_t)snprintf(buf, len, "%s running=%d window=%d pending=%d said=%d "
+    size_t used = (size_t)snprintf(buf, len, "%s running=%d window=%a pending=%d said=%d "
                                    "message=%s ghost=%d sweep=%d cursors=%d", exact,
-                                   app->running, app->window, app->masses_pending, app->said,
+                                   app->running, app->cfg.window, app->masses_pending, app->said,
                                    app->message, app->ghost != NULL, app->sweep->active,
                                    app->scope.cursors);
     for (int c = 0; c < CTL_COUNT && used < len; c++) {
@@ -144,6 +144,10 @@ static void typed_values_do_the_same(void **state)
                           "element c 2 -1"), RESULT_ERROR);
     assert_int_equal(same(ACT_PLACE, &(struct verb_arg){.index = 1, .value = 0.1},
                           "place 2 0.1"), RESULT_OK);
+    assert_int_equal(same(ACT_WINDOW, &(struct verb_arg){.text = "33"}, "set window 33"),
+                     RESULT_OK);
+    assert_int_equal(same(ACT_WINDOW, &(struct verb_arg){.text = "61"}, "set window 61"),
+                     RESULT_ERROR);
     /* Masses by the arrows, then Enter on the Masses control; the plain set applies it at
      * once (and says so: the messages differ, the chains may not). */
     static char k[16384], c[16384];

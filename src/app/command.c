@@ -230,7 +230,7 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     int c = find_control(name);
     bool window = c < 0 && strcmp(name, "window") == 0;
     if (window && *value)
-        return from_message(app, app_set_window(app, value), answer, len);
+        return verb(app, ACT_WINDOW, &(struct verb_arg){.text = value}, answer, len);
     if ((c < 0 && !window) || !*value) {
         config_quote(name, strlen(name), q, sizeof q);
         if (!*name)

@@ -126,6 +126,12 @@ static enum result preset(struct app *app, const struct verb_arg *arg, unsigned 
     return result_of(app, *changed);
 }
 
+static enum result window(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    *changed = app_set_window(app, arg->text);
+    return result_of(app, *changed);
+}
+
 /* The verbs: the function of each action that is one (a verb with rules of its own; or
  * an app action taken as it is, its result by result_of, with no argument or one way
  * to go: a fixed one, or the argument's when way is 0), and the plain command that does
@@ -160,6 +166,7 @@ static const struct {
     [ACT_ELEMENT] = {.fn = element},
     [ACT_PLACE] = {.fn = place},
     [ACT_PRESET] = {.fn = preset},
+    [ACT_WINDOW] = {.fn = window},
 };
 
 bool verb_bound(enum action a)

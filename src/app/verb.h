@@ -67,6 +67,7 @@ enum action {
     ACT_ELEMENT,   /* one mass's mass or damping, or one spring, from typed text */
     ACT_PLACE,     /* one mass's start displaced */
     ACT_PRESET,    /* load a preset file */
+    ACT_WINDOW,    /* the time plots' window from typed text */
     ACT_COUNT
 };
 
@@ -86,7 +87,7 @@ struct verb_arg {
                        * control (enum control) */
     char what;        /* element: 'm' mass, 'c' damping, 'k' spring */
     double value;     /* place: the displacement (m) */
-    const char *text; /* set, element: the value typed; preset: the file */
+    const char *text; /* set, element, window: the value typed; preset: the file */
     const char *name; /* preset: its name */
     bool seeded;      /* random: from seed, not a fresh one */
     uint64_t seed;
