@@ -87,57 +87,53 @@ static enum result faster(struct app *app, const struct verb_arg *arg, unsigned 
     return speed(app, 1, changed);
 }
 
+/* The app's actions that take the verb's argument, their result by result_of. */
+
 /* The samples, or the sweep's points (its file's path is in the message). */
-static enum result export(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned export(struct app *app, const struct verb_arg *arg)
 {
     char path[4200];
-    *changed = arg->sweep ? app_export_sweep(app, NULL, path, sizeof path)
-                          : app_export(app, NULL, path, sizeof path);
-    return result_of(app, *changed);
+    return arg->sweep ? app_export_sweep(app, NULL, path, sizeof path)
+                      : app_export(app, NULL, path, sizeof path);
 }
 
-static enum result mode(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned mode(struct app *app, const struct verb_arg *arg)
 {
-    *changed = app_start_mode(app, arg->index);
-    return result_of(app, *changed);
+    return app_start_mode(app, arg->index);
 }
 
-static enum result set(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned set(struct app *app, const struct verb_arg *arg)
 {
-    *changed = app_set_text(app, (enum control)arg->index, arg->text);
-    return result_of(app, *changed);
+    return app_set_text(app, (enum control)arg->index, arg->text);
 }
 
-static enum result element(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned element(struct app *app, const struct verb_arg *arg)
 {
-    *changed = app_set_element(app, arg->what, arg->index, arg->text);
-    return result_of(app, *changed);
+    return app_set_element(app, arg->what, arg->index, arg->text);
 }
 
-static enum result place(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned place(struct app *app, const struct verb_arg *arg)
 {
-    *changed = app_place_start(app, arg->index, arg->value);
-    return result_of(app, *changed);
+    return app_place_start(app, arg->index, arg->value);
 }
 
-static enum result preset(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned preset(struct app *app, const struct verb_arg *arg)
 {
-    *changed = app_load_preset(app, arg->text, arg->name);
-    return result_of(app, *changed);
+    return app_load_preset(app, arg->text, arg->name);
 }
 
-static enum result window(struct app *app, const struct verb_arg *arg, unsigned *changed)
+static unsigned window(struct app *app, const struct verb_arg *arg)
 {
-    *changed = app_set_window(app, arg->text);
-    return result_of(app, *changed);
+    return app_set_window(app, arg->text);
 }
 
 /* The verbs: the function of each action that is one (a verb with rules of its own; or
- * an app action taken as it is, its result by result_of, with no argument or one way
- * to go: a fixed one, or the argument's when way is 0), and the plain command that does
- * the same (for --record; NULL for none). */
+ * an app action taken as it is, its result by result_of: with the verb's argument, with
+ * none, or with a way to go: a fixed one, or the argument's when way is 0), and the
+ * plain command that does the same (for --record; NULL for none). */
 static const struct {
     verb_fn fn;
+    unsigned (*with)(struct app *app, const struct verb_arg *arg);
     unsigned (*act)(struct app *app);
     unsigned (*go)(struct app *app, int way);
     int way;
@@ -155,23 +151,24 @@ static const struct {
     [ACT_NARROWER] = {.go = app_window_step, .way = -1},
     [ACT_WIDER] = {.go = app_window_step, .way = 1},
     [ACT_GHOST] = {.act = app_toggle_ghost},
-    [ACT_EXPORT] = {.fn = export},
+    [ACT_EXPORT] = {.with = export},
     [ACT_CURSOR_STEP] = {.go = scope_move},
     [ACT_CURSOR_JUMP] = {.go = scope_jump},
     [ACT_CURSOR_PAGE] = {.go = scope_page},
     [ACT_CURSOR_MASS] = {.go = scope_select},
-    [ACT_MODE] = {.fn = mode, .command = "mode"},
+    [ACT_MODE] = {.with = mode, .command = "mode"},
     [ACT_APPLY] = {.act = app_apply_masses},
-    [ACT_SET] = {.fn = set},
-    [ACT_ELEMENT] = {.fn = element},
-    [ACT_PLACE] = {.fn = place},
-    [ACT_PRESET] = {.fn = preset},
-    [ACT_WINDOW] = {.fn = window},
+    [ACT_SET] = {.with = set},
+    [ACT_ELEMENT] = {.with = element},
+    [ACT_PLACE] = {.with = place},
+    [ACT_PRESET] = {.with = preset},
+    [ACT_WINDOW] = {.with = window},
 };
 
 bool verb_bound(enum action a)
 {
-    return a > ACT_NONE && a < ACT_COUNT && (verbs[a].fn || verbs[a].act || verbs[a].go);
+    return a > ACT_NONE && a < ACT_COUNT &&
+           (verbs[a].fn || verbs[a].with || verbs[a].act || verbs[a].go);
 }
 
 enum result verb_do(struct app *app, enum action a, const struct verb_arg *arg,
@@ -187,8 +184,9 @@ enum result verb_do(struct app *app, enum action a, const struct verb_arg *arg,
     } else if (verbs[a].fn) {
         r = verbs[a].fn(app, arg, &what);
     } else {
-        what = verbs[a].act ? verbs[a].act(app)
-                            : verbs[a].go(app, verbs[a].way ? verbs[a].way : arg->dir);
+        what = verbs[a].with  ? verbs[a].with(app, arg)
+               : verbs[a].act ? verbs[a].act(app)
+                              : verbs[a].go(app, verbs[a].way ? verbs[a].way : arg->dir);
         r = result_of(app, what);
     }
     if (changed)
