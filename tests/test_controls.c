@@ -77,17 +77,17 @@ static void value_says_what_is_drawn(void **state)
 static void plain_mode_names_it(void **state)
 {
     (void)state;
-    char answer[4096];
-    double seconds;
-    assert_int_equal(command_do(&app, "set graphics braille", answer, sizeof answer, &seconds),
+    static struct command_result res;
+    const char *answer = res.answer;
+    assert_int_equal(command_do(&app, "set graphics braille", &res),
                      REPLY_OK);
     assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_BRAILLE);
-    assert_int_equal(command_do(&app, "controls", answer, sizeof answer, &seconds), REPLY_OK);
+    assert_int_equal(command_do(&app, "controls", &res), REPLY_OK);
     assert_non_null(strstr(answer, "; graphics braille"));
-    assert_int_equal(command_do(&app, "set graphics sepia", answer, sizeof answer, &seconds),
+    assert_int_equal(command_do(&app, "set graphics sepia", &res),
                      REPLY_ERROR);
     assert_int_equal(app.cfg.graphics, CONFIG_GRAPHICS_BRAILLE);
-    assert_int_equal(command_do(&app, "set nosuch 1", answer, sizeof answer, &seconds),
+    assert_int_equal(command_do(&app, "set nosuch 1", &res),
                      REPLY_ERROR);
     assert_non_null(strstr(answer, "bandwidth, graphics"));
 }
