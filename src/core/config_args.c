@@ -1,7 +1,8 @@
 /* config_args.c: a configuration written back as the command line that makes it again:
- * every setting of the table (the rows with a preset section) in the table's order, numbers
- * with the digits that read back exactly. For --meta's comment line, which says how a CSV
- * was made; the preset and output options are not settings of the run. */
+ * every setting of the table (the rows with a preset section) in the table's order, each
+ * value read through config_get, numbers with the digits that read back exactly. For
+ * --meta's comment line, which says how a CSV was made; the preset and output options are
+ * not settings of the run. */
 #include "config.h"
 
 #include <math.h>
@@ -44,75 +45,49 @@ static void write_number(FILE *out, double v)
     fputs(num, out);
 }
 
+/* Whether the command line says key of c: a flag when on, the seed when positions are
+ * random or it was given, a number whose default is words ("every step") when it is not
+ * that default, x0 unless random positions stand for it, start-mode when c starts along a
+ * mode (written after x0 and v0, so it wins over them as it did), every other key always. */
+static bool said(int key, const struct config *c)
+{
+    const struct config_option *o = &config_options[key];
+    const char *at = (const char *)c + o->offset;
+    switch (key) {
+    case CFG_SEED:
+        return c->random || c->seed_set;
+    case CFG_X0:
+        return c->x0.count > 0 || !c->random;
+    case CFG_START_MODE:
+        return c->start_mode > 0;
+    default:
+        break;
+    }
+    if (o->kind == CONFIG_FLAG)
+        return *(const bool *)(const void *)at;
+    if (o->kind == CONFIG_NUMBER && o->def_text)
+        return *(const double *)(const void *)at != o->def;
+    return o->kind != CONFIG_MODE;
+}
+
 int config_write_args(FILE *out, const struct config *c)
 {
     for (int k = 0; k < CFG_KEY_COUNT; k++) {
         const struct config_option *o = &config_options[k];
-        const char *at = (const char *)c + o->offset;
-        if (!o->section)
+        if (!o->section || !said(k, c))
             continue;
-        switch (o->kind) {
-        case CONFIG_FLAG:
-            if (*(const bool *)at)
-                fprintf(out, " --%s", o->name);
-            break;
-        case CONFIG_WHOLE:
-            if (k == CFG_SEED) {
-                /* The seed matters only to random positions; it is said whenever given. */
-                if (c->random || c->seed_set)
-                    fprintf(out, " --seed %llu", (unsigned long long)c->seed);
-            } else {
-                fprintf(out, " --%s %d", o->name, *(const int *)at);
-            }
-            break;
-        case CONFIG_NUMBER:
-            /* A default said in words ("every step") is no value one can type. */
-            if (o->def_text && *(const double *)at == o->def)
-                break;
-            fprintf(out, " --%s ", o->name);
-            write_number(out, *(const double *)at);
-            break;
-        case CONFIG_LIST: {
-            const struct config_list *l = (const struct config_list *)at;
-            /* A list never set stands for its default, one value for all. */
-            if (l->count == 0 && k == CFG_X0 && c->random)
-                break; /* random positions instead */
-            fprintf(out, " --%s ", o->name);
-            if (l->count == 0)
-                write_number(out, o->def);
-            for (int i = 0; i < l->count; i++) {
-                if (i)
-                    fputc(',', out);
-                write_number(out, l->v[i]);
-            }
-            break;
-        }
-        case CONFIG_CHOICE: {
-            int i;
-            memcpy(&i, at, sizeof i);
-            fprintf(out, " --%s %s", o->name, o->choice_name(i));
-            break;
-        }
-        case CONFIG_TEXT: {
-            if (k == CFG_START_MODE) {
-                /* Read into a mode and an amplitude; written after x0 and v0, so it wins
-                 * over them as it did. */
-                if (c->start_mode > 0) {
-                    fprintf(out, " --start-mode %d:", c->start_mode);
-                    write_number(out, c->start_amp);
-                }
-                break;
-            }
-            const char *s;
-            memcpy(&s, at, sizeof s);
-            if (s) {
-                fprintf(out, " --%s ", o->name);
-                write_text(out, s);
-            }
-            break;
-        }
-        case CONFIG_MODE:
-            break;
+        fprintf(out, " --%s", o->name);
+        if (o->kind == CONFIG_FLAG)
+            continue;
+        struct config_value v;
+        config_get(k, c, NULL, &v);
+        fputc(' ', out);
+        if (v.count == 0)
+            write_text(out, v.str);
+        for (int i = 0; i < v.count; i++) {
+            if (i)
+                fputc(',', out);
+            write_number(out, v.v[i]);
         }
     }
     return ferror(out) ? -1 : 0;
