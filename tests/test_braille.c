@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "app/braille.h"
+#include "app/strokes.h"
 
 static void dot_bits(void **state)
 {
@@ -118,6 +119,35 @@ static void lines_and_spans(void **state)
     assert_null(canvas_new(0, 3));
 }
 
+/* A canvas muted keeps no strokes of its own; marks carry their size, and the hash tells
+ * two sizes apart (an image is sent again when only the discs changed). */
+static void strokes_kept(void **state)
+{
+    (void)state;
+    struct canvas *c = canvas_new(4, 2);
+    assert_non_null(c);
+    assert_true(canvas_keep_strokes(c));
+    canvas_line(c, 0, 0, 7, 7, 1);
+    assert_int_equal(c->strokes->ns, 1);
+    c->mute++;
+    canvas_line(c, 0, 7, 7, 0, 1);
+    canvas_set(c, 3, 3, 2);
+    c->mute--;
+    assert_int_equal(c->strokes->ns, 1);
+    struct strokes *k = c->strokes;
+    strokes_begin(k, 2, STROKE_MARKS);
+    strokes_mark_size(k, 3);
+    strokes_point(k, 2.25, 3.5);
+    assert_int_equal(k->s[1].size, 3);
+    assert_int_equal(k->s[1].count, 1);
+    uint64_t h = strokes_hash(k);
+    strokes_mark_size(k, 4);
+    assert_true(strokes_hash(k) != h);
+    strokes_mark_size(k, 3);
+    assert_true(strokes_hash(k) == h);
+    canvas_free(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -125,6 +155,7 @@ int main(void)
         cmocka_unit_test(glyphs),
         cmocka_unit_test(quadrants),
         cmocka_unit_test(lines_and_spans),
+        cmocka_unit_test(strokes_kept),
     };
     return cmocka_run_group_tests_name("braille", tests, NULL, NULL);
 }

@@ -52,7 +52,13 @@ void strokes_begin(struct strokes *k, uint8_t color, enum stroke_kind kind)
 {
     if (!room(k))
         return;
-    k->s[k->ns++] = (struct stroke){k->n, 0, color, (uint8_t)kind};
+    k->s[k->ns++] = (struct stroke){k->n, 0, color, (uint8_t)kind, 0};
+}
+
+void strokes_mark_size(struct strokes *k, int dots)
+{
+    if (k->ns > 0)
+        k->s[k->ns - 1].size = (uint8_t)(dots < 0 ? 0 : dots > 255 ? 255 : dots);
 }
 
 void strokes_point(struct strokes *k, double x, double y)
@@ -111,7 +117,7 @@ uint64_t strokes_hash(const struct strokes *k)
         const struct stroke *s = &k->s[i];
         h = fnv(h, &s->start, sizeof s->start);
         h = fnv(h, &s->count, sizeof s->count);
-        h = fnv(h, &s->color, 2);
+        h = fnv(h, &s->color, 3); /* colour, kind, size */
     }
     return h;
 }

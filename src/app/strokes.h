@@ -12,7 +12,7 @@ enum stroke_kind {
     STROKE_LINE,
     STROKE_DASHED,
     STROKE_DOTS,
-    STROKE_MARKS, /* a mass's mark at each point: a disc 5 dots across */
+    STROKE_MARKS, /* a mass's mark at each point: a disc (5 dots across unless sized) */
 };
 
 /* One stroke: points [start, start + count) of the list, in one colour. */
@@ -20,6 +20,7 @@ struct stroke {
     int start, count;
     uint8_t color;  /* a colour pair's number (fig_color) */
     uint8_t kind;   /* an enum stroke_kind */
+    uint8_t size;   /* STROKE_MARKS: the discs' diameter in dots (0: 5) */
 };
 
 struct strokes {
@@ -41,6 +42,9 @@ void strokes_clear(struct strokes *k);
 
 /* Starts a stroke. */
 void strokes_begin(struct strokes *k, uint8_t color, enum stroke_kind kind);
+
+/* The current stroke's discs (STROKE_MARKS) are `dots` dots across. */
+void strokes_mark_size(struct strokes *k, int dots);
 
 /* Adds a point to the current stroke; a point that is not finite ends it (the next point
  * starts another of the same colour and kind). */

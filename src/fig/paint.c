@@ -24,7 +24,8 @@ void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double c
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);
         cairo_new_path(cr);
         if (s->kind == STROKE_DOTS || s->kind == STROKE_MARKS) {
-            double r = s->kind == STROKE_MARKS ? 2.5 * fmin(sx, sy) : 1.2 * lw;
+            double r = s->kind == STROKE_MARKS ? 0.5 * (s->size ? s->size : 5) * fmin(sx, sy)
+                                               : 1.2 * lw;
             for (int j = 0; j < s->count; j++) {
                 cairo_new_sub_path(cr);
                 cairo_arc(cr, (p[2 * j] + 0.5) * sx, (p[2 * j + 1] + 0.5) * sy, r, 0.0,

@@ -23,6 +23,10 @@ void screen_relayout(struct tui *t)
         plots_place(&t->plots, &t->layout);
         views_place(&t->views, &t->layout);
     }
+    /* Images where text now goes stay on the screen until something is written over
+     * them; curses writes only what changed, so the whole screen is drawn again. */
+    if (t->gfx.mode != GRAPHICS_BRAILLE)
+        clearok(curscr, TRUE);
     graphics_invalidate(&t->gfx);
     t->plots_dirty = true;
 }

@@ -172,15 +172,19 @@ static void draw_shape(struct modes_view *v, const struct app *app, int j, struc
     }
     struct strokes *k = c->strokes;
     if (k) {
+        /* Discs a quarter of the height across (2 to 5 dots), the swing what they leave. */
+        int disc = H / 4 < 2 ? 2 : H / 4 > 5 ? 5 : H / 4;
+        double scale = (mid - 0.5 * disc) / amp;
         strokes_begin(k, PAIR_GRID, STROKE_LINE);
         strokes_point(k, 0.0, mid);
         strokes_point(k, W - 1, mid);
         strokes_begin(k, 0, STROKE_LINE);
         for (int i = 0; i < joints; i++)
-            strokes_point(k, x[i], y[i]);
+            strokes_point(k, x[i], mid + (y[i] - mid) * scale);
         for (int i = 0; i < n; i++) {
             strokes_begin(k, (uint8_t)(PAIR_MASS + i % 10), STROKE_MARKS);
-            strokes_point(k, x[i + 1], y[i + 1]);
+            strokes_mark_size(k, disc);
+            strokes_point(k, x[i + 1], mid + (y[i + 1] - mid) * scale);
         }
     }
     c->mute++; /* the strokes are kept above, unrounded */
