@@ -138,6 +138,11 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
         return EINVAL;
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
     cairo_t *cr = cairo_create(s);
+    /* Few colour registers hold no blends: lines without them keep the background and
+     * the masses' colours exact (a palette of the blends' average was seen grey). */
+    bool few = e == FIG_SIXEL && registers >= 2 && registers < 256;
+    if (few)
+        cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
     paint(cr, c, cw, ch, dark, bg);
     cairo_status_t cs = cairo_status(cr);
     cairo_destroy(cr);

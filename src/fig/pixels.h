@@ -24,7 +24,8 @@ enum fig_encoding { FIG_SIXEL, FIG_KITTY_PNG };
  * bg (red, green, blue, 0..1), encoded e into out (emptied first): a whole sixel sequence
  * (DCS ... ST), or the PNG file; scratch holds the pixels on their way (kept for the next
  * image). Sixel on xterm's 256 colours, or, for a terminal with 2 to 255 colour registers,
- * on a palette of that many that libsixel chooses for the image. Returns 0 or an errno
+ * drawn without anti-aliasing on a palette of that many that libsixel chooses for the
+ * image. Returns 0 or an errno
  * value. */
 int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
                enum fig_encoding e, int registers, struct fig_bytes *out,
