@@ -138,8 +138,9 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
         return EINVAL;
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
     cairo_t *cr = cairo_create(s);
-    /* Few colour registers hold no blends: lines without them keep the background and
-     * the masses' colours exact (a palette of the blends' average was seen grey). */
+    /* Few colour registers hold no blends: lines without them leave the image only the
+     * colours drawn, which libsixel's palette then keeps apart (to its 5 bits a channel:
+     * white comes out #f8f8f8); with the blends, mass 1's blue was lost in an average. */
     bool few = e == FIG_SIXEL && registers >= 2 && registers < 256;
     if (few)
         cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
