@@ -177,12 +177,15 @@ if up rec; then
     fi
     keys Space
     wait_t 1.5
+    keys Escape Up Left # the Graphics control (the last), auto -> braille
+    wait_re '▸Graphics +braille' 3
     keys q
     poll 5 ended
     f=$tmp/rec.lesson
     missing=
     for want in '^start$' '^faster$' '^view modes$' '^mode 2$' '^step$' '^back$' \
-        '^random [0-9]+$' '^place 1 -?[0-9.e-]+$' '^element c 1 0.7$' '^expect t=0x'; do
+        '^random [0-9]+$' '^place 1 -?[0-9.e-]+$' '^element c 1 0.7$' '^set graphics braille$' \
+        '^expect t=0x'; do
         grep -qE "$want" "$f" 2>/dev/null || missing="$missing $want"
     done
     if [ -z "$missing" ] && ! grep -q '^pause$' "$f"; then pass; else
