@@ -296,6 +296,8 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@BENCH_TERM=sixel $(BUILD)/bench/bench_tty 80 24 $(BENCH_SECONDS) sixel ./$(BIN)
 	@BENCH_TERM=sixel BENCH_KEYS='1 ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
 	    'sixel, plot 1 enlarged' ./$(BIN)
+	@BENCH_TERM=sixel BENCH_KEYS='m ' $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
+	    'sixel, modes view (m), swinging' ./$(BIN)
 	@BENCH_TERM=kitty $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) kitty ./$(BIN)
 	@BENCH_TERM=kitty $(BUILD)/bench/bench_tty 80 24 $(BENCH_SECONDS) kitty ./$(BIN)
 	@BENCH_TERM=none $(BUILD)/bench/bench_tty 120 40 $(BENCH_SECONDS) \
