@@ -200,8 +200,10 @@ static void set_mode(struct graphics *g, enum graphics_mode mode)
 {
     if (mode == g->mode)
         return;
-    if (g->mode == GRAPHICS_KITTY)
+    if (g->mode == GRAPHICS_KITTY) {
         fputs("\033_Ga=d,d=a,q=2\033\\", stdout);
+        fflush(stdout); /* now, not when the program ends */
+    }
     g->mode = mode;
     chart_use_pixels(mode != GRAPHICS_BRAILLE);
     graphics_invalidate(g);
