@@ -4,7 +4,8 @@
  *
  * Coordinates. K (tridiagonal: K_ii = k_i + k_{i+1}, K_{i,i+1} = -k_{i+1}, a free end
  * drops k_N) is positive definite, spring 0 always tying mass 1 to the wall, so
- * M^(-1/2) K M^(-1/2) = L L^T with L lower bidiagonal (LAPACK dpttrf gives L D L^T). With
+ * M^(-1/2) K M^(-1/2) = L L^T with L lower bidiagonal (from the springs in series, to a few
+ * ulp however soft the slowest mode: take_model). With
  *
  *     q = L^T M^(1/2) x,   p = M^(1/2) v,   G = diag(c_i / m_i),
  *     q' = L^T p,          p' = -L q - G p + sqrt(k_N / m_N) e_N s,   s = sqrt(k_N) u,
@@ -54,7 +55,6 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_matrix.h>
-#include <lapacke.h>
 
 #include "exact_modal.h"
 
@@ -232,9 +232,15 @@ static void take_model(struct exact *e, const struct model *m)
     e->model++;
     e->valid = 0;
 
-    /* M^(-1/2) K M^(-1/2): diagonal into ld, off-diagonal into ls; dpttrf overwrites them
-     * with D and L's unit subdiagonal. */
-    double wmax = 0.0;
+    /* M^(-1/2) K M^(-1/2) = C C^T, C lower bidiagonal (diagonal ld, subdiagonal ls), from
+     * K = L D L^T taken as the chain's springs in series: eliminating masses 1..i leaves
+     * s_i, the springs 0..i in series, tying mass i+1 to the wall, so the pivots are
+     * d_i = s_i + k_(i+1) (k_N dropped for a free end) and s_(i+1) = s_i k_(i+1) / d_i,
+     * sums and products of positive numbers: every entry of C to a few ulp however soft
+     * the chain's slowest mode (dpttrf on the assembled matrix subtracts, and at a spring
+     * ratio of 1e17 fails). C's entries: ld_i = sqrt(d_i / m_i) and
+     * ls_i = -k_(i+1) / sqrt(d_i m_(i+1)). */
+    double series = 0.0, wmax = 0.0;
     e->damped = 0;
     for (int i = 0; i < n; i++) {
         if (!(m->m[i] > 0.0) || !(m->k[i] > 0.0) || !(m->c[i] >= 0.0) || !isfinite(m->m[i]) ||
@@ -244,10 +250,7 @@ static void take_model(struct exact *e, const struct model *m)
         if (i < n - 1 || m->boundary != BOUNDARY_FREE)
             kd += m->k[i + 1];
         e->sqm[i] = sqrt(m->m[i]);
-        e->ld[i] = kd / m->m[i];
-        wmax = fmax(wmax, e->ld[i]);
-        if (i < n - 1)
-            e->ls[i] = -m->k[i + 1] / (e->sqm[i] * sqrt(m->m[i + 1]));
+        wmax = fmax(wmax, kd / m->m[i]);
         e->gam[i] = m->c[i] / m->m[i];
         e->damped |= m->c[i] > 0.0;
     }
@@ -255,19 +258,23 @@ static void take_model(struct exact *e, const struct model *m)
         return;
     if (!isfinite(wmax))
         return;
-    if (LAPACKE_dpttrf(n, e->ld, e->ls) != 0)
-        return;
-    /* L D L^T = (L D^(1/2)) (L D^(1/2))^T */
+    series = m->k[0];
     for (int i = 0; i < n; i++) {
-        e->ld[i] = sqrt(e->ld[i]);
-        if (i < n - 1)
-            e->ls[i] *= e->ld[i];
+        double next = i < n - 1 || m->boundary != BOUNDARY_FREE ? m->k[i + 1] : 0.0;
+        double d = series + next;
+        e->ld[i] = sqrt(d / m->m[i]);
+        if (i < n - 1) {
+            e->ls[i] = -m->k[i + 1] / (sqrt(d) * e->sqm[i + 1]);
+            series *= m->k[i + 1] / d;
+        }
+        if (!(e->ld[i] > 0.0) || !isfinite(e->ld[i]) || (i < n - 1 && !isfinite(e->ls[i])))
+            return;
     }
     e->sk = m->boundary == BOUNDARY_FREE ? 0.0 : sqrt(m->k[n]);
     e->wscale = sqrt(wmax);
     /* Dampers proportional to the masses (to rounding) keep the modes apart: the modes'
      * propagator. Otherwise, or if LAPACK fails there, the dense exponential. */
-    e->use_modal = exact_proportional(m) && modal_take(e->md, m, e->gam[0]) == 0;
+    e->use_modal = exact_proportional(m) && modal_take(e->md, m, e->gam[0], e->ld, e->ls) == 0;
     e->valid = e->use_modal || dense_alloc(e) == 0;
 }
 
