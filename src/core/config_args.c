@@ -5,21 +5,8 @@
  * not settings of the run. */
 #include "config.h"
 
-#include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-
-void config_format_exact(double v, char *buf, size_t len)
-{
-    /* A subnormal number from one digit, the shortest (1e-320, not 9.99989e-321); any
-     * other from six (10, not 1e+01). */
-    for (int digits = fpclassify(v) == FP_SUBNORMAL ? 1 : 6; digits <= 17; digits++) {
-        snprintf(buf, len, "%.*g", digits, v);
-        if (strtod(buf, NULL) == v)
-            return;
-    }
-}
 
 /* A text value as a shell reads it back: bare when it is made of safe characters,
  * otherwise in single quotes (control bytes escaped, so the line stays one line). */

@@ -2,10 +2,13 @@
  * escapes, \xNN for the rest, invalid UTF-8 and C1 controls included), Unicode's format
  * characters and line and paragraph separators as \uXXXX (U+202E would turn the rest of
  * the line around, U+200B hide in it; libunistring knows which they are), other valid
- * UTF-8 kept, long values cut. */
+ * UTF-8 kept, long values cut; and numbers as every message and file writes them, with
+ * the fewest digits that read back exactly. */
 #include "config.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unictype.h>
 #include <unistr.h>
@@ -94,4 +97,15 @@ void config_quote(const char *value, size_t n, char *buf, size_t len)
         snprintf(buf, len, "'%s'", text);
     else
         snprintf(buf, len, "'%s' (%zu characters)", text, n);
+}
+
+void config_format_exact(double v, char *buf, size_t len)
+{
+    /* A subnormal number from one digit, the shortest (1e-320, not 9.99989e-321); any
+     * other from six (10, not 1e+01). */
+    for (int digits = fpclassify(v) == FP_SUBNORMAL ? 1 : 6; digits <= 17; digits++) {
+        snprintf(buf, len, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v)
+            return;
+    }
 }
