@@ -13,7 +13,7 @@
 #include "core/config.h"
 #include "core/preset.h"
 #include "app/lesson.h"
-#include "lessons.h"
+#include "lessons_cli.h"
 #include "options.h"
 #include "plain/plain.h"
 #include "run.h"

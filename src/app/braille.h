@@ -13,7 +13,7 @@ struct canvas {
     uint8_t *bits;   /* braille dot bits per cell (U+2800 + bits) */
     uint8_t *color;  /* colour index per cell: the last dot set wins */
     struct strokes *strokes; /* what was drawn as lines, for pixels (NULL: not kept) */
-    int mute;        /* > 0: a caller keeps the strokes itself (plot.c, at full precision) */
+    int mute;        /* > 0: a caller keeps the strokes itself (plot_canvas.c, at full precision) */
 };
 
 /* A blank canvas of cols x rows cells, or NULL on no memory. */

@@ -9,7 +9,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "view.h"
+#include "view_picture.h"
 
 /* Bytes grown as needed and kept for the next image. */
 struct fig_bytes {

@@ -5,7 +5,7 @@
 #define SPRINGSIM_SAVE_H
 
 #include "app/app.h"
-#include "view.h"
+#include "view_picture.h"
 
 /* Saves the n charts as one picture; with n == 0 (the modes view, whose cells are not
  * charts) the modes' shapes as --modes --figure draws them. dir NULL is ".". Returns the

@@ -9,9 +9,9 @@
 #include "../app/axis.h"
 #include "../app/braille.h"
 #include "../app/layout.h"
-#include "../app/plot.h"
+#include "../app/plot_canvas.h"
 #include "../app/trail.h"
-#include "../fig/view.h"
+#include "../fig/view_picture.h"
 
 #define CHART_MAX_TICKS 16
 

@@ -1,9 +1,9 @@
-/* view.c: the charts on the screen as one picture: each frame a rounded box with its
+/* view_picture.c: the charts on the screen as one picture: each frame a rounded box with its
  * title on the top border, the y labels left of the axis, the x labels under it, dotted
  * gridlines on the tick rows and columns, the legend on the bottom border, and the
  * drawing area painted from its strokes. Cells are FIG_CELL_W x FIG_CELL_H points, and a
  * tick's gridline goes through the middle of its cell, where the terminal draws it. */
-#include "view.h"
+#include "view_picture.h"
 
 #include <cairo.h>
 #include <errno.h>

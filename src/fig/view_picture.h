@@ -1,8 +1,8 @@
-/* view.h: a picture of the charts on the screen, as the terminal lays them out (frames,
+/* view_picture.h: a picture of the charts on the screen, as the terminal lays them out (frames,
  * titles, tick labels, gridlines and legends in their cells) with their drawing areas
  * painted sharp from their strokes: what X in the program saves, as SVG and PNG. */
-#ifndef SPRINGSIM_VIEW_H
-#define SPRINGSIM_VIEW_H
+#ifndef SPRINGSIM_VIEW_PICTURE_H
+#define SPRINGSIM_VIEW_PICTURE_H
 
 #include <stdbool.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
-/* lessons.c: the command line's lessons: --list-lessons, and the lesson --lesson or
+/* lessons_cli.c: the command line's lessons: --list-lessons, and the lesson --lesson or
  * --replay names read and checked before anything runs. */
-#include "lessons.h"
+#include "lessons_cli.h"
 
 #include <stdio.h>
 #include <stdlib.h>

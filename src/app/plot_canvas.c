@@ -1,6 +1,6 @@
-/* plot.c: steady autoscaling on 1-2-5 ticks (axis.c), and series onto a braille canvas
+/* plot_canvas.c: steady autoscaling on 1-2-5 ticks (axis.c), and series onto a braille canvas
  * on axes. */
-#include "plot.h"
+#include "plot_canvas.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,8 +1,8 @@
-/* plot.h: what a plot needs that is not drawing: autoscaling that grows at once and
+/* plot_canvas.h: what a plot needs that is not drawing: autoscaling that grows at once and
  * shrinks only after a while, and series rasterised onto a braille canvas on axes
  * (min-max per dot column). No curses here. */
-#ifndef SPRINGSIM_PLOT_H
-#define SPRINGSIM_PLOT_H
+#ifndef SPRINGSIM_PLOT_CANVAS_H
+#define SPRINGSIM_PLOT_CANVAS_H
 
 #include <stdbool.h>
 #include <stddef.h>

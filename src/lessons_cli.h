@@ -1,6 +1,6 @@
-/* lessons.h: the command line's lessons (--list-lessons, --lesson, --replay). */
-#ifndef SPRINGSIM_LESSONS_H
-#define SPRINGSIM_LESSONS_H
+/* lessons_cli.h: the command line's lessons (--list-lessons, --lesson, --replay). */
+#ifndef SPRINGSIM_LESSONS_CLI_H
+#define SPRINGSIM_LESSONS_CLI_H
 
 #include "app/lesson.h"
 #include "core/config.h"
