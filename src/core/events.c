@@ -24,8 +24,9 @@
 /* A gap this small (m) may start to rest: the located instant's gap is the interpolant's
  * error, which resting then removes. */
 #define REST_GAP 1e-6
-/* Sweeps of the contact rule at one instant before what still closes moves as one. */
-#define SWEEPS 3
+/* Sweeps of the contact rule at one instant, beyond two for each contact of the row it
+ * runs along, before what still closes moves as one (an inelastic collapse). */
+#define EVENTS_SWEEPS 16
 
 /* x_i at theta of the piece, and its velocity. */
 static double hermite(const struct events_piece *p, int i, double th)
@@ -261,11 +262,13 @@ static double weakest_at(const struct events_piece *p, double th, double *work, 
     int n = p->m->n;
     double u, du;
     drive_eval(p->d, p->a + th * p->h, &u, &du);
-    for (int i = 0; i < n; i++) {
-        work[i] = hermite(p, i, th);
-        work[n + i] = hermite_v(p, i, th);
-    }
-    *which = rest_forces(p->rest, p->m, work, work + n, u, du, p->ddu_factor * u, force);
+    const double *y = th == 0.0 ? p->ya : th == 1.0 ? p->y : work; /* the ends as they are */
+    if (y == work)
+        for (int i = 0; i < n; i++) {
+            work[i] = hermite(p, i, th);
+            work[n + i] = hermite_v(p, i, th);
+        }
+    *which = rest_forces(p->rest, p->m, y, y + n, u, du, p->ddu_factor * u, force);
     return *which < 0 ? INFINITY : force[*which];
 }
 
@@ -306,76 +309,72 @@ double events_release(const struct events_piece *p, double *work, double *force,
     return hi;
 }
 
-/* One side of a contact: the cluster that holds mass i, its mass (INFINITY when the wall
- * or the piston holds it) and velocity. */
-struct body {
-    int first, last, held;
-    double mass, v;
-};
-
-static void body_of(const struct rest *r, const struct model *m, int i, const double *v,
-                    double du, struct body *b)
-{
-    b->held = rest_cluster(r, m->n, i, &b->first, &b->last);
-    double p = 0.0, mass = 0.0;
-    for (int j = b->first; j <= b->last; j++)
-        p += m->m[j] * v[j], mass += m->m[j];
-    b->mass = b->held ? INFINITY : mass;
-    b->v = b->held < 0 ? 0.0 : b->held > 0 ? du : p / mass;
-}
-
-/* The contact rule on constraint k between the bodies it joins: 1 if they were closing. */
-static int body_hit(const struct collision_limits *l, const struct model *m, struct rest *r,
+/* The contact rule on constraint k between the two masses it joins (or a mass and the
+ * wall or the piston): 1 if they were closing. Resting contacts take no part: an impact's
+ * impulse is infinite beside the finite force that holds them, so a hit on a pressed row
+ * goes through it pair by pair as through a row merely touching. */
+static int pair_hit(const struct collision_limits *l, const struct model *m, struct rest *r,
                     int k, double *v, double du, struct collision_books *bk)
 {
     int n = l->n;
-    if (r->on[k])
+    double mass_l = k > 0 ? m->m[k - 1] : INFINITY, mass_r = k < n ? m->m[k] : INFINITY;
+    double vl0 = k > 0 ? v[k - 1] : 0.0, vr0 = k < n ? v[k] : du;
+    double closing = vl0 - vr0;
+    if (!(closing > 0.0)) {
+        /* Touching and moving as one (a pile put on the piston's face): no impact, but
+         * the contact may rest if the forces press it shut. */
+        if (closing > -REST_RATE)
+            r->soft[k] = r->enabled;
         return 0;
-    struct body L = {0, -1, -1, INFINITY, 0.0}, R = {n, n - 1, 1, INFINITY, du};
-    if (k > 0)
-        body_of(r, m, k - 1, v, du, &L);
-    if (k < n)
-        body_of(r, m, k, v, du, &R);
-    double closing = L.v - R.v;
-    if (!(closing > 0.0) || (isinf(L.mass) && isinf(R.mass)))
-        return 0;
+    }
     double e = closing < r->v_rest ? 0.0 : MODEL_RESTITUTION, vl, vr, mu;
     r->soft[k] = e == 0.0 && r->enabled;
-    if (isinf(L.mass)) {
-        vl = L.v, vr = L.v + e * closing, mu = R.mass;
-    } else if (isinf(R.mass)) {
-        vl = R.v - e * closing, vr = R.v, mu = L.mass;
+    if (isinf(mass_l)) {
+        vl = vl0, vr = vl0 + e * closing, mu = mass_r;
+    } else if (isinf(mass_r)) {
+        vl = vr0 - e * closing, vr = vr0, mu = mass_l;
     } else {
-        double mt = L.mass + R.mass, p = L.mass * L.v + R.mass * R.v;
-        vl = (p - R.mass * e * closing) / mt, vr = (p + L.mass * e * closing) / mt;
-        mu = L.mass * R.mass / mt;
+        double mt = mass_l + mass_r, p = mass_l * vl0 + mass_r * vr0;
+        vl = (p - mass_r * e * closing) / mt, vr = (p + mass_l * e * closing) / mt;
+        mu = mass_l * mass_r / mt;
     }
-    double lost = 0.5 * mu * (1.0 - e * e) * closing * closing, gain = 0.0;
-    if (!isinf(L.mass))
-        gain += 0.5 * L.mass * (vl * vl - L.v * L.v);
-    if (!isinf(R.mass))
-        gain += 0.5 * R.mass * (vr * vr - R.v * R.v);
-    for (int j = L.first; j <= L.last; j++)
-        v[j] = vl;
-    for (int j = R.first; j <= R.last; j++)
-        v[j] = vr;
+    double lost = 0.5 * mu * (1.0 - e * e) * closing * closing;
     bk->lost += lost;
-    /* The piston, moving, does all the work the contact did: the bodies' gain plus the
-     * loss. Against the wall it does none (the gain is then minus the loss). */
-    if (L.held > 0 || R.held > 0)
-        bk->piston += gain + lost;
+    if (k > 0)
+        v[k - 1] = vl;
+    if (k < n)
+        v[k] = vr;
+    /* The piston, moving, does all the work the contact did: the mass's gain plus the
+     * loss. Against the wall it does none. */
+    if (k == n)
+        bk->piston += 0.5 * mass_l * (vl * vl - vl0 * vl0) + lost;
     return 1;
+}
+
+/* Whether constraint k touches: resting, or its gap within EVENTS_TOUCH of closed. */
+static bool touching(const struct collision_limits *l, const struct rest *r, int k,
+                     const double *x, double u)
+{
+    return r->on[k] || collision_gap(l, k, x, u) <= EVENTS_TOUCH;
 }
 
 int events_hit(const struct collision_limits *l, const struct model *m, struct rest *r, int k,
                const double *x, double *v, double u, double du, struct collision_books *b)
 {
-    int hits = body_hit(l, m, r, k, v, du, b), found = 1;
-    for (int sweep = 0; sweep < SWEEPS && found; sweep++) {
+    /* The impulse travels along the row of touching contacts around k, so the sweeps
+     * need look no further. They go left to right and back in turn, so a wave running
+     * either way crosses the row in one sweep. */
+    int lo = k, hi = k;
+    while (lo > 0 && touching(l, r, lo - 1, x, u))
+        lo--;
+    while (hi + 1 < l->count && touching(l, r, hi + 1, x, u))
+        hi++;
+    int hits = pair_hit(l, m, r, k, v, du, b), found = 1;
+    int sweeps = EVENTS_SWEEPS;
+    for (int sweep = 0; sweep < sweeps && found; sweep++) {
         found = 0;
-        for (int j = 0; j < l->count; j++)
-            if (collision_gap(l, j, x, u) <= EVENTS_TOUCH)
-                found += body_hit(l, m, r, j, v, du, b);
+        for (int j = 0; j <= hi - lo; j++)
+            found += pair_hit(l, m, r, sweep % 2 ? hi - j : lo + j, v, du, b);
         hits += found;
     }
     if (found) /* still closing after the sweeps: what touches moves as one */

@@ -37,11 +37,12 @@ double events_contact(const struct events_piece *p, int *which, int *closing);
  * force: count doubles of scratch. */
 double events_release(const struct events_piece *p, double *work, double *force, int *which);
 
-/* At an instant of contact on open constraint k: the contact rule between the two bodies
- * it joins (a cluster of resting masses moves as one; the wall's is immovable, the
- * piston's moves with it), then every other touching constraint still closing the same,
- * sweep after sweep, and a cluster still closing after that as one. Books the energy.
- * Returns the contacts. */
+/* At an instant of contact on constraint k: the contact rule between the two masses it
+ * joins (or a mass and the wall or the piston), then on every touching contact of the row
+ * around it still closing, pair by pair, sweeps alternating left to right and back, and
+ * a row still closing after that as one. Resting contacts in the row take the same rule
+ * as merely touching ones (the impact's impulse is infinite beside their finite force).
+ * Books the energy. Returns the contacts. */
 int events_hit(const struct collision_limits *l, const struct model *m, struct rest *r, int k,
                const double *x, double *v, double u, double du, struct collision_books *b);
 

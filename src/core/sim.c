@@ -26,18 +26,12 @@
 /* Events located inside one piece (a mass coming to rest on a wall bounces about 30
  * times, the last ones in one step); any more are resolved at its end. */
 #define MAX_EVENTS 256
-/* A chain of up to MAX_LOCATED masses has every contact located, and its contacts may
- * rest. In a longer one, a piece with more than LONG_CLOSING gaps closing, or one after a
- * step with more than LONG_CLOSING contacts, is piling up: nothing is located, everything
- * is settled at the piece's end (each touching cluster moving as one), so a pile-up of a
- * thousand masses costs about a step, not a step per contact. Otherwise at most
- * LONG_EVENTS events are located in a piece, without the Newton refinement. */
-#define MAX_LOCATED 12
-#define LONG_CLOSING 3
-#define LONG_EVENTS 2
 /* The most a first-order method's error in a contact's speed may make it inelastic (m/s):
  * an unstable run must still run away. */
 #define FIRST_ORDER_REST 0.1
+/* A refinement of an event's instant shorter than this fraction of the piece moves the
+ * state along its Taylor series rather than stepping again. */
+#define SHIFT_MAX 1e-3
 /* Gaps within this of zero count as touching. */
 #define TOUCH EVENTS_TOUCH
 
@@ -51,7 +45,6 @@ struct sim {
     enum integrator integrator;
     double contact;      /* energy removed by contacts and the cap */
     int last_contacts;   /* contacts and caps in the last step */
-    int prev_contacts;   /* and in the one before */
     int last_capped;     /* caps in the last step */
     double *y;           /* 2N+2: x, v, D (dissipated), W (motor work) */
     double *y0;          /* the state at the start of the step, for restoring */
@@ -84,8 +77,7 @@ struct sim *sim_new(const struct model *model, double dt)
     s->work = s->ya_buf + len;
     s->force = s->work + 2 * n;
     stepper_set_rest(s->st, s->rest);
-    /* A long chain's contacts do not rest: its pile-ups are settled step by step. */
-    s->rest->enabled = n <= MAX_LOCATED;
+    s->rest->enabled = true;
     s->dt = dt;
     s->integrator = INTEGRATOR_RK4;
     sim_set_model(s, model);
@@ -103,7 +95,6 @@ int sim_copy(struct sim *dst, const struct sim *src)
     dst->integrator = src->integrator;
     dst->contact = src->contact;
     dst->last_contacts = src->last_contacts;
-    dst->prev_contacts = src->prev_contacts;
     dst->sine_err = src->sine_err;
     dst->last_capped = src->last_capped;
     rest_copy(dst->rest, src->rest);
@@ -186,7 +177,6 @@ void sim_reset(struct sim *s, const double *x, const double *v)
     s->steps = 0.0;
     s->contact = 0.0;
     s->last_contacts = 0;
-    s->prev_contacts = 0;
     s->last_capped = 0;
     rest_clear(s->rest, &s->lim);
 }
@@ -223,6 +213,24 @@ static void at_event(struct sim *s, int k, double u, double du, double ddu)
     events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, ddu, s->force);
 }
 
+/* Moves the state by a short time delta along its Taylor series to second order, the
+ * energy books to first (an event's instant refined; delta is at most SHIFT_MAX of the
+ * piece, so what is left out is far below the step's own error). u, du, ddu: the drive. */
+static void shift(struct sim *s, double delta, double u, double du, double ddu)
+{
+    int n = s->n;
+    const struct model *m = sim_model(s);
+    double *x = s->y, *v = s->y + n, *acc = s->work, diss, power;
+    model_rates(m, NULL, x, v, u, du, acc, &diss, &power);
+    power -= rest_project(s->rest, m, acc, ddu) * du;
+    for (int i = 0; i < n; i++) {
+        x[i] += delta * (v[i] + 0.5 * delta * acc[i]);
+        v[i] += delta * acc[i];
+    }
+    s->y[2 * n] += delta * diss;
+    s->y[2 * n + 1] += delta * power;
+}
+
 /* Steps the piece [a, b] on drive d with its contacts; at_start when the piece starts
  * the step (the state is still y0). 0, or -1 on a stepper failure. */
 static int piece(struct sim *s, const struct drive *d, double a, double b, bool at_start)
@@ -231,8 +239,7 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
     enum integrator integ = s->integrator;
     const struct model *m = sim_model(s);
     struct events_piece p = {&s->lim, m, s->rest, d, NULL, s->y, a, b - a, 0, 0, 0, 0, 0, 0};
-    bool is_long = n > MAX_LOCATED;
-    int budget = !is_long ? MAX_EVENTS : s->prev_contacts > LONG_CLOSING ? 0 : LONG_EVENTS;
+    int budget = MAX_EVENTS;
     p.ddu_factor = drive_ddu_factor(d);
     bool leftover = true; /* a gap may be left closed at the end */
     int stalls = 0;       /* events in a row at the start of what is left */
@@ -252,17 +259,15 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
         if (s->rest->active)
             rest_snap(s->rest, &s->lim, m, s->y, s->y + n, p.ub, p.dub);
         if (budget == 0)
-            break; /* piling up: settled below */
+            break; /* no progress: settled below */
         p.ya = s->ya, p.a = a, p.h = b - a;
         double h2 = (b - a) * (b - a);
         p.drive_err = d->kind == DRIVE_SINE ? s->sine_err * h2 * h2 : 0.0;
         /* The earliest event in the piece: a gap closing (or grazing), or a resting
-         * contact starting to pull. Where more than a few gaps close in one piece of a
-         * long chain, it is piling up: those are settled at its end, so a pile-up costs
-         * a step, not a step per contact. */
+         * contact starting to pull. */
         int which, closing, released = -1;
         double first = events_contact(&p, &which, &closing);
-        if (s->rest->active && !is_long) {
+        if (s->rest->active) {
             double th = events_release(&p, s->work, s->force, &released);
             if (th >= 0.0 && (which < 0 || th < first))
                 first = th, which = -1;
@@ -273,7 +278,7 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
             leftover = false; /* every gap stays open to its end */
             break;
         }
-        if (events >= budget || (is_long && closing > LONG_CLOSING))
+        if (events >= budget)
             break;
         /* Step again, to the instant of the event. */
         double tc = a + first * (b - a);
@@ -282,20 +287,25 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
             return -1;
         double uc, duc;
         drive_eval(d, tc, &uc, &duc);
-        if (which >= 0 && !is_long) {
+        if (which >= 0) {
             /* The interpolant's instant is good to O(h^4); Newton on the gap of the stepped
              * state itself (its rate known there) takes it to the method's own accuracy,
              * which a graze, whose instant moves much with a small error of the gap,
-             * needs. */
+             * needs. A small correction moves the state along its Taylor series instead
+             * of stepping again. */
             for (int it = 0; it < 3; it++) {
                 double g = collision_gap(&s->lim, which, s->y, uc);
                 double r = collision_rate(&s->lim, which, s->y + n, duc);
                 if (fabs(g) < 1e-14 || r >= 0.0)
                     break;
                 double next = fmin(b, fmax(a, tc - g / r));
-                memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
-                if (next > a && stepper_apply(s->st, integ, d, a, next, s->y) != 0)
-                    return -1;
+                if (fabs(next - tc) <= SHIFT_MAX * (b - a)) {
+                    shift(s, next - tc, uc, duc, p.ddu_factor * uc);
+                } else {
+                    memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
+                    if (next > a && stepper_apply(s->st, integ, d, a, next, s->y) != 0)
+                        return -1;
+                }
                 tc = next;
                 drive_eval(d, tc, &uc, &duc);
             }
@@ -305,19 +315,21 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
         at_event(s, which, uc, duc, p.ddu_factor * uc);
         if (b - tc <= 1e-12 * s->dt)
             break;
-        if (tc <= a && ++stalls > 2)
-            break; /* events that make no progress (a jammed chain): settled below */
+        if (tc <= a && ++stalls > 2) {
+            /* Events that make no progress: the rest of the piece is stepped whole and
+             * what it leaves closed is settled at its end, so the run moves on. */
+            budget = 0;
+            continue;
+        }
         a = tc;
     }
-    /* A pile-up, and anything left over, is put back at the piece's end; in a long chain
-     * resting contacts that pull part there too. */
+    /* Anything left over (events that made no progress, or more than MAX_EVENTS) is put
+     * back at the piece's end. */
     stepper_end_drive(s->st, &p.ub, &p.dub);
     if (leftover && collision_needed(&s->lim, s->y, s->y + n, p.ub)) {
         struct collision_books bk = {0.0, 0.0};
         s->last_contacts += collision_settle(&s->lim, m, s->y, s->y + n, p.ub, p.dub, &bk);
         book(s, &bk);
-        at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub);
-    } else if (is_long && s->rest->active) {
         at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub);
     }
     return 0;
@@ -332,11 +344,41 @@ static double jump_work(const struct sim *s, double u_from, double u_to)
     return 0.5 * sim_model(s)->k[s->n] * (b * b - a * a);
 }
 
+/* The piston jumped to u, into the last mass: every mass in its way is pushed ahead of
+ * its face, each against the next (a row on the face), the motor paying what that does to
+ * the springs; then the face's contact rule, passed along the row pair by pair. -1 when
+ * the row would not fit between the face and the wall (nothing moved), else the contacts. */
+static int plow(struct sim *s, double u, double du)
+{
+    int n = s->n, first = n;
+    const struct collision_limits *l = &s->lim;
+    const struct model *m = sim_model(s);
+    /* Mass i's displacement on the face; each left neighbour sits `pair` below. */
+    double face = MODEL_LENGTH + u - 0.5 * l->w - n * l->spacing, pair = l->w - l->spacing;
+    double lim = face;
+    for (int i = n - 1; i >= 0 && s->y[i] > lim; i--, lim -= pair)
+        first = i;
+    if (first == 0 && lim + pair < 0.5 * l->w - l->spacing - TOUCH)
+        return -1;
+    double e0 = model_potential(m, s->y, u);
+    lim = face;
+    for (int i = n - 1; i >= first; i--, lim -= pair)
+        s->y[i] = lim;
+    s->y[2 * n + 1] += model_potential(m, s->y, u) - e0;
+    if (s->rest->on[n])
+        return 0; /* the piston carried it: no impact */
+    struct collision_books b = {0.0, 0.0};
+    s->rest->v_rest = COLLISION_V_REST;
+    int hits = events_hit(&s->lim, m, s->rest, n, s->y, s->y + n, u, du, &b);
+    book(s, &b);
+    return hits > 0 ? hits : 1;
+}
+
 /* A jump of the end to u (moving at du after it): the motor's work on the spring, and a
  * contact if the piston jumped into the last mass. */
 static void jump(struct sim *s, double u_from, double u, double du)
 {
-    int n = s->n, f, l;
+    int n = s->n;
     const struct model *m = sim_model(s);
     s->y[2 * n + 1] += jump_work(s, u_from, u);
     if (!s->lim.on)
@@ -345,28 +387,14 @@ static void jump(struct sim *s, double u_from, double u, double du)
     if (s->rest->on[n] && gap > TOUCH) /* the piston jumped away from what it carried */
         rest_set(s->rest, n, false);
     if (gap < -TOUCH) {
-        /* The piston jumped into the last mass: its cluster is put on the face (the motor
-         * pays what that does to the springs), then takes the contact rule, as at any
-         * contact, unless the piston carried it. Where that would push it into its
-         * neighbour or it is held by the wall, the pile is settled instead. */
-        int held = rest_cluster(s->rest, n, n - 1, &f, &l);
-        double room = collision_gap(&s->lim, f, s->y, u);
-        if (held >= 0 && room + gap >= 0.0) {
-            double e0 = model_potential(m, s->y, u);
-            for (int i = f; i <= l; i++)
-                s->y[i] += gap;
-            s->y[2 * n + 1] += model_potential(m, s->y, u) - e0;
-            if (!s->rest->on[n]) {
-                struct collision_books b = {0.0, 0.0};
-                int hits = events_hit(&s->lim, m, s->rest, n, s->y, s->y + n, u, du, &b);
-                s->last_contacts += hits > 0 ? hits : 1;
-                book(s, &b);
-            }
-        } else {
+        int hits = plow(s, u, du);
+        if (hits < 0) {
+            /* No room for the row (an amplitude the settings refuse): settled as a pile. */
             struct collision_books b = {0.0, 0.0};
-            s->last_contacts += collision_settle(&s->lim, m, s->y, s->y + n, u, du, &b);
+            hits = collision_settle(&s->lim, m, s->y, s->y + n, u, du, &b);
             book(s, &b);
         }
+        s->last_contacts += hits;
     }
     if (s->rest->active || gap < -TOUCH)
         events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
@@ -458,7 +486,6 @@ enum sim_status sim_step(struct sim *s)
     double t1 = s->t_base + (s->steps + 1.0) * s->dt;
     double contact0 = s->contact;
     memcpy(s->y0, s->y, (size_t)len * sizeof *s->y);
-    s->prev_contacts = s->last_contacts;
     s->last_contacts = s->last_capped = 0;
     if (advance(s, t0, t1) != 0 || !all_finite(s->y, len)) {
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
