@@ -106,4 +106,17 @@ else
     pass
 fi
 
+# --- issue 31: an amplitude that leaves the blocks no room (A > L - N w) is refused ---
+refused "'6.5' leaves the 20 blocks no room" --headless -n 20 --amplitude 6.5
+refused "expected amplitude <= L - N w = 9.2 m" --headless -n 2 --wave square --amplitude 9.3
+refused "leaves the 2 blocks no room" --headless -n 2 --preset square-wave --amplitude 9.21
+# At the limit, with collisions off or no piston, the same amplitude runs.
+for args in "-n 2 --amplitude 9.2" "-n 20 --amplitude 6.5 --no-collisions" \
+    "-n 20 --amplitude 6.5 --boundary wall"; do
+    # shellcheck disable=SC2086
+    if "$SPRINGSIM" --headless $args --duration 0.1 >/dev/null 2>&1; then pass; else
+        fail "--headless $args: refused (expected a run)"
+    fi
+done
+
 summary

@@ -78,6 +78,18 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
         snprintf(err, errlen, "'%d' is out of range for %d %s (expected a mode 1 <= K <= %d)",
                  c->start_mode, n, per_mass, n);
     }
+    double room = MODEL_LENGTH - n * model_block_width(m);
+    if (*bad_key < 0 && !c->no_collisions && c->boundary == BOUNDARY_MOTOR &&
+        c->amplitude > room) {
+        /* At its furthest in the piston would crush the blocks against the wall. */
+        *bad_key = CFG_AMPLITUDE;
+        char a[40];
+        config_format_exact(c->amplitude, a, sizeof a);
+        snprintf(err, errlen, "'%s' leaves the %d %s no room: the piston would crush them "
+                 "against the wall (expected amplitude <= L - N w = %.6g m with collisions "
+                 "on, the blocks %.6g m wide)", a, n, n == 1 ? "block" : "blocks", room,
+                 model_block_width(m));
+    }
     if (*bad_key >= 0) {
         model_free(m);
         return NULL;
