@@ -21,12 +21,17 @@
  * the series is that of the constrained chain: a free cluster accelerates by its net
  * force over its mass, the piston's by u''. The force across each held contact is a
  * series too (Newton on the part left of it); the contact parts where it turns to a pull,
- * found like a closing gap. A contact against a cluster is the SPEC's rule between the
- * two rigid bodies. The square, triangle and sawtooth drives are pieces of constants and
- * ramps (SPEC's formulas), sub-steps ending at their breakpoints; a jump of the end books
- * the change of the end spring's energy as the motor's work, and a jump into the last mass
- * puts it (its cluster) on the piston's face, the springs' change paid by the motor, and
- * is a contact (one that pushes it into another is not this reference's business).
+ * found like a closing gap. An impact is the SPEC's rule between the two masses it joins
+ * (or a mass and the wall or piston), then on every touching gap of the row around it that
+ * still closes, pair by pair, in sweeps alternating left to right and back until none
+ * does: held contacts take part like merely touching ones (the impulse is infinite beside
+ * their force), part if they then move apart, and inelastic ones pressed shut are held.
+ * The square, triangle and sawtooth drives are pieces of constants and ramps (SPEC's
+ * formulas), sub-steps ending at their breakpoints; a jump of the end books the change of
+ * the end spring's energy as the motor's work, and a jump into the last mass pushes every
+ * mass in the way ahead of the face, each against the next, the springs' change paid by
+ * the motor, and is an impact on the face (a row pushed into the wall is not this
+ * reference's business: the program refuses such an amplitude).
  *
  * The energy books are kept exactly too: dissipated = integral of sum c v^2, motor work =
  * integral of k_N (u - x_N) u' plus the impulse times the piston's velocity at a piston
@@ -41,7 +46,7 @@
 
 #include "core/model.h"
 
-#define REF_MAXN 10       /* masses the reference takes */
+#define REF_MAXN 30       /* masses the reference takes */
 #define REF_ORDER 24      /* Taylor order */
 #define REF_HMAX 1e-3     /* longest sub-step (s) by default */
 #define REF_SAMPLES 8     /* samples of each gap per sub-step, to find its extrema */
@@ -417,23 +422,6 @@ static void ref_move(struct ref *r, const struct ref_series *se, double s)
     }
 }
 
-/* One side of a contact: a rigid cluster, its mass (INFINITY when the wall or the piston
- * holds it) and velocity. */
-struct ref_body {
-    int f, l, hold;
-    double mass, v;
-};
-
-static void ref_body_of(const struct ref *r, int i, double du, struct ref_body *b)
-{
-    b->hold = ref_cluster(r, i, &b->f, &b->l);
-    double p = 0.0, mass = 0.0;
-    for (int j = b->f; j <= b->l; j++)
-        p += r->m[j] * r->v[j], mass += r->m[j];
-    b->mass = b->hold ? INFINITY : mass;
-    b->v = b->hold < 0 ? 0.0 : b->hold > 0 ? du : p / mass;
-}
-
 /* Held contacts' forces now (F[0] of the series): the weakest one, or -1. */
 static int ref_weakest(const struct ref *r, double *force)
 {
@@ -447,60 +435,148 @@ static int ref_weakest(const struct ref *r, double *force)
     return w;
 }
 
-/* The SPEC's rule for the contact of gap g between the rigid bodies it joins, with the
- * books; inelastic below REF_V_REST, and then held while the forces press it. */
-static void ref_contact(struct ref *r, int g)
+/* Gap g now (m), and its rate (m/s) with the end moving at du. */
+static double ref_gap_now(const struct ref *r, int g, double *rate, double du)
 {
     int n = r->n;
-    double u, du;
-    ref_drive(r, r->t, &u, &du);
-    struct ref_body L = {0, -1, -1, INFINITY, 0.0}, R = {n, n - 1, 1, INFINITY, du};
-    if (g > 0)
-        ref_body_of(r, g - 1, du, &L);
-    if (g < n)
-        ref_body_of(r, g, du, &R);
-    double closing = L.v - R.v;
-    if (isinf(L.mass) && isinf(R.mass)) {
-        r->error = "a contact between two held bodies (the chain jammed)";
-        return;
+    double u, du0;
+    ref_drive(r, r->t, &u, &du0);
+    if (g == 0) {
+        *rate = r->v[0];
+        return r->xeq[0] + r->x[0] - 0.5 * r->w;
     }
-    double e = closing < REF_V_REST ? 0.0 : REF_E, mu, vl, vr;
+    if (g < n) {
+        *rate = r->v[g] - r->v[g - 1];
+        return r->xeq[g] + r->x[g] - r->xeq[g - 1] - r->x[g - 1] - r->w;
+    }
+    *rate = du - r->v[n - 1];
+    return REF_L + u - 0.5 * r->w - r->xeq[n - 1] - r->x[n - 1];
+}
+
+/* The SPEC's rule on gap g between the two masses it joins (or a mass and the wall, or
+ * the piston moving at du), with the books and the log: 1 if they were closing. One
+ * closing slower than REF_V_REST is inelastic, and marked in soft (so is one touching and
+ * moving as one: it may be held). */
+static int ref_pair(struct ref *r, int g, double du, bool *soft)
+{
+    int n = r->n;
+    double ml = g > 0 ? r->m[g - 1] : INFINITY, mr = g < n ? r->m[g] : INFINITY;
+    double vl0 = g > 0 ? r->v[g - 1] : 0.0, vr0 = g < n ? r->v[g] : du;
+    double closing = vl0 - vr0, e, mu, vl, vr;
+    if (!(closing > 0.0)) {
+        soft[g] = closing > -REF_RATE;
+        return 0;
+    }
+    e = closing < REF_V_REST ? 0.0 : REF_E;
+    soft[g] = e == 0.0;
     r->near_rest = fmin(r->near_rest, fabs(closing - REF_V_REST));
-    if (isinf(L.mass)) {
-        mu = R.mass, vl = L.v, vr = L.v + e * closing;
-    } else if (isinf(R.mass)) {
-        mu = L.mass, vl = R.v - e * closing, vr = R.v;
+    if (isinf(ml)) {
+        mu = mr, vl = vl0, vr = vl0 + e * closing;
+    } else if (isinf(mr)) {
+        mu = ml, vl = vr0 - e * closing, vr = vr0;
     } else {
-        double mt = L.mass + R.mass, p = L.mass * L.v + R.mass * R.v;
-        mu = L.mass * R.mass / mt;
-        vl = (p - R.mass * e * closing) / mt, vr = (p + L.mass * e * closing) / mt;
+        double mt = ml + mr, p = ml * vl0 + mr * vr0;
+        mu = ml * mr / mt;
+        vl = (p - mr * e * closing) / mt, vr = (p + ml * e * closing) / mt;
     }
-    /* The piston's impulse on what it hits, times its speed, is its work. */
-    if (R.hold > 0)
-        for (int j = L.f; j <= L.l; j++)
-            r->motor_work += r->m[j] * (vl - r->v[j]) * du;
-    if (L.hold > 0)
-        for (int j = R.f; j <= R.l; j++)
-            r->motor_work += r->m[j] * (vr - r->v[j]) * du;
-    for (int j = L.f; j <= L.l; j++)
-        r->v[j] = vl;
-    for (int j = R.f; j <= R.l; j++)
-        r->v[j] = vr;
+    if (g == n) /* the piston's impulse on the mass, times its speed, is its work */
+        r->motor_work += ml * (vl - vl0) * du;
+    if (g > 0)
+        r->v[g - 1] = vl;
+    if (g < n)
+        r->v[g] = vr;
     r->contact += 0.5 * mu * (1.0 - e * e) * closing * closing;
     struct ref_event ev = {r->t, g == 0 ? REF_LEFT : g == n ? REF_RIGHT : REF_PAIR,
                            g == 0 ? 0 : g - 1, closing};
-    if (r->nev > 0 && r->t - r->ev[(r->nev - 1) % REF_MAXEVENTS].t < 1e-9 &&
-        e != 0.0)
-        r->error = "two contacts at one instant";
     r->ev[r->nev % REF_MAXEVENTS] = ev; /* the last REF_MAXEVENTS, in a ring past that */
     r->nev++;
     r->count++;
-    if (e == 0.0) {
-        double force;
-        r->held[g] = true;
-        for (int w; (w = ref_weakest(r, &force)) >= 0 && force < -REF_PULL;)
-            r->held[w] = false;
+    return 1;
+}
+
+/* After 16 sweeps an impact still closing is an inelastic collapse: each run of touching
+ * masses with a gap still closing moves as one, its momentum kept, the wall stopping it
+ * and the piston (moving at du) holding it back, its work booked. 1 if any moved. */
+static int ref_merge(struct ref *r, double du)
+{
+    int n = r->n, changed = 0;
+    double rate;
+    for (int f = 0, l; f < n; f = l + 1) {
+        bool closing = false;
+        for (l = f; l + 1 < n && ref_gap_now(r, l + 1, &rate, du) <= 1e-12; l++)
+            closing |= rate < 0.0;
+        bool left = f == 0 && ref_gap_now(r, 0, &rate, du) <= 1e-12;
+        bool right = l == n - 1 && !r->free_end && ref_gap_now(r, n, &rate, du) <= 1e-12;
+        closing |= (left && r->v[0] < 0.0) || (right && r->v[n - 1] > du);
+        if (!closing)
+            continue;
+        double p = 0.0, mass = 0.0, e0 = 0.0, e1 = 0.0;
+        for (int i = f; i <= l; i++)
+            p += r->m[i] * r->v[i], mass += r->m[i], e0 += 0.5 * r->m[i] * r->v[i] * r->v[i];
+        double vc = p / mass, work = 0.0;
+        vc = left && vc < 0.0 ? 0.0 : vc;
+        if (right && vc > du) {
+            work = mass * (du - vc) * du;
+            vc = du;
+        }
+        for (int i = f; i <= l; i++)
+            r->v[i] = vc, e1 += 0.5 * r->m[i] * vc * vc;
+        r->motor_work += work;
+        r->contact += e0 - e1 + work;
+        changed = 1;
     }
+    if (changed)
+        r->count++;
+    return changed;
+}
+
+/* An impact on gap g: the SPEC's rule there, then on every touching gap of the row around
+ * it (held or closed to 1e-12 m) still closing, sweeps alternating left to right and
+ * back until none closes; held contacts take part like any other (the impulse is infinite
+ * beside their force). Then held contacts moving apart part, inelastic ones pressed shut
+ * are held. Returns the contacts. */
+static int ref_impact(struct ref *r, int g)
+{
+    int gaps = r->free_end ? r->n : r->n + 1, lo = g, hi = g, hits, found = 1;
+    double u, du, rate;
+    bool soft[REF_MAXN + 1] = {false};
+    ref_drive(r, r->t, &u, &du);
+    while (lo > 0 && (r->held[lo - 1] || ref_gap_now(r, lo - 1, &rate, du) <= 1e-12))
+        lo--;
+    while (hi + 1 < gaps && (r->held[hi + 1] || ref_gap_now(r, hi + 1, &rate, du) <= 1e-12))
+        hi++;
+    hits = ref_pair(r, g, du, soft);
+    for (int sweep = 0; sweep < 16 && found; sweep++) {
+        found = 0;
+        for (int j = 0; j <= hi - lo; j++)
+            found += ref_pair(r, sweep % 2 ? hi - j : lo + j, du, soft);
+        hits += found;
+    }
+    if (found)
+        hits += ref_merge(r, du);
+    for (int j = lo; j <= hi; j++) {
+        ref_gap_now(r, j, &rate, du);
+        if (r->held[j] && rate > REF_RATE)
+            r->held[j] = false;
+        else if (soft[j] && fabs(rate) <= REF_RATE)
+            r->held[j] = true;
+    }
+    double force;
+    for (int w; (w = ref_weakest(r, &force)) >= 0 && force < -REF_PULL;)
+        r->held[w] = false;
+    return hits;
+}
+
+/* A contact on gap g found closing: the impact, unless another came at the same instant
+ * (not this reference's business). */
+static void ref_contact(struct ref *r, int g)
+{
+    double last = r->nev > 0 ? r->ev[(r->nev - 1) % REF_MAXEVENTS].t : -INFINITY;
+    int before = r->nev;
+    ref_impact(r, g);
+    for (int j = before; j < r->nev && r->nev > 0; j++)
+        if (r->t - last < 1e-9 && r->ev[j % REF_MAXEVENTS].speed >= REF_V_REST)
+            r->error = "two contacts at one instant";
 }
 
 /* The first instant in [0, h] at which a held contact's force F turns to a pull. */
@@ -566,28 +642,25 @@ static void ref_advance(struct ref *r, double t1)
             if (r->held[r->n] && gap > 1e-12)
                 r->held[r->n] = false;
             if (gap < -1e-12) {
-                /* Into the last mass: its cluster goes onto the face, the springs' change
-                 * paid by the motor, and that is a contact (the rule applies if it closes). */
-                int f, l, hold = ref_cluster(r, r->n - 1, &f, &l);
-                double room = f > 0 ? r->xeq[f] + r->x[f] - r->xeq[f - 1] - r->x[f - 1] - r->w
-                                    : r->xeq[0] + r->x[0] - 0.5 * r->w;
-                if (hold < 0 || room + gap < 0.0) {
-                    r->error = "the piston jumped the last mass into another";
+                /* Into the last mass: every mass in the way is pushed ahead of the face,
+                 * each against the next, the springs' change paid by the motor; then the
+                 * face's impact (a contact even if nothing closes), unless the piston
+                 * carried them. */
+                double lim = REF_L + u1 - 0.5 * r->w, e0 = ref_mechanical(r);
+                for (int i = r->n - 1; i >= 0 && r->xeq[i] + r->x[i] > lim; i--) {
+                    r->x[i] = lim - r->xeq[i];
+                    lim -= r->w;
+                }
+                if (r->xeq[0] + r->x[0] < 0.5 * r->w - 1e-12) {
+                    r->error = "the piston jumped the row into the wall";
                     return;
                 }
-                double e0 = ref_mechanical(r);
-                for (int i = f; i <= l; i++)
-                    r->x[i] += gap;
                 r->motor_work += ref_mechanical(r) - e0;
-                if (!r->held[r->n]) {
-                    if (r->v[r->n - 1] > du1) {
-                        ref_contact(r, r->n);
-                    } else {
-                        struct ref_event ev = {r->t, REF_RIGHT, r->n - 1, 0.0};
-                        r->ev[r->nev % REF_MAXEVENTS] = ev;
-                        r->nev++;
-                        r->count++;
-                    }
+                if (!r->held[r->n] && ref_impact(r, r->n) == 0) {
+                    struct ref_event ev = {r->t, REF_RIGHT, r->n - 1, 0.0};
+                    r->ev[r->nev % REF_MAXEVENTS] = ev;
+                    r->nev++;
+                    r->count++;
                 }
             }
             if (r->held[r->n] && du1 != r->v[r->n - 1]) {
