@@ -20,7 +20,7 @@ struct rest {
     int n;      /* masses */
     int count;  /* constraints, as in struct collision_limits */
     int active; /* how many hold now: 0 is the common case and costs nothing */
-    bool enabled; /* contacts may come to rest (sim.c: not in long chains' pile-ups) */
+    bool enabled; /* contacts may come to rest (sim.c turns it on for every chain) */
     double v_rest; /* a contact closing slower than this (m/s) is inelastic and may rest */
     bool *on;   /* count flags: constraint k rests */
     bool *soft; /* count flags: constraint k was just hit slower than COLLISION_V_REST */
