@@ -10,7 +10,8 @@ int lessons_list(const char *exe_dir);
 
 /* The lesson --lesson or --replay names in c, read into l and every command tried before
  * anything runs: -1 to go on; else the exit status, after one line saying why (FILE:LINE:
- * what). */
-int lessons_load(const struct config *c, const char *exe_dir, struct lesson *l);
+ * what). With keys (the interactive program, on a terminal), Esc, q or Ctrl+C typed on
+ * standard input leave that check within LESSON_POLL seconds: exit status 1. */
+int lessons_load(const struct config *c, const char *exe_dir, bool keys, struct lesson *l);
 
 #endif

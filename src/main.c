@@ -144,7 +144,8 @@ int main(int argc, char **argv)
         static struct lesson lesson;
         status = interactive_limits(&c);
         if (status == EXIT_SUCCESS && (c.lesson || c.replay)) {
-            int st = lessons_load(&c, exe_dir, &lesson);
+            bool keys = cli.mode != MODE_PLAIN && !tui_dumb_terminal();
+            int st = lessons_load(&c, exe_dir, keys, &lesson);
             status = st < 0 ? EXIT_SUCCESS : st;
         }
         const struct lesson *play = lesson.count ? &lesson : NULL;

@@ -1,8 +1,9 @@
 #!/bin/sh
 # tests/tui-lessons.sh: lessons in the interactive program, in a real terminal (tmux) at
 # 80x24 and 120x40: the caption panel below the plots and the controls (never over them),
-# the question and its choices readable, a digit answers, space goes on, ',' goes back a
-# step (to the state that step left), Esc leaves with the chain as it is; L opens the
+# the question and its choices readable, a digit answers, space goes on (a step's run
+# plays, and space while it plays ends it at once), ',' goes back a step (to the state
+# that step left), Esc leaves with the chain as it is; L opens the
 # lesson menu, which reads (every lesson's name and title), and starts the one chosen; a
 # bad lesson chosen there is refused with its line. Screens are kept in
 # $SHOTS (if set) for a person to look at. Run from the repository root as
@@ -60,17 +61,23 @@ for size in 80 120; do
         fail "$S: 2 should answer the question (right), go on to step 2 and show modes' answer; screen: $(brief)"
     fi
     keys Space
-    if wait_all 3 "has 'Lesson 3/7' && has_re 't = 30\.00 s' && has \"First the web page's 0.5 Hz\""; then pass; else
-        fail "$S: space should go on to step 3, the 0.5 Hz run done at once (t = 30.00 s); screen: $(brief)"
+    # the step's run plays: the chain runs, the panel and the hints say space ends it
+    if wait_all 3 "has 'Lesson 3/7' && has Running && has 'space ends the run' &&
+        has 'space end the run' && t_at_least 0.3 && ! t_at_least 5"; then pass; else
+        fail "$S: space should go on to step 3, its 0.5 Hz run playing at the lesson's speed; screen: $(brief)"
+    fi
+    keys Space
+    if wait_all 3 "has 'Lesson 3/7' && has_re 'Paused t = 30\.00 s' && has 'space goes on'"; then pass; else
+        fail "$S: space while the run plays should end it at once (t = 30.00 s); screen: $(brief)"
     fi
     shot "lesson-$size-step3"
     keys ,
     if wait_all 3 "has 'back to step 2 of 7' && has 'Lesson 2/7' && has_re 't = 0\.00 s'"; then pass; else
         fail "$S: , should go back to step 2 (t = 0.00 s again); screen: $(brief)"
     fi
-    keys Space Space
-    if wait_all 3 "has 'Lesson 4/7' && has 'Now 0.60 Hz' && has_re 't = 30\.00 s'"; then pass; else
-        fail "$S: space twice should reach step 4 (0.60 Hz, run to t = 30); screen: $(brief)"
+    keys Space Space Space Space
+    if wait_all 3 "has 'Lesson 4/7' && has 'Now 0.60 Hz' && has_re 'Paused t = 30\.00 s'"; then pass; else
+        fail "$S: space four times should reach step 4 (0.60 Hz, its run ended at t = 30); screen: $(brief)"
     fi
     keys Escape
     if wait_all 3 "has 'left the lesson resonance: the chain is as it is' && lacks 'Lesson 4/7' &&
@@ -197,7 +204,7 @@ if up rec; then
     fi
     start replay 80 24 -- --replay "$f"
     S=replay
-    if up replay && wait_all 5 "has 'is the one recorded, bit for bit' && has 'the end'"; then pass; else
+    if up replay && wait_all 30 "has 'is the one recorded, bit for bit' && has 'the end'"; then pass; else
         fail "replay: --replay in the program should end in the recorded state bit for bit; screen: $(brief)"
     fi
     shot "replay-80"

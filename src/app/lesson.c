@@ -160,6 +160,27 @@ static int read_line(struct reader *r, char *s)
             return bad(r, "expect needs the state, 't=... x1=... v1=...' as --record writes it");
         return add(r, LESSON_EXPECT, rest) ? 0 : 1;
     }
+    if (IS("wait")) {
+        double sec = 0.0;
+        const char *why = config_parse_number(rest, &sec);
+        if (why || !(sec > 0.0 && sec <= LESSON_MAX_WAIT))
+            return bad(r, "wait: '%.40s' %s (expected 0 < SECONDS <= %g, the wall-clock time "
+                       "the program waits)", rest, why ? why : "is out of range", LESSON_MAX_WAIT);
+        struct lesson_item *it = add(r, LESSON_WAIT, rest);
+        if (!it)
+            return 1;
+        it->value = sec;
+        return 0;
+    }
+    if (IS("speed")) {
+        /* The playback speed of the runs that follow: the Speed control, as set sets it
+         * (the dry run says what is wrong with the number). */
+        char line[LESSON_MAX_LINE + 16];
+        if (!*rest)
+            return bad(r, "speed needs a number (the playback speed, 0.1 to 10)");
+        snprintf(line, sizeof line, "set speed %s", rest);
+        return add(r, LESSON_COMMAND, line) ? 0 : 1;
+    }
     if (IS("end"))
         return bad(r, "end without a setup line before it");
     if (IS("setup"))
@@ -172,6 +193,14 @@ static int read_line(struct reader *r, char *s)
     if (forbidden(cmd))
         return bad(r, "%s is not allowed in a lesson (it %s)", commands[cmd].name,
                    cmd == CMD_QUIT ? "would end the program" : "writes a file");
+    double sec = 0.0; /* a run's own errors are the dry run's to say */
+    if (cmd == CMD_RUN && config_parse_number(rest, &sec) == NULL && sec > 0.0) {
+        r->l->seconds += sec;
+        if (r->l->seconds > LESSON_MAX_SECONDS)
+            return bad(r, "run %.40s: the lesson's runs come to %.0f s of simulated time here, "
+                       "past the %.0f s (30 minutes) a lesson may run", rest, r->l->seconds,
+                       LESSON_MAX_SECONDS);
+    }
     if (r->commands++ == 0 && cmd != CMD_PRESET)
         return bad(r, "a lesson starts from a known chain: its first command is 'preset NAME' "
                    "(or a setup block), not %s", commands[cmd].name);

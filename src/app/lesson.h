@@ -18,6 +18,10 @@
 #define LESSON_MAX_LINE 1024          /* longest line */
 #define LESSON_MAX_CHOICES 6          /* choices of one question, at most */
 #define LESSON_CAPTION 2048           /* bytes of one step's caption */
+#define LESSON_MAX_SECONDS 1800.0     /* simulated seconds of all a lesson's runs, at most:
+                                       * at the smallest dt (0.001 s) and ten masses its
+                                       * check takes about 1.5 s */
+#define LESSON_MAX_WAIT 600.0         /* wall seconds of one wait line, at most */
 
 struct app;
 
@@ -29,6 +33,8 @@ enum lesson_kind {
     LESSON_ASK,     /* the end of a step: a question, its choices, wait for an answer */
     LESSON_SETUP,   /* a chain given in the lesson itself, as a preset's text */
     LESSON_EXPECT,  /* the state the lesson must end in, exactly (a recording's last line) */
+    LESSON_WAIT,    /* wall seconds the interactive program waits (a recording's pauses);
+                     * text the number, value it read */
 };
 
 struct lesson_item {
@@ -38,6 +44,7 @@ struct lesson_item {
     int nchoices;                         /* ask: its choices */
     char *choice[LESSON_MAX_CHOICES];     /* ask: their text */
     int answer;                           /* ask: the right choice, 1-based, or 0 */
+    double value;                         /* wait: its seconds */
 };
 
 struct lesson {
@@ -47,6 +54,7 @@ struct lesson {
     struct lesson_item *items; /* in order */
     int count;                 /* items */
     int steps;                 /* pauses and questions */
+    double seconds;            /* simulated seconds of all its runs */
 };
 
 /* A lesson found on the search path. */
@@ -73,15 +81,35 @@ int lesson_find(const char *name, const char *exe_dir, char *out, size_t len);
  * shadows later ones), into a malloc'ed *out (free it); returns the count. */
 int lesson_scan(const char *exe_dir, struct lesson_entry **out);
 
+/* A way to leave a long computation: fn(ctx) is asked every LESSON_POLL wall seconds
+ * and true stops it (a key, a signal). A NULL one never stops. */
+struct lesson_stop {
+    bool (*fn)(void *ctx);
+    void *ctx;
+    bool said; /* fn said to stop */
+};
+
+#define LESSON_POLL 0.05 /* wall seconds between two questions to a lesson_stop */
+#define LESSON_LEFT 3    /* lesson_check's status when its stop said so */
+
 /* Plays every item of l on a scratch chain made from base (commands through command_do,
  * runs stepped at once): 0, or 2 with "PATH:LINE: what is wrong" in err (the command's
- * own answer), 1 on no memory. Nothing is shown or written. */
+ * own answer), 1 on no memory, LESSON_LEFT when
+ * stop said to (err says so). Nothing is shown or written. */
 int lesson_check(const struct lesson *l, const struct config *base, const char *exe_dir,
-                 char *err, size_t errlen);
+                 struct lesson_stop *stop, char *err, size_t errlen);
 
 /* Steps app for `seconds` of simulated time at once, then pauses it, as the plain
  * mode's `run` does; false when a blow-up stopped it. */
 bool lesson_run(struct app *app, double seconds);
+
+/* Steps app at once up to simulated time `end` (the steps lesson_run would take from
+ * here), then pauses it; false when a blow-up or stop (may be NULL) ended it first. */
+bool lesson_run_to(struct app *app, double end, struct lesson_stop *stop);
+
+/* Whether app has reached simulated time `end` of a run (no step of lesson_run_to left):
+ * a run played step by step ends there, bit for bit where lesson_run_to ends. */
+bool lesson_run_over(const struct app *app, double end);
 
 /* The chain's state exactly, "t=HEX x1=HEX v1=HEX ..." in C99 hexadecimal floats, as
  * an expect line holds it. */

@@ -11,20 +11,47 @@
 
 #include "../core/preset.h"
 #include "app.h"
+#include "clock.h"
 #include "command.h"
 
-bool lesson_run(struct app *app, double seconds)
+bool lesson_run_over(const struct app *app, double end)
 {
-    double end = sim_time(app->sim) + seconds;
+    return !(sim_time(app->sim) < end - 1e-9 * app->cfg.dt);
+}
+
+/* Whether stop says to stop, asked at most every LESSON_POLL wall seconds (*next: when
+ * it is asked next). */
+static bool stopped(struct lesson_stop *stop, double *next)
+{
+    if (!stop || !stop->fn)
+        return false;
+    if (stop->said)
+        return true;
+    double now = app_clock_now();
+    if (now < *next)
+        return false;
+    *next = now + LESSON_POLL;
+    stop->said = stop->fn(stop->ctx);
+    return stop->said;
+}
+
+bool lesson_run_to(struct app *app, double end, struct lesson_stop *stop)
+{
     bool ok = true;
+    double next = 0.0;
     app->running = true;
-    while (sim_time(app->sim) < end - 1e-9 * app->cfg.dt)
-        if (!app_step(app)) {
+    for (long k = 0; !lesson_run_over(app, end); k++)
+        if (!app_step(app) || ((k & 255) == 255 && stopped(stop, &next))) {
             ok = false;
             break;
         }
     app_set_running(app, false);
     return ok;
+}
+
+bool lesson_run(struct app *app, double seconds)
+{
+    return lesson_run_to(app, sim_time(app->sim) + seconds, NULL);
 }
 
 void lesson_state(const struct app *app, char *buf, size_t len)
@@ -63,7 +90,7 @@ static int setup_check(const struct lesson *l, const struct lesson_item *it, cha
 }
 
 int lesson_check(const struct lesson *l, const struct config *base, const char *exe_dir,
-                 char *err, size_t errlen)
+                 struct lesson_stop *stop, char *err, size_t errlen)
 {
     static struct app app; /* large; one check at a time */
     static struct command_result res;
@@ -72,8 +99,11 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
         return 1;
     }
     int st = 0;
+    double next = 0.0;
     for (int i = 0; i < l->count && !st; i++) {
         const struct lesson_item *it = &l->items[i];
+        if (stopped(stop, &next))
+            break;
         if (it->kind == LESSON_SETUP) {
             if (setup_check(l, it, err, errlen) != 0) {
                 st = 2;
@@ -91,8 +121,12 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
             snprintf(err, errlen, "%s:%d: %s", l->path, it->line, res.answer);
             st = 2;
         } else if (r == REPLY_RUN) {
-            lesson_run(&app, res.seconds);
+            lesson_run_to(&app, sim_time(app.sim) + res.seconds, stop);
         }
+    }
+    if (!st && stop && stop->said) {
+        snprintf(err, errlen, "%s: the check was left before its end (nothing ran)", l->path);
+        st = LESSON_LEFT;
     }
     app_free(&app);
     return st;

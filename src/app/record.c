@@ -12,6 +12,7 @@
 
 #include "../core/preset.h"
 #include "app.h"
+#include "clock.h"
 #include "command.h"
 #include "lesson.h"
 
@@ -77,29 +78,43 @@ int record_start(struct record *r, const char *path, const struct app *app, char
     preset_write(r->mem, &app->cfg, app->model);
     fputs("end\n", r->mem);
     r->t = sim_time(app->sim);
+    r->wall = app_clock_now();
     return 0;
 }
 
-/* The time run up to t, as a run line. */
-static void run_to(struct record *r, double t)
+/* The time run up to t at playback speed `speed`, as a run line. */
+static void run_to(struct record *r, double t, double speed)
 {
     if (!r->mem || !(t > r->t))
         return;
     char num[32];
     config_format_exact(t - r->t, num, sizeof num);
     fprintf(r->mem, "run %s\n", num);
+    r->run_wall += (t - r->t) / (speed > 0.0 ? speed : 1.0);
     r->t = t;
+}
+
+/* The wall-clock time since the last command that the runs since do not account for,
+ * as a wait line (before a command, after its runs). */
+static void wait_now(struct record *r)
+{
+    double now = app_clock_now(), idle = now - r->wall - r->run_wall;
+    if (r->mem && idle >= RECORD_WAIT_MIN)
+        fprintf(r->mem, "wait %.2f\n", idle);
+    r->wall = now;
+    r->run_wall = 0.0;
 }
 
 void record_time(struct record *r, const struct app *app)
 {
-    run_to(r, sim_time(app->sim));
+    run_to(r, sim_time(app->sim), app->speed);
 }
 
 void record_line(struct record *r, const struct app *app, const char *line)
 {
     if (!r->mem)
         return;
+    wait_now(r);
     fprintf(r->mem, "%s\n", line);
     r->t = sim_time(app->sim);
     r->lines++;
@@ -166,7 +181,8 @@ static void put(struct record *r, const char *fmt, ...) __attribute__((format(pr
 static void put(struct record *r, const char *fmt, ...)
 {
     va_list ap;
-    run_to(r, r->mark.t);
+    run_to(r, r->mark.t, r->mark.speed);
+    wait_now(r);
     va_start(ap, fmt);
     vfprintf(r->mem, fmt, ap);
     va_end(ap);
@@ -304,6 +320,7 @@ int record_finish(struct record *r, const struct app *app, char *err, size_t err
         return -1;
     }
     record_time(r, app);
+    wait_now(r);
     lesson_state(app, state, sizeof state);
     fprintf(r->mem, "expect %s\n", state);
     if (fclose(r->mem) != 0) {

@@ -2,8 +2,10 @@
  * plays back to the same state bit for bit. It opens with the chain as it was (a setup
  * block: the settings in force, every number exact), then one line per command done (a
  * key of the interactive program in its plain-mode words, or a command typed), each
- * preceded by `run SECONDS` for the simulated time that passed since the line before,
- * and ends with an `expect` line holding the state exactly. The file is written whole
+ * preceded by `run SECONDS` for the simulated time that passed since the line before
+ * and by `wait SECONDS` for the wall-clock time those runs do not account for (the chain
+ * paused while the user looked), so that a replay in the program keeps the pace, and
+ * ends with an `expect` line holding the state exactly. The file is written whole
  * at the end (a temporary file beside it, renamed): never half-written. */
 #ifndef SPRINGSIM_RECORD_H
 #define SPRINGSIM_RECORD_H
@@ -17,6 +19,7 @@
 struct app;
 
 #define RECORD_RUN_MAX 500.0 /* simulated seconds of one run line, at most */
+#define RECORD_WAIT_MIN 0.05 /* wall seconds of idleness written as a wait line, at least */
 
 /* The chain's settings just before a key, to tell what the key changed. */
 struct record_mark {
@@ -40,6 +43,8 @@ struct record {
     size_t size;      /* its bytes */
     double t;         /* the simulated time the text has reached */
     int lines;        /* commands written */
+    double wall;      /* the wall clock (app_clock_now) at the last command written */
+    double run_wall;  /* the wall seconds the runs written since took at their speed */
     struct record_mark mark; /* before the key being handled (record_mark) */
 };
 

@@ -8,6 +8,7 @@ static const char *const fancy[][2] = {
     {"│", "|"}, {"▸", ">"}, {"×", "x"}, {"·", "."}, {"²", "^2"}, {"←", "Left"},
     {"→", "Right"}, {"↑", "Up"}, {"↓", "Down"}, {"●", "o"}, {"…", "..."}, {"▲", "^"},
     {"▼", "v"}, {"−", "-"}, {"ζ", "zeta"}, {"∞", "inf"}, {"Δ", "d"}, {"δ", "delta"},
+    {"π", "pi"}, {"√", "sqrt"}, {"ω", "w"},
 };
 
 const char *spell_ascii(const char *s, size_t *len)

@@ -281,6 +281,8 @@ static void lesson_item(struct plain *p, const struct lesson_item *it)
     case LESSON_ASK:
         say_wait(p);
         break;
+    case LESSON_WAIT: /* the interactive program's; the plain mode goes on at once */
+        break;
     }
 }
 

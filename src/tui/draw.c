@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../app/caption.h"
 #include "../app/spell.h"
 #include "term.h"
 
@@ -48,8 +49,15 @@ int draw_width(const char *s)
             s += len;
             continue;
         }
-        n += (*s & 0xC0) != 0x80;
-        s++;
+        if (spell) { /* one column a character, spelled '?' */
+            n += (*s & 0xC0) != 0x80;
+            s++;
+            continue;
+        }
+        /* Screen columns: a CJK character two, a combining mark none. */
+        size_t k;
+        n += caption_glyph(s, &k);
+        s += k;
     }
     return n;
 }
@@ -87,14 +95,18 @@ int draw_text(int y, int x, int w, const char *s)
         return 0;
     if (!term_utf8())
         s = ascii(s, plain, sizeof plain);
-    int cols = 0;
-    const char *p = s, *last = s; /* last: where the w-th column starts */
-    while (*p && cols < w) {
-        last = p;
-        p++;
-        while ((*p & 0xC0) == 0x80)
-            p++;
-        cols++;
+    int cols = 0, lastw = 1;
+    const char *p = s, *last = s; /* last: where the last character that fits starts */
+    while (*p) {
+        size_t k = 1;
+        int cw = term_utf8() ? caption_glyph(p, &k) : 1; /* a CJK character takes two */
+        const char *q = p + k;
+        if (cols + cw > w)
+            break;
+        if (cw > 0)
+            last = p, lastw = cw;
+        cols += cw;
+        p = q;
     }
     /* Text that does not fit ends in "…" (ASCII "..."), never cut silently; trailing
      * blanks cut are no loss. */
@@ -104,7 +116,8 @@ int draw_text(int y, int x, int w, const char *s)
     if (*rest && cols > 0) {
         if (term_utf8()) {
             mvaddnstr(y, x, s, (int)(last - s));
-            mvaddstr(y, x + cols - 1, "…");
+            mvaddstr(y, x + cols - lastw, "…");
+            cols += 1 - lastw;
         } else { /* ASCII: one byte a column */
             int dots = cols < 3 ? cols : 3;
             mvaddnstr(y, x, s, cols - dots);

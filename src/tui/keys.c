@@ -113,6 +113,9 @@ void keys_after_teach(struct tui *t, bool was_shown)
     t->teach.view = -1;
     if (teach_shown(&t->teach) != was_shown)
         screen_relayout(t);
+    if (t->teach.fit)
+        plots_refit(&t->plots);
+    t->teach.fit = false;
     select_clamp(&t->sel, t->app.model);
     t->plots_dirty = true;
 }
@@ -365,7 +368,7 @@ static bool handle_key(struct tui *t, int ch)
         }
         return true;
     }
-    if (teach_key(&t->teach, &t->app, ch)) {
+    if (teach_key(&t->teach, &t->app, &t->layout, ch)) {
         keys_after_teach(t, shown);
         return true;
     }

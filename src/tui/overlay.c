@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../app/caption.h"
 #include "../app/verb.h"
 #include "draw.h"
 #include "input.h"
@@ -198,7 +199,9 @@ static void draw_menu(const struct overlay *o, struct rect r, int n, int sel, in
         if (i == sel)
             attron(term_attr(PAIR_SELECT));
         mvhline(r.y + 1 + i - first, r.x + 1, ' ', r.w - 2);
-        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%-*s %s", name_w, name, text);
+        int pad = name_w - draw_width(name); /* in screen columns: CJK takes two */
+        draw_printf(r.y + 1 + i - first, r.x + 2, r.w - 4, "%s%*s %s", name, pad > 0 ? pad : 0,
+                    "", text);
         if (i == sel)
             attroff(term_attr(PAIR_SELECT));
     }
@@ -211,10 +214,15 @@ static void preset_row(const struct overlay *o, int i, const char **name, const 
     *text = o->presets[i].description;
 }
 
+/* A lesson's name and title as shown: escaped (a U+202E in a file would turn the line
+ * around), spelled in ASCII without UTF-8. */
 static void lesson_row(const struct overlay *o, int i, const char **name, const char **text)
 {
-    *name = o->lessons[i].name;
-    *text = o->lessons[i].title;
+    static char safe_name[4 * 256 + 8], safe_title[4 * 200 + 8];
+    caption_text(o->lessons[i].name, term_utf8(), safe_name, sizeof safe_name);
+    caption_text(o->lessons[i].title, term_utf8(), safe_title, sizeof safe_title);
+    *name = safe_name;
+    *text = safe_title;
 }
 
 static void draw_presets(const struct overlay *o, const struct layout *l)

@@ -191,7 +191,8 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     /* In order of importance; each one that does not fit is left out, not the rest. */
     struct hint hints[16];
     int n = 0;
-    hints[n++] = (struct hint){"space", app->running ? "pause" : "start"};
+    hints[n++] = (struct hint){h->space_key ? h->space_key : "space",
+                               h->space ? h->space : app->running ? "pause" : "start"};
     if (h->cursor) {
         bool u = term_utf8();
         hints[n++] = (struct hint){u ? "←→" : "Left/Right", "cursor"};
@@ -209,7 +210,9 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
         hints[n++] = (struct hint){term_utf8() ? "↑↓" : "arrows", "mode"};
         hints[n++] = (struct hint){"Enter", "start in it"};
     }
-    hints[n++] = (struct hint){".", "step"};
+    hints[n++] = (struct hint){".", h->dot ? h->dot : "step"};
+    if (h->comma)
+        hints[n++] = (struct hint){",", h->comma};
     if (h->view)
         hints[n++] = (struct hint){"m f e F", "views (again: plots)"};
     else
@@ -221,7 +224,7 @@ void panel_hints(const struct layout *l, const struct app *app, const struct hin
     else if (!h->view)
         hints[n++] = (struct hint){"1-6", "enlarge"};
     hints[n++] = (struct hint){"<>", "window"};
-    if (!app->running)
+    if (!app->running && !h->comma)
         hints[n++] = (struct hint){",", "back"};
     hints[n++] = (struct hint){"r", "reset"};
     hints[n++] = (struct hint){"p", "presets"};

@@ -15,6 +15,9 @@ struct hint_state {
     bool view;      /* an analysis view has the plot area */
     bool modes;     /* the arrows choose a mode in the modes view */
     bool cursor;    /* time cursors shown: the arrows are theirs */
+    const char *space_key;           /* "space", or the key a lesson has in its place */
+    const char *space, *dot, *comma; /* what space, '.' and ',' do while a lesson or a
+                                      * replay takes them (teach_keys), or NULL */
 };
 
 /* The status line: state, t, the drive, N, dt, history, playback. */

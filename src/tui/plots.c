@@ -45,6 +45,12 @@ bool plots_place(struct plots *p, const struct layout *l)
     return ok;
 }
 
+void plots_refit(struct plots *p)
+{
+    for (int i = 0; i < PLOT_COUNT; i++)
+        p->chart[i].xs.set = p->chart[i].ys.set = false;
+}
+
 void plots_free(struct plots *p)
 {
     for (int i = 0; i < PLOT_COUNT; i++)

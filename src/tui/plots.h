@@ -25,6 +25,9 @@ void plots_toggle_mass(struct plots *p, struct app *app, int i);
 /* Places the plots the layout shows; false on no memory. */
 bool plots_place(struct plots *p, const struct layout *l);
 
+/* Forgets the scales: the next refresh fits every axis to its data alone. */
+void plots_refit(struct plots *p);
+
 /* Frees the canvases. */
 void plots_free(struct plots *p);
 

@@ -46,7 +46,9 @@ static double draw(struct tui *t, bool refresh)
         else
             panel_controls(l, &t->app, &t->sel);
         struct hint_state h = {t->enlarged, t->views.shown != VIEW_PLOTS,
-                               t->sel.focus == FOCUS_MODES, screen_cursors_shown(t)};
+                               t->sel.focus == FOCUS_MODES, screen_cursors_shown(t), NULL,
+                               NULL, NULL, NULL};
+        teach_keys(&t->teach, &h.space_key, &h.space, &h.dot, &h.comma);
         panel_hints(l, &t->app, &h);
         teach_draw(&t->teach, l);
         overlay_draw(&t->overlay, &t->app, l, &t->sel);
@@ -124,6 +126,13 @@ static void follow_graphics(struct tui *t)
                 config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
 }
 
+/* One step of the chain for the clock: a lesson's run stops at its end. */
+static bool lesson_step(void *ctx)
+{
+    struct tui *t = ctx;
+    return teach_step(&t->teach, &t->app);
+}
+
 static void tui_free(struct tui *t)
 {
     scene_free(&t->scene);
@@ -166,21 +175,27 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
     t.teach.view = -1;
     screen_relayout(&t);
     if (lesson) {
-        teach_start(&t.teach, lesson, &t.app);
+        teach_start(&t.teach, lesson, &t.app, cfg->replay != NULL);
         keys_after_teach(&t, false);
     }
     if (t.gfx.said[0])
         app_say(&t.app, SAID_ERROR, "--graphics %s: %s",
                 config_options[CFG_GRAPHICS].choice_name((int)cfg->graphics), t.gfx.said);
-    if (t.app.message[0] == '\0')
+    if (t.app.message[0] == '\0' && !lesson) /* a lesson's panel says what space does */
         app_say(&t.app, SAID_NOTE, "space starts; ? lists every key");
 
     double last = app_clock_now(), next_frame = last;
     bool go = true;
     while (go && !term_quit_signal()) {
         double now = app_clock_now();
+        /* A lesson's run that ended, or its wait, goes on to its next items. */
+        if (teach_tick(&t.teach, &t.app, now))
+            keys_after_teach(&t, true);
         /* Never spend more than half a frame computing: fall behind and say so. */
-        app_clock_follow(&t.clock, &t.app, now - last, 0.5 / frame_hz(&t), NULL, NULL);
+        /* A replay's chain moves in its runs alone: its waits were paused. */
+        bool run = t.teach.playing || (t.teach.demo && teach_shown(&t.teach) && !t.teach.done);
+        app_clock_follow(&t.clock, &t.app, now - last, 0.5 / frame_hz(&t),
+                         run ? lesson_step : NULL, run ? &t : NULL);
         follow_graphics(&t);
         last = now;
         if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
