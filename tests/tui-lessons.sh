@@ -39,9 +39,9 @@ for size in 80 120; do
     cols=$size
     top=
     if ! up "$S"; then continue; fi
-    wait_for 'Lesson 1/7' 5
+    wait_for 'Lesson 1/8' 5
     shot "lesson-$size-ask"
-    top=$(row 'Lesson 1/7')
+    top=$(row 'Lesson 1/8')
     # the panel: below every plot and the controls' frame, across the screen, its
     # question and the three choices in it, and its keys
     # (the whole step, its caption too, fits in the panel even at 80x24)
@@ -57,30 +57,30 @@ for size in 80 120; do
         fail "$S: the caption panel's top edge should span the screen: $(sed -n "${top}p" "$scr")"
     fi
     keys 2
-    if wait_all 3 "has 'You chose 2: right.' && has 'Lesson 2/7' && has 'modes: 1: 0.7118 Hz'"; then pass; else
+    if wait_all 3 "has 'You chose 2: right.' && has 'Lesson 2/8' && has 'modes: 1: 0.7118 Hz'"; then pass; else
         fail "$S: 2 should answer the question (right), go on to step 2 and show modes' answer; screen: $(brief)"
     fi
     keys Space
     # the step's run plays: the chain runs, the panel and the hints say space ends it
-    if wait_all 3 "has 'Lesson 3/7' && has Running && has 'space ends the run' &&
+    if wait_all 3 "has 'Lesson 3/8' && has Running && has 'space ends the run' &&
         has 'space end the run' && t_at_least 0.3 && ! t_at_least 5"; then pass; else
         fail "$S: space should go on to step 3, its 0.5 Hz run playing at the lesson's speed; screen: $(brief)"
     fi
     keys Space
-    if wait_all 3 "has 'Lesson 3/7' && has_re 'Paused t = 30\.00 s' && has 'space goes on'"; then pass; else
+    if wait_all 3 "has 'Lesson 3/8' && has_re 'Paused +t = 30\.00 s' && has 'space goes on'"; then pass; else
         fail "$S: space while the run plays should end it at once (t = 30.00 s); screen: $(brief)"
     fi
     shot "lesson-$size-step3"
     keys ,
-    if wait_all 3 "has 'back to step 2 of 7' && has 'Lesson 2/7' && has_re 't = 0\.00 s'"; then pass; else
+    if wait_all 3 "has 'back to step 2 of 8' && has 'Lesson 2/8' && has_re 't = 0\.00 s'"; then pass; else
         fail "$S: , should go back to step 2 (t = 0.00 s again); screen: $(brief)"
     fi
     keys Space Space Space Space
-    if wait_all 3 "has 'Lesson 4/7' && has 'Now 0.60 Hz' && has_re 'Paused t = 30\.00 s'"; then pass; else
+    if wait_all 3 "has 'Lesson 4/8' && has 'Now 0.60 Hz' && has_re 'Paused +t = 30\.00 s'"; then pass; else
         fail "$S: space four times should reach step 4 (0.60 Hz, its run ended at t = 30); screen: $(brief)"
     fi
     keys Escape
-    if wait_all 3 "has 'left the lesson resonance: the chain is as it is' && lacks 'Lesson 4/7' &&
+    if wait_all 3 "has 'left the lesson resonance: the chain is as it is' && lacks 'Lesson 4/8' &&
         has_re 't = 30\.00 s' && has '0.600 Hz'"; then pass; else
         fail "$S: Esc should leave the lesson, the chain as it is (t = 30.00, 0.600 Hz); screen: $(brief)"
     fi
@@ -93,7 +93,7 @@ done
 
 # ---- every built-in lesson's first question reads whole at 80x24: its step's caption,
 # the question and each choice on a line of its own ----
-# step_of: the step the caption shows ("Lesson 3/7": 3)
+# step_of: the step the caption shows ("Lesson 3/8": 3)
 step_of() { sed -n 's/.*Lesson \([0-9]*\)\/.*/\1/p' "$scr" | head -n 1; }
 for f in "$root"/lessons/*.lesson; do
     n=$(basename "$f" .lesson)
@@ -140,7 +140,7 @@ for size in 80 120; do
         fail "$S: the lesson menu should list every lesson with its title; missing:$missing; screen: $(brief)"
     fi
     keys Down Enter
-    if wait_all 3 "has 'Lesson 1/3: Damping' && has 'Each swing is smaller than the one before'"; then pass; else
+    if wait_all 3 "has 'Lesson 1/4: Damping' && has 'Each swing is smaller than the one before'"; then pass; else
         fail "$S: Down, Enter should start the second lesson (damping); screen: $(brief)"
     fi
 done

@@ -33,6 +33,7 @@ struct reader {
     int ask;       /* the question taking choices, or -1 */
     bool answered; /* it has its answer line */
     int commands;  /* commands and setups so far */
+    size_t said;   /* bytes of the step's caption so far */
 };
 
 static int bad(struct reader *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -137,8 +138,15 @@ static int read_line(struct reader *r, char *s)
         snprintf(r->l->title, sizeof r->l->title, "%s", rest);
         return 0;
     }
-    if (IS("say"))
+    if (IS("say")) {
+        r->said += strlen(rest) + 1;
+        if (r->said >= LESSON_CAPTION)
+            return bad(r, "the step's say lines come to more than %d bytes here (a caption is "
+                       "a paragraph: end the step with pause, or say less)", LESSON_CAPTION - 1);
         return add(r, LESSON_SAY, rest) ? 0 : 1;
+    }
+    if (IS("pause") || IS("ask"))
+        r->said = 0;
     if (IS("pause")) {
         if (*rest)
             return bad(r, "pause takes nothing, but was given '%.40s'", rest);

@@ -99,8 +99,9 @@ static void run_to(struct record *r, double t, double speed)
 static void wait_now(struct record *r)
 {
     double now = app_clock_now(), idle = now - r->wall - r->run_wall;
-    if (r->mem && idle >= RECORD_WAIT_MIN)
-        fprintf(r->mem, "wait %.2f\n", idle);
+    /* A long idleness as several waits, each one a lesson allows. */
+    for (; r->mem && idle >= RECORD_WAIT_MIN; idle -= LESSON_MAX_WAIT)
+        fprintf(r->mem, "wait %.2f\n", idle < LESSON_MAX_WAIT ? idle : LESSON_MAX_WAIT);
     r->wall = now;
     r->run_wall = 0.0;
 }

@@ -184,6 +184,16 @@ bool teach_step(struct teach *t, struct app *app)
     return app_step(app) != 0;
 }
 
+/* The lesson's parts as its title counts them: its steps, and what follows the last. */
+static int parts(const struct lesson *l)
+{
+    int last = l->steps ? lesson_step_end(l, l->steps - 1) : -1;
+    for (int i = last + 1; i < l->count; i++)
+        if (l->items[i].kind != LESSON_EXPECT)
+            return l->steps + 1;
+    return l->steps;
+}
+
 /* Leaves the lesson, the chain as it is. */
 static void leave(struct teach *t, struct app *app, bool said)
 {
@@ -229,13 +239,12 @@ static void back(struct teach *t, struct app *app)
     t->note[0] = '\0';
     t->scroll = 0;
     t->fit = true;
-    app_say(app, SAID_NOTE, "back to step %d of %d", target + 1, t->lesson->steps);
+    app_say(app, SAID_NOTE, "back to step %d of %d", target + 1, parts(t->lesson));
 }
 
 /* The panel's lines at w columns into lines: the note, the caption, then the question
  * and its choices (from *question on); returns their count. */
-static int panel_lines(const struct teach *t, int w, int rows, char (*lines)[CAPTION_LINE],
-                       int *question)
+static int panel_lines(const struct teach *t, int w, char (*lines)[CAPTION_LINE], int *question)
 {
     static char text[4 * LESSON_CAPTION + 64], safe[4 * LESSON_CAPTION + 64];
     const struct lesson *les = t->lesson;
@@ -258,21 +267,9 @@ static int panel_lines(const struct teach *t, int w, int rows, char (*lines)[CAP
         return n;
     caption_text(it->text, utf8, safe, sizeof safe);
     n = caption_wrap(safe, w, lines, n, PANEL_LINES);
-    /* A choice a line where they fit, else all of them in one paragraph. */
-    size_t used = 0;
-    bool own_lines = n + it->nchoices <= rows;
-    text[0] = '\0';
-    for (int k = 0; k < it->nchoices && used < sizeof text; k++) {
-        if (own_lines) {
-            snprintf(text, sizeof text, "  %d) %s", k + 1, it->choice[k]);
-            caption_text(text, utf8, safe, sizeof safe);
-            n = caption_wrap(safe, w, lines, n, PANEL_LINES);
-        } else {
-            used += (size_t)snprintf(text + used, sizeof text - used, "%s%d) %s", k ? "  " : "",
-                                     k + 1, it->choice[k]);
-        }
-    }
-    if (used) {
+    /* A choice a line (↓ scrolls to those that do not fit). */
+    for (int k = 0; k < it->nchoices; k++) {
+        snprintf(text, sizeof text, "  %d) %s", k + 1, it->choice[k]);
         caption_text(text, utf8, safe, sizeof safe);
         n = caption_wrap(safe, w, lines, n, PANEL_LINES);
     }
@@ -286,7 +283,7 @@ static int scroll_max(const struct teach *t, const struct layout *l)
     int question, rows = l->caption.h - 2;
     if (rows < 1)
         return 0;
-    int n = panel_lines(t, l->caption.w - 4, rows, lines, &question);
+    int n = panel_lines(t, l->caption.w - 4, lines, &question);
     return n > rows ? n - rows : 0;
 }
 
@@ -441,11 +438,11 @@ void teach_draw(const struct teach *t, const struct layout *l)
     else if (t->demo)
         snprintf(title, sizeof title, " Replay%s: %s ", t->held ? " (paused)" : "", name);
     else
-        snprintf(title, sizeof title, " Lesson %d/%d: %s ", t->play.step + 1, les->steps, name);
+        snprintf(title, sizeof title, " Lesson %d/%d: %s ", t->play.step + 1, parts(les), name);
     draw_clear(r);
     draw_frame(r, title, false);
     int w = r.w - 4, rows = r.h - 2, question;
-    int n = panel_lines(t, w, rows, lines, &question);
+    int n = panel_lines(t, w, lines, &question);
     int first = t->scroll > n - rows ? n - rows : t->scroll;
     if (first < 0)
         first = 0;
