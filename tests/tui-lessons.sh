@@ -47,7 +47,7 @@ for size in 80 120; do
     # (the whole step, its caption too, fits in the panel even at 80x24)
     if [ -n "$top" ] && [ "$(plots_bottom)" -lt "$top" ] && has 'At what frequency will the mass swing the most?' &&
         has 'One mass of 1 kg between two springs of 10 N/m; the motor shakes one end.' &&
-        has '1) 0.50 Hz: sqrt(k/m)/2pi' && has '2) 0.71 Hz' && has '3) 1.00 Hz' && has '1-3 answers' &&
+        has '1) 0.50 Hz: √(k/m)/2π, as if one spring held it' && has '2) 0.71 Hz' && has '3) 1.00 Hz' && has '1-3 answers' &&
         has 'Esc leaves' && has Controls && has 'Displacement'; then pass; else
         fail "$S: the caption panel should sit below the plots and controls with the question, its three choices and its keys; screen: $(brief)"
     fi
