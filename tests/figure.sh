@@ -114,6 +114,27 @@ run --modes --figure "$tmp/dir.svg"
 expect "$cmd: exit status" "$rc" 1
 expect "$cmd: stderr" "$(cat "$err")" "springsim: $tmp/dir.svg: Is a directory"
 
+# The same file for -o and --figure (issue 33 item 10): refused before anything is written,
+# whether it is named the same way, through another path, or through a hard link; an
+# existing file stays as it was. --record onto either is refused too.
+mkdir "$tmp/same"
+echo kept >"$tmp/same/old.svg"
+ln "$tmp/same/old.svg" "$tmp/same/link.svg"
+for pair in "$tmp/same/a.svg $tmp/same/a.svg" "$tmp/same/b.png $tmp/same/../same/b.png" \
+    "$tmp/same/old.svg $tmp/same/link.svg"; do
+    set -- $pair
+    run --headless --duration 1 -o "$1" --figure "$2"
+    usage_error "$cmd" "--figure: '$2' is also -o's file (expected a different file for each output)"
+done
+refused "is also -o's file" --modes -o "$tmp/same/m.pdf" --figure "$tmp/same/m.pdf"
+refused "--output: applies to" --plain --record "$tmp/same/r.svg" -o "$tmp/same/r.svg"
+refused "--figure: applies to" --plain --record "$tmp/same/r.svg" --figure "$tmp/same/r.svg"
+expect "the same file: nothing written" "$(ls "$tmp/same" | tr '\n' ' ')" "link.svg old.svg "
+expect "the same file: the old file kept" "$(cat "$tmp/same/old.svg")" "kept"
+# Two different files in one directory are two outputs.
+run --headless --duration 1 -o "$tmp/same/c.csv" --figure "$tmp/same/c.svg"
+expect "$cmd: exit status" "$rc" 0
+
 # 6. Written whole or not at all: a run that blows up leaves the old figure as it was and
 # no temporary file beside it.
 mkdir "$tmp/w"
