@@ -230,12 +230,13 @@ static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
                                         [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
                                         [MODE_PLAIN] = "--plain",
                                         [MODE_LIST_LESSONS] = "--list-lessons"};
-    static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE};
+    static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE, CFG_FIGURE_SIZE,
+                                   CFG_FIGURE_TITLE};
     for (size_t i = 0; i < sizeof csv_only / sizeof *csv_only; i++)
         if (given[csv_only[i]] && !csv) {
             options_say("--%s: applies to the output of --headless%s, --modes or --sweep, not "
                         "to %s (expected one of those modes)", config_options[csv_only[i]].name,
-                        csv_only[i] == CFG_FIGURE ? "" : ", --summary", names[mode]);
+                        csv_only[i] >= CFG_FIGURE ? "" : ", --summary", names[mode]);
             return true;
         }
     static const int session_only[] = {CFG_LESSON, CFG_RECORD, CFG_REPLAY};
@@ -418,6 +419,12 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                     "--headless or no other mode)", mode_option);
         return EXIT_USAGE;
     }
+    for (int k = CFG_FIGURE_SIZE; k <= CFG_FIGURE_TITLE; k++)
+        if (given[k] && !c->figure) {
+            options_say("--%s: shapes --figure's file, but no --figure was given (expected "
+                        "--figure FILE too)", config_options[k].name);
+            return EXIT_USAGE;
+        }
     if (c->summary && given[CFG_FIGURE]) {
         options_say("--figure: a --summary run has one row of figures, no series to draw "
                     "(expected --headless without --summary)");
@@ -425,6 +432,12 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     }
     if (mode_mismatch(given, cli->mode, c->summary) || outputs_clash(c))
         return EXIT_USAGE;
+    /* The preset's name stands for its settings (a figure's subtitle names it) only while
+     * the command line changes none of them. */
+    for (int k = 0; k < CFG_KEY_COUNT; k++)
+        if (given[k] && config_options[k].section &&
+            strcmp(config_options[k].section, "run") != 0)
+            c->name[0] = '\0';
     if (optind < argc) {
         written(argv, optind, q, sizeof q);
         if (optind > 1 && strcmp(argv[optind - 1], "--") == 0)
