@@ -79,8 +79,10 @@ refused "--figure-size: '10x100' is out of range" --headless --figure "$tmp/x.sv
 refused "--figure-size: 'ax5' is not WxH" --modes --figure "$tmp/x.svg" --figure-size ax5
 refused "--figure-title: shapes --figure's file, but no --figure was given" --headless \
     --figure-title T
-refused "--figure-size: applies to the output of --headless, --modes or --sweep" --plain \
+refused "--figure-size: shapes --figure's file, but no --figure was given" --plain \
     --figure-size 100x100
+refused "--figure: applies to the output of --headless, --modes or --sweep" --plain \
+    --figure "$tmp/p.svg" --figure-size 100x100
 
 # Titles say what the figure shows; --figure-title replaces them; the preset's name only
 # while the settings are the preset's.
@@ -144,8 +146,8 @@ expect "$cmd: time labels" "$($fc xticks "$tmp/d0.pdf" t | head -n 1 | cut -d' '
 [ "$($fc fills "$tmp/d0.svg" $M1)" -ge 1 ] && pass || fail "$cmd: the one instant is not drawn"
 # The legend never cut: ten masses and the motor all named.
 run --headless --duration 1 -n 10 --figure "$tmp/l10.pdf" -o /dev/null
-expect "$cmd: legend" "$($fc text "$tmp/l10.pdf" | grep -o 'mass [0-9]*\|motor' | tr '\n' ' ')" \
-    "mass 1 mass 2 mass 3 mass 4 mass 5 mass 6 mass 7 mass 8 mass 9 mass 10 motor "
+expect "$cmd: legend" "$($fc text "$tmp/l10.pdf" | grep -o 'mass [0-9]*\|motor u(t)' | tr '\n' ' ')" \
+    "mass 1 mass 2 mass 3 mass 4 mass 5 mass 6 mass 7 mass 8 mass 9 mass 10 motor u(t) "
 # The motor line only when the motor moves.
 run --headless --duration 1 --amplitude 0 --x0 0.1 --figure "$tmp/a0.svg" -o /dev/null
 expect "$cmd: motor curves" "$($fc curves "$tmp/a0.svg" $MOTOR)" 0

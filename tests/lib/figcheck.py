@@ -146,6 +146,11 @@ def is_number(t):
     return re.fullmatch(r'-?[0-9.]+(e-?[0-9]+)?', t) is not None
 
 
+def y_column(nums):
+    """The right edge the y tick labels are aligned on: the one most numbers share."""
+    return max((w[2] for w in nums), key=lambda x: sum(1 for v in nums if abs(v[2] - x) < 0.5))
+
+
 def axis_titles(words, word):
     """The top of each x axis title holding word, top to bottom (one per panel)."""
     return sorted(set(round(w[1], 2) for w in words if w[4] == word))
@@ -176,8 +181,7 @@ def pdf_command(cmd, path, arg):
             print(' '.join(w[4] for w in sorted(rows[y])))
     elif cmd == 'xticks':
         nums = [w for w in words if is_number(w[4])]
-        right = max(round(w[2]) for w in nums if sum(1 for v in nums
-                                                     if abs(v[2] - w[2]) < 0.5) >= 3)
+        right = y_column(nums)
         for top in axis_titles(words, arg):
             row = sorted((w for w in nums if top - 16 < w[3] <= top + 0.5 and
                           abs(w[2] - right) >= 1.0), key=lambda w: w[0])
@@ -185,8 +189,7 @@ def pdf_command(cmd, path, arg):
     elif cmd == 'yticks':
         above = -1e9
         nums = [w for w in words if is_number(w[4])]
-        right = max(round(w[2]) for w in nums if sum(1 for v in nums
-                                                     if abs(v[2] - w[2]) < 0.5) >= 3)
+        right = y_column(nums)
         for top in axis_titles(words, arg):
             col = sorted((w for w in nums if abs(w[2] - right) < 1.0 and above < w[1] < top - 16),
                          key=lambda w: w[1])
