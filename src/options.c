@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "core/preset.h"
 #include "core/search.h"
@@ -180,7 +181,43 @@ static const char *written(char **argv, int index, char *buf, size_t len)
     return buf;
 }
 
-/* Parses the command line into c and cli. Returns -1 to go on, or an exit status. */
+/* Whether paths a and b name one file: the same device and inode where both exist, else
+ * the same name in the same directory (its real path), so "out.csv" and "./out.csv" are
+ * one file before either is written. */
+static bool same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (stat(a, &sa) == 0 && stat(b, &sb) == 0)
+        return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    char da[4096], db[4096];
+    const char *na = strrchr(a, '/'), *nb = strrchr(b, '/');
+    snprintf(da, sizeof da, "%.*s", na ? (int)(na - a) + 1 : 1, na ? a : ".");
+    snprintf(db, sizeof db, "%.*s", nb ? (int)(nb - b) + 1 : 1, nb ? b : ".");
+    char *ra = realpath(da, NULL), *rb = realpath(db, NULL);
+    bool same = ra && rb && strcmp(ra, rb) == 0 && strcmp(na ? na + 1 : a, nb ? nb + 1 : b) == 0;
+    free(ra);
+    free(rb);
+    return same;
+}
+
+/* Says so (one line) and returns true when two outputs (-o, --figure, --record) name one
+ * file: the second would replace the first. */
+static bool outputs_clash(const struct config *c)
+{
+    const char *path[3] = {c->output, c->figure, c->record};
+    static const char *const name[3] = {"-o", "--figure", "--record"};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (path[i] && path[j] && strcmp(path[i], "-") != 0 && same_file(path[i], path[j])) {
+                char q[4 * CONFIG_QUOTE_MAX + 8];
+                config_quote(path[j], strlen(path[j]), q, sizeof q);
+                options_say("%s: %s is also %s's file (expected a different file for each "
+                            "output)", name[j], q, name[i]);
+                return true;
+            }
+    return false;
+}
+
 /* Says so (one line) and returns true when an option that only the command line gives is
  * for another mode than the one asked for: -o and --meta shape the CSV modes' output,
  * --plain-every the plain mode's. Options a preset can set are left alone, since a preset
@@ -193,12 +230,13 @@ static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
                                         [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
                                         [MODE_PLAIN] = "--plain",
                                         [MODE_LIST_LESSONS] = "--list-lessons"};
-    static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE};
+    static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE, CFG_FIGURE_SIZE,
+                                   CFG_FIGURE_TITLE};
     for (size_t i = 0; i < sizeof csv_only / sizeof *csv_only; i++)
         if (given[csv_only[i]] && !csv) {
             options_say("--%s: applies to the output of --headless%s, --modes or --sweep, not "
                         "to %s (expected one of those modes)", config_options[csv_only[i]].name,
-                        csv_only[i] == CFG_FIGURE ? "" : ", --summary", names[mode]);
+                        csv_only[i] >= CFG_FIGURE ? "" : ", --summary", names[mode]);
             return true;
         }
     static const int session_only[] = {CFG_LESSON, CFG_RECORD, CFG_REPLAY};
@@ -240,6 +278,7 @@ static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
     return false;
 }
 
+/* Parses the command line into c and cli. Returns -1 to go on, or an exit status. */
 int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                   const char *exe_dir)
 {
@@ -380,13 +419,25 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
                     "--headless or no other mode)", mode_option);
         return EXIT_USAGE;
     }
+    for (int k = CFG_FIGURE_SIZE; k <= CFG_FIGURE_TITLE; k++)
+        if (given[k] && !c->figure) {
+            options_say("--%s: shapes --figure's file, but no --figure was given (expected "
+                        "--figure FILE too)", config_options[k].name);
+            return EXIT_USAGE;
+        }
     if (c->summary && given[CFG_FIGURE]) {
         options_say("--figure: a --summary run has one row of figures, no series to draw "
                     "(expected --headless without --summary)");
         return EXIT_USAGE;
     }
-    if (mode_mismatch(given, cli->mode, c->summary))
+    if (mode_mismatch(given, cli->mode, c->summary) || outputs_clash(c))
         return EXIT_USAGE;
+    /* The preset's name stands for its settings (a figure's subtitle names it) only while
+     * the command line changes none of them. */
+    for (int k = 0; k < CFG_KEY_COUNT; k++)
+        if (given[k] && config_options[k].section &&
+            strcmp(config_options[k].section, "run") != 0)
+            c->name[0] = '\0';
     if (optind < argc) {
         written(argv, optind, q, sizeof q);
         if (optind > 1 && strcmp(argv[optind - 1], "--") == 0)

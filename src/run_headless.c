@@ -64,17 +64,19 @@ static void report_blowup(const struct sim *s, const struct limits *l, bool judg
             sim_time(s), how, sim_dt(s), name);
 }
 
-/* Adds the row just written (accelerations in a) to the figure's, if there is one. */
+/* Adds the row just written (accelerations in a) to the figure's, if there is one; the
+ * energy balance's change is counted from start (the first row's balance). */
 static void figure_row(struct report_data *fig, double *row, const struct sim *s,
-                       const double *a)
+                       const double *a, bool energy, double *start)
 {
     if (!fig)
         return;
-    int n = sim_model(s)->n;
-    memcpy(row, sim_x(s), (size_t)n * sizeof *row);
-    memcpy(row + n, sim_v(s), (size_t)n * sizeof *row);
-    memcpy(row + 2 * n, a, (size_t)n * sizeof *row);
-    row[3 * n] = sim_end_position(s);
+    if (isnan(*start)) {
+        struct energy e;
+        sim_energy(s, &e);
+        *start = e.balance;
+    }
+    report_headless_row(s, a, energy, *start, row);
     report_data_add(fig, sim_time(s), row);
 }
 
@@ -91,9 +93,11 @@ int run_headless(const struct config *c, const struct model *m)
     struct sim *s = sim_new(m, c->dt);
     struct summary *sum = c->summary ? summary_new(n) : NULL;
     /* The figure keeps the rows the CSV gets: x1..xN, v1..vN, a1..aN, motor. */
-    struct report_data *fig = c->figure ? report_data_new(3 * n + 1, floor(total / stride) + 1)
+    int fig_series = report_headless_series(n, c->energy);
+    double start_balance = NAN;
+    struct report_data *fig = c->figure ? report_data_new(fig_series, floor(total / stride) + 1)
                                         : NULL;
-    double *row = c->figure ? malloc((size_t)(3 * n + 1) * sizeof *row) : NULL;
+    double *row = c->figure ? malloc((size_t)fig_series * sizeof *row) : NULL;
     struct output o = {0}, fo = {0};
     struct limits l;
     bool judged = false, unstable = false;
@@ -131,7 +135,7 @@ int run_headless(const struct config *c, const struct model *m)
     } else {
         output_csv_header(o.fp, n, c->energy);
         blown = output_csv_row(o.fp, s, c->energy, x + 2 * n) != 0;
-        figure_row(fig, row, s, x + 2 * n);
+        figure_row(fig, row, s, x + 2 * n, c->energy, &start_balance);
     }
     if (blown) {
         report_blowup(s, &l, judged, false);
@@ -175,7 +179,7 @@ int run_headless(const struct config *c, const struct model *m)
                 capped = 0.0;
                 break;
             }
-            figure_row(fig, row, s, x + 2 * n);
+            figure_row(fig, row, s, x + 2 * n, c->energy, &start_balance);
             if (ferror(o.fp))
                 break;
         }
@@ -197,9 +201,11 @@ int run_headless(const struct config *c, const struct model *m)
     if (fig) {
         char settings[400];
         report_settings(c, m, settings, sizeof settings);
+        struct report_look look = report_look_of(c, settings);
+        bool moves = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
         int draw = status == EXIT_SUCCESS
-                       ? report_headless(fo.fp, fig_format_of(c->figure), fig, n,
-                                         m->boundary == BOUNDARY_MOTOR, sim_time(s), settings)
+                       ? report_headless(fo.fp, fig_format_of(c->figure), fig, n, moves,
+                                         c->energy, 0.0, sim_time(s), &look)
                        : 0;
         status = run_close_figure(&fo, c, draw, status);
     }

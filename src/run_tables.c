@@ -53,8 +53,9 @@ int run_modes(const struct config *c, const struct model *m)
         if (c->figure) {
             char settings[400];
             report_settings(c, m, settings, sizeof settings);
+            struct report_look look = report_look_of(c, settings);
             int draw = status == EXIT_SUCCESS ? report_modes(fo.fp, fig_format_of(c->figure), m,
-                                                             f, shapes, settings)
+                                                             f, shapes, &look)
                                               : 0;
             status = run_close_figure(&fo, c, draw, status);
         }
@@ -174,8 +175,9 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
     if (fig) {
         char settings[400];
         report_settings(c, m, settings, sizeof settings);
+        struct report_look look = report_look_of(c, settings);
         int draw = status == EXIT_SUCCESS
-                       ? report_sweep(fo.fp, fig_format_of(c->figure), fig, n, settings)
+                       ? report_sweep(fo.fp, fig_format_of(c->figure), fig, n, &look)
                        : 0;
         status = run_close_figure(&fo, c, draw, status);
     }

@@ -17,6 +17,9 @@ mkdir -p "$tmp/fig"
 mkdir -p "$tmp/drv"
 start_in "$tmp/fig" cosine 100 30 -- -n 1 --boundary wall --x0 0.5 --damping 0
 start_in "$tmp/drv" driven 100 30 -- -n 1
+# Six instances in one directory, for X pressed in all of them at once.
+mkdir -p "$tmp/six"
+for i in 1 2 3 4 5 6; do start_in "$tmp/six" six$i 80 24 -- -n 1; done
 
 # saved DIR: waits for X's message naming files other than the last ones; sets $base to
 # their name without extension, true when both are in DIR.
@@ -99,6 +102,25 @@ if up driven; then
         fail "X: expected two SVG and PNG pairs; found $(ls "$tmp/drv" | tr '\n' ' ')"
 fi
 
-all_alive cosine driven
+# Six instances pressing X in the same second (issue 33 item 6): six pairs, none replaced.
+ok=1
+for i in 1 2 3 4 5 6; do up six$i || ok=; done
+if [ -n "$ok" ]; then
+    for i in 1 2 3 4 5 6; do S=six$i; keys X; done
+    for i in 1 2 3 4 5 6; do S=six$i; wait_for 'saved the view as' || ok=; done
+    svgs=$(ls "$tmp/six" | grep -c '\.svg$') pngs=$(ls "$tmp/six" | grep -c '\.png$')
+    seconds=$(ls "$tmp/six" | sed -n 's/^springsim-\([0-9]*-[0-9]*\).*\.svg$/\1/p' | sort -u | wc -l)
+    if [ -n "$ok" ] && [ "$svgs" -eq 6 ] && [ "$pngs" -eq 6 ]; then pass; else
+        fail "X in six instances: expected six SVG and PNG pairs, found $(ls "$tmp/six" | tr '\n' ' ')"
+    fi
+    # Each pair whole: an SVG that ends, a PNG with its end chunk.
+    bad=0
+    for f in "$tmp/six"/*.svg; do tail -c 8 "$f" | grep -q '</svg>' || bad=$((bad + 1)); done
+    for f in "$tmp/six"/*.png; do tail -c 8 "$f" | grep -q 'IEND' || bad=$((bad + 1)); done
+    [ "$bad" -eq 0 ] && pass || fail "X in six instances: $bad files not whole"
+    echo "tui-figure: six X presses fell in $seconds distinct second(s)" >&2
+fi
+
+all_alive cosine driven six1 six2 six3 six4 six5 six6
 
 summary

@@ -128,6 +128,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .expect = "a file name ending in .png, .svg or .pdf",
                     .help = "headless/modes/sweep: also a figure of the run for a report; the "
                             "extension chooses PNG, SVG or PDF"},
+    [CFG_FIGURE_SIZE] = {.name = "figure-size", .kind = CONFIG_TEXT, .arg = "WxH",
+                         .offset = AT(figure_w),
+                         .expect = "WxH in millimetres, each 50 to 1000, e.g. 160x100",
+                         .help = "--figure's size in millimetres (default 160 wide, 100 high a "
+                                 "panel; the PNG at 300 dpi)"},
+    [CFG_FIGURE_TITLE] = {.name = "figure-title", .kind = CONFIG_TEXT, .arg = "TEXT",
+                          .expect = "a title", .offset = AT(figure_title),
+                          .help = "--figure's title in place of the one saying what it shows"},
     [CFG_FPS] = {.name = "fps", .section = "run", .kind = CONFIG_WHOLE, .arg = "N",
                  .help = "interactive frames per second", .symbol = "fps", .lo = 1, .hi = 60,
                  .def = 30, .offset = AT(fps)},
@@ -422,6 +430,26 @@ static int set_start_mode(struct config *c, const char *value, char *err, size_t
     return 0;
 }
 
+/* --figure-size WxH: two numbers in millimetres, each in the allowed range. */
+static int set_figure_size(struct config *c, const char *value, char *err, size_t errlen)
+{
+    char w_text[64];
+    const char *x = strpbrk(value, "xX");
+    double w, h;
+    size_t wlen = x ? (size_t)(x - value) : 0;
+    if (!x || wlen == 0 || wlen >= sizeof w_text)
+        return fail(CFG_FIGURE_SIZE, value, "is not WxH", err, errlen);
+    memcpy(w_text, value, wlen);
+    w_text[wlen] = '\0';
+    if (config_parse_number(w_text, &w) || config_parse_number(x + 1, &h))
+        return fail(CFG_FIGURE_SIZE, value, "is not WxH", err, errlen);
+    if (!(w >= CONFIG_FIGURE_MM_MIN && w <= CONFIG_FIGURE_MM_MAX && h >= CONFIG_FIGURE_MM_MIN &&
+          h <= CONFIG_FIGURE_MM_MAX))
+        return fail(CFG_FIGURE_SIZE, value, "is out of range", err, errlen);
+    c->figure_w = w, c->figure_h = h;
+    return 0;
+}
+
 /* --figure's file name ends in .png, .svg or .pdf (any case). */
 static bool figure_extension(const char *path)
 {
@@ -453,6 +481,8 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
             return 0; /* applied by the caller, before everything else */
         if (key == CFG_START_MODE)
             return set_start_mode(c, value, err, errlen);
+        if (key == CFG_FIGURE_SIZE)
+            return set_figure_size(c, value, err, errlen);
         if (*value == '\0')
             return fail(key, value, "is empty", err, errlen);
         if (key == CFG_FIGURE && !figure_extension(value))

@@ -38,6 +38,8 @@ enum config_key {
     CFG_ENERGY,
     CFG_META,
     CFG_FIGURE,
+    CFG_FIGURE_SIZE,
+    CFG_FIGURE_TITLE,
     CFG_FPS,
     CFG_WINDOW,
     CFG_LOW_BANDWIDTH,
@@ -169,6 +171,8 @@ struct config {
     bool energy;                        /* energy columns in the headless CSV */
     bool meta;                          /* '#' lines before a CSV: version, command line */
     const char *figure;                 /* --figure: a figure of the run (.png, .svg, .pdf) */
+    double figure_w, figure_h;          /* --figure-size in mm, 0: the figure's own */
+    const char *figure_title;           /* --figure-title: the figure's title, or NULL */
     int fps;                            /* interactive frames per second */
     double window;                      /* interactive: the time plots' window (s) */
     bool low_bandwidth;                 /* interactive: keep terminal output small */
@@ -183,6 +187,8 @@ struct config {
 };
 
 #define CONFIG_QUOTE_MAX 40  /* characters of a value quoted in a message */
+#define CONFIG_FIGURE_MM_MIN 50.0   /* --figure-size's smallest side (mm) */
+#define CONFIG_FIGURE_MM_MAX 1000.0 /* and largest */
 #define CONFIG_START_AMP 0.5 /* --start-mode's AMP unless given (m) */
 #define CONFIG_MAX_STEPS 1e12 /* steps a headless run may take */
 /* The interactive program's longest time window (s): its coarse samples reach 66 s back

@@ -1,6 +1,7 @@
-/* figure.c: a page of panels drawn with cairo and written as PNG, SVG or PDF. Linear axes
- * take 1-2-5 ticks with their ends rounded outward (app/axis.c, as the terminal's charts
- * do); logarithmic axes a tick at every power of ten. */
+/* figure.c: a page of panels drawn with cairo and written as PNG, SVG or PDF, sized for a
+ * report: text of 8 to 10 points, the left margin as wide as the widest tick label needs,
+ * the legend and the settings wrapped onto as many lines as they take. The axes' ticks
+ * are axes.c's. */
 #include "figure.h"
 
 #include <cairo.h>
@@ -10,18 +11,18 @@
 #include <string.h>
 #include <strings.h>
 
-#include "app/axis.h"
+#include "axes.h"
 #include "surface.h"
 
 #define FONT "DejaVu Sans"
-#define TICK_PT 9.0    /* tick labels */
-#define LABEL_PT 10.5  /* axis labels, legend */
-#define TITLE_PT 13.0
-#define MARGIN_L 72.0  /* room for the y tick labels and the y label */
-#define MARGIN_R 18.0
-#define PANEL_GAP 40.0 /* under a panel: its x tick labels and x label */
-#define LEGEND_Y 52.0  /* the legend's first baseline */
-#define HEAD_H 76.0    /* title, settings and two lines of legend above the panels */
+#define TICK_PT 8.0    /* tick labels, the settings: the smallest text */
+#define LABEL_PT 9.0   /* axis labels, legend */
+#define TITLE_PT 10.0  /* the title, bold */
+#define EDGE 12.0      /* the page's margins */
+#define GAP_X 30.0     /* under a panel: its x tick labels and x label */
+#define GAP_PANEL 12.0 /* between one panel's x label and the next panel */
+#define LINE 1.3       /* a line of text is this many times its size */
+#define MARKER_R 1.6   /* a measured point's marker radius */
 
 enum fig_format fig_format_of(const char *path)
 {
@@ -66,107 +67,18 @@ void fig_rgb(int c, bool dark, double rgb[3])
         rgb[i] = p ? p[i] / 255.0 : grey;
 }
 
+int fig_energy_color(int i)
+{
+    static const int c[6] = {FIG_MASS + 0, FIG_MASS + 1, FIG_MASS + 2, FIG_MOTOR, FIG_MASS + 4,
+                             FIG_WALL};
+    return i >= 0 && i < 6 ? c[i] : FIG_WALL;
+}
+
 static void set_color(cairo_t *cr, int c)
 {
     double rgb[3];
     fig_rgb(c, false, rgb);
     cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-}
-
-/* An axis of a panel: values lo..hi (log10 of them on a log axis) onto a..b. */
-struct fig_axis {
-    double lo, hi, step; /* range and tick step (log: in decades) */
-    bool log;
-    double a, b;         /* where lo and hi land on the page */
-};
-
-static double ax_map(const struct fig_axis *x, double v)
-{
-    if (x->log)
-        v = log10(v);
-    return x->a + (v - x->lo) / (x->hi - x->lo) * (x->b - x->a);
-}
-
-/* Whether v can be drawn on x. */
-static bool ax_ok(const struct fig_axis *x, double v)
-{
-    return isfinite(v) && (!x->log || v > 0.0);
-}
-
-/* The range of the series' x (which 0) or y (1) values that x can show. */
-static void data_range(const struct fig_panel *p, int which, const struct fig_axis *x,
-                       double *lo, double *hi)
-{
-    *lo = INFINITY, *hi = -INFINITY;
-    for (int s = 0; s < p->nseries; s++) {
-        const struct fig_series *sr = &p->series[s];
-        const double *v = which ? sr->y : sr->x;
-        for (int k = 0; k < sr->count; k++) {
-            double d = v[(size_t)k * sr->stride];
-            if (ax_ok(x, d))
-                *lo = fmin(*lo, d), *hi = fmax(*hi, d);
-        }
-    }
-}
-
-/* Fits x to [lo, hi]: decades rounded out on a log axis, else 1-2-5 ticks rounded out
- * with pad (a fraction of the span) added first. */
-static void ax_fit(struct fig_axis *x, double lo, double hi, double pad, int max_ticks)
-{
-    if (!(lo <= hi)) /* no data */
-        lo = x->log ? 0.1 : -1.0, hi = x->log ? 10.0 : 1.0;
-    if (x->log) {
-        /* Out to 1, 2 or 5 times a power of ten, ticks on the powers of ten. */
-        static const double nice[] = {1.0, 2.0, 5.0, 10.0};
-        double dl = floor(log10(lo) + 1e-9), dh = floor(log10(hi) - 1e-9);
-        double ml = 1.0, mh = 10.0;
-        for (int i = 2; i >= 0; i--)
-            if (nice[i] * pow(10.0, dl) <= lo * (1.0 + 1e-9)) {
-                ml = nice[i];
-                break;
-            }
-        for (int i = 0; i < 4; i++)
-            if (nice[i] * pow(10.0, dh) >= hi * (1.0 - 1e-9)) {
-                mh = nice[i];
-                break;
-            }
-        x->lo = dl + log10(ml);
-        x->hi = dh + log10(mh);
-        if (x->hi <= x->lo)
-            x->hi = x->lo + 1.0;
-        x->step = fmax(1.0, ceil((x->hi - x->lo) / max_ticks));
-        return;
-    }
-    double span = hi - lo;
-    if (span <= 1e-12 * fmax(1.0, fabs(hi)))
-        span = fmax(fabs(hi), 1.0), lo -= 0.5 * span, hi += 0.5 * span;
-    else
-        lo -= pad * span, hi += pad * span;
-    x->step = axis_step(lo, hi, max_ticks);
-    axis_round_out(&lo, &hi, x->step);
-    x->lo = lo, x->hi = hi;
-}
-
-/* Tick k's label: the value in plain decimals with the digits the step needs, or in
- * exponent form where that would be long. */
-static void tick_label(const struct fig_axis *x, double v, char *buf, size_t len)
-{
-    if (x->log) {
-        int e = (int)lround(v);
-        if (e >= -4 && e <= 5)
-            snprintf(buf, len, "%.*f", e < 0 ? -e : 0, pow(10.0, e));
-        else
-            snprintf(buf, len, "1e%d", e);
-        return;
-    }
-    double big = fmax(fabs(x->lo), fabs(x->hi));
-    int dec = (int)ceil(-log10(x->step) - 1e-9);
-    if (fabs(v) < 0.5 * x->step)
-        v = 0.0; /* no "-0" */
-    if (big >= 1e5 || (big > 0.0 && dec > 4))
-        snprintf(buf, len, "%.3g", v);
-    else
-        snprintf(buf, len, "%.*f", dec > 0 ? dec : 0, v);
 }
 
 static double text_width(cairo_t *cr, const char *s)
@@ -190,19 +102,17 @@ static void font(cairo_t *cr, double size, bool bold)
     cairo_set_font_size(cr, size);
 }
 
-/* The ticks of x: gridlines across the panel (other is the cross axis) and their labels. */
+/* The ticks of x: gridlines across the panel (other is the cross axis) and their labels;
+ * on a log axis faint minor ticks at every digit of each decade. */
 static void ticks(cairo_t *cr, const struct fig_axis *x, const struct fig_axis *other,
                   bool vertical)
 {
     char buf[32];
-    double first = x->log ? ceil(x->lo - 1e-9) : x->lo;
-    double n = floor((x->hi - first) / x->step + 1e-9);
     font(cr, TICK_PT, false);
-    for (int k = 0; k <= (int)n; k++) {
-        double v = first + k * x->step;
-        double at = x->a + (v - x->lo) / (x->hi - x->lo) * (x->b - x->a);
+    cairo_set_line_width(cr, 0.5);
+    for (int k = 0; k < x->nt; k++) {
+        double at = fig_axis_map(x, x->tv[k]);
         set_color(cr, FIG_GRID);
-        cairo_set_line_width(cr, 0.6);
         if (vertical) {
             cairo_move_to(cr, other->a, at);
             cairo_line_to(cr, other->b, at);
@@ -211,138 +121,237 @@ static void ticks(cairo_t *cr, const struct fig_axis *x, const struct fig_axis *
             cairo_line_to(cr, at, other->b);
         }
         cairo_stroke(cr);
-        tick_label(x, v, buf, sizeof buf);
+        fig_axis_label(x, x->tv[k], buf, sizeof buf);
         set_color(cr, FIG_WALL);
         if (vertical)
-            text_at(cr, other->a - 5.0, at + 0.35 * TICK_PT, buf, 1.0);
+            text_at(cr, other->a - 4.0, at + 0.35 * TICK_PT, buf, 1.0);
         else
-            text_at(cr, at, other->a + TICK_PT + 4.0, buf, 0.5);
+            text_at(cr, at, other->a + TICK_PT + 3.0, buf, 0.5);
     }
-    /* A log axis: faint minor ticks at 2..9 of every decade. */
     for (double d = floor(x->lo + 1e-9); x->log && d < x->hi; d += 1.0)
-        for (int m = 2; m <= 9; m++) {
+        for (int m = 1; m <= 9; m++) {
             double lv = d + log10(m);
             if (lv < x->lo - 1e-9 || lv > x->hi + 1e-9)
                 continue;
-            double at = ax_map(x, m * pow(10.0, d));
-            set_color(cr, FIG_GRID);
-            cairo_set_line_width(cr, 0.6);
+            double at = fig_axis_map(x, m * pow(10.0, d));
+            set_color(cr, FIG_WALL);
             if (vertical) {
                 cairo_move_to(cr, other->a, at);
-                cairo_line_to(cr, other->a + 4.0, at);
+                cairo_line_to(cr, other->a + (m == 1 ? 4.0 : 2.5), at);
             } else {
                 cairo_move_to(cr, at, other->a);
-                cairo_line_to(cr, at, other->a - 4.0);
+                cairo_line_to(cr, at, other->a - (m == 1 ? 4.0 : 2.5));
             }
             cairo_stroke(cr);
         }
 }
 
-/* One series as one stroke: its line, broken where a point cannot be drawn, and its
- * markers. */
+/* Point k of s on the page, or false where it cannot be drawn. */
+static bool point(const struct fig_series *s, int k, const struct fig_axis *x,
+                  const struct fig_axis *y, double *px, double *py, double *vy)
+{
+    double vx = s->x[(size_t)k * s->stride];
+    *vy = s->y[(size_t)k * s->stride];
+    if (!fig_axis_ok(x, vx) || !fig_axis_ok(y, *vy))
+        return false;
+    *px = fig_axis_map(x, vx), *py = fig_axis_map(y, *vy);
+    return true;
+}
+
+/* One series: its line, broken where a point cannot be drawn or y jumps by more than
+ * max_jump, then its markers (a point with no neighbour on its line gets one too, so a
+ * run of one sample still shows). */
 static void series(cairo_t *cr, const struct fig_series *s, const struct fig_axis *x,
                    const struct fig_axis *y)
 {
-    static const double dash[] = {6.0, 4.0};
-    bool pen = false;
+    static const double dash[] = {5.0, 3.0};
+    double px, py, vy, last = NAN;
+    int run = 0; /* points in the line's current piece */
+    set_color(cr, s->color);
+    cairo_set_line_width(cr, 1.0);
+    cairo_set_dash(cr, dash, s->dashed ? 2 : 0, 0.0);
     cairo_new_path(cr);
-    for (int k = 0; k < s->count; k++) {
-        double vx = s->x[(size_t)k * s->stride], vy = s->y[(size_t)k * s->stride];
-        if (!ax_ok(x, vx) || !ax_ok(y, vy)) {
-            pen = false;
+    for (int k = 0; !s->no_line && k < s->count; k++) {
+        if (!point(s, k, x, y, &px, &py, &vy)) {
+            run = 0;
             continue;
         }
-        double px = ax_map(x, vx), py = ax_map(y, vy);
-        if (pen)
+        if (run > 0 && s->max_jump > 0.0 && fabs(vy - last) > s->max_jump)
+            run = 0;
+        if (run++ > 0)
             cairo_line_to(cr, px, py);
         else
             cairo_move_to(cr, px, py);
-        pen = true;
+        last = vy;
     }
-    for (int k = 0; s->markers && k < s->count; k++) {
-        double vx = s->x[(size_t)k * s->stride], vy = s->y[(size_t)k * s->stride];
-        if (!ax_ok(x, vx) || !ax_ok(y, vy))
-            continue;
-        cairo_new_sub_path(cr);
-        cairo_arc(cr, ax_map(x, vx), ax_map(y, vy), 2.5, 0.0, 2.0 * M_PI);
-    }
-    set_color(cr, s->color);
-    cairo_set_line_width(cr, 1.3);
-    cairo_set_dash(cr, dash, s->dashed ? 2 : 0, 0.0);
     cairo_stroke(cr);
     cairo_set_dash(cr, NULL, 0, 0.0);
+    for (int k = 0; k < s->count; k++) {
+        if (!point(s, k, x, y, &px, &py, &vy))
+            continue;
+        double qx, qy, qv;
+        bool alone = !s->no_line && !s->markers &&
+                     !(k > 0 && point(s, k - 1, x, y, &qx, &qy, &qv)) &&
+                     !(k + 1 < s->count && point(s, k + 1, x, y, &qx, &qy, &qv));
+        if (s->markers || s->no_line || alone) {
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, px, py, MARKER_R, 0.0, 2.0 * M_PI);
+        }
+    }
+    cairo_fill(cr);
 }
 
-/* Panel p in the box (left, top, width, height) of its plot area. */
-static void panel(cairo_t *cr, const struct fig_panel *p, double left, double top, double w,
-                  double h)
+/* The range of the series' x (which 0) or y (1) values that x can show. */
+static void data_range(const struct fig_panel *p, int which, const struct fig_axis *x,
+                       double *lo, double *hi)
 {
-    struct fig_axis x = {.log = p->xlog, .a = left, .b = left + w};
-    struct fig_axis y = {.log = p->ylog, .a = top + h, .b = top};
-    double lo, hi;
-    if (p->xfixed)
-        lo = p->xlo, hi = p->xhi;
-    else
-        data_range(p, 0, &x, &lo, &hi);
-    ax_fit(&x, lo, hi, 0.0, (int)fmax(2.0, w / 70.0));
-    if (p->ystep > 0.0) {
-        y.lo = p->ylo, y.hi = p->yhi, y.step = p->ystep;
-    } else {
-        data_range(p, 1, &y, &lo, &hi);
-        ax_fit(&y, lo, hi, 0.05, (int)fmax(2.0, h / 35.0));
+    *lo = INFINITY, *hi = -INFINITY;
+    for (int s = 0; s < p->nseries; s++) {
+        const struct fig_series *sr = &p->series[s];
+        const double *v = which ? sr->y : sr->x;
+        for (int k = 0; k < sr->count; k++) {
+            double d = v[(size_t)k * sr->stride];
+            if (fig_axis_ok(x, d))
+                *lo = fmin(*lo, d), *hi = fmax(*hi, d);
+        }
     }
+}
+
+/* The axes of panel p for a plot area w x h points. */
+static void fit_axes(const struct fig_panel *p, double w, double h, struct fig_axis *x,
+                     struct fig_axis *y)
+{
+    double lo, hi;
+    x->log = p->xlog, y->log = p->ylog;
+    if (p->xfixed) /* a run of no length: its one instant and a second after it */
+        lo = p->xlo, hi = p->xhi > p->xlo ? p->xhi : p->xlo + 1.0;
+    else
+        data_range(p, 0, x, &lo, &hi);
+    int nx = (int)fmax(2.0, w / 55.0), ny = (int)fmax(2.0, h / 18.0);
+    if (p->xlog)
+        fig_axis_log(x, lo, hi, 0.0, nx);
+    else
+        fig_axis_linear(x, lo, hi, 0.0, nx, p->xwhole);
+    if (p->ystep > 0.0) {
+        fig_axis_fixed(y, p->ylo, p->yhi, p->ystep);
+        return;
+    }
+    data_range(p, 1, y, &lo, &hi);
+    if (p->ylog)
+        fig_axis_log(y, lo, hi, lo > 0.0 ? 0.04 * fmax(log10(hi / lo), 0.5) : 0.0, ny);
+    else
+        fig_axis_linear(y, lo, hi, 0.02, ny, false);
+}
+
+/* The widest y tick label of panel p, in points. */
+static double ylabel_width(cairo_t *cr, const struct fig_panel *p, double w, double h)
+{
+    struct fig_axis x, y;
+    char buf[32];
+    double most = 0.0;
+    fit_axes(p, w, h, &x, &y);
+    font(cr, TICK_PT, false);
+    for (int k = 0; k < y.nt; k++) {
+        fig_axis_label(&y, y.tv[k], buf, sizeof buf);
+        most = fmax(most, text_width(cr, buf));
+    }
+    return most;
+}
+
+/* Panel p in the box (left, top, width, height) of its plot area; margin: the room left of
+ * it for the y label and tick labels. */
+static void panel(cairo_t *cr, const struct fig_panel *p, double left, double top, double w,
+                  double h, double margin)
+{
+    struct fig_axis x, y;
+    fit_axes(p, w, h, &x, &y);
+    x.a = left, x.b = left + w, y.a = top + h, y.b = top;
     ticks(cr, &y, &x, true);
     ticks(cr, &x, &y, false);
     cairo_save(cr);
-    cairo_rectangle(cr, left, top, w, h);
+    /* Lines end at the frame; a marker on it shows whole. */
+    cairo_rectangle(cr, left - 2.0 * MARKER_R, top - 2.0 * MARKER_R, w + 4.0 * MARKER_R,
+                    h + 4.0 * MARKER_R);
     cairo_clip(cr);
     for (int s = 0; s < p->nseries; s++)
         series(cr, &p->series[s], &x, &y);
     cairo_restore(cr);
     set_color(cr, FIG_WALL);
-    cairo_set_line_width(cr, 0.8);
+    cairo_set_line_width(cr, 0.7);
     cairo_rectangle(cr, left, top, w, h);
     cairo_stroke(cr);
     font(cr, LABEL_PT, false);
     if (p->xlabel)
-        text_at(cr, left + 0.5 * w, top + h + TICK_PT + LABEL_PT + 10.0, p->xlabel, 0.5);
+        text_at(cr, left + 0.5 * w, top + h + TICK_PT + LABEL_PT + 7.0, p->xlabel, 0.5);
     if (p->ylabel) {
         cairo_save(cr);
-        cairo_translate(cr, left - MARGIN_L + LABEL_PT + 4.0, top + 0.5 * h);
+        cairo_translate(cr, left - margin + LABEL_PT, top + 0.5 * h);
         cairo_rotate(cr, -M_PI / 2.0);
         text_at(cr, 0.0, 0.0, p->ylabel, 0.5);
         cairo_restore(cr);
     }
 }
 
-/* The legend along one line at baseline y: a short stroke in each entry's colour, then
- * its text; entries that do not fit are left out after an ellipsis. */
-static void legend(cairo_t *cr, const struct fig_page *pg, double y)
+/* The legend from x0 at baseline y, wrapped before right: a short stroke (a dot for
+ * markers) in each entry's colour, then its text. Draws only when draw is true; returns
+ * the baseline after its last line. */
+static double legend(cairo_t *cr, const struct fig_legend *lg, int nl, double x0, double right,
+                     double y, bool draw)
 {
-    static const double dash[] = {4.0, 3.0};
-    double x = MARGIN_L;
+    static const double dash[] = {3.0, 2.0};
+    double x = x0;
     font(cr, LABEL_PT, false);
-    for (int i = 0; i < pg->nlegend; i++) {
-        const struct fig_legend *e = &pg->legend[i];
-        double w = 24.0 + text_width(cr, e->text) + 14.0;
-        if (x + w > pg->width - MARGIN_R && y < LEGEND_Y + 1.0) {
-            x = MARGIN_L, y += LABEL_PT + 5.0; /* a second line */
-        } else if (x + w > pg->width - MARGIN_R) {
+    for (int i = 0; i < nl; i++) {
+        const struct fig_legend *e = &lg[i];
+        double w = 20.0 + text_width(cr, e->text) + 12.0;
+        if (x > x0 && x + w - 12.0 > right)
+            x = x0, y += LINE * LABEL_PT; /* the next line */
+        if (draw) {
+            set_color(cr, e->color);
+            cairo_set_line_width(cr, 1.6);
+            cairo_set_dash(cr, dash, e->dashed ? 2 : 0, 0.0);
+            if (e->dot) {
+                cairo_arc(cr, x + 7.5, y - 0.33 * LABEL_PT, MARKER_R + 0.4, 0.0, 2.0 * M_PI);
+                cairo_fill(cr);
+            } else {
+                cairo_move_to(cr, x, y - 0.33 * LABEL_PT);
+                cairo_line_to(cr, x + 15.0, y - 0.33 * LABEL_PT);
+                cairo_stroke(cr);
+            }
+            cairo_set_dash(cr, NULL, 0, 0.0);
             set_color(cr, FIG_WALL);
-            text_at(cr, x, y, "…", 0.0);
-            break;
+            text_at(cr, x + 20.0, y, e->text, 0.0);
         }
-        set_color(cr, e->color);
-        cairo_set_line_width(cr, 2.0);
-        cairo_set_dash(cr, dash, e->dashed ? 2 : 0, 0.0);
-        cairo_move_to(cr, x, y - 0.35 * LABEL_PT);
-        cairo_line_to(cr, x + 18.0, y - 0.35 * LABEL_PT);
-        cairo_stroke(cr);
-        cairo_set_dash(cr, NULL, 0, 0.0);
-        set_color(cr, FIG_WALL);
-        text_at(cr, x + 24.0, y, e->text, 0.0);
         x += w;
     }
+    return y + LINE * LABEL_PT;
+}
+
+/* text at baseline y from x0, wrapped at blanks before right; the baseline after it. */
+static double wrapped(cairo_t *cr, const char *text, double x0, double right, double y,
+                      double size)
+{
+    char line[512];
+    size_t n = 0;
+    const char *p = text;
+    while (*p) {
+        const char *word = p + strspn(p, " ");
+        size_t wl = strcspn(word, " ");
+        char trial[512];
+        snprintf(trial, sizeof trial, "%.*s%s%.*s", (int)n, line, n ? " " : "", (int)wl, word);
+        if (n && x0 + text_width(cr, trial) > right) {
+            text_at(cr, x0, y, line, 0.0);
+            y += LINE * size;
+            n = (size_t)snprintf(line, sizeof line, "%.*s", (int)wl, word);
+        } else {
+            n = (size_t)snprintf(line, sizeof line, "%s", trial);
+        }
+        n = n < sizeof line ? n : sizeof line - 1;
+        p = word + wl;
+    }
+    if (n)
+        text_at(cr, x0, y, line, 0.0);
+    return y + LINE * size;
 }
 
 static void draw_page(cairo_t *cr, const struct fig_page *pg)
@@ -350,17 +359,37 @@ static void draw_page(cairo_t *cr, const struct fig_page *pg)
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
     cairo_paint(cr);
     set_color(cr, FIG_WALL);
+    double y = EDGE + TITLE_PT, right = pg->width - EDGE;
     font(cr, TITLE_PT, true);
     if (pg->title)
-        text_at(cr, MARGIN_L, 20.0, pg->title, 0.0);
+        y = wrapped(cr, pg->title, EDGE, right, y, TITLE_PT);
     font(cr, TICK_PT, false);
     if (pg->subtitle)
-        text_at(cr, MARGIN_L, 34.0, pg->subtitle, 0.0);
-    legend(cr, pg, LEGEND_Y);
-    double ph = (pg->height - HEAD_H - 8.0) / pg->npanels - PANEL_GAP;
-    for (int i = 0; i < pg->npanels; i++)
-        panel(cr, &pg->panels[i], MARGIN_L, HEAD_H + 8.0 + i * (ph + PANEL_GAP),
-              pg->width - MARGIN_L - MARGIN_R, ph);
+        y = wrapped(cr, pg->subtitle, EDGE, right, y - LINE * TITLE_PT + LINE * TICK_PT + 2.0,
+                    TICK_PT);
+    y = legend(cr, pg->legend, pg->nlegend, EDGE, right, y + 4.0, true) - LINE * LABEL_PT;
+    double top = y + 10.0, under[8] = {0}, room = pg->height - top - EDGE;
+    int np = pg->npanels < 8 ? pg->npanels : 8;
+    /* Under each panel its x labels, its own legend's lines, and a gap to the next. */
+    for (int i = 0; i < np; i++) {
+        const struct fig_panel *p = &pg->panels[i];
+        under[i] = GAP_X + (i + 1 < np ? GAP_PANEL : 0.0);
+        if (p->nlegend)
+            under[i] += legend(cr, p->legend, p->nlegend, EDGE, right, 0.0, false);
+        room -= under[i];
+    }
+    double ph = room / np, margin = 0.0;
+    for (int i = 0; i < np; i++)
+        margin = fmax(margin, ylabel_width(cr, &pg->panels[i], right - EDGE - 60.0, ph));
+    margin += LABEL_PT * LINE + 8.0;
+    for (int i = 0; i < np; i++) {
+        const struct fig_panel *p = &pg->panels[i];
+        panel(cr, p, EDGE + margin, top, right - EDGE - margin, ph, margin);
+        if (p->nlegend)
+            legend(cr, p->legend, p->nlegend, EDGE + margin, right, top + ph + GAP_X + LABEL_PT,
+                   true);
+        top += ph + under[i];
+    }
 }
 
 static void draw_page_of(cairo_t *cr, const void *page)
@@ -370,7 +399,8 @@ static void draw_page_of(cairo_t *cr, const void *page)
 
 int fig_write(FILE *fp, enum fig_format f, const struct fig_page *page)
 {
-    return fig_surface_write(fp, f, page->width, page->height, draw_page_of, page);
+    return fig_surface_write(fp, f, page->width, page->height, FIG_PAGE_SCALE, page->title,
+                             draw_page_of, page);
 }
 
 void fig_done(void)

@@ -26,10 +26,16 @@ enum fig_color {
 /* File formats, chosen by a file name's extension. */
 enum fig_format { FIG_FORMAT_NONE = -1, FIG_PNG, FIG_SVG, FIG_PDF };
 
-#define FIG_PNG_SCALE 2.0 /* pixels a point in a PNG figure */
+#define FIG_PNG_SCALE 2.0            /* pixels a point in X's picture of the screen */
+#define FIG_PAGE_SCALE (300.0 / 72.0) /* pixels a point in a report figure's PNG: 300 dpi */
+#define FIG_MM (72.0 / 25.4)          /* points a millimetre */
 
 /* The format path's extension names (.png, .svg, .pdf, any case), or FIG_FORMAT_NONE. */
 enum fig_format fig_format_of(const char *path);
+
+/* The colour of energy term i (kinetic, potential, dissipated, motor work, contact, and
+ * the balance's error), as the energy view draws them. */
+int fig_energy_color(int i);
 
 /* The red, green and blue (0..1) of colour c on a dark or a light background. */
 void fig_rgb(int c, bool dark, double rgb[3]);
@@ -43,18 +49,26 @@ struct fig_series {
     int color;         /* an enum fig_color */
     bool dashed;       /* dashed (the motor, a ghost) */
     bool markers;      /* a small circle at every point, part of the same stroke */
+    bool no_line;      /* markers only (points measured), no line between them */
+    double max_jump;   /* > 0: a step in y larger than this breaks the line (a phase that
+                        * wraps at +-180, or turns faster than the points can follow) */
 };
 
-/* One panel: axes, labels and lines. */
+struct fig_legend;
+
+/* One panel: axes, labels and lines, and a legend of its own under it (or none). */
 struct fig_panel {
     const char *xlabel, *ylabel;      /* with their units, e.g. "t (s)" */
     bool xlog, ylog;                  /* logarithmic axes */
     bool xfixed;                      /* x from xlo to xhi as given (rounded out to ticks) */
+    bool xwhole;                      /* x ticks on whole numbers only (masses) */
     double xlo, xhi;
     double ystep;                     /* > 0: y from ylo to yhi, ticks ystep apart */
     double ylo, yhi;
     const struct fig_series *series;
     int nseries;
+    const struct fig_legend *legend;  /* entries for this panel alone, or NULL */
+    int nlegend;
 };
 
 /* One legend entry. */
@@ -62,16 +76,18 @@ struct fig_legend {
     const char *text;
     int color;
     bool dashed;
+    bool dot;      /* a marker, not a stroke (points measured) */
 };
 
-/* A page: title (and a second line of settings), legend, panels stacked top to bottom. */
+/* A page: title (and the settings under it, wrapped), legend, panels stacked top to
+ * bottom. */
 struct fig_page {
     const char *title, *subtitle;
     const struct fig_legend *legend;
     int nlegend;
     const struct fig_panel *panels;
     int npanels;
-    double width, height; /* points (PNG: FIG_PNG_SCALE pixels each) */
+    double width, height; /* points (PNG: FIG_PAGE_SCALE pixels each) */
 };
 
 /* Draws page and writes it to fp in format f. Returns 0, or an errno value (ENOMEM, EIO,

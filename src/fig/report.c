@@ -169,28 +169,99 @@ void report_settings(const struct config *c, const struct model *m, char *buf, s
              ms, ks, cs, drive, integrator_name(c->integrator), c->dt);
 }
 
-/* Legend entries "mass 1" .. "mass N" (as many as a line takes), then extra. */
-static int mass_legend(struct fig_legend *lg, char (*text)[16], int n, int max)
+struct report_look report_look_of(const struct config *c, const char *subtitle)
+{
+    return (struct report_look){c->figure_title, subtitle, c->figure_w, c->figure_h};
+}
+
+/* The page for look with npanels panels: its title (def unless replaced) and size. */
+static struct fig_page page_of(const struct report_look *look, const char *def, int npanels)
+{
+    double w = look->w_mm > 0.0 ? look->w_mm : 160.0;
+    double h = look->h_mm > 0.0 ? look->h_mm : 100.0 + 50.0 * (npanels - 1);
+    return (struct fig_page){.title = look->title ? look->title : def,
+                             .subtitle = look->subtitle, .width = w * FIG_MM,
+                             .height = h * FIG_MM};
+}
+
+/* Legend entries "mass 1" .. "mass N", the first 10 of them (the colours repeat after
+ * that, and the last entry says so). text has room for 11. */
+static int mass_legend(struct fig_legend *lg, char (*text)[48], int n)
 {
     int k = 0;
-    for (int i = 0; i < n && k < max; i++, k++) {
+    for (int i = 0; i < n && i < 10; i++, k++) {
         snprintf(text[k], sizeof text[k], "mass %d", i + 1);
-        lg[k] = (struct fig_legend){text[k], FIG_MASS + i % 10, false};
+        lg[k] = (struct fig_legend){text[k], FIG_MASS + i % 10, false, false};
+    }
+    if (n > 10) {
+        snprintf(text[k], sizeof text[k], "masses 11–%d: the same colours again", n);
+        lg[k] = (struct fig_legend){text[k], FIG_GRID, false, false};
+        k++;
     }
     return k;
 }
 
+enum { E_TERMS = 6 }; /* kinetic, potential, dissipated, motor work, contact, error */
+
+int report_headless_series(int n, bool energy)
+{
+    return 3 * n + 1 + (energy ? E_TERMS : 0);
+}
+
+void report_headless_row(const struct sim *s, const double *a, bool energy,
+                         double start_balance, double *row)
+{
+    int n = sim_model(s)->n;
+    memcpy(row, sim_x(s), (size_t)n * sizeof *row);
+    memcpy(row + n, sim_v(s), (size_t)n * sizeof *row);
+    memcpy(row + 2 * n, a, (size_t)n * sizeof *row);
+    row[3 * n] = sim_end_position(s);
+    if (energy) {
+        struct energy e;
+        sim_energy(s, &e);
+        double *t = row + 3 * n + 1;
+        t[0] = e.kinetic, t[1] = e.potential, t[2] = e.dissipated, t[3] = e.motor_work;
+        t[4] = e.contact, t[5] = e.balance - start_balance;
+    }
+}
+
+/* The largest |value| series s of d holds. */
+static double largest(const struct report_data *d, int s)
+{
+    const double *xy;
+    int count = report_data_points(d, s, &xy);
+    double most = 0.0;
+    for (int k = 0; k < count; k++)
+        if (isfinite(xy[2 * k + 1]))
+            most = fmax(most, fabs(xy[2 * k + 1]));
+    return most;
+}
+
+/* The energy panel's series (from series first of d) and its own legend. */
+static void energy_panel(const struct report_data *d, int first, struct fig_series *s,
+                         struct fig_legend *lg, char *error_text, size_t len)
+{
+    static const char *const name[E_TERMS - 1] = {"kinetic", "potential", "dissipated",
+                                                  "motor work", "contact"};
+    for (int i = 0; i < E_TERMS; i++)
+        s[i] = line_of(d, first + i, fig_energy_color(i), i == E_TERMS - 1);
+    for (int i = 0; i < E_TERMS - 1; i++)
+        lg[i] = (struct fig_legend){name[i], fig_energy_color(i), false, false};
+    snprintf(error_text, len, "balance error (largest %.2g J)", largest(d, first + E_TERMS - 1));
+    lg[E_TERMS - 1] = (struct fig_legend){error_text, fig_energy_color(E_TERMS - 1), true, false};
+}
+
 int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, bool motor,
-                    double t_end, const char *subtitle)
+                    bool energy, double t0, double t_end, const struct report_look *look)
 {
     report_data_finish(d);
-    static const char *const ylabel[3] = {"displacement x (m)", "velocity v (m/s)",
-                                          "acceleration a (m/s²)"};
-    struct fig_series *s = malloc((size_t)(3 * n + 1) * sizeof *s);
+    static const char *const ylabel[4] = {"displacement x (m)", "velocity v (m/s)",
+                                          "acceleration a (m/s²)", "energy (J)"};
+    struct fig_series *s = malloc((size_t)(3 * n + 1 + E_TERMS) * sizeof *s);
     if (!s)
         return ENOMEM;
-    struct fig_panel p[3];
-    int k = 0;
+    struct fig_panel p[4];
+    int k = 0, np = energy ? 4 : 3;
     for (int q = 0; q < 3; q++) {
         int first = k;
         if (q == 0 && motor)
@@ -198,23 +269,31 @@ int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, b
         for (int i = 0; i < n; i++)
             s[k++] = line_of(d, q * n + i, FIG_MASS + i % 10, false);
         p[q] = (struct fig_panel){.xlabel = "t (s)", .ylabel = ylabel[q], .xfixed = true,
-                                  .xlo = 0.0, .xhi = t_end, .series = s + first,
+                                  .xlo = t0, .xhi = t_end, .series = s + first,
                                   .nseries = k - first};
     }
-    struct fig_legend lg[12];
-    char text[12][16];
-    int nl = mass_legend(lg, text, n, 11);
+    struct fig_legend lg[12], elg[E_TERMS];
+    char text[11][48], error_text[64];
+    int nl = mass_legend(lg, text, n);
     if (motor)
-        lg[nl++] = (struct fig_legend){"motor u(t)", FIG_MOTOR, true};
-    struct fig_page pg = {"springsim --headless: displacement, velocity, acceleration",
-                          subtitle, lg, nl, p, 3, 720.0, 860.0};
+        lg[nl++] = (struct fig_legend){"motor u(t)", FIG_MOTOR, true, false};
+    if (energy) {
+        energy_panel(d, 3 * n + 1, s + k, elg, error_text, sizeof error_text);
+        p[3] = (struct fig_panel){.xlabel = "t (s)", .ylabel = ylabel[3], .xfixed = true,
+                                  .xlo = t0, .xhi = t_end, .series = s + k,
+                                  .nseries = E_TERMS, .legend = elg, .nlegend = E_TERMS};
+    }
+    struct fig_page pg = page_of(look, energy ? "Displacement, velocity, acceleration and "
+                                                "energy"
+                                              : "Displacement, velocity and acceleration", np);
+    pg.legend = lg, pg.nlegend = nl, pg.panels = p, pg.npanels = np;
     int e = fig_write(fp, f, &pg);
     free(s);
     return e;
 }
 
 int report_modes(FILE *fp, enum fig_format f, const struct model *m, const double *freq,
-                 const double *shapes, const char *subtitle)
+                 const double *shapes, const struct report_look *look)
 {
     int n = m->n, shown = n < 10 ? n : 10, fixed = m->boundary != BOUNDARY_FREE;
     size_t w = (size_t)n + 2;
@@ -224,6 +303,10 @@ int report_modes(FILE *fp, enum fig_format f, const struct model *m, const doubl
     char text[10][40];
     if (!xy)
         return ENOMEM;
+    /* One number of decimals for every frequency: four digits of the lowest. */
+    double low = freq[0] > 0.0 ? freq[0] : 1.0;
+    int dec = 3 - (int)floor(log10(low));
+    dec = dec < 0 ? 0 : dec > 6 ? 6 : dec;
     for (int j = 0; j < shown; j++) {
         double *x = xy + 2 * w * (size_t)j, *y = x + w;
         x[0] = 0.0, y[0] = 0.0; /* the left wall */
@@ -232,42 +315,44 @@ int report_modes(FILE *fp, enum fig_format f, const struct model *m, const doubl
         x[n + 1] = n + 1, y[n + 1] = 0.0; /* the right end, held for the modes */
         s[j] = (struct fig_series){.x = x, .y = y, .stride = 1, .count = n + 1 + fixed,
                                    .color = FIG_MASS + j % 10, .markers = n <= 40};
-        snprintf(text[j], sizeof text[j], "mode %d: %.4g Hz", j + 1, freq[j]);
-        lg[j] = (struct fig_legend){text[j], FIG_MASS + j % 10, false};
+        snprintf(text[j], sizeof text[j], "mode %d: %.*f Hz", j + 1, dec, freq[j]);
+        lg[j] = (struct fig_legend){text[j], FIG_MASS + j % 10, false, false};
     }
-    char title[96];
-    snprintf(title, sizeof title, "springsim --modes: the shapes of the %s%d modes",
-             shown < n ? "lowest " : "", shown);
     struct fig_panel p = {.xlabel = "mass (0: the left wall)",
-                          .ylabel = "shape (largest |x| = 1)", .xfixed = true, .xlo = 0.0,
-                          .xhi = n + 1, .series = s, .nseries = shown};
-    struct fig_page pg = {title, subtitle, lg, shown, &p, 1, 720.0, 480.0};
+                          .ylabel = "shape (largest |x| = 1)", .xfixed = true, .xwhole = true,
+                          .xlo = 0.0, .xhi = n + 1, .series = s, .nseries = shown};
+    char title[64];
+    snprintf(title, sizeof title, "Mode shapes%s", shown < n ? ": the lowest ten" : "");
+    struct fig_page pg = page_of(look, title, 1);
+    pg.legend = lg, pg.nlegend = shown, pg.panels = &p, pg.npanels = 1;
     int e = fig_write(fp, f, &pg);
     free(xy);
     return e;
 }
 
 int report_sweep(FILE *fp, enum fig_format f, struct report_data *d, int n,
-                 const char *subtitle)
+                 const struct report_look *look)
 {
     report_data_finish(d);
     struct fig_series *s = malloc((size_t)(2 * n) * sizeof *s);
     if (!s)
         return ENOMEM;
-    for (int i = 0; i < 2 * n; i++)
+    for (int i = 0; i < 2 * n; i++) {
         s[i] = line_of(d, i, FIG_MASS + i % n % 10, false);
+        s[i].max_jump = i >= n ? 90.0 : 0.0;
+    }
     struct fig_panel p[2] = {
         {.xlabel = "motor frequency f (Hz)", .ylabel = "amplitude (m)", .xlog = true,
          .ylog = true, .series = s, .nseries = n},
-        {.xlabel = "motor frequency f (Hz)", .ylabel = "phase (degrees; a lag is negative)",
+        {.xlabel = "motor frequency f (Hz)", .ylabel = "phase (°; a lag is negative)",
          .xlog = true, .ylo = -180.0, .yhi = 180.0, .ystep = 90.0, .series = s + n,
          .nseries = n},
     };
-    struct fig_legend lg[12];
-    char text[12][16];
-    int nl = mass_legend(lg, text, n, 12);
-    struct fig_page pg = {"springsim --sweep: steady-state amplitude and phase", subtitle, lg,
-                          nl, p, 2, 720.0, 700.0};
+    struct fig_legend lg[11];
+    char text[11][48];
+    int nl = mass_legend(lg, text, n);
+    struct fig_page pg = page_of(look, "Frequency response", 2);
+    pg.legend = lg, pg.nlegend = nl, pg.panels = p, pg.npanels = 2;
     int e = fig_write(fp, f, &pg);
     free(s);
     return e;

@@ -10,6 +10,7 @@
 
 #include "core/config.h"
 #include "core/model.h"
+#include "core/sim.h"
 #include "figure.h"
 
 #define REPORT_POINTS 2000000 /* (x, y) pairs a run's figure keeps in all, at most */
@@ -38,21 +39,44 @@ void report_data_finish(struct report_data *d);
 /* The points kept of series s: (x, y) pairs at *xy; returns how many. */
 int report_data_points(const struct report_data *d, int s, const double **xy);
 
+/* How a figure looks beyond its data: its title (NULL: the one saying what it shows),
+ * the settings under it, and its size (0: 160 mm wide, 100 mm high for one panel and 50
+ * mm more for each panel stacked under it). */
+struct report_look {
+    const char *title;
+    const char *subtitle;
+    double w_mm, h_mm;
+};
+
+/* The look --figure, --figure-title and --figure-size ask for, with subtitle. */
+struct report_look report_look_of(const struct config *c, const char *subtitle);
+
 /* The settings of a run in one line, for a figure's second title line. */
 void report_settings(const struct config *c, const struct model *m, char *buf, size_t len);
 
-/* A --headless figure from d (series x1..xN, v1..vN, a1..aN, motor) over [0, t_end].
- * Returns 0 or an errno value. */
-int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n,
-                    bool motor, double t_end, const char *subtitle);
+/* Series a --headless figure's rows hold for n masses, with energy or not. */
+int report_headless_series(int n, bool energy);
+
+/* The figure's row for the state of s (accelerations a) into row (report_headless_series
+ * doubles): x1..xN, v1..vN, a1..aN, motor and with energy the five terms and the
+ * balance's change since the start (start_balance). */
+void report_headless_row(const struct sim *s, const double *a, bool energy,
+                         double start_balance, double *row);
+
+/* A --headless figure from d (the rows above) over [t0, t_end]: the motor only where
+ * it moves, the energy panel with energy. Returns 0 or an errno value. */
+int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, bool motor,
+                    bool energy, double t0, double t_end, const struct report_look *look);
 
 /* A --modes figure: the lowest modes' shapes (freq[j] Hz, shapes[j * n + i]) over the
  * masses, the left wall's zero (and the right end's, where it is fixed) included. */
 int report_modes(FILE *fp, enum fig_format f, const struct model *m, const double *freq,
-                 const double *shapes, const char *subtitle);
+                 const double *shapes, const struct report_look *look);
 
-/* A --sweep figure from d (series amp1..ampN, phase1..phaseN against frequency). */
+/* A --sweep figure from d (series amp1..ampN, phase1..phaseN against frequency): the
+ * phase's line broken where it wraps at +-180 or turns by more than 90 degrees between
+ * two points. */
 int report_sweep(FILE *fp, enum fig_format f, struct report_data *d, int n,
-                 const char *subtitle);
+                 const struct report_look *look);
 
 #endif

@@ -13,21 +13,24 @@ static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned
                                                       : CAIRO_STATUS_WRITE_ERROR;
 }
 
-int fig_surface_write(FILE *fp, enum fig_format f, double w, double h,
-                      void (*draw)(cairo_t *cr, const void *arg), const void *arg)
+int fig_surface_write(FILE *fp, enum fig_format f, double w, double h, double scale,
+                      const char *title, void (*draw)(cairo_t *cr, const void *arg),
+                      const void *arg)
 {
     cairo_surface_t *s;
     errno = 0;
     if (f == FIG_PNG)
-        s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)lround(w * FIG_PNG_SCALE),
-                                       (int)lround(h * FIG_PNG_SCALE));
+        s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)lround(w * scale),
+                                       (int)lround(h * scale));
     else if (f == FIG_SVG)
         s = cairo_svg_surface_create_for_stream(to_file, fp, w, h);
     else
         s = cairo_pdf_surface_create_for_stream(to_file, fp, w, h);
+    if (f == FIG_PDF && title)
+        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_TITLE, title);
     cairo_t *cr = cairo_create(s);
     if (f == FIG_PNG)
-        cairo_scale(cr, FIG_PNG_SCALE, FIG_PNG_SCALE);
+        cairo_scale(cr, scale, scale);
     draw(cr, arg);
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);

@@ -129,5 +129,5 @@ int fig_view_write(FILE *fp, enum fig_format f, const struct fig_chart *c, int n
         x0 = y0 = 0, x1 = y1 = 1;
     double w = (x1 - x0) * CW, h = (y1 - y0) * CH;
     struct view_art art = {c, n, x0, y0};
-    return fig_surface_write(fp, f, w, h, draw_view, &art);
+    return fig_surface_write(fp, f, w, h, FIG_PNG_SCALE, NULL, draw_view, &art);
 }

@@ -19,6 +19,20 @@
   figcheck.py gridrows FILE.svg R,G,B      the page y of every horizontal segment of the
                                            paths in that colour (gridlines), one a line
   figcheck.py png FILE.png                 "WIDTH HEIGHT" from a well-formed PNG
+  figcheck.py phasejump FILE.svg R,G,B     the largest step, in degrees, between two points
+                                           joined by a line in the second curve of that
+                                           colour (the phase panel: the last five gridlines,
+                                           of 90 degrees each, give the scale)
+  figcheck.py fills FILE.svg R,G,B         number of filled paths (markers) in that colour
+  figcheck.py xticks FILE.pdf WORD         the numbers on the row above each x axis title
+                                           holding WORD, one line per panel, left to right
+  figcheck.py yticks FILE.pdf WORD         the numbers right-aligned left of each panel
+                                           (the panels found by their x axis titles), one
+                                           line per panel, top to bottom
+  figcheck.py textsize FILE.pdf            the smallest text's size in points (the scale of
+                                           the text matrices in the page's content)
+  figcheck.py text FILE.pdf                the words, one line of the page a line
+The PDF's words come from pdftotext -bbox (poppler-utils).
 The SVG is parsed as XML; colours are cairo's rgb(p%,q%,r%) or rgb(r,g,b)."""
 import csv
 import re
@@ -116,10 +130,100 @@ def png_size(path):
     return size
 
 
+def pdf_words(path):
+    """(xMin, yMin, xMax, yMax, text) of every word of the PDF's first page."""
+    import subprocess
+    out = subprocess.run(['pdftotext', '-bbox', path, '-'], capture_output=True, check=True,
+                         text=True).stdout
+    words = []
+    for m in re.finditer(r'<word xMin="([^"]*)" yMin="([^"]*)" xMax="([^"]*)" yMax="([^"]*)">'
+                         r'([^<]*)</word>', out):
+        words.append(tuple(float(m.group(i)) for i in range(1, 5)) + (m.group(5),))
+    return words
+
+
+def is_number(t):
+    return re.fullmatch(r'-?[0-9.]+(e-?[0-9]+)?', t) is not None
+
+
+def y_column(nums):
+    """The right edge the y tick labels are aligned on: the one most numbers share."""
+    return max((w[2] for w in nums), key=lambda x: sum(1 for v in nums if abs(v[2] - x) < 0.5))
+
+
+def axis_titles(words, word):
+    """The top of each x axis title holding word, top to bottom (one per panel)."""
+    return sorted(set(round(w[1], 2) for w in words if w[4] == word))
+
+
+def pdf_command(cmd, path, arg):
+    words = pdf_words(path)
+    if cmd == 'textsize':
+        # The size of every run of text: its text matrix's scale (cairo sets the font at
+        # size 1 and scales by Tm, under a page transform of scale 1).
+        data = open(path, 'rb').read()
+        sizes = []
+        for m in re.finditer(rb'stream\r?\n(.*?)endstream', data, re.S):
+            try:
+                body = zlib.decompress(m.group(1)).decode('latin1')
+            except zlib.error:
+                continue
+            for t in re.finditer(r'(-?[0-9.]+) (-?[0-9.]+) (-?[0-9.]+) (-?[0-9.]+) '
+                                 r'-?[0-9.]+ -?[0-9.]+ Tm', body):
+                a, b = float(t.group(1)), float(t.group(2))
+                sizes.append((a * a + b * b) ** 0.5)
+        print('%.2f' % min(sizes))
+    elif cmd == 'text':
+        rows = {}
+        for w in words:
+            rows.setdefault(round(w[1], 1), []).append(w)
+        for y in sorted(rows):
+            print(' '.join(w[4] for w in sorted(rows[y])))
+    elif cmd == 'xticks':
+        nums = [w for w in words if is_number(w[4])]
+        right = y_column(nums)
+        for top in axis_titles(words, arg):
+            row = sorted((w for w in nums if top - 16 < w[3] <= top + 0.5 and
+                          abs(w[2] - right) >= 1.0), key=lambda w: w[0])
+            print(' '.join(w[4] for w in row))
+    elif cmd == 'yticks':
+        above = -1e9
+        nums = [w for w in words if is_number(w[4])]
+        right = y_column(nums)
+        for top in axis_titles(words, arg):
+            col = sorted((w for w in nums if abs(w[2] - right) < 1.0 and above < w[1] < top - 16),
+                         key=lambda w: w[1])
+            print(' '.join(w[4] for w in col))
+            above = top
+
+
+def sub_paths(d):
+    """Every sub-path of a path's M and L commands (a line broken into pieces)."""
+    toks = re.findall(r'[MLCZmlcz]|-?[0-9.]+(?:e-?[0-9]+)?', d)
+    out, cmd, nums = [], None, []
+    for t in toks:
+        if t.isalpha():
+            cmd, nums = t, []
+            if t == 'M':
+                out.append([])
+            continue
+        nums.append(float(t))
+        if cmd in ('M', 'L') and len(nums) == 2:
+            out[-1].append(tuple(nums))
+            nums = []
+        elif cmd == 'C' and len(nums) == 6:
+            out[-1].append(tuple(nums[4:]))
+            nums = []
+    return out
+
+
 def main():
     cmd = sys.argv[1]
     if cmd == 'png':
         print('%d %d' % png_size(sys.argv[2]))
+        return
+    if cmd in ('textsize', 'text', 'xticks', 'yticks'):
+        pdf_command(cmd, sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None)
         return
     rgb = tuple(int(v) for v in sys.argv[3].split(','))
     found = curves(sys.argv[2], rgb)
@@ -137,6 +241,41 @@ def main():
                     ys.add(round(a[1], 3))
         for y in sorted(ys):
             print(y)
+        return
+    if cmd == 'fills':
+        root = ET.parse(sys.argv[2]).getroot()
+        n = 0
+        for el in root.iter(SVG + 'path'):
+            style = el.get('style', '') + ';fill:' + el.get('fill', '')
+            m = re.search(r'fill:\s*rgb\(([^)]*)\)', style)
+            if m:
+                parts = [p.strip() for p in m.group(1).split(',')]
+                c = tuple(round(float(p[:-1]) * 2.55) if p.endswith('%') else int(p)
+                          for p in parts)
+                n += c == rgb and 'stroke:' not in el.get('style', '').replace('stroke:none', '')
+        print(n)
+        return
+    if cmd == 'phasejump':
+        root = ET.parse(sys.argv[2]).getroot()
+        grid = tuple(int(v) for v in sys.argv[4].split(','))
+        ys = []
+        for el in root.iter(SVG + 'path'):
+            if stroke_of(el) != grid:
+                continue
+            for sp in sub_paths(el.get('d', '')):
+                pts = transformed(el, sp)
+                if len(pts) == 2 and abs(pts[0][1] - pts[1][1]) < 1e-6:
+                    ys.append(pts[0][1])
+        rows = sorted(set(round(y, 3) for y in ys))[-5:]
+        deg = 90.0 / ((rows[-1] - rows[0]) / 4.0)
+        lines = [el for el in root.iter(SVG + 'path') if stroke_of(el) == rgb]
+        el = lines[-1]
+        jump = 0.0
+        for sp in sub_paths(el.get('d', '')):
+            pts = transformed(el, sp)
+            for a, b in zip(pts, pts[1:]):
+                jump = max(jump, abs(a[1] - b[1]) * deg)
+        print('%.1f' % jump)
         return
     if cmd == 'curves':
         print(len(found))
