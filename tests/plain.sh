@@ -3,7 +3,9 @@
 # lines hold no escape sequence and, in the C locale, no byte >= 0x80; every command is
 # answered with one line, bad ones with one line saying what is allowed; status lines come
 # every --plain-every simulated seconds; contacts, peaks and the drive on a natural
-# frequency are told when they happen, at the times and values physics says; the end of
+# frequency are told when they happen, at the times and values physics says (a free
+# decay's falling peaks too); `measure` names the motion (free decay, driven steady
+# state, transient) and says a zeta only for a decay; the end of
 # input, a closed standard output and SIGTERM end it. Run from the repository root as
 # `sh tests/plain.sh`, SPRINGSIM naming the binary. Ends with "plain: N passed, M failed".
 NAME=plain
@@ -219,6 +221,48 @@ line=$(grep 'peak:' "$out")
 ok=$(echo "$line" | awk '{ t = substr($2, 3); a = $8 } /mass 1 \|x\| = / && t >= 0.69 && t <= 0.72 && a >= 0.2999 && a <= 0.3000 { print "yes" }')
 if [ "$peaks" -eq 1 ] && [ "$ok" = yes ]; then pass; else
     fail "free vibration from 0.3 m: expected one peak, mass 1 |x| = 0.3000 m at t = 0.70; got $peaks: $line"
+fi
+
+# ---- a free decay's falling peaks (issue 27): from 0.5 m, c = 0.1, k_eff = 2k = 20 ----
+# zeta = c / (2 sqrt(2k m)) = 0.01118; the turning points at t = k pi / w_d have
+# |x| = 0.5 exp(-zeta w t): told as they fall 5 % or more, never "the largest since t = 0"
+# (it said so of the first swing back, 0.4835 m, below the start's 0.5 m)
+feed 'run 12\nmeasure\n' -n 1 --boundary wall --damping 0.1 --amplitude 0 --x0 0.5
+bad=$(grep 'peak:' "$out" | awk 'BEGIN { z = 0.1 / (2 * sqrt(20)); w = sqrt(20); pi = atan2(0, -1) }
+    { t = substr($2, 3) + 0; a = $8 + 0; n++
+      if ($0 !~ /, falling from /) print "not falling:", $0
+      env = 0.5 * exp(-z * w * t); if ((a - env) ^ 2 > (0.002 * env) ^ 2) print "off the envelope", env ":", $0 }
+    END { if (n < 5) print n " peaks told" }')
+if [ -z "$bad" ] && ! grep -q 'the largest since' "$out"; then pass; else
+    fail "free decay from 0.5 m: expected its falling peaks on 0.5 exp(-zeta w t), none the largest; $bad; $(grep 'peak:' "$out" | head -n 3 | tr '\n' '|')"
+fi
+# measure names it a free decay and its zeta within 0.5 % of the theory's
+z=$(sed -n 's/^ok measure: .*; free decay (peaks falling): delta [0-9.e-]*, zeta \([0-9.e-]*\) (theory, mode 1: zeta 0.0111803)$/\1/p' "$out")
+if [ -n "$z" ] && awk -v z="$z" 'BEGIN { w = 0.1 / (2 * sqrt(20)); exit !((z - w) ^ 2 <= (0.005 * w) ^ 2) }'; then pass; else
+    fail "free decay: measure should name a free decay with zeta within 0.5 % of 0.0111803; $(grep measure "$out")"
+fi
+
+# ---- measure on driven motion: no damping ratio (issue 27) ----
+# -p resonance after 30 s is still growing (2m/c = 20 s, to 2.24 m): transient; -p
+# beating never settles (no damping): transient; neither says a zeta (it said
+# "zeta -0.0545" beside the theory's 0 on -p beating)
+for p in resonance beating; do
+    feed 'run 30\nmeasure\n' -p $p
+    line=$(grep '^ok measure:' "$out")
+    case $line in
+    *"transient: not a free decay, not steady (peaks "*) case $line in *zeta*) fail "-p $p, run 30: measure says a zeta: $line" ;; *) pass ;; esac ;;
+    *) fail "-p $p, run 30: measure should name the motion transient; $line" ;;
+    esac
+done
+# the default chain at 1 Hz after 200 s: a driven steady state, beside the theory's
+# X / A at 1 Hz (springsim --sweep's), no zeta
+feed 'run 200\nmeasure 2\n'
+line=$(grep '^ok measure:' "$out")
+want=$("$SPRINGSIM" --sweep 1:2:2 | awk -F, 'NR == 2 { print $3 }')
+got=$(echo "$line" | sed -n 's/.*driven steady state (swings level within 1 % over [0-9]* drive periods): amplitude \([0-9.e-]*\) m, .*/\1/p')
+if [ -n "$got" ] && [ -n "$want" ] && awk -v g="$got" -v w="$want" 'BEGIN { exit !((g - w) ^ 2 <= (1e-3 * w) ^ 2) }' &&
+    ! echo "$line" | grep -q zeta; then pass; else
+    fail "default chain, run 200: measure 2 should name a driven steady state of amplitude $want m (--sweep) within 0.1 %, no zeta; $line"
 fi
 
 # ---- the drive coming onto a natural frequency (within 2 %, as the modes view) ----

@@ -1,7 +1,7 @@
 /* test_axis.c: axes on whole cells. Every gap between ticks is the same whole number of
  * cells for every size, ticks are exact multiples of a 1-2-5 step on the middle of their
  * cells, labels fit 7 columns, read back as the tick's value and never repeat, and a
- * rolling time axis has 0 s on its last cell. */
+ * rolling time axis has the latest time on its last cell. */
 #include "testutil.h"
 
 #include <stdbool.h>
@@ -19,7 +19,7 @@ static bool one_two_five(double step)
 
 /* Checks everything an axis fitted to [lo, hi] promises. */
 static void check_layout(const struct axis *a, double lo, double hi, int cells, int dpc,
-                         int min_spacing, bool anchored)
+                         int min_spacing)
 {
     assert_int_equal(a->cells, cells);
     assert_int_equal(a->dpc, dpc);
@@ -41,13 +41,10 @@ static void check_layout(const struct axis *a, double lo, double hi, int cells, 
     if (cells - 1 >= 2 * min_spacing)
         assert_true(a->spacing >= min_spacing);
     /* No room for a wider gap: the leftover cells are fewer than the intervals, and they
-     * go to the left (anchored) or half to each side. */
+     * go half to each side. */
     int leftover = cells - 1 - a->intervals * a->spacing;
     assert_true(leftover < a->intervals);
-    if (anchored)
-        assert_int_equal(last, cells - 1);
-    else
-        assert_int_equal(a->first, leftover / 2);
+    assert_int_equal(a->first, leftover / 2);
 }
 
 static const double ranges[][2] = {
@@ -66,9 +63,7 @@ static void spacing_exact(void **state)
                     struct axis a;
                     double lo = ranges[r][0], hi = ranges[r][1];
                     axis_fit(&a, lo, hi, mt, cells, 4, ms);
-                    check_layout(&a, lo, hi, cells, 4, ms, false);
-                    axis_fit_anchored(&a, lo, hi, mt, cells, 2, 2 * ms + 2);
-                    check_layout(&a, lo, hi, cells, 2, 2 * ms + 2, true);
+                    check_layout(&a, lo, hi, cells, 4, ms);
                 }
 }
 
@@ -244,37 +239,96 @@ static void label_forms(void **state)
     assert_string_equal(tiny, "1.");
 }
 
-/* A rolling time axis, -window .. 0 s: 0 s on the last cell (the newest sample on the
- * last dot column), older times filling the leftover cells on the left. */
+/* Checks everything a rolling time axis promises for the window ending at end. */
+static void check_rolling(const struct axis *a, double end, double win, int cells, int gap)
+{
+    assert_int_equal(a->cells, cells);
+    assert_true(one_two_five(a->step));
+    assert_true(a->spacing >= 1);
+    if (cells - 1 >= 2 * gap)
+        assert_true(a->spacing >= gap);
+    /* The latest time on the last cell (its two dot columns; on its left edge it may
+     * round to the dot before), or, until time fills the axis, 0 on the first cell's
+     * middle. */
+    if (axis_value(a, 0.5) > 1e-9 * win) {
+        int dot_end = (int)floor(axis_dot(a, end) + 0.5);
+        assert_true(dot_end >= 2 * cells - 3 && dot_end <= 2 * cells - 1);
+        assert_true(axis_dot(a, end) >= 2 * cells - 2.5 - 1e-6);
+    } else {
+        assert_close(axis_dot(a, 0.0), 0.5, 1e-9);
+        assert_true(axis_dot(a, end) <= 2 * cells - 0.5);
+    }
+    /* The whole window shown. */
+    assert_true(axis_value(a, -0.5) <= fmax(end - win, 0.0) + 1e-9 * win);
+    assert_true(axis_value(a, 2 * cells - 0.5) >= fmax(end, win) - 1e-9 * win);
+    /* Ticks: whole multiples of the step, each on the middle of its cell, spacing apart,
+     * all of those that fall on the axis and none before t = 0. */
+    double q = a->lo / a->step;
+    assert_close(q, round(q), 1e-9 * fmax(1.0, fabs(q)));
+    assert_true(a->lo >= -1e-9 * a->step);
+    int last = a->first + a->intervals * a->spacing;
+    /* (A window on few cells may hold one tick: the axis's second is then past its end.) */
+    assert_true(a->first >= 0 && (last <= cells - 1 || (a->intervals == 1 &&
+                                                         a->first <= cells - 1)));
+    assert_true(a->first < a->spacing);
+    assert_true(last + a->spacing > cells - 1);
+    for (int k = 0; k <= a->intervals; k++) {
+        double want = (a->first + k * a->spacing) * 2 + 0.5;
+        assert_close(axis_dot(a, a->lo + k * a->step), want, 1e-9 * want + 1e-9);
+        /* Each label reads back as its tick's absolute time. */
+        char b[AXIS_LABEL_MAX + 1];
+        axis_label(a, k, b, sizeof b);
+        assert_close(strtod(b, NULL), a->lo + k * a->step, 1e-9 * fabs(a->lo) + 1e-12);
+    }
+}
+
+/* A rolling time axis in absolute time: the latest time on the last cell, the whole
+ * window shown, ticks on whole cells labelled with their absolute time; as time goes on
+ * the axis moves by whole cells, so a time already drawn stays on its dot columns'
+ * pattern (its dot moves by 2 at a time). */
 static void time_axis(void **state)
 {
     (void)state;
     static const double windows[] = {1, 2, 5, 10, 20, 30, 60};
+    static const double ends[] = {0.0, 0.37, 3.7, 10.0, 25.0, 25.3, 1234.56, 99999.9};
     for (size_t w = 0; w < sizeof windows / sizeof windows[0]; w++)
-        for (int cells = 10; cells <= 200; cells++)
-            for (int mt = 2; mt <= 8; mt++) {
-                struct axis a;
-                double win = windows[w];
-                axis_fit_anchored(&a, -win, 0.0, mt, cells, 2, 5);
-                check_layout(&a, -win, 0.0, cells, 2, 5, true);
-                double last = a.lo + a.intervals * a.step;
-                assert_true(fabs(last) < 1e-9 * a.step);
-                assert_int_equal(a.first + a.intervals * a.spacing, cells - 1);
-                assert_int_equal((int)floor(axis_dot(&a, 0.0) + 0.5), 2 * cells - 1);
-                assert_true(axis_value(&a, -0.5) <= -win);
-                char b[AXIS_LABEL_MAX + 1];
-                axis_label(&a, a.intervals, b, sizeof b);
-                assert_true(strcmp(b, "0") == 0 || strcmp(b, "0.0") == 0);
-            }
-    /* 10 s on 40 columns, 5 ticks at most: -10 .. 0 by 2, 7 columns apart, the leftover
-     * 4 on the left. */
+        for (size_t e = 0; e < sizeof ends / sizeof ends[0]; e++)
+            for (int cells = 10; cells <= 200; cells += 7)
+                for (int mt = 2; mt <= 8; mt++) {
+                    struct axis a;
+                    axis_fit_rolling(&a, ends[e], windows[w], mt, cells, 2, 5);
+                    check_rolling(&a, ends[e], windows[w], cells, 5);
+                }
+    /* 10 s on 40 columns at t = 25 s: 14 .. 24 by 2, 7 columns apart, the latest time
+     * (25 s) on the last cell. */
     struct axis a;
-    axis_fit_anchored(&a, -10.0, 0.0, 5, 40, 2, 4);
-    assert_close(a.lo, -10.0, 1e-12);
+    axis_fit_rolling(&a, 25.0, 10.0, 5, 40, 2, 4);
+    assert_close(a.lo, 14.0, 1e-12);
     assert_close(a.step, 2.0, 1e-12);
     assert_int_equal(a.intervals, 5);
     assert_int_equal(a.spacing, 7);
-    assert_int_equal(a.first, 4);
+    char b[AXIS_LABEL_MAX + 1];
+    axis_label(&a, a.intervals, b, sizeof b);
+    assert_string_equal(b, "24");
+    /* Before a window has passed: 0 .. 10 s and the leftover cells (4 of 2/7 s) on the
+     * right, 0 on the first cell. */
+    axis_fit_rolling(&a, 3.2, 10.0, 5, 40, 2, 4);
+    assert_close(a.lo, 0.0, 1e-12);
+    assert_int_equal(a.first, 0);
+    assert_close(axis_value(&a, 2 * 40 - 1.5), 39 * 2.0 / 7, 1e-12);
+    /* Time going on in steps of 0.01 s: t = 30 s moves by whole cells, never back. */
+    double last = -1.0;
+    for (int n = 3000; n <= 4000; n++) {
+        axis_fit_rolling(&a, n * 0.01, 10.0, 5, 40, 2, 4);
+        double d = axis_dot(&a, 30.0);
+        assert_close(d - 2 * floor(d / 2), 0.5, 1e-6);
+        assert_true(last < 0.0 || d <= last + 1e-9);
+        last = d;
+    }
+    /* Times past 10^5 s: the step widens until the plain labels fit 7 columns. */
+    axis_fit_rolling(&a, 123456.7, 1.0, 5, 40, 2, 4);
+    assert_true(axis_label_width(&a) <= AXIS_LABEL_MAX);
+    assert_true(a.step >= 1.0);
 }
 
 int main(void)

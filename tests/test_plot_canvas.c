@@ -210,20 +210,21 @@ static void trace_band(void **state)
     canvas_free(c);
 }
 
-/* A rolling window on a fitted time axis: the newest sample on the last dot column. */
+/* A rolling window on a fitted time axis in absolute time: the newest sample (100 s, on a
+ * whole cell of 2/7 s) on the last dot column. */
 static void trace_rolling(void **state)
 {
     (void)state;
     struct axis xa, ya;
-    axis_fit_anchored(&xa, -10.0, 0.0, 5, 40, 2, 4);
+    axis_fit_rolling(&xa, 100.0, 10.0, 5, 40, 2, 4);
     axis_fit(&ya, -1.0, 1.0, 4, 10, 4, 2);
     struct canvas *c = canvas_new(40, 10);
     double t[2] = {95.0, 100.0}, y[2] = {0.0, 0.0};
-    plot_trace(c, t, y, 2, 1, 100.0, &xa, &ya, false, 1);
+    plot_trace(c, t, y, 2, 1, 0.0, &xa, &ya, false, 1);
     int row = 39 - (int)floor(axis_dot(&ya, 0.0) + 0.5);
     assert_true(dot(c, 79, row));
-    assert_true(dot(c, (int)floor(axis_dot(&xa, -5.0) + 0.5), row));
-    assert_int_equal(dots(c), 79 - (int)floor(axis_dot(&xa, -5.0) + 0.5) + 1);
+    assert_true(dot(c, (int)floor(axis_dot(&xa, 95.0) + 0.5), row));
+    assert_int_equal(dots(c), 79 - (int)floor(axis_dot(&xa, 95.0) + 0.5) + 1);
     canvas_free(c);
 }
 

@@ -3,7 +3,9 @@
  * x0 = 0.3 m at rest its one peak is 0.3 m at T/2; thrown at the left wall it touches it
  * when (v0/w) sin(wt) = -(L/2 - b/2); driven at resonance with damping c, its swing grows
  * to kA/(cw) and the peaks told stop growing there; the drive is on the natural frequency
- * within 2 % and not at 3 %. And the commands of the plain mode (app/command.c): a refused
+ * within 2 % and not at 3 %. Released from 0.5 m with damping c, its turning points are
+ * at t = k pi / w_d with |x| = 0.5 e^(-zeta w t): the peaks told fall, none the largest.
+ * And the commands of the plain mode (app/command.c): a refused
  * one changes nothing and says why in one line. */
 #include <math.h>
 #include <setjmp.h>
@@ -26,6 +28,7 @@
 /* What the events said. */
 struct heard {
     int peaks, contacts, resonances;
+    int falling, largest;                   /* peaks told as falling, as the largest */
     double peak_t[64], peak_x[64];
     double contact_t[16];
     char contact[16][80];
@@ -42,6 +45,8 @@ static void hear(void *ctx, const char *event)
     if (sscanf(event, "peak: mass 1 |x| = %lf m", &x) == 1 && h->peaks < 64) {
         h->peak_t[h->peaks] = t;
         h->peak_x[h->peaks++] = x;
+        h->falling += strstr(event, ", falling from ") != NULL;
+        h->largest += strstr(event, ", the largest since t = 0") != NULL;
     } else if (strncmp(event, "contact: ", 9) == 0 && h->contacts < 16) {
         h->contact_t[h->contacts] = t;
         snprintf(h->contact[h->contacts++], sizeof h->contact[0], "%s", event + 9);
@@ -91,6 +96,36 @@ static void one_peak_in_free_vibration(void **state)
     watch_look(&w, &app, hear, &h);
     run(&app, &w, &h, 1.0);
     assert_int_equal(h.peaks, 2);
+    app_free(&app);
+}
+
+/* A free decay from 0.5 m (c = 0.1: zeta = c / (2 sqrt(2k m)) = 0.0112): its falling
+ * peaks are told, each 5 % or more below the one before (the start the first), on the
+ * envelope 0.5 e^(-zeta w t); none is "the largest since t = 0" (it said so of 0.46 m). */
+static void falling_peaks_of_a_free_decay(void **state)
+{
+    (void)state;
+    static struct app app;
+    static const char *const opts[] = {"masses", "1", "damping", "0.1", "amplitude", "0",
+                                       "x0", "0.5", "no-collisions", NULL, NULL};
+    one_mass(&app, opts);
+    struct watch w;
+    struct heard h = {.app = &app};
+    watch_init(&w, &app);
+    run(&app, &w, &h, 20.0);
+    double zeta = 0.1 / (2.0 * sqrt(2.0 * K * M)), wd = OMEGA * sqrt(1.0 - zeta * zeta);
+    assert_true(h.peaks >= 10);
+    assert_int_equal(h.falling, h.peaks);
+    assert_int_equal(h.largest, 0);
+    double before = 0.5;
+    for (int i = 0; i < h.peaks; i++) {
+        double tk = round(h.peak_t[i] * wd / M_PI) * M_PI / wd;
+        assert_true(fabs(h.peak_t[i] - tk) <= 0.01 + 1e-9);
+        double env = 0.5 * exp(-zeta * OMEGA * tk);
+        assert_true(fabs(h.peak_x[i] - env) <= env * (1.0 - cos(OMEGA * 0.005)) + 5e-5);
+        assert_true(h.peak_x[i] <= 0.95 * before);
+        before = h.peak_x[i];
+    }
     app_free(&app);
 }
 
@@ -252,6 +287,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(one_peak_in_free_vibration),
+        cmocka_unit_test(falling_peaks_of_a_free_decay),
         cmocka_unit_test(peaks_grow_to_the_steady_state_and_stop),
         cmocka_unit_test(contact_with_the_left_wall_when_it_is_reached),
         cmocka_unit_test(a_rattling_chain_is_told_in_bursts),

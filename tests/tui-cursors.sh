@@ -5,7 +5,9 @@
 # the readout's numbers are the exported CSV's at the cursor's time, to the digits shown;
 # the cursor's keys come first only while it is shown; paused, the window scrolls back and
 # running again shows the present; nothing in the readout is cut but with "…". Run from
-# the repository root as `sh tests/tui-cursors.sh`, SPRINGSIM naming the binary. Ends with
+# the repository root as `sh tests/tui-cursors.sh`, SPRINGSIM naming the binary. The
+# measurements name the motion: a free decay with its zeta, driven beats transient with
+# none, the default chain's steady state beside the theory's. Ends with
 # "tui-cursors: N passed, M failed".
 NAME=tui-cursors
 . "$(dirname "$0")/lib/check.sh"
@@ -18,7 +20,12 @@ start_in "$tmp/d80" d80 80 24 -- $DECAY
 start c120 120 40 -- -p 3-mass-chain
 start n10 80 24 -- --masses 10 --amplitude 0.3
 start fresh 80 24
+start beat80 80 24 -- -p beating
+start steady120 120 40
 for s in d80 c120; do if up $s; then keys Space; fi; done
+for s in beat80 steady120; do # at 10x (the Speed control)
+    if up $s; then keys Up Up Up Right Right Right Right; wait_re '▸Speed +10x' 3 && keys Space; fi
+done
 
 # panel: the readout's rows (right of the plots, inside its frame), one per line
 panel() { LC_ALL=$U8 sed "s/^.\{$(($1 - 1))\}//" "$scr" | sed -n '/┌ Cursor/,/└/p'; }
@@ -39,8 +46,8 @@ if up d80; then
     t0=$(settled_t)
     keys 1 '|'
     if settle_for '┌ Cursor ' 3 && has 'measured: mass 1' && has_re 'T 1\.4[0-9]* s  f 0\.71[0-9]* Hz' &&
-        has 'theory ζ 0.01118 (mode 1)'; then pass; else
-        fail "80x24: | should show the readout with T, f and the theory's zeta; screen: $(brief "$scr" 'Cursor|measured|T |ζ')"
+        has 'free decay: peaks falling' && has 'theory ζ 0.01118 (mode 1)'; then pass; else
+        fail "80x24: | should show the readout naming a free decay, with T, f and the theory's zeta; screen: $(brief "$scr" 'Cursor|measured|decay|T |ζ')"
     fi
     # zeta from the decrement within 2 % of c / (2 sqrt(k_eff m))
     z=$(sed -n 's/.*δ [-0-9.e]*  ζ \([-0-9.e]*\).*/\1/p' "$scr" | head -n 1)
@@ -143,6 +150,39 @@ if up n10; then
         has 'not enough peaks (0)'; then pass; else
         fail "80x24, 10 masses: the readout should end its mass rows with '… N more masses' and keep the measurements; screen: $(brief "$scr" 'more|measured|peaks')"
     fi
+fi
+
+# ---- driven motion named, no zeta (issue 27): beats after 30 s, a steady state ----
+S=beat80
+if wait_t 30 15; then
+    keys Space 1 '|'
+    if settle_for '┌ Cursor ' 3 && has 'transient: peaks' && has 'not a free decay, not steady' &&
+        lacks 'ζ'; then pass; else
+        fail "80x24 -p beating after 30 s: the readout should name the motion transient and say no zeta (it said 'ζ -0.0545'); screen: $(brief "$scr" 'Cursor|measured|transient|steady|ζ')"
+    fi
+else
+    fail "80x24 -p beating: expected it to run to t = 30 s at 10x; screen: $(brief)"
+fi
+# the default chain at 1 Hz, past 200 s (2m/c = 20 s): mass 1's steady swing and the
+# theory's (--sweep's), agreeing to 0.1 %
+S=steady120
+if wait_t 200 40; then
+    keys Space '|'
+    amp=$("$SPRINGSIM" --sweep 1:2:2 | awk -F, 'NR == 2 { print $2 }')
+    if settle_for 'driven steady state (±1 %)' 3 && has_re 'phase ° +-?[0-9.]+ +-?[0-9.]+' &&
+        lacks 'ζ'; then
+        row=$(sed -n 's/.*│amp m *\([0-9.e-]*\) *\([0-9.e-]*\) *│.*/\1 \2/p' "$scr" | head -n 1)
+        if [ -n "$row" ] && awk -v r="$row" -v a="$amp" 'BEGIN { split(r, v, " ")
+            exit !((v[1] - a) ^ 2 <= (1e-3 * a) ^ 2 && (v[2] - a) ^ 2 <= (1e-3 * a) ^ 2) }'; then
+            pass
+        else
+            fail "120x40, default chain after 200 s: mass 1's amplitude and the theory's should both be $amp m (--sweep) within 0.1 %, read '$row'"
+        fi
+    else
+        fail "120x40, default chain after 200 s: the readout should name a driven steady state with the phase beside the theory's and no zeta; screen: $(brief "$scr" 'Cursor|steady|amp|phase|ratio|ζ')"
+    fi
+else
+    fail "120x40: expected the default chain to run to t = 200 s at 10x; screen: $(brief)"
 fi
 
 # ---- no cursor: the arrows are the controls' ----

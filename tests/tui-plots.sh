@@ -2,7 +2,9 @@
 # tests/tui-plots.sh: the plots and the scene as a person reads them (SPEC section 4,
 # issue 9), in a real terminal (tmux): 1..6 enlarge one plot (big enough to read, the
 # resonance's oscillations distinct), the same digit or 0 give the grid back, < and >
-# change the time window (the beating preset and --window choose the one at start); at 60x20 every plot shown carries data; tick labels are whole
+# change the time window (the beating preset and --window choose the one at start), the
+# time axis reads absolute t, the latest at the right, also scrolled back; at 60x20 every
+# plot shown carries data; tick labels are whole
 # numbers falling evenly and gridlines evenly spaced in every plot at every size, also
 # with accelerations of 1e4; mass labels 1..10 in full, on the springs' row whatever the
 # masses. Run from the repository root as `sh tests/tui-plots.sh`, SPRINGSIM naming the
@@ -19,8 +21,23 @@ shown() { grep -oE '┌─* [1-6] ' "$scr" | sed 's/[^1-6]//g' | tr -d '\n'; } #
 shown_is() { [ "$(shown)" = "$1" ]; }
 # area_at_least TITLE COLS ROWS: the plot's drawing area (plot_area) is at least that
 area_at_least() { aa=$(plot_area "$1"); [ -n "$aa" ] && [ "${aa% *}" -ge "$2" ] && [ "${aa#* }" -ge "$3" ]; }
-# x_from N [TITLE]: the time axis of the plot TITLE (default $t1) starts at N (s)
-x_from() { awk -v a="$(xlabels "${2:-$t1}" | head -n 1)" -v n="$1" 'BEGIN { exit !(a != "" && a + 0 == n) }'; }
+# x_window W [TITLE]: the time axis of the plot TITLE (default $t1) is a window of W s in
+# absolute time: its labels evenly spaced, spread over W s give or take a tick (the axis
+# rounds W out to its ticks), none below 0
+x_window() {
+    xlabels "${2:-$t1}" | awk -v w="$1" '{ v[n++] = $1 + 0 }
+        END { if (n < 2) exit 1; step = v[1] - v[0]; spread = v[n - 1] - v[0]
+              for (k = 1; k < n; k++) if (v[k] - v[k - 1] != step) exit 1
+              exit !(v[0] >= 0 && spread <= w + step - 1e-9 && spread > w - 2 * step) }'
+}
+# x_ends T [TITLE]: the time axis's last label is within a tick below T (s) (or half a
+# cell above it): the latest time at the right
+x_ends() {
+    xlabels "${2:-$t1}" | awk -v t="$1" '{ v[n++] = $1 + 0 }
+        END { if (n < 2) exit 1; step = v[1] - v[0]; exit !(v[n - 1] < t + step / 4 && v[n - 1] > t - step) }'
+}
+# axis_says: what the time axis of $t1 reads, for a failure message
+axis_says() { xlabels "${1:-$t1}" | tr '\n' ' '; }
 # xlabels TITLE: the numbers under the x axis of the plot titled TITLE
 xlabels() {
     plot_awk 'END { if (plot(title)) { s = ""; for (k = left + 1; k < right; k++) s = s cell(axr + 1, k); print s } }' \
@@ -118,6 +135,10 @@ set -- $(plot_area '1 Displacement (m)')
 if [ "$*" = "29 5" ]; then pass; else fail "self-check: plot_area should measure 29x5 cells, measured '$*'"; fi
 b=$(plot_ticks '3 Acceleration (m/s²)')$(plot_ticks '1 Displacement (m)')
 if [ -z "$b" ]; then pass; else fail "self-check: plot_ticks should accept a right screen, says '$b'"; fi
+# the time axis counting back from now (-10 .. 0) is not a window in absolute time
+if ! x_window 10 '1 Displacement (m)'; then pass; else
+    fail "self-check: x_window should refuse the axis -10 -5 0, read '$(axis_says '1 Displacement (m)')'"
+fi
 PLOT_SCR=
 cp "$tmp/scene" "$scr"
 labels_out=$(labels "a light mass drawn below its springs" 3)
@@ -139,6 +160,8 @@ start light 120 40 -- -n 3 --mass 0.2,1,5
 start light80 80 24 -- -n 3 --mass 0.2,1,5
 start beat80 80 24 -- -p beating
 start win80 80 24 -- --window 2
+start abs80 80 24
+start abs120 120 40
 sessions="res80 big huge small acc acc80 acc120 acc60 ten ten80 light light80"
 for s in res80 big huge small acc acc80 acc120 acc60; do
     if up $s; then keys Space; fi
@@ -168,8 +191,8 @@ if up big; then
             fail "120x40: plot $d enlarged should draw on at least 70x24 cells beside the controls, has '$(plot_area "$t")'; screen: $(brief "$scr" '┌─* [1-6] ')"
         fi
         case $d in 1 | 2 | 3)
-            if poll 1 x_from -10 "$t"; then pass; else
-                fail "120x40: plot $d's time axis should start at -10 (s), reads '$(xlabels "$t" | tr '\n' ' ')'"
+            if poll 1 x_window 10 "$t"; then pass; else
+                fail "120x40: plot $d's time axis should be a window of 10 s in absolute time, reads '$(axis_says "$t")'"
             fi
             ;;
         esac
@@ -278,22 +301,22 @@ if wait_t 10 14; then
             sed 's/^/    /' "$scr"
         fi
         ticks_ok "80x24, plot 1 enlarged"
-        if x_from -10; then pass; else fail "80x24: the time axis should start at -10 (s), reads '$(xlabels "$t1" | tr '\n' ' ')'"; fi
+        if x_window 10; then pass; else fail "80x24: the time axis should be a window of 10 s, reads '$(axis_says)'"; fi
         keys '>'
-        if poll 3 x_from -20; then pass; else
-            fail "80x24: > should make the time window 20 s (axis from -20), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+        if poll 3 x_window 20; then pass; else
+            fail "80x24: > should make the time window 20 s, reads '$(axis_says)'"
         fi
         keys '<' '<'
-        if poll 3 x_from -5; then pass; else
-            fail "80x24: < twice from 20 s should make the window 5 s (axis from -5), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+        if poll 3 x_window 5; then pass; else
+            fail "80x24: < twice from 20 s should make the window 5 s, reads '$(axis_says)'"
         fi
         keys '<' '<' '<'
-        if poll 3 x_from -1; then pass; else
-            fail "80x24: < from 5 s should go down to 1 s and stop there (axis from -1), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+        if poll 3 x_window 1; then pass; else
+            fail "80x24: < from 5 s should go down to 1 s and stop there, reads '$(axis_says)'"
         fi
         keys '>' '>' '>' '>' '>' '>' '>'
-        if poll 3 x_from -60; then pass; else
-            fail "80x24: > from 1 s should go up to 60 s and stop there (axis from -60), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+        if poll 3 x_window 60; then pass; else
+            fail "80x24: > from 1 s should go up to 60 s and stop there, reads '$(axis_says)'"
         fi
         keys 0
         if poll 3 shown_is 14; then pass; else
@@ -322,6 +345,37 @@ else
     fail "80x24 -p resonance: expected it to run to t = 10 s; screen: $(brief)"
 fi
 
+# ---- one time axis: absolute t (issue 27), the latest at the right, also scrolled back
+# (after 25 s with a 10 s window the labels run from about 15 to 25) ----
+for S in abs80 abs120; do
+    keys Up Up Up Right Right Right Right # the Speed control: 10x
+    if wait_re '▸Speed +10x' 3; then keys Space; else fail "$S: the Speed control should reach 10x; screen: $(brief "$scr" Speed)"; fi
+done
+for S in abs80 abs120; do
+    if ! wait_t 25 10; then
+        fail "$S: expected it to run to t = 25 s at 10x; screen: $(brief)"
+        continue
+    fi
+    keys Space 1
+    if ! poll 3 eval 'has Paused && has "0 all plots" && steady'; then
+        fail "$S: space and 1 should pause with x(t) enlarged; screen: $(brief)"
+        continue
+    fi
+    t=$(status_t)
+    if x_window 10 && x_ends "$t"; then pass; else
+        fail "$S: paused at t = $t s, the time axis should run over the last 10 s (about $(awk -v t="$t" 'BEGIN { print int(t - 10) }') to $t), reads '$(axis_says)'"
+    fi
+    keys '|' PgUp
+    if poll 3 eval 'has_re "shown [0-9.]+–[0-9.]+ s, 10.0 s back"'; then
+        back=$(sed -n 's/.*shown [0-9.]*–\([0-9.]*\) s, 10.0 s back.*/\1/p' "$scr" | head -n 1)
+        if poll 2 eval 'x_window 10 && x_ends "$back"'; then pass; else
+            fail "$S: scrolled back to end at $back s, the time axis should run over the 10 s before it, reads '$(axis_says)'"
+        fi
+    else
+        fail "$S: | and PgUp should show the window a window back; screen: $(brief "$scr" shown)"
+    fi
+done
+
 all_alive $sessions
 
 # ---- the window at start: the beating preset's three beats, --window ----
@@ -330,21 +384,21 @@ all_alive $sessions
 S=beat80
 t1=$(title 1)
 keys 1
-if wait_for '0 all plots' 3 && poll 3 x_from -40; then pass; else
-    fail "80x24 -p beating: the time axis should start at -40 (a 33 s window, three beats of 10.9 s), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+if wait_for '0 all plots' 3 && poll 3 x_window 33; then pass; else
+    fail "80x24 -p beating: the time axis should be a window of 33 s (three beats of 10.9 s), reads '$(axis_says)'"
 fi
 keys '<'
-if poll 3 x_from -30; then pass; else
-    fail "80x24 -p beating: < from 33 s should make the window 30 s (axis from -30), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+if poll 3 x_window 30; then pass; else
+    fail "80x24 -p beating: < from 33 s should make the window 30 s, reads '$(axis_says)'"
 fi
 keys '>'
-if poll 3 x_from -60; then pass; else
-    fail "80x24 -p beating: > from 30 s should make the window 60 s (axis from -60), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+if poll 3 x_window 60; then pass; else
+    fail "80x24 -p beating: > from 30 s should make the window 60 s, reads '$(axis_says)'"
 fi
 S=win80
 keys 1
-if wait_for '0 all plots' 3 && poll 3 x_from -2; then pass; else
-    fail "80x24 --window 2: the time axis should start at -2 (s), reads '$(xlabels "$t1" | tr '\n' ' ')'"
+if wait_for '0 all plots' 3 && poll 3 x_window 2; then pass; else
+    fail "80x24 --window 2: the time axis should be a window of 2 s, reads '$(axis_says)'"
 fi
 
 summary

@@ -214,10 +214,39 @@ void axis_fit(struct axis *a, double lo, double hi, int max_ticks, int cells, in
     fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, false);
 }
 
-void axis_fit_anchored(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
-                       int min_spacing)
+/* Moves a rolling axis laid on [-window, 0] (its step and spacing) to absolute time: the
+ * last cell is the one (in whole cells counted from t = 0) that holds end, and the ticks
+ * are the multiples of the step that fall on the cells. */
+static void roll(struct axis *a, double end)
 {
-    fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, true);
+    /* Cells are counted in whole units of step/spacing from t = 0, so a tick (a multiple
+     * of the step) is on a cell exactly when its unit count is a multiple of spacing. */
+    double n_end = ceil(end / a->step * a->spacing - 0.5 + 1e-6); /* end on the last cell */
+    /* Until the axis is full, it starts at 0 and the trace fills it from the left. */
+    n_end = fmax(n_end, a->cells - 1);
+    double n_left = n_end - (a->cells - 1);
+    double k0 = ceil(n_left / a->spacing - 1e-9), k1 = floor(n_end / a->spacing + 1e-9);
+    a->lo = k0 * a->step;
+    a->first = (int)(k0 * a->spacing - n_left);
+    a->intervals = k1 > k0 ? (int)(k1 - k0) : 1;
+}
+
+void axis_fit_rolling(struct axis *a, double end, double window, int max_ticks, int cells,
+                      int dpc, int min_spacing)
+{
+    if (!isfinite(end))
+        end = 0.0;
+    if (!(window > 0.0) || !isfinite(window))
+        window = 1.0;
+    fit(a, -window, 0.0, max_ticks, cells, dpc, min_spacing, true);
+    for (int i = 0; i < WIDEN_MAX; i++) {
+        roll(a, end);
+        int width;
+        if (label_form(a, &width) != FORM_ROUGH)
+            return;
+        /* The absolute labels are wider than the relative ones were: a wider step. */
+        lay(a, -window, 0.0, step_next(a->step, +1), true);
+    }
 }
 
 /* dot = first*dpc + (dpc - 1)/2 + (v - lo)/step * spacing*dpc: linear, one tick step to

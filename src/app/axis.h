@@ -37,11 +37,14 @@ void axis_round_out(double *lo, double *hi, double step);
 void axis_fit(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
               int min_spacing);
 
-/* As axis_fit, but the last tick (hi rounded out) sits on the last cell and the leftover
- * cells extend the axis below lo: a rolling time axis (-window .. 0) keeps 0 s, the
- * newest sample, at the right edge. */
-void axis_fit_anchored(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
-                       int min_spacing);
+/* A rolling time axis in absolute time: the window [end - window, end] on the step and
+ * spacing of [-window, 0] laid as axis_fit would but with its last tick on the last cell
+ * (the leftover cells extending it to the left; the step widened while the absolute
+ * labels do not fit), moved so that the last cell holds end (cells counted in whole cells from t = 0:
+ * the axis moves a cell at a time) and the ticks are the multiples of the step on the
+ * cells. Until time fills the axis, it starts at 0 (on the middle of its first cell). */
+void axis_fit_rolling(struct axis *a, double end, double window, int max_ticks, int cells,
+                      int dpc, int min_spacing);
 
 /* Dot coordinate (fractional, from the axis start) of value v: tick k's value lands on
  * the middle of its cell, (first + k*spacing)*dpc + (dpc - 1)/2.0. Dot d covers

@@ -1,9 +1,10 @@
 /* measure.c: period, frequency, peak-to-peak, rms, logarithmic decrement and damping
- * ratio of a sampled series, in one pass and no memory of its own. */
+ * ratio of a sampled series, in one pass and no memory of its own; its fundamental
+ * against a drive's; and the kind of motion these make. */
 #include "measure.h"
 
+#include <complex.h>
 #include <math.h>
-#include <stdbool.h>
 
 double measure_zeta(double delta)
 {
@@ -47,8 +48,9 @@ void measure_series(struct measure *m, const double *t, const double *y, int cou
                     size_t stride)
 {
     *m = (struct measure){.first = NAN, .last = NAN, .period = NAN, .frequency = NAN,
-                          .p2p = NAN, .rms = NAN, .delta = NAN, .zeta = NAN};
-    double lo = INFINITY, hi = -INFINITY, sq = 0.0;
+                          .p2p = NAN, .rms = NAN, .delta = NAN, .zeta = NAN, .high = NAN,
+                          .low = NAN, .falling = true, .rising = true};
+    double lo = INFINITY, hi = -INFINITY, sq = 0.0, before_peak = NAN;
     struct line times = {0}, logs = {0};
     bool all_up = true;
     for (int k = 0; k < count; k++) {
@@ -66,9 +68,15 @@ void measure_series(struct measure *m, const double *t, const double *y, int cou
         double h = 0.5 * (t[(size_t)(k + 1) * stride] - t[(size_t)(k - 1) * stride]);
         double tp = tk + at * h;
         if (m->peaks == 0)
-            m->first = tp;
+            m->first = tp, m->high = m->low = height;
         m->last = tp;
         m->peaks++;
+        m->high = fmax(m->high, height), m->low = fmin(m->low, height);
+        if (!(height < before_peak) && m->peaks > 1)
+            m->falling = false;
+        if (!(height > before_peak) && m->peaks > 1)
+            m->rising = false;
+        before_peak = height;
         line_add(&times, tp);
         if (height > 0.0)
             line_add(&logs, -log(height));
@@ -87,4 +95,91 @@ void measure_series(struct measure *m, const double *t, const double *y, int cou
         m->delta = line_slope(&logs);
         m->zeta = isnan(m->delta) ? NAN : measure_zeta(m->delta);
     }
+    m->falling &= m->peaks >= 2 && all_up;
+    m->rising &= m->peaks >= 2;
+}
+
+/* The extreme (sign +1 the highest, -1 the lowest) of y over samples [from, to), refined
+ * by the parabola through the extreme sample and its neighbours where it has both. */
+static double extreme(const double *y, int count, size_t stride, int from, int to, int sign)
+{
+    int at = from;
+    for (int k = from; k < to; k++)
+        if (sign * y[(size_t)k * stride] > sign * y[(size_t)at * stride])
+            at = k;
+    double v = y[(size_t)at * stride];
+    if (at > 0 && at < count - 1) {
+        double s, h;
+        measure_vertex(sign * y[(size_t)(at - 1) * stride], sign * v,
+                       sign * y[(size_t)(at + 1) * stride], &s, &h);
+        v = sign * h;
+    }
+    return v;
+}
+
+void measure_drive(struct measure_drive *d, const double *t, const double *y, const double *u,
+                   int count, size_t stride, double hz)
+{
+    *d = (struct measure_drive){.level = NAN, .amplitude = NAN, .drive = NAN, .ratio = NAN,
+                                .phase = NAN};
+    if (count < 3 || !(hz > 0.0) || !isfinite(hz))
+        return;
+    double t0 = t[0], t1 = t[(size_t)(count - 1) * stride], period = 1.0 / hz;
+    double h = (t1 - t0) / (count - 1);
+    int periods = (int)floor((t1 - t0) / period + 1e-9);
+    if (!(h > 0.0) || periods < 1)
+        return;
+    d->periods = periods;
+    /* Each period's swing, from its last sample back: (t1 - (p + 1) T, t1 - p T]. */
+    double hmax = -INFINITY, hmin = INFINITY, lmax = -INFINITY, lmin = INFINITY, swing = 0.0;
+    int end = count;
+    for (int p = 0; p < periods; p++) {
+        int from = end;
+        while (from > 0 && t[(size_t)(from - 1) * stride] > t1 - (p + 1) * period + 0.5 * h)
+            from--;
+        if (from == end)
+            return;
+        double hi = extreme(y, count, stride, from, end, +1);
+        double lo = extreme(y, count, stride, from, end, -1);
+        hmax = fmax(hmax, hi), hmin = fmin(hmin, hi), lmax = fmax(lmax, lo), lmin = fmin(lmin, lo);
+        swing += 0.5 * (hi - lo) / periods;
+        end = from;
+    }
+    if (swing > 0.0)
+        d->level = fmax(hmax - hmin, lmax - lmin) / swing;
+    /* Y = sum y e^(-i w t), U likewise, over the samples spanning the whole periods: the
+     * rectangle rule, exact for a periodic series sampled evenly over whole periods. */
+    int n = (int)lround(periods * period / h);
+    n = n < 1 ? 1 : n > count ? count : n;
+    double complex ys = 0.0, us = 0.0;
+    for (int k = count - n; k < count; k++) {
+        double complex e = cexp(-2.0 * M_PI * I * hz * t[(size_t)k * stride]);
+        ys += y[(size_t)k * stride] * e;
+        us += u[(size_t)k * stride] * e;
+    }
+    d->amplitude = 2.0 * cabs(ys) / n;
+    d->drive = 2.0 * cabs(us) / n;
+    if (d->drive > 0.0) {
+        d->ratio = d->amplitude / d->drive;
+        d->phase = carg(ys * conj(us)) * 180.0 / M_PI;
+        if (d->phase <= -180.0)
+            d->phase += 360.0;
+    }
+}
+
+enum motion measure_motion(const struct measure *m, const struct measure_drive *d)
+{
+    if (d) {
+        if (d->periods < 2 || isnan(d->level))
+            return MOTION_UNKNOWN;
+        return d->level <= MEASURE_LEVEL ? MOTION_STEADY : MOTION_TRANSIENT;
+    }
+    if (m->peaks < 2)
+        return MOTION_UNKNOWN;
+    /* Level first: peaks within rounding of each other may happen to fall in a row. */
+    if (m->high > 0.0 && m->high - m->low <= MEASURE_LEVEL * m->high)
+        return MOTION_STEADY;
+    if (m->falling && m->delta > 0.0)
+        return MOTION_DECAY;
+    return MOTION_TRANSIENT;
 }

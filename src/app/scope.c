@@ -6,6 +6,7 @@
 
 #include <math.h>
 
+#include "../core/modes.h"
 #include "app.h"
 
 #define EPS 1e-9 /* s: times closer than this are the same sample's */
@@ -214,6 +215,31 @@ void scope_measure(const struct scope_view *v, int i, struct measure *m)
 {
     const struct trail *tr = v->trail;
     measure_series(m, v->rec + TRAIL_T, v->rec + TRAIL_X(tr, i), v->count, (size_t)tr->width);
+}
+
+void scope_motion(const struct app *app, const struct scope_view *v, int i,
+                  struct scope_motion *out)
+{
+    const struct model *model = app->model;
+    const struct trail *tr = v->trail;
+    *out = (struct scope_motion){.mode = -1, .theory_zeta = NAN, .theory_ratio = NAN,
+                                 .theory_phase = NAN};
+    scope_measure(v, i, &out->m);
+    out->driven = model->boundary == BOUNDARY_MOTOR && model->motor.amplitude > 0.0;
+    if (out->driven) {
+        out->hz = model->motor.frequency;
+        measure_drive(&out->d, v->rec + TRAIL_T, v->rec + TRAIL_X(tr, i), v->rec + TRAIL_U,
+                      v->count, (size_t)tr->width, out->hz);
+        double amp[APP_MAX_MASSES], phase[APP_MAX_MASSES];
+        if (model->n <= APP_MAX_MASSES && modes_response_phase(model, out->hz, amp, phase) == 0) {
+            out->theory_ratio = amp[i] / model->motor.amplitude;
+            out->theory_phase = phase[i];
+        }
+    }
+    out->kind = measure_motion(&out->m, out->driven ? &out->d : NULL);
+    out->mode = scope_nearest_mode(app, out->m.frequency);
+    if (out->mode >= 0 && app->damping_ok)
+        out->theory_zeta = app->damping_ratio[out->mode];
 }
 
 int scope_nearest_mode(const struct app *app, double hz)

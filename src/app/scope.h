@@ -67,6 +67,25 @@ int scope_mass(const struct app *app);
 /* Measures mass i's displacement over view v. */
 void scope_measure(const struct scope_view *v, int i, struct measure *m);
 
+/* What the measurements of one mass over a view say, beside the theory's. */
+struct scope_motion {
+    struct measure m;        /* its peaks, period, decrement */
+    struct measure_drive d;  /* against the motor (driven only) */
+    bool driven;             /* a motor drives the chain: a motor end, amplitude > 0 */
+    double hz;               /* the drive's frequency (Hz; driven only) */
+    enum motion kind;        /* measure_motion's */
+    int mode;                /* the mode nearest to the measured frequency (0-based), or -1 */
+    double theory_zeta;      /* that mode's damping ratio (NAN unknown) */
+    double theory_ratio;     /* the steady state's amplitude ratio to the motor's at hz */
+    double theory_phase;     /* and its phase to the motor (degrees; NAN unknown) */
+};
+
+/* Measures mass i's displacement over view v and says what kind of motion it is, with
+ * the theory's damping ratio of the nearest mode and, driven, the linear steady state's
+ * ratio and phase at the drive's frequency (modes_response_phase). */
+void scope_motion(const struct app *app, const struct scope_view *v, int i,
+                  struct scope_motion *out);
+
 /* The mode whose damped frequency (its undamped one where that is unknown) is nearest
  * to hz, or -1 when the modes are not known or hz is not a number. */
 int scope_nearest_mode(const struct app *app, double hz);

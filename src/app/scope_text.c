@@ -52,10 +52,68 @@ bool scope_say_cursor(const struct app *app, const char *text, char *buf, size_t
     return true;
 }
 
-double scope_theory_zeta(const struct app *app, const struct measure *m, int *mode)
+const char *scope_motion_name(const struct scope_motion *sm)
 {
-    *mode = scope_nearest_mode(app, m->frequency);
-    return *mode >= 0 && app->damping_ok ? app->damping_ratio[*mode] : NAN;
+    switch (sm->kind) {
+    case MOTION_DECAY:
+        return "free decay";
+    case MOTION_STEADY:
+        return sm->driven ? "driven steady state" : "free, peaks level";
+    case MOTION_TRANSIENT:
+        return "transient";
+    case MOTION_UNKNOWN:
+        break;
+    }
+    return sm->driven ? "driven, too few drive periods shown" : "too few peaks";
+}
+
+const char *scope_peaks_word(const struct measure *m)
+{
+    return m->rising ? "peaks growing" : m->falling ? "peaks falling" : "peaks uneven";
+}
+
+/* The kind of motion and what it measures, after `measure`'s common part. */
+static void say_kind(const struct scope_motion *sm, char *buf, size_t len)
+{
+    const struct measure *m = &sm->m;
+    const struct measure_drive *d = &sm->d;
+    int pct = (int)lround(100.0 * MEASURE_LEVEL);
+    switch (sm->kind) {
+    case MOTION_DECAY: {
+        size_t used = (size_t)snprintf(buf, len, "; free decay (peaks falling): delta %.6g, "
+                                       "zeta %.6g", m->delta, m->zeta);
+        if (used < len && sm->mode >= 0 && !isnan(sm->theory_zeta))
+            snprintf(buf + used, len - used, " (theory, mode %d: zeta %.6g)", sm->mode + 1,
+                     sm->theory_zeta);
+        return;
+    }
+    case MOTION_STEADY:
+        if (!sm->driven) {
+            size_t used = (size_t)snprintf(buf, len, "; free, peaks level within %d %%: no "
+                                           "decay to measure", pct);
+            if (used < len && sm->mode >= 0 && !isnan(sm->theory_zeta))
+                snprintf(buf + used, len - used, " (theory, mode %d: zeta %.6g)",
+                         sm->mode + 1, sm->theory_zeta);
+            return;
+        }
+        snprintf(buf, len, "; driven steady state (swings level within %d %% over %d drive "
+                 "periods): amplitude %.6g m, phase %.4g deg to the motor, ratio %.6g to the "
+                 "motor's (theory at %.6g Hz: amplitude %.6g m, phase %.4g deg, ratio %.6g)",
+                 pct, d->periods, d->amplitude, d->phase, d->ratio, sm->hz,
+                 sm->theory_ratio * d->drive, sm->theory_phase, sm->theory_ratio);
+        return;
+    case MOTION_TRANSIENT:
+        snprintf(buf, len, "; transient: not a free decay, not steady (%s%s)",
+                 scope_peaks_word(m), sm->driven ? ", swings not level" : "");
+        return;
+    case MOTION_UNKNOWN:
+        break;
+    }
+    if (m->peaks < 2)
+        snprintf(buf, len, ", not enough peaks (%d) for a period or a decrement", m->peaks);
+    else
+        snprintf(buf, len, "; fewer than 2 drive periods in the window: not yet told whether "
+                 "steady");
 }
 
 bool scope_say_measure(struct app *app, const char *text, char *buf, size_t len)
@@ -74,34 +132,19 @@ bool scope_say_measure(struct app *app, const char *text, char *buf, size_t len)
         app->scope.mass = i;
     }
     struct scope_view v;
-    struct measure m;
+    struct scope_motion sm;
     scope_view(app, &v);
-    scope_measure(&v, i, &m);
+    scope_motion(app, &v, i, &sm);
+    const struct measure *m = &sm.m;
     int d = app_time_decimals(app->cfg.dt);
     size_t used = (size_t)snprintf(buf, len, "measure: mass %d, %.*f to %.*f s, %d samples: "
                                    "peak-to-peak %.6g m, rms %.6g m", i + 1, d,
-                                   fmax(v.start, scope_oldest(app)), d, v.end, m.samples,
-                                   m.p2p, m.rms);
-    if (used >= len)
-        return true;
-    if (m.peaks < 2) {
-        snprintf(buf + used, len - used, ", not enough peaks (%d) for a period or a decrement",
-                 m.peaks);
-        return true;
-    }
-    used += (size_t)snprintf(buf + used, len - used, ", %d peaks, period %.6g s, frequency "
-                             "%.6g Hz", m.peaks, m.period, m.frequency);
-    if (used >= len)
-        return true;
-    if (isnan(m.delta)) {
-        snprintf(buf + used, len - used, ", no decrement (a peak at or below 0)");
-        return true;
-    }
-    int mode;
-    double z = scope_theory_zeta(app, &m, &mode);
-    used += (size_t)snprintf(buf + used, len - used, ", delta %.6g, zeta %.6g", m.delta,
-                             m.zeta);
-    if (used < len && mode >= 0 && !isnan(z))
-        snprintf(buf + used, len - used, " (theory, mode %d: zeta %.6g)", mode + 1, z);
+                                   fmax(v.start, scope_oldest(app)), d, v.end, m->samples,
+                                   m->p2p, m->rms);
+    if (used < len && m->peaks >= 2)
+        used += (size_t)snprintf(buf + used, len - used, ", %d peaks, period %.6g s, frequency "
+                                 "%.6g Hz", m->peaks, m->period, m->frequency);
+    if (used < len)
+        say_kind(&sm, buf + used, len - used);
     return true;
 }

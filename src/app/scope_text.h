@@ -10,6 +10,7 @@
 
 struct app;
 struct scope_view;
+struct scope_motion;
 
 /* v in at most width columns, with as many significant digits as fit (6 at most, 2 at
  * least: "%.*g"); NAN as "-". Returns the digits used. */
@@ -24,8 +25,10 @@ bool scope_say_cursor(const struct app *app, const char *text, char *buf, size_t
  * the time plots' window. false, with what is allowed, for a mass the chain has not. */
 bool scope_say_measure(struct app *app, const char *text, char *buf, size_t len);
 
-/* The theory's damping ratio beside a measured frequency: the mode nearest to it (0-based,
- * -1 unknown) into *mode, its zeta returned (NAN unknown). */
-double scope_theory_zeta(const struct app *app, const struct measure *m, int *mode);
+/* The kind of motion in words: "free decay", "driven steady state", "transient", ... */
+const char *scope_motion_name(const struct scope_motion *sm);
+
+/* How the peaks went: "peaks growing", "peaks falling" or "peaks uneven". */
+const char *scope_peaks_word(const struct measure *m);
 
 #endif

@@ -30,6 +30,9 @@ static void take(struct watch *w, const struct app *app, bool clear)
     memcpy(w->x, sim_x(s), (size_t)n * sizeof *w->x);
     memcpy(w->v, sim_v(s), (size_t)n * sizeof *w->v);
     if (clear) {
+        /* The start's displacement is the first peak to beat. */
+        for (int i = 0; i < n; i++)
+            w->largest[i] = fabs(w->x[i]);
         memset(w->peak, 0, sizeof w->peak);
         memset(w->touching, 0, sizeof w->touching);
         w->second = w->t;
@@ -110,20 +113,37 @@ static void look_contacts(struct watch *w, const struct app *app, watch_say *say
     memcpy(w->touching, now, sizeof now);
 }
 
-/* Turning points whose |x| is a new peak worth saying. */
+/* Turning points whose |x| is a peak worth saying: a new largest one, or, with no drive,
+ * one WATCH_PEAK_RISE below (or above) the last one said (or the start). */
 static void look_peaks(struct watch *w, const struct app *app, watch_say *say, void *ctx)
 {
+    const struct model *m = app->model;
+    bool free = !(m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0);
     const double *x = sim_x(app->sim), *v = sim_v(app->sim);
     for (int i = 0; i < w->n; i++) {
         bool turned = (w->v[i] > 0.0 && v[i] <= 0.0) || (w->v[i] < 0.0 && v[i] >= 0.0);
         double a = fmax(fabs(x[i]), fabs(w->x[i]));
-        if (turned && a >= WATCH_PEAK_MIN && a >= w->peak[i] * (1.0 + WATCH_PEAK_RISE)) {
-            char line[120];
+        if (!turned || a < WATCH_PEAK_MIN)
+            continue;
+        double last = w->peak[i] > 0.0 ? w->peak[i] : w->largest[i];
+        char line[160];
+        /* The first swing back from a release reaches the start's |x| only to within the
+         * sampling: that is still the largest. */
+        if (a >= w->largest[i] * (1.0 + WATCH_PEAK_RISE) ||
+            (w->peak[i] == 0.0 && a >= w->largest[i] * (1.0 - WATCH_PEAK_SAME)))
             snprintf(line, sizeof line, "peak: mass %d |x| = %.4f m, the largest since t = 0",
                      i + 1, a);
-            say(ctx, line);
-            w->peak[i] = a;
-        }
+        else if (free && a <= last * (1.0 - WATCH_PEAK_RISE))
+            snprintf(line, sizeof line, "peak: mass %d |x| = %.4f m, falling from %.4f m", i + 1,
+                     a, last);
+        else if (free && a >= last * (1.0 + WATCH_PEAK_RISE))
+            snprintf(line, sizeof line, "peak: mass %d |x| = %.4f m, growing from %.4f m", i + 1,
+                     a, last);
+        else
+            continue;
+        say(ctx, line);
+        w->peak[i] = a;
+        w->largest[i] = fmax(w->largest[i], a);
     }
 }
 

@@ -11,10 +11,12 @@
  *   that second are counted and told in one line when it is over ("contact: 12 more from
  *   t = 5.00 to 6.00 s"), so a chain of ten rattling masses does not flood a reader.
  * - A peak: at a turning point of mass i (its velocity changes sign between two steps;
- *   the larger |x_i| of the two), at least
- *   WATCH_PEAK_RISE above the last peak reported for that mass since t = 0 and at least
- *   WATCH_PEAK_MIN: at most one per half swing of that mass, and, while the swing grows,
- *   one per 5 % of growth.
+ *   the larger |x_i| of the two) of at least WATCH_PEAK_MIN, either the largest since
+ *   t = 0 (WATCH_PEAK_RISE above the largest |x_i| so far, the start's included; the
+ *   first swing back to the start's |x_i| counts as it, within WATCH_PEAK_SAME), or, with
+ *   no drive, WATCH_PEAK_RISE below or above the last peak told (the start before any):
+ *   a free decay tells its falling peaks. At most one per half swing of that mass, and
+ *   one per 5 % of growth or fall.
  * - Resonance: the drive (a motor with an amplitude) within WATCH_ON_MODE of a natural
  *   frequency, as the modes view marks it, reported when it comes onto one (a change of
  *   frequency, a retune of the sweep, or a change of the chain). */
@@ -27,6 +29,7 @@
 
 #define WATCH_PEAK_RISE 0.05 /* a peak reported is this far above the last (relative) */
 #define WATCH_PEAK_MIN 1e-3  /* smaller swings make no peaks (m) */
+#define WATCH_PEAK_SAME 1e-3 /* a first swing this close below the start's |x| is its equal */
 #define WATCH_ON_MODE 0.02   /* the drive is on a natural frequency within this (relative) */
 #define WATCH_CONTACT_BURST 3 /* contacts told one by one in a second of simulated time */
 
@@ -35,7 +38,8 @@ struct watch {
     double t;                           /* time when last looked at (s) */
     double x[APP_MAX_MASSES];           /* displacements then */
     double v[APP_MAX_MASSES];           /* velocities then */
-    double peak[APP_MAX_MASSES];        /* the last peak reported of each mass (m) */
+    double peak[APP_MAX_MASSES];        /* the last peak reported of each mass (m, 0 none) */
+    double largest[APP_MAX_MASSES];     /* the largest |x| of each since t = 0 (m) */
     bool touching[APP_MAX_MASSES + 1];  /* constraints in contact at the last step */
     int on_mode;                        /* the natural frequency the drive is on, or -1 */
     int burst;                          /* contacts told one by one a second (watch_init:

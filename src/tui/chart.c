@@ -98,14 +98,15 @@ void chart_fit_y(struct chart *c, double lo, double hi)
     chart_ticks_from_axis(&c->yt, &c->ya);
 }
 
-/* Fits axis a on the x cells, its ticks far enough apart for their labels. */
-static void fit_x(struct chart *c, double lo, double hi, bool anchored)
+/* Fits axis a on the x cells, its ticks far enough apart for their labels; rolling: a
+ * time axis of window hi ending at lo. */
+static void fit_x(struct chart *c, double lo, double hi, bool rolling)
 {
     int w = c->area.w > 1 ? c->area.w : 1;
     int ticks = max_ticks(w, 8), gap = 4;
     for (int tries = 0; tries < 4; tries++) {
-        if (anchored)
-            axis_fit_anchored(&c->xa, lo, hi, ticks, w, 2, gap);
+        if (rolling)
+            axis_fit_rolling(&c->xa, lo, hi, ticks, w, 2, gap);
         else
             axis_fit(&c->xa, lo, hi, ticks, w, 2, gap);
         int need = axis_label_width(&c->xa) + 1;
@@ -123,9 +124,14 @@ void chart_fit_x(struct chart *c, double lo, double hi)
     fit_x(c, c->xs.lo, c->xs.hi, false);
 }
 
-void chart_fit_time(struct chart *c, double window)
+void chart_fit_time(struct chart *c, double end, double window)
 {
-    fit_x(c, -window, 0.0, true);
+    fit_x(c, end, window, true);
+}
+
+double chart_left_time(const struct chart *c)
+{
+    return axis_value(&c->xa, -0.5);
 }
 
 void chart_fix_x(struct chart *c, double lo, double hi)

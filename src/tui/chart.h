@@ -66,8 +66,13 @@ void chart_fit_y(struct chart *c, double lo, double hi);
 /* Fits the x axis to data in [lo, hi] (autoscaled, ticks evenly spaced on the columns). */
 void chart_fit_x(struct chart *c, double lo, double hi);
 
-/* Fits the x axis to a rolling time window: -window .. 0 s, 0 at the right edge. */
-void chart_fit_time(struct chart *c, double window);
+/* Fits the x axis to a rolling time window in absolute time (axis_fit_rolling): the
+ * window ending at end (s), the latest time on the last cell; 0 .. window until then. */
+void chart_fit_time(struct chart *c, double end, double window);
+
+/* The time at the left edge of a time chart's drawing area (s): a window's scan starts
+ * there. */
+double chart_left_time(const struct chart *c);
 
 /* Fits the x (or y) axis to exactly [lo, hi] rounded out to its ticks, with no
  * autoscaling memory and no margin: an axis whose ends are chosen, not found in data. */

@@ -63,13 +63,6 @@ static int field(const struct trail *tr, int q, int i)
     return q == 1 ? TRAIL_X(tr, i) : q == 2 ? TRAIL_V(tr, i) : TRAIL_A(tr, i);
 }
 
-/* The time at the left edge of a time chart (its axis extends past -window there). */
-static double left_time(const struct chart *c)
-{
-    const struct axis *a = &c->xa;
-    return a->lo - axis_dot(a, a->lo) * a->step / (a->spacing * a->dpc) - a->step;
-}
-
 /* The range of quantity q (0: none) over k records of tr from rec, into [*lo, *hi]. */
 static void scan(const struct trail *tr, const double *rec, int k, int q, unsigned hidden,
                  double *lo, double *hi)
@@ -87,7 +80,7 @@ static void scan(const struct trail *tr, const double *rec, int k, int q, unsign
 /* Each mass's trace from k records of tr from rec, in its colour: solid, or dashed (the
  * ghost's). */
 static void traces(struct chart *c, enum plot_id id, const struct trail *tr, const double *rec,
-                   int k, double now, bool dashed, unsigned hidden, int top)
+                   int k, bool dashed, unsigned hidden, int top)
 {
     int xq = kinds[id].xq, yq = kinds[id].yq;
     size_t w = (size_t)tr->width;
@@ -106,7 +99,7 @@ static void traces(struct chart *c, enum plot_id id, const struct trail *tr, con
         unsigned char col = (unsigned char)(PAIR_MASS + i % 10);
         const double *y = rec + field(tr, yq, i);
         if (xq == 0)
-            plot_trace(c->canvas, rec + TRAIL_T, y, k, w, now, &c->xa, &c->ya, dashed, col);
+            plot_trace(c->canvas, rec + TRAIL_T, y, k, w, 0.0, &c->xa, &c->ya, dashed, col);
         else if (dashed)
             plot_dashed_path(c->canvas, rec + field(tr, xq, i), y, k, w, &c->xa, &c->ya, col);
         else
@@ -131,7 +124,7 @@ static void cursor_lines(struct chart *c, const struct app *app, const struct sc
         const double *r = scope_record(app, v, k);
         if (!r)
             continue;
-        int x = (int)floor(axis_dot(&c->xa, r[TRAIL_T] - v->end) + 0.5);
+        int x = (int)floor(axis_dot(&c->xa, r[TRAIL_T]) + 0.5);
         for (int y = k; y < h; y += 2)
             canvas_set(c->canvas, x, y, PAIR_TITLE);
     }
@@ -155,9 +148,11 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     bool motor = id == PLOT_X && m->boundary == BOUNDARY_MOTOR;
     double end = v.end, window = v.window;
     if (xq == 0)
-        chart_fit_time(c, window);
+        chart_fit_time(c, end, window);
     int k, gk = 0;
-    double t0 = end + (xq == 0 ? left_time(c) : -window);
+    /* A time plot shows what its axis spans (a little more than the window); a phase
+     * portrait, the window. */
+    double t0 = xq == 0 ? chart_left_time(c) - 1e-9 : end - window;
     const double *rec = chart_window(tr, t0, &k), *grec = gt ? chart_window(gt, t0, &gk) : NULL;
     k = up_to(tr, rec, k, end);
     if (gt)
@@ -184,16 +179,16 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     if (xq == 0)
         cursor_lines(c, app, &v);
     if (gt)
-        traces(c, id, gt, grec, gk, end, true, hidden, top);
-    traces(c, id, tr, rec, k, end, false, hidden, top);
+        traces(c, id, gt, grec, gk, true, hidden, top);
+    traces(c, id, tr, rec, k, false, hidden, top);
     if (motor)
-        plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, end, &c->xa, &c->ya, true,
+        plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, 0.0, &c->xa, &c->ya, true,
                    PAIR_MOTOR);
     /* Where each curve ends: the newest sample's cell. */
     int h = 4 * c->canvas->rows;
     const double *last = k > 0 ? rec + (size_t)(k - 1) * w : NULL;
     for (int i = 0; i < 10 && last && i < tr->n; i++) {
-        double dx = xq == 0 ? axis_dot(&c->xa, last[TRAIL_T] - end)
+        double dx = xq == 0 ? axis_dot(&c->xa, last[TRAIL_T])
                             : axis_dot(&c->xa, last[field(tr, xq, i)]);
         double dy = h - 1 - axis_dot(&c->ya, last[field(tr, yq, i)]);
         if (dx > -0.5 && dx < 2 * c->canvas->cols - 0.5 && dy > -0.5 && dy < h - 0.5) {

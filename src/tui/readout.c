@@ -45,38 +45,63 @@ static void row3(char *buf, const char *label, const double v[3], int cw)
     snprintf(buf, LINE, "%-2s%*s%*s%*s", label, cw, num[0], cw, num[1], cw, num[2]);
 }
 
-/* The measurements' rows, into lines; how many. */
+/* The driven steady state's rows: measured beside the theory's. */
+static int steady_lines(const struct scope_motion *sm, char lines[][LINE])
+{
+    const struct measure_drive *d = &sm->d;
+    char a[32], b[32];
+    int n = 0;
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", "", "measured", "theory");
+    scope_number(a, sizeof a, d->amplitude, 9);
+    scope_number(b, sizeof b, sm->theory_ratio * d->drive, 9);
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", "amp m", a, b);
+    snprintf(a, sizeof a, "%.1f", d->phase);
+    snprintf(b, sizeof b, "%.1f", sm->theory_phase);
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", term_utf8() ? "phase °" : "phase deg", a, b);
+    scope_number(a, sizeof a, d->ratio, 9), scope_number(b, sizeof b, sm->theory_ratio, 9);
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", "ratio", a, b);
+    return n;
+}
+
+/* The measurements' rows, most important first, into lines; how many. */
 static int measure_lines(const struct app *app, const struct scope_view *v, int i,
                          char lines[][LINE])
 {
-    struct measure m;
+    struct scope_motion sm;
+    const struct measure *m = &sm.m;
     char a[32], b[32];
     int n = 0;
-    scope_measure(v, i, &m);
+    scope_motion(app, v, i, &sm);
     snprintf(lines[n++], LINE, "measured: mass %d %s", i + 1,
              app->model->n > 1 ? (term_utf8() ? "(↑↓)" : "(Up/Down)") : "");
-    if (m.peaks >= 2) {
-        scope_number(a, sizeof a, m.period, 8), scope_number(b, sizeof b, m.frequency, 8);
+    if (sm.kind == MOTION_TRANSIENT) {
+        snprintf(lines[n++], LINE, "transient: %s", scope_peaks_word(m));
+        snprintf(lines[n++], LINE, "not a free decay, not steady");
+    } else if (sm.kind == MOTION_STEADY) {
+        snprintf(lines[n++], LINE, "%s (±%g %%)", scope_motion_name(&sm), 100.0 * MEASURE_LEVEL);
+    } else if (sm.kind == MOTION_DECAY) {
+        snprintf(lines[n++], LINE, "free decay: peaks falling");
+    } else {
+        snprintf(lines[n++], LINE, m->peaks < 2 ? "not enough peaks (%d)" :
+                 "driven: too few periods shown", m->peaks);
+    }
+    if (sm.kind == MOTION_STEADY && sm.driven)
+        n += steady_lines(&sm, lines + n);
+    if (m->peaks >= 2) {
+        scope_number(a, sizeof a, m->period, 8), scope_number(b, sizeof b, m->frequency, 8);
         snprintf(lines[n++], LINE, "T %s s  f %s Hz", a, b);
     }
-    scope_number(a, sizeof a, m.p2p, 8), scope_number(b, sizeof b, m.rms, 8);
+    if (sm.kind == MOTION_DECAY) {
+        scope_number(a, sizeof a, m->delta, 8), scope_number(b, sizeof b, m->zeta, 8);
+        snprintf(lines[n++], LINE, "δ %s  ζ %s", a, b);
+    }
+    if ((sm.kind == MOTION_DECAY || (sm.kind == MOTION_STEADY && !sm.driven)) &&
+        sm.mode >= 0 && !isnan(sm.theory_zeta)) {
+        scope_number(a, sizeof a, sm.theory_zeta, 8);
+        snprintf(lines[n++], LINE, "theory ζ %s (mode %d)", a, sm.mode + 1);
+    }
+    scope_number(a, sizeof a, m->p2p, 8), scope_number(b, sizeof b, m->rms, 8);
     snprintf(lines[n++], LINE, "p-p %s m  rms %s m", a, b);
-    if (m.peaks < 2) {
-        snprintf(lines[n++], LINE, "not enough peaks (%d)", m.peaks);
-        return n;
-    }
-    if (isnan(m.delta)) {
-        snprintf(lines[n++], LINE, "δ: a peak at or below 0");
-        return n;
-    }
-    scope_number(a, sizeof a, m.delta, 8), scope_number(b, sizeof b, m.zeta, 8);
-    snprintf(lines[n++], LINE, "δ %s  ζ %s", a, b);
-    int mode;
-    double z = scope_theory_zeta(app, &m, &mode);
-    if (mode >= 0 && !isnan(z)) {
-        scope_number(a, sizeof a, z, 8);
-        snprintf(lines[n++], LINE, "theory ζ %s (mode %d)", a, mode + 1);
-    }
     return n;
 }
 
@@ -113,7 +138,7 @@ void readout_draw(const struct layout *l, const struct app *app)
     int n = tr->n, mass = scope_mass(app), cw = (w - 2) / 3;
     int d = app_time_decimals(app->cfg.dt);
     char head[2][LINE], span[2][LINE], hdr[LINE], motor[LINE];
-    char meas[8][LINE];
+    char meas[12][LINE];
     int nm = measure_lines(app, &v, mass, meas);
     /* The cursors' times, and with two the difference. */
     if (c1) {

@@ -80,9 +80,9 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
     sim_energy(app->sim, &e);
     double now = sim_time(app->sim), window = app_window(app);
     if (fresh) {
-        chart_fit_time(c, window);
+        chart_fit_time(c, now, window);
         int k;
-        const double *rec = chart_window(tr, now - window, &k);
+        const double *rec = chart_window(tr, chart_left_time(c) - 1e-9, &k);
         double lo = 0.0, hi = 0.0;
         ev->peak = 0.0;
         for (int s = 0; s < k; s++)
@@ -97,7 +97,7 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
             canvas_clear(c->canvas);
             for (int q = TRAIL_ENERGIES - 1; q >= 0; q--)
                 plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_E(tr, q), k, (size_t)tr->width,
-                           now, &c->xa, &c->ya, q == TRAIL_WORK, (unsigned char)colors[q]);
+                           0.0, &c->xa, &c->ya, q == TRAIL_WORK, (unsigned char)colors[q]);
         }
     }
     chart_draw(c, "Energy (J): balance = kinetic + potential + damped + contact − motor",
