@@ -109,8 +109,10 @@ static void parse(const char *buf, struct answers *a)
     }
 }
 
-/* Sends the queries and reads the answers until DA1's or the time is up. */
-static void ask(struct answers *a)
+/* Sends the queries and reads the answers until DA1's or the time is up. Keys typed
+ * meanwhile wait in g->answers for the loop, and answers later than the wait are told
+ * from keys there too (answer.h): nothing is flushed. */
+static void ask(struct graphics *g, struct answers *a)
 {
     struct termios saved, raw;
     if (tcgetattr(STDIN_FILENO, &saved) != 0)
@@ -120,30 +122,22 @@ static void ask(struct answers *a)
     raw.c_cc[VMIN] = 0;
     raw.c_cc[VTIME] = 0;
     tcsetattr(STDIN_FILENO, TCSANOW, &raw);
-    char buf[2048];
-    size_t len = 0;
     if (write(STDOUT_FILENO, queries, sizeof queries - 1) == (ssize_t)(sizeof queries - 1)) {
         double end = now_ms() + GRAPHICS_TIMEOUT_MS;
-        while (!a->da1 && len < sizeof buf - 1) {
+        while (!a->da1) {
+            unsigned char buf[512];
             int left = (int)(end - now_ms());
             struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
             if (left <= 0 || poll(&pfd, 1, left) <= 0)
                 break;
-            ssize_t got = read(STDIN_FILENO, buf + len, sizeof buf - 1 - len);
+            ssize_t got = read(STDIN_FILENO, buf, sizeof buf);
             if (got <= 0)
                 break;
-            len += (size_t)got;
-            buf[len] = '\0';
-            struct answers seen = {0};
-            parse(buf, &seen);
-            a->da1 = seen.da1;
+            for (ssize_t i = 0; i < got; i++)
+                if (answer_feed(&g->answers, buf[i], now_ms() / 1e3))
+                    parse(g->answers.answer, a);
         }
     }
-    buf[len] = '\0';
-    parse(buf, a);
-    /* Answers still on their way are not keys. */
-    if (!a->da1)
-        tcflush(STDIN_FILENO, TCIFLUSH);
     tcsetattr(STDIN_FILENO, TCSANOW, &saved);
 }
 
@@ -160,7 +154,7 @@ static void query(struct graphics *g)
 {
     struct answers a = {0};
     g->asked = true;
-    ask(&a);
+    ask(g, &a);
     struct winsize ws;
     g->cw = g->ch = 0;
     if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_xpixel && ws.ws_ypixel && ws.ws_col &&

@@ -124,6 +124,29 @@ static void follow_graphics(struct tui *t)
                 config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
 }
 
+/* The next key within ms milliseconds, or ERR: what the terminal sends goes through the
+ * answers' scanner first (answer.h), so an answer to the start-up queries arriving late is
+ * never taken for keys, and keys typed while the queries were out come first. */
+static int next_key(struct tui *t, int ms)
+{
+    struct answer_scan *s = &t->gfx.answers;
+    for (;;) {
+        int k = answer_key(s);
+        if (k >= 0)
+            return k;
+        /* What follows an Esc curses hands over with it: waiting would only delay Esc. */
+        timeout(s->nheld == 1 ? 0 : ms);
+        int ch = getch();
+        double now = app_clock_now();
+        if (ch == ERR) {
+            answer_idle(s, now);
+            k = answer_key(s);
+            return k >= 0 ? k : ERR;
+        }
+        answer_feed(s, ch, now);
+    }
+}
+
 static void tui_free(struct tui *t)
 {
     scene_free(&t->scene);
@@ -201,8 +224,7 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         /* Wait for input until the next frame; take every key that is there. */
         for (;;) {
             int ms = (int)((next_frame - app_clock_now()) * 1000.0);
-            timeout(ms > 0 ? ms : 0);
-            int ch = getch();
+            int ch = next_key(&t, ms > 0 ? ms : 0);
             if (ch == ERR) {
                 /* No key, or no terminal: a hung-up one gives ERR at once, for ever, and
                  * SIGHUP may never come (it was ignored, or this is not the controlling
