@@ -11,7 +11,8 @@
  * slow link. KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is
  * Esc; a first character '^' types the one after it as soon as the queries are seen,
  * before any answer. The
- * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s.
+ * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s;
+ * with PIXTERM_RSS=FILE, the program's peak resident memory in kB is written to FILE.
  * usage: pixterm KIND COLS ROWS CELL_W CELL_H BG(RRGGBB) OUT KEYS PROGRAM [ARGS...] */
 #include <poll.h>
 #include <pty.h>
@@ -20,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -165,7 +167,16 @@ int main(int argc, char **argv)
         answer(fd, kind, buf, cw, ch, cols, rows, bg);
     }
     int status = 0;
-    waitpid(pid, &status, 0);
+    struct rusage ru;
+    memset(&ru, 0, sizeof ru);
+    wait4(pid, &status, 0, &ru);
+    /* PIXTERM_RSS=FILE: the program's peak resident memory (kB) written there. */
+    const char *rss = getenv("PIXTERM_RSS");
+    FILE *rf = rss ? fopen(rss, "w") : NULL;
+    if (rf) {
+        fprintf(rf, "%ld\n", ru.ru_maxrss);
+        fclose(rf);
+    }
     fclose(out);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }

@@ -60,7 +60,8 @@ static int csi_numbers(const char *p, int *v, int max, char *final)
     while (n < max) {
         if (!isdigit((unsigned char)*p))
             break;
-        v[n++] = (int)strtol(p, (char **)&p, 10);
+        long x = strtol(p, (char **)&p, 10);
+        v[n++] = x > 1000000 ? 1000000 : (int)x; /* a number past any screen's */
         if (*p != ';')
             break;
         p++;
@@ -170,7 +171,9 @@ static void query(struct graphics *g)
         g->dark = 0.2126 * a.rgb[0] + 0.7152 * a.rgb[1] + 0.0722 * a.rgb[2] < 0.5;
     }
     g->registers = a.registers;
-    g->sized = g->cw >= 2 && g->ch >= 4 && g->cw <= 200 && g->ch <= 400;
+    /* However large the terminal says its cells are: images are scaled down to
+     * fig_pixels_fit's caps. */
+    g->sized = g->cw >= 2 && g->ch >= 4;
     g->can = !g->sized ? GRAPHICS_BRAILLE
              : a.kitty ? GRAPHICS_KITTY
              : a.sixel ? GRAPHICS_SIXEL
@@ -287,8 +290,10 @@ static void out_add(struct fig_bytes *b, const void *p, size_t n)
     b->len += n;
 }
 
-/* The PNG in g->img as kitty escapes, placed at the cursor, numbered id. */
-static void kitty_escapes(struct graphics *g, int id)
+/* The PNG in g->img as kitty escapes, placed at the cursor over cols x rows cells
+ * (kitty scales it there: an image drawn with smaller cells than the terminal's still
+ * fills its area), numbered id. */
+static void kitty_escapes(struct graphics *g, int id, int cols, int rows)
 {
     char head[96];
     gchar chunk[KITTY_CHUNK + 8];
@@ -299,8 +304,9 @@ static void kitty_escapes(struct graphics *g, int id)
         gsize len = g_base64_encode_step(g->img.data + at, n, FALSE, chunk, &state, &save);
         if (at + n >= g->img.len)
             len += g_base64_encode_close(FALSE, chunk + len, &state, &save);
-        int hl = at == 0 ? snprintf(head, sizeof head, "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,m=%d;",
-                                    id, at + n < g->img.len)
+        int hl = at == 0 ? snprintf(head, sizeof head,
+                                    "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,c=%d,r=%d,m=%d;", id,
+                                    cols, rows, at + n < g->img.len)
                          : snprintf(head, sizeof head, "\033_Gm=%d;", at + n < g->img.len);
         out_add(&g->out, head, (size_t)hl);
         out_add(&g->out, chunk, len);
@@ -346,17 +352,19 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         if (i < g->n && g->hash[i] == h && memcmp(&g->at[i], &r, sizeof r) == 0)
             continue;
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
-        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, g->registers, &g->img, &g->rgb) != 0)
+        int cw = g->cw, ch = g->ch;
+        fig_pixels_fit(pic.aw, pic.ah, &cw, &ch);
+        if (fig_pixels(&pic, cw, ch, g->dark, g->bg, e, g->registers, &g->img, &g->rgb) != 0)
             continue;
         char pos[32];
         int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);
         out_add(&g->out, pos, (size_t)pl);
         if (g->mode == GRAPHICS_KITTY)
-            kitty_escapes(g, KITTY_ID + i);
+            kitty_escapes(g, KITTY_ID + i, pic.aw, pic.ah);
         else
             out_add(&g->out, g->img.data, g->img.len);
         g->hash[i] = h, g->at[i] = r;
-        pixels += (double)pic.aw * pic.ah * g->cw * g->ch;
+        pixels += (double)pic.aw * pic.ah * cw * ch;
         sent++;
     }
     g->n = n < GRAPHICS_SLOTS ? n : GRAPHICS_SLOTS;
