@@ -2,8 +2,9 @@
  * start-up queries bring (device attributes, sizes, XTSMGRAPHICS, OSC 11 and OSC 4 with
  * ST or BEL, kitty's APC, DCS) is swallowed whole wherever it falls among keys, in one
  * piece or byte by byte, and the keys around it come out in their order; what only looks
- * like the start of an answer (Esc, Alt+[, an arrow curses did not know, a cut-off
- * answer) comes back as the keys it was. */
+ * like the start of an answer (Esc, Alt+[ or Alt+], an arrow curses did not know) comes
+ * back as the keys it was; an answer cut off or broken (a hostile terminal's garbage) and
+ * one too long to keep are dropped whole, never keys. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -92,15 +93,22 @@ static void not_answers(void **state)
     /* Arrows and F-keys curses did not translate: CSI with another final byte. */
     assert_string_equal(run("\033[A\033[1;5C\033[15~", 0, ans, sizeof ans),
                         "\033[A\033[1;5C\033[15~");
-    /* CSI t with something else than numbers is not a size. */
-    assert_string_equal(run("\033[>t", 0, ans, sizeof ans), "\033[>t");
-    assert_string_equal(ans, "");
-    /* Alt+] then keys with a control character among them: the OSC never ends. */
-    assert_string_equal(run("\033]ab\rc", 0, ans, sizeof ans), "\033]ab\rc");
-    /* An ESC inside a string that is not ST: what came before is keys, the ESC begins
-     * again (here an answer). */
-    assert_string_equal(run("\033_x\033[?1c", 0, ans, sizeof ans), "\033_x");
+    /* CSI t and CSI c whatever their parameters: a terminal's garbage, swallowed. */
+    assert_string_equal(run("\033[4;-5;-7t\033[>0;1c", 0, ans, sizeof ans), "");
+    assert_string_equal(ans, "\033[4;-5;-7t|\033[>0;1c|");
+    /* Alt+] then Enter: keys. */
+    assert_string_equal(run("\033]\rc", 0, ans, sizeof ans), "\033]\rc");
+    /* A string cut by a control character: dropped, what follows is keys. */
+    assert_string_equal(run("\033]ab\rc", 0, ans, sizeof ans), "\rc");
+    /* An ESC inside a string that is not ST: what came before is dropped, the ESC begins
+     * again (here an answer). A hostile terminal's unended OSC before a size answer:
+     * nothing of it reaches the keys (its ], g, r acted as keys). */
+    assert_string_equal(run("\033_x\033[?1c", 0, ans, sizeof ans), "");
     assert_string_equal(ans, "\033[?1c|");
+    assert_string_equal(run("\033]11;rgb:zz\033[4;270000;100tq", 0, ans, sizeof ans), "q");
+    assert_string_equal(ans, "\033[4;270000;100t|");
+    /* A CSI with numbers cut by an Esc: dropped. */
+    assert_string_equal(run("\033[6;9000\033[?6cq", 0, ans, sizeof ans), "q");
     /* A curses key code (above 255) ends a part-answer: it and the code are keys. */
     setup_scan();
     answer_feed(&scan, 0x1b, 0);
@@ -129,7 +137,14 @@ static void gaps(void **state)
     assert_true(answer_feed(&scan, 'c', 1.0 + ANSWER_GAP * 1.5));
     assert_string_equal(scan.answer, "\033[?6c");
     assert_int_equal(answer_key(&scan), -1);
-    /* Quiet longer than the gap: keys, and the next byte is a key after them. */
+    /* A part-answer quiet longer than the gap: dropped, the next byte a key. */
+    answer_feed(&scan, 0x1b, 4.0);
+    answer_feed(&scan, '[', 4.0);
+    answer_feed(&scan, '6', 4.0);
+    answer_feed(&scan, 'q', 4.0 + ANSWER_GAP * 2);
+    assert_int_equal(answer_key(&scan), 'q');
+    assert_int_equal(answer_key(&scan), -1);
+    /* Alt+] quiet longer than the gap: keys, and the next byte is a key after them. */
     answer_feed(&scan, 0x1b, 5.0);
     answer_feed(&scan, ']', 5.0);
     answer_feed(&scan, 'z', 5.0 + ANSWER_GAP * 2);
@@ -143,18 +158,27 @@ static void gaps(void **state)
     assert_false(answer_holding(&scan));
 }
 
-/* A string longer than ANSWER_MAX is not an answer: all of it comes back, nothing lost. */
+/* A string longer than ANSWER_MAX is swallowed to its end, not read; the keys after it
+ * come through. A CSI that long is dropped. */
 static void too_long(void **state)
 {
     (void)state;
     setup_scan();
-    char in[ANSWER_MAX + 40], ans[64];
+    char in[3 * ANSWER_MAX], ans[64];
     strcpy(in, "\033]");
-    memset(in + 2, 'x', ANSWER_MAX + 10);
-    strcpy(in + 2 + ANSWER_MAX + 10, "\033\\");
-    const char *keys = run(in, 0, ans, sizeof ans);
-    assert_int_equal(strlen(keys), strlen(in));
+    memset(in + 2, 'x', 2 * ANSWER_MAX);
+    strcpy(in + 2 + 2 * ANSWER_MAX, "\033\\q");
+    assert_string_equal(run(in, 0, ans, sizeof ans), "q");
     assert_string_equal(ans, "");
+    assert_int_equal(scan.dropped, 1);
+    strcpy(in, "\033[");
+    memset(in + 2, '1', ANSWER_MAX + 10);
+    strcpy(in + 2 + ANSWER_MAX + 10, "tq");
+    const char *keys = run(in, 0, ans, sizeof ans);
+    assert_string_equal(ans, "");
+    assert_int_equal(strspn(keys, "1"), strlen(keys) - 2); /* what came after the drop */
+    assert_string_equal(keys + strlen(keys) - 2, "tq");
+    assert_int_equal(scan.dropped, 2);
 }
 
 int main(void)

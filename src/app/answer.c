@@ -24,6 +24,21 @@ static void give_back(struct answer_scan *s)
     for (int i = 0; i < s->nheld; i++)
         push_key(s, s->held[i]);
     s->nheld = 0;
+    s->truncated = false;
+}
+
+/* What is held stopped short of an answer's end: keys if it is only an Esc and an
+ * introducer (Alt with [, ], _ or P), else a broken answer (a terminal's garbage, an
+ * answer cut off), dropped: its bytes as keys would act at random. */
+static void cut_off(struct answer_scan *s)
+{
+    if (s->nheld <= 2) {
+        give_back(s);
+        return;
+    }
+    s->nheld = 0;
+    s->truncated = false;
+    s->dropped++;
 }
 
 static bool finish(struct answer_scan *s)
@@ -33,22 +48,22 @@ static bool finish(struct answer_scan *s)
     s->answer_len = (size_t)s->nheld;
     s->answer[s->answer_len] = '\0';
     s->nheld = 0;
+    if (s->truncated) {
+        s->truncated = false;
+        s->dropped++;
+        return false; /* swallowed, but not read: its text was lost */
+    }
     s->answers++;
     return true;
 }
 
-/* A whole CSI sequence held (its final byte last): an answer? CSI ? ... anything, or
- * CSI digits ; ... t. */
+/* A whole CSI sequence held (its final byte last): an answer? CSI ? ... anything, and
+ * CSI ... t or CSI ... c whatever their parameters (no key ends so; a terminal's
+ * garbage such as CSI 4;-5;-7 t is swallowed too). */
 static bool csi_answer(const struct answer_scan *s)
 {
-    if (s->held[2] == '?')
-        return true;
-    if (s->held[s->nheld - 1] != 't')
-        return false;
-    for (int i = 2; i < s->nheld - 1; i++)
-        if (!(s->held[i] >= '0' && s->held[i] <= '9') && s->held[i] != ';')
-            return false;
-    return s->nheld > 3;
+    int final = s->held[s->nheld - 1];
+    return s->held[2] == '?' || final == 't' || final == 'c';
 }
 
 /* ch after ESC [ ...: 0 held, 1 an answer completed, -1 not an answer (ch not taken). */
@@ -79,7 +94,7 @@ static int string_byte(struct answer_scan *s, int ch)
             return finish(s);
         }
         s->nheld--;
-        give_back(s);
+        cut_off(s);
         s->held[s->nheld++] = ESC;
         return -1;
     }
@@ -97,7 +112,7 @@ static int string_byte(struct answer_scan *s, int ch)
 bool answer_feed(struct answer_scan *s, int ch, double now)
 {
     if (s->nheld > 0 && now - s->last > ANSWER_GAP)
-        give_back(s);
+        cut_off(s);
     s->last = now;
     for (;;) {
         if (s->nheld == 0) {
@@ -108,8 +123,14 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
             return false;
         }
         if (s->nheld >= ANSWER_MAX - 1) {
-            give_back(s);
-            continue;
+            /* Too long to keep: a string goes on to its end, its text dropped; a CSI
+             * this long is no answer. */
+            if (s->held[1] == '[') {
+                cut_off(s);
+                continue;
+            }
+            s->nheld = 2;
+            s->truncated = true;
         }
         int r;
         if (s->nheld == 1) {
@@ -124,14 +145,16 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
         if (r >= 0)
             return r == 1;
         if (s->nheld > 1)
-            give_back(s); /* else string_byte began again at its ESC: ch follows it */
+            cut_off(s); /* else string_byte began again at its ESC: ch follows it */
     }
 }
 
 void answer_idle(struct answer_scan *s, double now)
 {
-    if (s->nheld == 1 || (s->nheld > 1 && now - s->last > ANSWER_GAP))
+    if (s->nheld == 1)
         give_back(s);
+    else if (s->nheld > 1 && now - s->last > ANSWER_GAP)
+        cut_off(s);
 }
 
 int answer_key(struct answer_scan *s)

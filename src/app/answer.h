@@ -3,14 +3,17 @@
  * scanner, which holds what may be an answer, swallows every answer whole and hands on the
  * rest as keys, in the order they were typed. An answer is
  *   CSI ? ... F     (any final byte F: device attributes "c", XTSMGRAPHICS "S", ...)
- *   CSI n ; ... t   (window and cell sizes)
+ *   CSI ... t       (window and cell sizes), CSI ... c (device attributes)
  *   OSC ... ST/BEL  (colours: the background, the palette)
  *   APC ... ST      (kitty's graphics answer "_G...")
  *   DCS ... ST      (DECRQSS, XTGETTCAP)
- * No key starts like these but Alt with [, ], _ or P, which a sequence that does not end
- * as an answer gives back: a byte no answer holds (a control character, a curses key
- * code), more than ANSWER_MAX bytes, or ANSWER_GAP seconds without the next byte. A lone Esc
- * is given back as soon as nothing follows it (answer_idle). */
+ * No key starts like these but Alt with [, ], _ or P. A sequence cut short (by a byte no
+ * answer holds: a control character, an Esc, a curses key code; or by ANSWER_GAP seconds
+ * without its next byte) is given back as keys when it is only Esc and the introducer,
+ * and dropped otherwise (a terminal's garbage or an answer cut off: its bytes as keys
+ * would act at random). A complete CSI sequence that is no answer (an arrow curses did
+ * not know) is given back. A string longer than ANSWER_MAX is swallowed to its end. A
+ * lone Esc is given back as soon as nothing follows it (answer_idle). */
 #ifndef SPRINGSIM_ANSWER_H
 #define SPRINGSIM_ANSWER_H
 
@@ -30,6 +33,8 @@ struct answer_scan {
     char answer[ANSWER_MAX + 1]; /* the answer answer_feed last completed, NUL-ended */
     size_t answer_len;
     int answers;         /* answers swallowed so far */
+    int dropped;         /* broken answers dropped so far (too long, cut off) */
+    bool truncated;      /* the string held lost its text (longer than ANSWER_MAX) */
 };
 
 /* Feeds one input: a byte (0..255), or a curses key code above 255, that came at `now`
