@@ -24,8 +24,14 @@ BIN ?= springsim
 CFLAGS ?= -O2 -g
 WARN = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 \
        -Wwrite-strings -Wpointer-arith
-DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' -DPRESETDIR='"$(DATADIR)/presets"' \
-       -DLESSONDIR='"$(DATADIR)/lessons"'
+# Make's text as one word of the shell (in single quotes, each ' as '\''), and as the
+# inside of a C string (\ and " escaped): a PREFIX or DATADIR with quotes or backslashes
+# is compiled in as it is.
+shell_word = '$(subst ','\'',$(1))'
+c_text = $(subst ",\",$(subst \,\\,$(1)))
+DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' \
+       -DPRESETDIR=$(call shell_word,"$(call c_text,$(DATADIR)/presets)") \
+       -DLESSONDIR=$(call shell_word,"$(call c_text,$(DATADIR)/lessons)")
 
 # Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
 CORE_PKGS = inih lapacke gsl fftw3
@@ -120,7 +126,8 @@ $(MAIN_OBJ): $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
 # The preset directory is compiled in: rebuild what uses it when PREFIX or DATADIR change.
 $(BUILD)/.datadir: FORCE
 	@mkdir -p $(@D)
-	@echo '$(DATADIR)' | cmp -s - $@ || echo '$(DATADIR)' >$@
+	@printf '%s\n' $(call shell_word,$(DATADIR)) | cmp -s - $@ || \
+	    printf '%s\n' $(call shell_word,$(DATADIR)) >$@
 $(BUILD)/core/preset.o $(BUILD)/core/search.o $(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/.datadir
 FORCE:
 

@@ -50,32 +50,10 @@ static int interactive_limits(const struct config *c)
     return EXIT_USAGE;
 }
 
-/* --list-presets: the list written through config_escape line by line, so a preset's
- * description cannot carry control bytes to the terminal. */
+/* --list-presets: preset_list's lines (escaped there). */
 static int list_presets(const char *exe_dir)
 {
-    char *text = NULL;
-    size_t size = 0;
-    FILE *mem = open_memstream(&text, &size);
-    if (!mem) {
-        options_say("out of memory");
-        return EXIT_FAILURE;
-    }
-    int found = preset_list(mem, exe_dir);
-    if (fclose(mem) != 0) {
-        free(text);
-        options_say("out of memory");
-        return EXIT_FAILURE;
-    }
-    for (char *line = text; line < text + size;) {
-        char *nl = memchr(line, '\n', (size_t)(text + size - line));
-        size_t n = nl ? (size_t)(nl - line) : (size_t)(text + size - line);
-        char safe[4 * 1024 + 8];
-        config_escape(line, n, 1024, safe, sizeof safe);
-        printf("%s\n", safe);
-        line += n + 1;
-    }
-    free(text);
+    int found = preset_list(stdout, exe_dir);
     if (found == 0)
         options_say("no presets found (searched the user's directory, $SPRINGSIM_PRESETS, %s "
             "and %s/presets)", preset_installed_dir, exe_dir);

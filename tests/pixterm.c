@@ -7,8 +7,12 @@
  *   kitty  kitty's graphics query answered OK, device attributes without 4, cell size
  *   vt220  device attributes without 4, cell size: a terminal without images
  *   none   answers nothing
- * KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is Esc. The
- * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s.
+ * KIND may end in "+MS": the answers come MS milliseconds after the queries, as over a
+ * slow link. KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is
+ * Esc; a first character '^' types the one after it as soon as the queries are seen,
+ * before any answer. The
+ * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s;
+ * with PIXTERM_RSS=FILE, the program's peak resident memory in kB is written to FILE.
  * usage: pixterm KIND COLS ROWS CELL_W CELL_H BG(RRGGBB) OUT KEYS PROGRAM [ARGS...] */
 #include <poll.h>
 #include <pty.h>
@@ -17,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -28,8 +33,21 @@ static double now_s(void)
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
+static int delay_ms;          /* the answers' lateness */
+static char late[8192];       /* answers on their way */
+static size_t nlate;
+static double late_at;        /* when they go */
+
 static void say(int fd, const char *s)
 {
+    if (delay_ms > 0) {
+        size_t n = strlen(s);
+        if (nlate == 0)
+            late_at = now_s() + delay_ms / 1e3;
+        if (nlate + n <= sizeof late)
+            memcpy(late + nlate, s, n), nlate += n;
+        return;
+    }
     if (write(fd, s, strlen(s)) < 0)
         perror("pixterm: write");
 }
@@ -39,8 +57,8 @@ static void answer(int fd, const char *kind, const char *tail, int cw, int ch, i
                    int rows, const char *bg)
 {
     char buf[128];
-    bool none = strcmp(kind, "none") == 0, sixel = strncmp(kind, "sixel", 5) == 0,
-         kitty = strcmp(kind, "kitty") == 0;
+    bool none = strncmp(kind, "none", 4) == 0, sixel = strncmp(kind, "sixel", 5) == 0,
+         kitty = strncmp(kind, "kitty", 5) == 0;
     int registers = strchr(kind, '/') ? atoi(strchr(kind, '/') + 1) : 0;
     if (none)
         return;
@@ -77,6 +95,11 @@ int main(int argc, char **argv)
     }
     const char *kind = argv[1], *bg = argv[6], *keys = argv[8];
     int cols = atoi(argv[2]), rows = atoi(argv[3]), cw = atoi(argv[4]), ch = atoi(argv[5]);
+    if (strchr(kind, '+'))
+        delay_ms = atoi(strchr(kind, '+') + 1);
+    char early = 0;
+    if (keys[0] == '^' && keys[1])
+        early = keys[1], keys += 2;
     FILE *out = fopen(argv[7], "wb");
     if (!out) {
         perror(argv[7]);
@@ -119,8 +142,13 @@ int main(int argc, char **argv)
             }
             k++;
         }
+        if (nlate && t >= late_at) {
+            if (write(fd, late, nlate) < 0)
+                perror("pixterm: write");
+            nlate = 0;
+        }
         struct pollfd p = {fd, POLLIN, 0};
-        if (poll(&p, 1, 20) <= 0)
+        if (poll(&p, 1, 5) <= 0)
             continue;
         char buf[65536 + 256];
         ssize_t r = read(fd, buf, 65536);
@@ -131,10 +159,24 @@ int main(int argc, char **argv)
         for (ssize_t i = 0; i < r; i++)
             if (buf[i] == '\0')
                 buf[i] = ' ';
+        if (early && strstr(buf, "\033[c")) {
+            if (write(fd, &early, 1) < 0)
+                perror("pixterm: write");
+            early = 0;
+        }
         answer(fd, kind, buf, cw, ch, cols, rows, bg);
     }
     int status = 0;
-    waitpid(pid, &status, 0);
+    struct rusage ru;
+    memset(&ru, 0, sizeof ru);
+    wait4(pid, &status, 0, &ru);
+    /* PIXTERM_RSS=FILE: the program's peak resident memory (kB) written there. */
+    const char *rss = getenv("PIXTERM_RSS");
+    FILE *rf = rss ? fopen(rss, "w") : NULL;
+    if (rf) {
+        fprintf(rf, "%ld\n", ru.ru_maxrss);
+        fclose(rf);
+    }
     fclose(out);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }

@@ -1,11 +1,14 @@
 /* slowterm.c: a terminal that stops reading. Runs the interactive program in a
  * pseudo-terminal, starts it, then reads nothing for a while, as a stalled SSH link
- * would: the program must notice its output backing up, step down to low bandwidth on
- * its own and say so. Prints "slowterm: N passed, M failed".
+ * would: a stall of 1 s (a busy machine, a hiccup) changes nothing; one of 4 s makes the
+ * program notice its output backing up, step down to low bandwidth on its own and say
+ * so; once the terminal reads again and keeps up (12 s), it steps back up and says so.
+ * Prints "slowterm: N passed, M failed".
  * usage: slowterm PROGRAM */
 #include <poll.h>
 #include <pty.h>
 #include <signal.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,6 +61,21 @@ int main(int argc, char **argv)
     if (write(fd, " ", 1) != 1)
         return 1;
     drain(fd, 300);
+    /* A hiccup: 1 s without reading, then reading again. */
+    sleep(1);
+    drain(fd, 1500);
+    have = 0;
+    if (write(fd, "\f", 1) != 1)
+        return 1;
+    drain(fd, 800);
+    if (memmem(screen, have, "Running", 7) && !memmem(screen, have, "keeping", 7) &&
+        !memmem(screen, have, "low refresh", 11)) {
+        passed++;
+    } else {
+        failed++;
+        printf("FAIL: a terminal that stopped reading for 1 s only: the program stepped down "
+               "(or is not running)\n");
+    }
     have = 0;
     sleep(4); /* the link stalls: nothing is read */
     drain(fd, 1500);
@@ -80,6 +98,22 @@ int main(int argc, char **argv)
             fwrite(screen, 1, have, f);
             fclose(f);
         }
+    }
+    /* The link keeps up again: back to the normal refresh, said. */
+    have = 0;
+    drain(fd, 12000);
+    bool said = memmem(screen, have, "keeps up again", 14) != NULL;
+    have = 0;
+    if (write(fd, "\f", 1) != 1)
+        return 1;
+    drain(fd, 800);
+    if (said && !memmem(screen, have, "low refresh", 11) && memmem(screen, have, "Running", 7)) {
+        passed++;
+    } else {
+        failed++;
+        printf("FAIL: the terminal read again for 12 s: no step back up (said: %s, low "
+               "refresh still shown: %s)\n", said ? "yes" : "no",
+               memmem(screen, have, "low refresh", 11) ? "yes" : "no");
     }
     /* Still alive and answering. */
     int status = 0, done = 0;

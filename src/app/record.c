@@ -21,6 +21,14 @@
 #endif
 
 /* Not pause: in a lesson it waits for the user, and every run ends paused anyway. */
+/* "PATH: reason" into err, the path escaped. */
+static void say_failed(char *err, size_t errlen, const char *path, const char *why)
+{
+    char safe[1200];
+    config_escape(path, strlen(path), 256, safe, sizeof safe);
+    snprintf(err, errlen, "%s: %s", safe, why);
+}
+
 bool record_wants(int cmd)
 {
     switch ((enum command_id)cmd) {
@@ -49,22 +57,15 @@ int record_start(struct record *r, const char *path, const struct app *app, char
                  size_t errlen)
 {
     memset(r, 0, sizeof *r);
-    if (snprintf(r->path, sizeof r->path, "%s", path) >= (int)sizeof r->path ||
-        snprintf(r->tmp, sizeof r->tmp, "%s.XXXXXX", path) >= (int)sizeof r->tmp) {
-        snprintf(err, errlen, "%.60s...: too long for a file name", path);
+    snprintf(r->path, sizeof r->path, "%s", path);
+    int e = output_open(&r->out, path);
+    if (e) {
+        say_failed(err, errlen, path, strerror(e));
         return -1;
     }
-    int fd = mkstemp(r->tmp);
-    if (fd < 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        r->tmp[0] = '\0';
-        return -1;
-    }
-    fchmod(fd, 0644); /* as a file written with the usual umask */
-    close(fd);
     r->mem = open_memstream(&r->text, &r->size);
     if (!r->mem) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        say_failed(err, errlen, path, strerror(errno));
         record_abandon(r);
         return -1;
     }
@@ -82,13 +83,28 @@ int record_start(struct record *r, const char *path, const struct app *app, char
     return 0;
 }
 
-/* The time run up to t at playback speed `speed`, as a run line. */
-static void run_to(struct record *r, double t, double speed)
+/* The shortest decimal that `run` replays as the same steps as d seconds at step dt:
+ * within dt / 1e10 of d (the replay stops at the first step past the end less dt / 1e9),
+ * so the difference of two times on the grid is written as the user would (1.34, not
+ * 1.3399999999999999). */
+static void format_run(double d, double dt, char *buf, size_t len)
+{
+    double tol = fabs(dt) * 1e-10;
+    for (int digits = 1; digits <= 17; digits++) {
+        snprintf(buf, len, "%.*g", digits, d);
+        if (fabs(strtod(buf, NULL) - d) <= tol)
+            return;
+    }
+    config_format_exact(d, buf, len);
+}
+
+/* The time run up to t (on a grid of step dt) at playback speed `speed`, as a run line. */
+static void run_to(struct record *r, double t, double dt, double speed)
 {
     if (!r->mem || !(t > r->t))
         return;
     char num[32];
-    config_format_exact(t - r->t, num, sizeof num);
+    format_run(t - r->t, dt, num, sizeof num);
     fprintf(r->mem, "run %s\n", num);
     r->run_wall += (t - r->t) / (speed > 0.0 ? speed : 1.0);
     r->t = t;
@@ -108,7 +124,7 @@ static void wait_now(struct record *r)
 
 void record_time(struct record *r, const struct app *app)
 {
-    run_to(r, sim_time(app->sim), app->speed);
+    run_to(r, sim_time(app->sim), app->cfg.dt, app->speed);
 }
 
 void record_line(struct record *r, const struct app *app, const char *line)
@@ -132,6 +148,14 @@ void record_command(struct record *r, const struct app *app, const char *line)
     if (cmd == CMD_RANDOM) {
         /* the seed it drew, so that the replay draws the same positions */
         snprintf(text, sizeof text, "random %llu", (unsigned long long)app->cfg.seed);
+    } else if (cmd == CMD_PRESET) {
+        /* a file's name as typed, its blanks kept (the command takes the rest of the
+         * line, trimmed) */
+        const char *rest = w + n + strspn(w + n, " \t");
+        size_t len = strlen(rest);
+        while (len > 0 && (rest[len - 1] == ' ' || rest[len - 1] == '\t'))
+            len--;
+        snprintf(text, sizeof text, "preset %.*s", (int)len, rest);
     } else {
         /* the words as typed, their blanks made one */
         size_t o = 0;
@@ -170,7 +194,11 @@ void record_mark(struct record *r, const struct app *app)
     k->mass = app->cfg.mass;
     k->damping = app->cfg.damping;
     k->spring = app->cfg.spring;
+    for (int i = 0; i <= m->n && i <= CONFIG_INTERACTIVE_MAX_MASSES; i++)
+        k->k[i] = m->k[i];
     for (int i = 0; i < m->n && i < CONFIG_INTERACTIVE_MAX_MASSES; i++) {
+        k->m[i] = m->m[i];
+        k->c[i] = m->c[i];
         k->x[i] = sim_x(app->sim)[i];
         k->x0[i] = app->cfg.x0.count ? app->cfg.x0.v[app->cfg.x0.count == 1 ? 0 : i] : 0.0;
     }
@@ -182,7 +210,7 @@ static void put(struct record *r, const char *fmt, ...) __attribute__((format(pr
 static void put(struct record *r, const char *fmt, ...)
 {
     va_list ap;
-    run_to(r, r->mark.t, r->mark.speed);
+    run_to(r, r->mark.t, r->mark.dt, r->mark.speed);
     wait_now(r);
     va_start(ap, fmt);
     vfprintf(r->mem, fmt, ap);
@@ -191,28 +219,25 @@ static void put(struct record *r, const char *fmt, ...)
     r->lines++;
 }
 
-/* Value i of a per-element list as the settings hold it. */
-static double item(const struct config_list *l, int i)
-{
-    return l->count ? l->v[l->count == 1 ? 0 : i] : NAN;
-}
-
-/* A per-element list changed: one value for all (the control), or elements one by one. */
-static void put_list(struct record *r, const struct config_list *was, const struct config_list *now,
+/* A per-element list changed: one value for all (the control), or the elements whose
+ * values in force changed (was and now: the model's, so that a list never set, which
+ * the defaults stand for, compares and is written as the numbers it stands for). */
+static void put_list(struct record *r, const struct config_list *before,
+                     const struct config_list *after, const double *was, const double *now,
                      int count, const char *control, char kind)
 {
     char num[32];
-    if (now->count == 1) {
-        if (was->count != 1 || was->v[0] != now->v[0]) {
-            config_format_exact(now->v[0], num, sizeof num);
+    if (after->count == 1) {
+        if (before->count != 1 || before->v[0] != after->v[0]) {
+            config_format_exact(after->v[0], num, sizeof num);
             put(r, "set %s %s", control, num);
         }
         return;
     }
     for (int i = 0; i < count; i++) {
-        if (item(was, i) == item(now, i))
+        if (was[i] == now[i])
             continue;
-        config_format_exact(item(now, i), num, sizeof num);
+        config_format_exact(now[i], num, sizeof num);
         put(r, "element %c %d %s", kind, kind == 'k' ? i : i + 1, num);
     }
 }
@@ -244,9 +269,9 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
             put(r, "set boundary %s", model_boundary_name(m->boundary));
         if ((int)m->motor.wave != k->wave)
             put(r, "set wave %s", motor_wave_name(m->motor.wave));
-        put_list(r, &k->mass, &app->cfg.mass, m->n, "mass", 'm');
-        put_list(r, &k->damping, &app->cfg.damping, m->n, "damping", 'c');
-        put_list(r, &k->spring, &app->cfg.spring, m->n + 1, "spring", 'k');
+        put_list(r, &k->mass, &app->cfg.mass, k->m, m->m, m->n, "mass", 'm');
+        put_list(r, &k->damping, &app->cfg.damping, k->c, m->c, m->n, "damping", 'c');
+        put_list(r, &k->spring, &app->cfg.spring, k->k, m->k, m->n + 1, "spring", 'k');
         if (m->motor.amplitude != k->amplitude) {
             config_format_exact(m->motor.amplitude, num, sizeof num);
             put(r, "set amplitude %s", num);
@@ -308,16 +333,14 @@ void record_abandon(struct record *r)
     r->mem = NULL;
     free(r->text);
     r->text = NULL;
-    if (r->tmp[0])
-        unlink(r->tmp);
-    r->tmp[0] = '\0';
+    output_close(&r->out, false);
 }
 
 int record_finish(struct record *r, const struct app *app, char *err, size_t errlen)
 {
     char state[4096];
     if (!r->mem) {
-        snprintf(err, errlen, "%s: not recording", r->path);
+        say_failed(err, errlen, r->path, "not recording");
         return -1;
     }
     record_time(r, app);
@@ -326,25 +349,21 @@ int record_finish(struct record *r, const struct app *app, char *err, size_t err
     fprintf(r->mem, "expect %s\n", state);
     if (fclose(r->mem) != 0) {
         r->mem = NULL;
-        snprintf(err, errlen, "%s: %s", r->path, strerror(errno));
+        say_failed(err, errlen, r->path, strerror(errno));
         record_abandon(r);
         return -1;
     }
     r->mem = NULL;
-    FILE *f = fopen(r->tmp, "w");
     int e = 0;
-    if (!f || fwrite(r->text, 1, r->size, f) != r->size)
+    if (fwrite(r->text, 1, r->size, r->out.fp) != r->size)
         e = errno ? errno : EIO;
-    if (f && fclose(f) != 0 && !e)
-        e = errno;
-    if (!e && rename(r->tmp, r->path) != 0)
-        e = errno;
+    int closed = output_close(&r->out, e == 0);
+    e = e ? e : closed;
     if (e) {
-        snprintf(err, errlen, "%s: %s", r->path, strerror(e));
+        say_failed(err, errlen, r->path, strerror(e));
         record_abandon(r);
         return -1;
     }
-    r->tmp[0] = '\0';
     free(r->text);
     r->text = NULL;
     return 0;

@@ -5,8 +5,11 @@
  * preceded by `run SECONDS` for the simulated time that passed since the line before
  * and by `wait SECONDS` for the wall-clock time those runs do not account for (the chain
  * paused while the user looked), so that a replay in the program keeps the pace, and
- * ends with an `expect` line holding the state exactly. The file is written whole
- * at the end (a temporary file beside it, renamed): never half-written. */
+ * ends with an `expect` line holding the state exactly. The file is opened at the start
+ * as every output file is (core/output.h: a device or a FIFO written in place, a
+ * symbolic link followed, a new file made with the umask, an old one keeping its mode)
+ * and written whole at the end: never half-written, nothing left behind if the program
+ * is killed. */
 #ifndef SPRINGSIM_RECORD_H
 #define SPRINGSIM_RECORD_H
 
@@ -14,6 +17,7 @@
 #include <stdio.h>
 
 #include "../core/config.h"
+#include "../core/output.h"
 #include "verb.h"
 
 struct app;
@@ -30,6 +34,9 @@ struct record_mark {
     bool low_bandwidth, sweeping;
     int graphics; /* the Graphics control (enum config_graphics) */
     struct config_list mass, damping, spring; /* as the settings hold them */
+    double m[CONFIG_INTERACTIVE_MAX_MASSES];  /* the values in force: the masses, */
+    double c[CONFIG_INTERACTIVE_MAX_MASSES];  /* the dampers */
+    double k[CONFIG_INTERACTIVE_MAX_MASSES + 1]; /* and the springs */
     double x[CONFIG_INTERACTIVE_MAX_MASSES];  /* the chain's displacements */
     double x0[CONFIG_INTERACTIVE_MAX_MASSES]; /* its initial ones */
     unsigned loads;                      /* presets loaded so far */
@@ -37,7 +44,7 @@ struct record_mark {
 
 struct record {
     char path[4400];  /* the file written at the end */
-    char tmp[4416];   /* the temporary file beside it, made at the start */
+    struct output out; /* open on it from the start */
     FILE *mem;        /* the text so far */
     char *text;       /* its buffer (open_memstream) */
     size_t size;      /* its bytes */
@@ -49,7 +56,7 @@ struct record {
 };
 
 /* Starts recording app, its chain as it is now, for path: 0, or -1 with "PATH: reason"
- * in err (the temporary file beside path cannot be made). */
+ * in err (path cannot be written: output_open's refusals). */
 int record_start(struct record *r, const char *path, const struct app *app, char *err,
                  size_t errlen);
 
@@ -81,7 +88,7 @@ void record_key(char *out, size_t len, enum action a, const struct verb_arg *arg
                 unsigned changed, bool running, const char *view);
 
 /* Ends it: the time run, the expect line, the file written whole. 0, or -1 with "PATH:
- * reason" in err (the temporary file removed). */
+ * reason" in err (the old file, if any, left as it was). */
 int record_finish(struct record *r, const struct app *app, char *err, size_t errlen);
 
 /* Gives it up: the temporary file removed, nothing written. */

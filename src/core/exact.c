@@ -250,7 +250,11 @@ static void take_model(struct exact *e, const struct model *m)
         if (i < n - 1 || m->boundary != BOUNDARY_FREE)
             kd += m->k[i + 1];
         e->sqm[i] = sqrt(m->m[i]);
-        wmax = fmax(wmax, kd / m->m[i]);
+        if (!isfinite(kd / m->m[i]))
+            return;
+        /* sqrt(k) / sqrt(m), not sqrt(k / m): at m = 1e200, k = 1e-200 the quotient
+         * underflows, its root does not. */
+        wmax = fmax(wmax, sqrt(kd) / e->sqm[i]);
         e->gam[i] = m->c[i] / m->m[i];
         e->damped |= m->c[i] > 0.0;
     }
@@ -262,7 +266,7 @@ static void take_model(struct exact *e, const struct model *m)
     for (int i = 0; i < n; i++) {
         double next = i < n - 1 || m->boundary != BOUNDARY_FREE ? m->k[i + 1] : 0.0;
         double d = series + next;
-        e->ld[i] = sqrt(d / m->m[i]);
+        e->ld[i] = sqrt(d) / e->sqm[i];
         if (i < n - 1) {
             e->ls[i] = -m->k[i + 1] / (sqrt(d) * e->sqm[i + 1]);
             series *= m->k[i + 1] / d;
@@ -271,7 +275,7 @@ static void take_model(struct exact *e, const struct model *m)
             return;
     }
     e->sk = m->boundary == BOUNDARY_FREE ? 0.0 : sqrt(m->k[n]);
-    e->wscale = sqrt(wmax);
+    e->wscale = wmax;
     /* Dampers proportional to the masses (to rounding) keep the modes apart: the modes'
      * propagator. Otherwise, or if LAPACK fails there, the dense exponential. */
     e->use_modal = exact_proportional(m) && modal_take(e->md, m, e->gam[0], e->ld, e->ls) == 0;

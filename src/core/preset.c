@@ -477,9 +477,15 @@ int preset_list(FILE *out, const char *exe_dir)
     for (int i = 0; i < have; i++)
         if ((int)strlen(all[i].name) > width)
             width = (int)strlen(all[i].name);
-    for (int i = 0; i < have; i++)
-        fprintf(out, "%-*s  %s\n", width, all[i].name,
-                all[i].description[0] ? all[i].description : "(no description)");
+    for (int i = 0; i < have; i++) {
+        /* Escaped whole: a control byte in a file's name or a description (a newline
+         * too) cannot reach the terminal nor split the line. */
+        char line[1024], safe[4 * 1024 + 8];
+        snprintf(line, sizeof line, "%-*s  %s", width, all[i].name,
+                 all[i].description[0] ? all[i].description : "(no description)");
+        config_escape(line, strlen(line), 1024, safe, sizeof safe);
+        fprintf(out, "%s\n", safe);
+    }
     free(all);
     return have;
 }

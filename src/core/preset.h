@@ -52,7 +52,8 @@ struct preset_entry {
 int preset_scan(const char *exe_dir, struct preset_entry **out);
 
 /* One line per preset found on the search path, as preset_scan orders them:
- * "NAME  DESCRIPTION". Returns the count. */
+ * "NAME  DESCRIPTION", control bytes (a newline in a file's name too) escaped as every
+ * message escapes them. Returns the count. */
 int preset_list(FILE *out, const char *exe_dir);
 
 /* Writes c (with its per-element values from model m) as a preset file. */

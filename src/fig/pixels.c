@@ -25,6 +25,17 @@ double fig_pixel_y(double y, int ch)
     return (y + 0.5) * ch / 4.0;
 }
 
+void fig_pixels_fit(int aw, int ah, int *cw, int *ch)
+{
+    double w = *cw > 1 ? *cw : 1, h = *ch > 1 ? *ch : 1;
+    double wide = (aw > 1 ? aw : 1) * w, high = (ah > 1 ? ah : 1) * h;
+    double s = fmin(1.0, fmin(FIG_PIXELS_CELL_W / w, FIG_PIXELS_CELL_H / h));
+    s = fmin(s, fmin(FIG_PIXELS_SIDE / wide, FIG_PIXELS_SIDE / high));
+    s = fmin(s, sqrt(FIG_PIXELS_MAX / (wide * high)));
+    *cw = (int)fmax(1.0, floor(w * s));
+    *ch = (int)fmax(1.0, floor(h * s));
+}
+
 static bool grow(struct fig_bytes *b, size_t more)
 {
     if (b->len + more <= b->cap)

@@ -31,6 +31,20 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
                enum fig_encoding e, int registers, struct fig_bytes *out,
                struct fig_bytes *scratch);
 
+/* What a terminal says of its cells is not trusted: a cell is drawn with at most
+ * FIG_PIXELS_CELL_W x FIG_PIXELS_CELL_H pixels and an image has at most FIG_PIXELS_SIDE
+ * pixels a side and FIG_PIXELS_MAX in all, so that an image's memory (the surface, the
+ * pixels, the encoding) stays near 50 MB whatever the terminal says. */
+#define FIG_PIXELS_CELL_W 64
+#define FIG_PIXELS_CELL_H 128
+#define FIG_PIXELS_SIDE 4096
+#define FIG_PIXELS_MAX (2048 * 2048)
+
+/* The cell size (*cw x *ch pixels, each at least 1) an area of aw x ah cells is drawn
+ * with: as given, or scaled down by one factor (the cell's shape kept, to whole pixels)
+ * until it is within the caps above. */
+void fig_pixels_fit(int aw, int ah, int *cw, int *ch);
+
 /* The pixel row and column of dot coordinate (x, y) in such an image (the centre of the
  * line drawn through it): ((x + 0.5) cw / 2, (y + 0.5) ch / 4). */
 double fig_pixel_x(double x, int cw);

@@ -45,6 +45,7 @@ struct plain {
     double cap_second;         /* the second of simulated time the cap's note was last told */
     bool utf8;                 /* the locale is UTF-8: valid UTF-8 text may pass */
     bool closed;               /* standard output has gone */
+    bool differs;              /* a replay ended in another state than the one recorded */
     int out_error;             /* why a write failed (EPIPE: the reader went), or 0 */
     int in_error;              /* why reading standard input failed, or 0 */
     unsigned seen;             /* the app's messages already told (app->says) */
@@ -273,9 +274,11 @@ static void lesson_item(struct plain *p, const struct lesson_item *it)
         if (strcmp(now, it->text) == 0)
             put(p, "ok", "replayed: the state at t = %.*f s is the one recorded, bit for bit",
                 app_time_decimals(sim_dt(app->sim)), sim_time(app->sim));
-        else
+        else {
             put(p, "error", "replayed, but the state differs from the one recorded "
                 "(expected %s; have %s)", it->text, now);
+            p->differs = true;
+        }
         break;
     case LESSON_PAUSE:
     case LESSON_ASK:
@@ -549,5 +552,7 @@ int plain_run(const struct config *cfg, const char *exe_dir, const struct lesson
         signal(sig, SIG_DFL);
         raise(sig);
     }
-    return p.closed || recorded ? EXIT_FAILURE : EXIT_SUCCESS;
+    if (p.differs)
+        fprintf(stderr, "springsim: the replay ended in another state than the one recorded\n");
+    return p.closed || recorded || p.differs ? EXIT_FAILURE : EXIT_SUCCESS;
 }

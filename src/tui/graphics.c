@@ -60,7 +60,8 @@ static int csi_numbers(const char *p, int *v, int max, char *final)
     while (n < max) {
         if (!isdigit((unsigned char)*p))
             break;
-        v[n++] = (int)strtol(p, (char **)&p, 10);
+        long x = strtol(p, (char **)&p, 10);
+        v[n++] = x > 1000000 ? 1000000 : (int)x; /* a number past any screen's */
         if (*p != ';')
             break;
         p++;
@@ -109,8 +110,10 @@ static void parse(const char *buf, struct answers *a)
     }
 }
 
-/* Sends the queries and reads the answers until DA1's or the time is up. */
-static void ask(struct answers *a)
+/* Sends the queries and reads the answers until DA1's or the time is up. Keys typed
+ * meanwhile wait in g->answers for the loop, and answers later than the wait are told
+ * from keys there too (answer.h): nothing is flushed. */
+static void ask(struct graphics *g, struct answers *a)
 {
     struct termios saved, raw;
     if (tcgetattr(STDIN_FILENO, &saved) != 0)
@@ -120,30 +123,22 @@ static void ask(struct answers *a)
     raw.c_cc[VMIN] = 0;
     raw.c_cc[VTIME] = 0;
     tcsetattr(STDIN_FILENO, TCSANOW, &raw);
-    char buf[2048];
-    size_t len = 0;
     if (write(STDOUT_FILENO, queries, sizeof queries - 1) == (ssize_t)(sizeof queries - 1)) {
         double end = now_ms() + GRAPHICS_TIMEOUT_MS;
-        while (!a->da1 && len < sizeof buf - 1) {
+        while (!a->da1) {
+            unsigned char buf[512];
             int left = (int)(end - now_ms());
             struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
             if (left <= 0 || poll(&pfd, 1, left) <= 0)
                 break;
-            ssize_t got = read(STDIN_FILENO, buf + len, sizeof buf - 1 - len);
+            ssize_t got = read(STDIN_FILENO, buf, sizeof buf);
             if (got <= 0)
                 break;
-            len += (size_t)got;
-            buf[len] = '\0';
-            struct answers seen = {0};
-            parse(buf, &seen);
-            a->da1 = seen.da1;
+            for (ssize_t i = 0; i < got; i++)
+                if (answer_feed(&g->answers, buf[i], now_ms() / 1e3))
+                    parse(g->answers.answer, a);
         }
     }
-    buf[len] = '\0';
-    parse(buf, a);
-    /* Answers still on their way are not keys. */
-    if (!a->da1)
-        tcflush(STDIN_FILENO, TCIFLUSH);
     tcsetattr(STDIN_FILENO, TCSANOW, &saved);
 }
 
@@ -160,7 +155,7 @@ static void query(struct graphics *g)
 {
     struct answers a = {0};
     g->asked = true;
-    ask(&a);
+    ask(g, &a);
     struct winsize ws;
     g->cw = g->ch = 0;
     if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_xpixel && ws.ws_ypixel && ws.ws_col &&
@@ -176,7 +171,9 @@ static void query(struct graphics *g)
         g->dark = 0.2126 * a.rgb[0] + 0.7152 * a.rgb[1] + 0.0722 * a.rgb[2] < 0.5;
     }
     g->registers = a.registers;
-    g->sized = g->cw >= 2 && g->ch >= 4 && g->cw <= 200 && g->ch <= 400;
+    /* However large the terminal says its cells are: images are scaled down to
+     * fig_pixels_fit's caps. */
+    g->sized = g->cw >= 2 && g->ch >= 4;
     g->can = !g->sized ? GRAPHICS_BRAILLE
              : a.kitty ? GRAPHICS_KITTY
              : a.sixel ? GRAPHICS_SIXEL
@@ -293,8 +290,10 @@ static void out_add(struct fig_bytes *b, const void *p, size_t n)
     b->len += n;
 }
 
-/* The PNG in g->img as kitty escapes, placed at the cursor, numbered id. */
-static void kitty_escapes(struct graphics *g, int id)
+/* The PNG in g->img as kitty escapes, placed at the cursor over cols x rows cells
+ * (kitty scales it there: an image drawn with smaller cells than the terminal's still
+ * fills its area), numbered id. */
+static void kitty_escapes(struct graphics *g, int id, int cols, int rows)
 {
     char head[96];
     gchar chunk[KITTY_CHUNK + 8];
@@ -305,8 +304,9 @@ static void kitty_escapes(struct graphics *g, int id)
         gsize len = g_base64_encode_step(g->img.data + at, n, FALSE, chunk, &state, &save);
         if (at + n >= g->img.len)
             len += g_base64_encode_close(FALSE, chunk + len, &state, &save);
-        int hl = at == 0 ? snprintf(head, sizeof head, "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,m=%d;",
-                                    id, at + n < g->img.len)
+        int hl = at == 0 ? snprintf(head, sizeof head,
+                                    "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,c=%d,r=%d,m=%d;", id,
+                                    cols, rows, at + n < g->img.len)
                          : snprintf(head, sizeof head, "\033_Gm=%d;", at + n < g->img.len);
         out_add(&g->out, head, (size_t)hl);
         out_add(&g->out, chunk, len);
@@ -352,17 +352,19 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         if (i < g->n && g->hash[i] == h && memcmp(&g->at[i], &r, sizeof r) == 0)
             continue;
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
-        if (fig_pixels(&pic, g->cw, g->ch, g->dark, g->bg, e, g->registers, &g->img, &g->rgb) != 0)
+        int cw = g->cw, ch = g->ch;
+        fig_pixels_fit(pic.aw, pic.ah, &cw, &ch);
+        if (fig_pixels(&pic, cw, ch, g->dark, g->bg, e, g->registers, &g->img, &g->rgb) != 0)
             continue;
         char pos[32];
         int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);
         out_add(&g->out, pos, (size_t)pl);
         if (g->mode == GRAPHICS_KITTY)
-            kitty_escapes(g, KITTY_ID + i);
+            kitty_escapes(g, KITTY_ID + i, pic.aw, pic.ah);
         else
             out_add(&g->out, g->img.data, g->img.len);
         g->hash[i] = h, g->at[i] = r;
-        pixels += (double)pic.aw * pic.ah * g->cw * g->ch;
+        pixels += (double)pic.aw * pic.ah * cw * ch;
         sent++;
     }
     g->n = n < GRAPHICS_SLOTS ? n : GRAPHICS_SLOTS;

@@ -11,6 +11,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "../app/answer.h"
 #include "../core/config.h"
 #include "../fig/pixels.h"
 #include "chart.h"
@@ -49,6 +50,9 @@ struct graphics {
     char said[160];            /* why the charts are braille though pixels were asked for
                                 * ("braille inside tmux or screen"), or "" */
     double next_at;            /* monotonic seconds before which no image is sent */
+    struct answer_scan answers; /* the terminal's answers told from keys: every byte read
+                                * goes through it (keys typed while the queries were
+                                * out wait there) */
 };
 
 /* Asks the terminal (standard input and output, before curses starts) and chooses the

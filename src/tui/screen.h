@@ -30,7 +30,12 @@ struct tui {
     double plot_due;      /* wall time of the next plot refresh */
     bool plots_dirty;     /* refresh the plots at the next frame */
     struct app_clock clock; /* simulated time following the wall clock */
-    int backlog_frames;   /* frames in a row with output piling up unread */
+    double backlog_since; /* wall time since when output has piled up unread at every
+                           * frame (0: it does not) */
+    double keeping_since; /* after a step down: since when the link has kept up (0: not) */
+    double up_after;      /* seconds it must keep up before the refresh steps back up */
+    bool stepped_down;    /* the low refresh is the program's own (a slow link), not the
+                           * user's */
     bool dragging;        /* a mass is being dragged with the mouse */
     struct teach teach;   /* a lesson being played, its caption panel */
     struct record rec;    /* --record: the session being written */

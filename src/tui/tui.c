@@ -22,6 +22,10 @@
 #define LOW_FRAME_HZ 10.0 /* low bandwidth: scene and status */
 #define LOW_PLOT_HZ 0.5   /* low bandwidth: plots, every 2 s */
 #define BACKLOG 8192      /* bytes waiting for the terminal that mean it cannot keep up */
+#define BLOCKED_S 0.25    /* a frame whose writes blocked this long: the link is behind */
+#define BACKLOG_S 2.0     /* a backlog sustained this long steps the refresh down */
+#define KEEP_UP_S 10.0    /* the link keeping up this long steps it back up (doubled after
+                           * each step down) */
 
 /* Draws a frame; returns the seconds it took to hand it to the terminal. */
 static double draw(struct tui *t, bool refresh)
@@ -89,23 +93,43 @@ static double frame_hz(const struct tui *t)
     return t->app.cfg.low_bandwidth && hz > LOW_FRAME_HZ ? LOW_FRAME_HZ : hz;
 }
 
-/* After a frame that took `spent` seconds to hand to the terminal: if output keeps
- * piling up unread (a slow link: bytes queued, or writing blocked), step down to low
- * bandwidth on its own and say so. */
+/* After a frame that took `spent` seconds to hand to the terminal: on a real backlog
+ * (bytes queued unread, or writes blocking) at every frame for BACKLOG_S seconds, step
+ * down to the low refresh on its own and say so; a busy machine's slow frame is not one.
+ * Stepped down, once the link has kept up for up_after seconds (10 s, twice as long after
+ * each step down, so a link that only keeps up at the low refresh is not flipped back and
+ * forth), step back up and say so. The user's own Refresh control is never overruled. */
 static void watch_backlog(struct tui *t, double spent)
 {
     int queued = 0;
-    if (t->app.cfg.low_bandwidth)
-        return;
+    double now = app_clock_now();
     if (ioctl(STDOUT_FILENO, TIOCOUTQ, &queued) != 0)
         queued = 0;
-    bool slow = queued > BACKLOG || spent > 0.5 / frame_hz(t);
-    t->backlog_frames = slow ? t->backlog_frames + 1 : 0;
-    if (t->backlog_frames >= 3 || spent > 1.0) {
-        t->app.cfg.low_bandwidth = true; /* braille too: follow_graphics */
-        t->backlog_frames = 0;
-        app_say(&t->app, SAID_ERROR, "the terminal is not keeping up: refresh low (the Refresh "
-                "control turns it back)");
+    bool backlog = queued > BACKLOG || spent > BLOCKED_S;
+    if (t->stepped_down && !t->app.cfg.low_bandwidth)
+        t->stepped_down = false; /* the user turned it back */
+    if (!t->app.cfg.low_bandwidth) {
+        /* A frame whose writes blocked began the backlog when it began writing. */
+        double began = now - spent;
+        t->backlog_since = !backlog ? 0.0 : t->backlog_since > 0.0 ? t->backlog_since : began;
+        if (t->backlog_since > 0.0 && now - t->backlog_since >= BACKLOG_S) {
+            t->app.cfg.low_bandwidth = true; /* braille too: follow_graphics */
+            t->stepped_down = true;
+            t->backlog_since = t->keeping_since = 0.0;
+            t->up_after = t->up_after > 0.0 ? 2.0 * t->up_after : KEEP_UP_S;
+            app_say(&t->app, SAID_ERROR, "the terminal is not keeping up: refresh low (the "
+                    "Refresh control turns it back)");
+        }
+        return;
+    }
+    if (!t->stepped_down)
+        return;
+    t->keeping_since = backlog ? 0.0 : t->keeping_since > 0.0 ? t->keeping_since : now;
+    if (t->keeping_since > 0.0 && now - t->keeping_since >= t->up_after) {
+        t->app.cfg.low_bandwidth = false;
+        t->stepped_down = false;
+        t->keeping_since = 0.0;
+        app_say(&t->app, SAID_NOTE, "the terminal keeps up again: refresh normal");
     }
 }
 
@@ -131,6 +155,29 @@ static bool lesson_step(void *ctx)
 {
     struct tui *t = ctx;
     return teach_step(&t->teach, &t->app);
+}
+
+/* The next key within ms milliseconds, or ERR: what the terminal sends goes through the
+ * answers' scanner first (answer.h), so an answer to the start-up queries arriving late is
+ * never taken for keys, and keys typed while the queries were out come first. */
+static int next_key(struct tui *t, int ms)
+{
+    struct answer_scan *s = &t->gfx.answers;
+    for (;;) {
+        int k = answer_key(s);
+        if (k >= 0)
+            return k;
+        /* What follows an Esc curses hands over with it: waiting would only delay Esc. */
+        timeout(s->nheld == 1 ? 0 : ms);
+        int ch = getch();
+        double now = app_clock_now();
+        if (ch == ERR) {
+            answer_idle(s, now);
+            k = answer_key(s);
+            return k >= 0 ? k : ERR;
+        }
+        answer_feed(s, ch, now);
+    }
 }
 
 static void tui_free(struct tui *t)
@@ -216,8 +263,7 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         /* Wait for input until the next frame; take every key that is there. */
         for (;;) {
             int ms = (int)((next_frame - app_clock_now()) * 1000.0);
-            timeout(ms > 0 ? ms : 0);
-            int ch = getch();
+            int ch = next_key(&t, ms > 0 ? ms : 0);
             if (ch == ERR) {
                 /* No key, or no terminal: a hung-up one gives ERR at once, for ever, and
                  * SIGHUP may never come (it was ignored, or this is not the controlling

@@ -1,0 +1,170 @@
+/* answer.c: the terminal's answers told from keys (answer.h). */
+#include "answer.h"
+
+#include <string.h>
+
+#define ESC 0x1b
+
+static void push_key(struct answer_scan *s, int ch)
+{
+    if (s->key_at > 0 && s->key_at == s->nkeys)
+        s->key_at = s->nkeys = 0;
+    if (s->nkeys == ANSWER_KEYS && s->key_at > 0) {
+        memmove(s->keys, s->keys + s->key_at, (size_t)(s->nkeys - s->key_at) * sizeof *s->keys);
+        s->nkeys -= s->key_at;
+        s->key_at = 0;
+    }
+    if (s->nkeys < ANSWER_KEYS)
+        s->keys[s->nkeys++] = ch;
+}
+
+/* What is held was keys after all. */
+static void give_back(struct answer_scan *s)
+{
+    for (int i = 0; i < s->nheld; i++)
+        push_key(s, s->held[i]);
+    s->nheld = 0;
+    s->truncated = false;
+}
+
+/* What is held stopped short of an answer's end: keys if it is only an Esc and an
+ * introducer (Alt with [, ], _ or P), else a broken answer (a terminal's garbage, an
+ * answer cut off), dropped: its bytes as keys would act at random. */
+static void cut_off(struct answer_scan *s)
+{
+    if (s->nheld <= 2) {
+        give_back(s);
+        return;
+    }
+    s->nheld = 0;
+    s->truncated = false;
+    s->dropped++;
+}
+
+static bool finish(struct answer_scan *s)
+{
+    for (int i = 0; i < s->nheld; i++)
+        s->answer[i] = (char)s->held[i];
+    s->answer_len = (size_t)s->nheld;
+    s->answer[s->answer_len] = '\0';
+    s->nheld = 0;
+    if (s->truncated) {
+        s->truncated = false;
+        s->dropped++;
+        return false; /* swallowed, but not read: its text was lost */
+    }
+    s->answers++;
+    return true;
+}
+
+/* A whole CSI sequence held (its final byte last): an answer? CSI ? ... anything, and
+ * CSI ... t or CSI ... c whatever their parameters (no key ends so; a terminal's
+ * garbage such as CSI 4;-5;-7 t is swallowed too). */
+static bool csi_answer(const struct answer_scan *s)
+{
+    int final = s->held[s->nheld - 1];
+    return s->held[2] == '?' || final == 't' || final == 'c';
+}
+
+/* ch after ESC [ ...: 0 held, 1 an answer completed, -1 not an answer (ch not taken). */
+static int csi_byte(struct answer_scan *s, int ch)
+{
+    if (ch >= 0x20 && ch <= 0x3f) {
+        s->held[s->nheld++] = ch;
+        return 0;
+    }
+    if (ch >= 0x40 && ch <= 0x7e) {
+        s->held[s->nheld++] = ch;
+        if (csi_answer(s))
+            return finish(s);
+        give_back(s);
+        return 0;
+    }
+    return -1;
+}
+
+/* ch inside OSC, APC or DCS: ends at BEL or ST (ESC \); an ESC followed by anything
+ * else ends what came before it as keys and begins again. */
+static int string_byte(struct answer_scan *s, int ch)
+{
+    bool after_esc = s->held[s->nheld - 1] == ESC;
+    if (after_esc) {
+        if (ch == '\\') {
+            s->held[s->nheld++] = ch;
+            return finish(s);
+        }
+        s->nheld--;
+        cut_off(s);
+        s->held[s->nheld++] = ESC;
+        return -1;
+    }
+    if (ch == 0x07) {
+        s->held[s->nheld++] = ch;
+        return finish(s);
+    }
+    if (ch == ESC || (ch >= 0x20 && ch <= 0xff && ch != 0x7f)) {
+        s->held[s->nheld++] = ch;
+        return 0;
+    }
+    return -1;
+}
+
+bool answer_feed(struct answer_scan *s, int ch, double now)
+{
+    if (s->nheld > 0 && now - s->last > ANSWER_GAP)
+        cut_off(s);
+    s->last = now;
+    for (;;) {
+        if (s->nheld == 0) {
+            if (ch == ESC)
+                s->held[s->nheld++] = ch;
+            else
+                push_key(s, ch);
+            return false;
+        }
+        if (s->nheld >= ANSWER_MAX - 1) {
+            /* Too long to keep: a string goes on to its end, its text dropped; a CSI
+             * this long is no answer. */
+            if (s->held[1] == '[') {
+                cut_off(s);
+                continue;
+            }
+            s->nheld = 2;
+            s->truncated = true;
+        }
+        int r;
+        if (s->nheld == 1) {
+            if (ch == '[' || ch == ']' || ch == '_' || ch == 'P') {
+                s->held[s->nheld++] = ch;
+                return false;
+            }
+            give_back(s);
+            continue;
+        }
+        r = s->held[1] == '[' ? csi_byte(s, ch) : string_byte(s, ch);
+        if (r >= 0)
+            return r == 1;
+        if (s->nheld > 1)
+            cut_off(s); /* else string_byte began again at its ESC: ch follows it */
+    }
+}
+
+void answer_idle(struct answer_scan *s, double now)
+{
+    if (s->nheld == 1)
+        give_back(s);
+    else if (s->nheld > 1 && now - s->last > ANSWER_GAP)
+        cut_off(s);
+}
+
+int answer_key(struct answer_scan *s)
+{
+    if (s->key_at >= s->nkeys)
+        return -1;
+    return s->keys[s->key_at++];
+}
+
+bool answer_holding(const struct answer_scan *s)
+{
+    return s->nheld > 0;
+}

@@ -1,0 +1,55 @@
+/* answer.h: the terminal's answers to the start-up queries told from keys, whenever they
+ * arrive: the bytes read from the terminal (or the keys curses hands over) go through one
+ * scanner, which holds what may be an answer, swallows every answer whole and hands on the
+ * rest as keys, in the order they were typed. An answer is
+ *   CSI ? ... F     (any final byte F: device attributes "c", XTSMGRAPHICS "S", ...)
+ *   CSI ... t       (window and cell sizes), CSI ... c (device attributes)
+ *   OSC ... ST/BEL  (colours: the background, the palette)
+ *   APC ... ST      (kitty's graphics answer "_G...")
+ *   DCS ... ST      (DECRQSS, XTGETTCAP)
+ * No key starts like these but Alt with [, ], _ or P. A sequence cut short (by a byte no
+ * answer holds: a control character, an Esc, a curses key code; or by ANSWER_GAP seconds
+ * without its next byte) is given back as keys when it is only Esc and the introducer,
+ * and dropped otherwise (a terminal's garbage or an answer cut off: its bytes as keys
+ * would act at random). A complete CSI sequence that is no answer (an arrow curses did
+ * not know) is given back. A string longer than ANSWER_MAX is swallowed to its end. A
+ * lone Esc is given back as soon as nothing follows it (answer_idle). */
+#ifndef SPRINGSIM_ANSWER_H
+#define SPRINGSIM_ANSWER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#define ANSWER_MAX 512   /* bytes an answer holds, at most */
+#define ANSWER_KEYS 1024 /* keys waiting, at most (older ones are kept, newer dropped) */
+#define ANSWER_GAP 0.3   /* seconds a part-answer waits for its next byte */
+
+struct answer_scan {
+    int held[ANSWER_MAX]; /* what may be an answer, so far */
+    int nheld;
+    double last;         /* when its last byte came (seconds, any clock) */
+    int keys[ANSWER_KEYS]; /* keys given back, oldest first from key_at */
+    int nkeys, key_at;
+    char answer[ANSWER_MAX + 1]; /* the answer answer_feed last completed, NUL-ended */
+    size_t answer_len;
+    int answers;         /* answers swallowed so far */
+    int dropped;         /* broken answers dropped so far (too long, cut off) */
+    bool truncated;      /* the string held lost its text (longer than ANSWER_MAX) */
+};
+
+/* Feeds one input: a byte (0..255), or a curses key code above 255, that came at `now`
+ * seconds. True when it completed an answer: in s->answer until the next call. What
+ * turns out to be keys waits for answer_key. */
+bool answer_feed(struct answer_scan *s, int ch, double now);
+
+/* Nothing more is waiting to be read at `now`: a lone Esc held is a key, and so is a
+ * part-answer quiet for ANSWER_GAP seconds. */
+void answer_idle(struct answer_scan *s, double now);
+
+/* The next key, oldest first, or -1 when none waits. */
+int answer_key(struct answer_scan *s);
+
+/* True while a part-answer is held. */
+bool answer_holding(const struct answer_scan *s);
+
+#endif

@@ -1,0 +1,88 @@
+#!/bin/sh
+# tests/harden-answers.sh: what the terminal answers to the start-up queries, late or
+# hostile (issue 33, items 3 and 4), in a pseudo-terminal of our own (tests/pixterm.c) and
+# read back as a person sees it (tests/lib/screen.py, pyte's emulator).
+# Answers that come 150 ms and 400 ms late (over SSH this is common), after the program
+# stopped waiting for them, are never taken as keys (their [, ?, g and digits would slow
+# the chain, open the help, show the ghost, enlarge a plot), and a key typed before they
+# came (space) is kept: the chain runs at 1x, no ghost, no help.
+# A terminal that says its cells are 200 x 400 pixels (CSI 6;400;200 t) gets images of at
+# most 64 x 128 pixels a cell and 2048 x 2048 in all (kitty's placed over the whole area,
+# which kitty scales them to), and the program's peak memory stays under 64 MB: sixel at
+# 79x24, and kitty at 120x40 with a plot enlarged (it was 348 MB and 720 MB).
+# Run from the repository root as `sh tests/harden-answers.sh`, SPRINGSIM naming the
+# binary. Ends with "harden-answers: N passed, M failed".
+NAME=harden-answers
+. "$(dirname "$0")/lib/check.sh"
+trap 'exit 1' HUP INT TERM
+plain_env
+root=$(cd "$(dirname "$0")/.." && pwd)
+PIXTERM=${PIXTERM:-$root/build/tests/pixterm}
+screen="/usr/bin/python3 $root/tests/lib/screen.py"
+LC_ALL=C.UTF-8
+NCURSES_NO_UTF8_ACS=1
+export LC_ALL NCURSES_NO_UTF8_ACS
+
+# term KIND COLS ROWS CW CH KEYS ARGS...: the program in a COLS x ROWS terminal of KIND
+# with cells of CW x CH pixels, KEYS typed; the screen at the end in $tmp/screen, the
+# program's peak memory (kB) in $rss.
+term() {
+    kind=$1 cols=$2 rows=$3 cw=$4 ch=$5 keys=$6
+    shift 6
+    cmd="pixterm $kind ${cols}x$rows, cells $cw x $ch, '$keys' springsim $*"
+    PIXTERM_RSS=$tmp/rss "$PIXTERM" "$kind" "$cols" "$rows" "$cw" "$ch" ffffff "$tmp/out" \
+        "$keys" "$SPRINGSIM" "$@"
+    rc=$?
+    rss=$(cat "$tmp/rss" 2>/dev/null)
+    $screen show "$tmp/out" "$cols" "$rows" end >"$tmp/screen"
+}
+brief() { grep -E "$1" "$tmp/screen" | head -n 3 | tr '\n' '|'; }
+
+# 1. Late answers, a key typed before them.
+for late in 150 400; do
+    term "sixel+$late" 100 30 10 20 '^ ~~q' -p resonance
+    [ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
+    grep -q 'Running' "$tmp/screen" && pass ||
+        fail "$cmd: the space typed before the answers was lost: $(brief 'Paused|Running')"
+    grep -qE 'Speed +1x' "$tmp/screen" && pass ||
+        fail "$cmd: the answers changed the speed: $(brief 'Speed')"
+    if grep -q 'ghost' "$tmp/screen" || grep -q '┌ Keys' "$tmp/screen"; then
+        fail "$cmd: the answers showed the ghost or the help: $(brief 'ghost|[Kk]eys')"
+    else
+        pass
+    fi
+done
+
+# 2. Cells of 200 x 400 pixels.
+SIXELCHECK=${SIXELCHECK:-$root/build/tests/sixelcheck}
+# capped KIND: every image of $tmp/out within the caps; kitty's placed with c= and r=.
+capped() {
+    "$SIXELCHECK" "$tmp/out" 005fff >"$tmp/images"
+    n=$(grep -c "^$1 " "$tmp/images")
+    bad=$(awk -v k="$1" '$1 == k && ($4 > 4096 || $5 > 4096 || $4 * $5 > 2048 * 2048) ||
+        $1 == k && $4 == "undecodable"' "$tmp/images" | head -n 2)
+    if [ "$n" -ge 1 ] && [ -z "$bad" ]; then pass; else
+        fail "$cmd: $n images, over the caps: $bad"
+    fi
+}
+term sixel 79 24 200 400 ' ~~q'
+[ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
+capped sixel
+# 64 x 128 a cell at most: the chart's area in cells times that.
+$screen chart "$tmp/out" 79 24 Displacement >"$tmp/chart" 2>/dev/null
+set -- $(head -n 1 "$tmp/chart") 0 0 0 0
+aw=$3 ah=$4
+big=$(awk -v w=$((aw * 64)) -v h=$((ah * 128)) '$1 == "sixel" && ($4 > w || $5 > h)' "$tmp/images" | head -n 1)
+[ -z "$big" ] && pass || fail "$cmd: an image past 64 x 128 pixels a cell ($aw x $ah cells): $big"
+[ -n "$rss" ] && [ "$rss" -lt 65536 ] && pass || fail "$cmd: peak memory $rss kB (at most 64 MB)"
+term kitty 120 40 200 400 '1 ~~q'
+[ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
+capped kitty
+if LC_ALL=C grep -q "$(printf '\033_Ga=T,f=100,i=[0-9]*,q=2,C=1,z=-1,c=[0-9]*,r=[0-9]*')" "$tmp/out"; then
+    pass
+else
+    fail "$cmd: kitty's images are not placed over their area's cells (c=, r=)"
+fi
+[ -n "$rss" ] && [ "$rss" -lt 65536 ] && pass || fail "$cmd: peak memory $rss kB (at most 64 MB)"
+
+summary

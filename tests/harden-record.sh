@@ -1,0 +1,130 @@
+#!/bin/sh
+# tests/harden-record.sh: --record and --replay (issue 33, items 1, 2 and 11; issue 27).
+# A recording made with keys in the program replays to the same state bit for bit, for
+# the default chain with no preset (it wrote "element m 1 nan" lines), more masses and a
+# preset, keys that change elements and views; its run lines are the shortest decimals
+# (run 1.34, not 1.3400000000000003); a preset file whose name has two blanks in a row
+# replays. --record writes as -o does (core/output.c): a FIFO is written in place and stays
+# a FIFO, a character device stays one (as root), a symbolic link stays and its target is
+# written, a new file gets the umask's mode and an old one keeps its own, names of 249 to
+# 255 bytes are written, kill -9 leaves no file behind. --plain --replay that ends in
+# another state says so and exits 1. Run from the repository root as
+# `sh tests/harden-record.sh`, SPRINGSIM naming the binary. Ends with
+# "harden-record: N passed, M failed".
+NAME=harden-record
+. "$(dirname "$0")/lib/check.sh"
+. "$(dirname "$0")/lib/tmux.sh"
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$tmp" || exit 1
+
+# replays FILE WHAT: --plain --replay FILE exits 0 saying "bit for bit".
+replays() {
+    timeout 60 "$SPRINGSIM" --plain --replay "$1" </dev/null >"$tmp/replay.out" 2>"$tmp/replay.err"
+    r=$?
+    if [ "$r" -eq 0 ] && grep -q 'bit for bit' "$tmp/replay.out" && ! grep -qE '(^| )nan( |$)' "$1"; then
+        pass
+    else
+        fail "$2: replay of $1 exit $r: $(tail -c 300 "$tmp/replay.err" "$tmp/replay.out" | tr '\n' '|')"
+    fi
+}
+
+# 1. Recordings made with keys in the program, in tmux: set-up x keys.
+# record_keys NAME ARGS -- KEYS...: the program with --record NAME.lesson and ARGS, each
+# key sent 0.4 s apart (a key "wait" waits 1 s), then q.
+record_keys() {
+    name=$1
+    shift
+    rk_args=
+    while [ "$1" != -- ]; do rk_args="$rk_args $1"; shift; done
+    shift
+    rm -f "$name.lesson"
+    # shellcheck disable=SC2086
+    start_in "$tmp" "$name" 80 24 -- --record "$name.lesson" $rk_args
+    S=$name
+    wait_for 'Paused' 5
+    for k in "$@"; do
+        if [ "$k" = wait ]; then sleep 1; else keys "$k"; sleep 0.4; fi
+    done
+    keys q
+    wait_for 'EXITED' 5
+}
+record_keys default -- Space wait Space
+replays default.lesson "the default chain, space, space"
+record_keys three -n 3 -- Space wait Down Right Right Space m
+replays three.lesson "-n 3, a control adjusted, the modes view"
+record_keys res -p resonance -- Space wait Up Left wait Space
+replays res.lesson "-p resonance, controls adjusted while running"
+
+# 2. Run lines in their shortest form, and what they replay.
+printf 'run 2.34\nset frequency 0.5\nrun 1.34\nset frequency 0.6\nrun 0.07\nstart\nquit\n' |
+    "$SPRINGSIM" --plain --record short.lesson >/dev/null 2>&1
+runs=$(grep '^run ' short.lesson | tr '\n' ' ')
+[ "$runs" = "run 2.34 run 1.34 run 0.07 " ] && pass ||
+    fail "run lines: expected 'run 2.34 run 1.34 run 0.07', got '$runs'"
+replays short.lesson "runs of 2.34, 1.34 and 0.07 s"
+
+# 3. A preset file with two blanks in its name.
+cp "$root/presets/beating.ini" "$tmp/a  b.ini"
+printf 'preset ./a  b.ini\nrun 1\nstart\nquit\n' | "$SPRINGSIM" --plain --record blanks.lesson >/dev/null 2>&1
+grep -qx 'preset ./a  b.ini' blanks.lesson && pass ||
+    fail "preset path with two blanks: $(grep '^preset' blanks.lesson)"
+replays blanks.lesson "a preset path with two blanks"
+
+# 4. A replay that ends elsewhere: said, exit 1.
+sed 's/^expect t=[^ ]* x1=[^ ]*/expect t=0x1p+0 x1=0x1p-1/' short.lesson >other.lesson
+"$SPRINGSIM" --plain --replay other.lesson </dev/null >"$out" 2>"$err"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -q 'differs' "$out" && grep -q 'another state' "$err"; then pass; else
+    fail "a replay ending in another state: exit $rc, $(cat "$err")"
+fi
+
+# 5. Where --record writes: as -o does.
+record_to() { printf 'run 0.5\nstart\nquit\n' | "$SPRINGSIM" --plain --record "$1" >/dev/null 2>"$err"; }
+mkfifo fifo
+timeout 10 cat fifo >from-fifo &
+reader=$!
+record_to fifo
+wait $reader
+if [ -p fifo ] && grep -q '^expect ' from-fifo; then pass; else
+    fail "--record FIFO: it is no longer a FIFO or the reader got nothing"
+fi
+ln -s target.lesson link.lesson
+record_to link.lesson
+if [ -L link.lesson ] && grep -q '^expect ' target.lesson; then pass; else
+    fail "--record through a symbolic link: the link replaced or its target not written"
+fi
+(umask 077 && record_to private.lesson)
+(umask 022 && record_to public.lesson)
+: >old.lesson
+chmod 600 old.lesson
+(umask 022 && record_to old.lesson)
+modes="$(stat -c %a private.lesson) $(stat -c %a public.lesson) $(stat -c %a old.lesson)"
+[ "$modes" = "600 644 600" ] && pass ||
+    fail "--record's modes: umask 077, 022 and an old 0600 file gave $modes (expected 600 644 600)"
+if [ "$(id -u)" = 0 ]; then
+    mknod -m 666 dev c 1 3
+    record_to dev
+    [ -c dev ] && pass || fail "--record onto a character device (1,3) replaced it"
+fi
+for len in 249 250 253 255; do
+    name=$(printf "%${len}s" "" | tr ' ' n)
+    record_to "$name"
+    if grep -q "^expect " "$name" 2>/dev/null && [ ! -s "$err" ]; then pass; else
+        fail "--record, a name of $len bytes: $(cat "$err")"
+    fi
+    rm -f "$name"
+done
+# kill -9 while recording: nothing left in the directory.
+mkdir killed
+mkfifo hold
+"$SPRINGSIM" --plain --record killed/k.lesson <hold >/dev/null 2>&1 &
+pid=$!
+exec 3>hold
+sleep 1
+kill -9 "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+exec 3>&-
+left=$(ls -A killed)
+[ -z "$left" ] && pass || fail "--record killed with SIGKILL left: $left"
+
+summary

@@ -1,0 +1,192 @@
+/* test_answer.c: the terminal's answers told from keys (app/answer.c). Each answer the
+ * start-up queries bring (device attributes, sizes, XTSMGRAPHICS, OSC 11 and OSC 4 with
+ * ST or BEL, kitty's APC, DCS) is swallowed whole wherever it falls among keys, in one
+ * piece or byte by byte, and the keys around it come out in their order; what only looks
+ * like the start of an answer (Esc, Alt+[ or Alt+], an arrow curses did not know) comes
+ * back as the keys it was; an answer cut off or broken (a hostile terminal's garbage) and
+ * one too long to keep are dropped whole, never keys. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "app/answer.h"
+
+static struct answer_scan scan;
+
+/* Feeds text at time t (one byte each), then tells the scanner nothing follows; returns
+ * the keys that came out as a string and the answers in answers (joined by '|'). */
+static const char *run(const char *text, double t, char *answers, size_t size)
+{
+    static char keys[4096];
+    size_t n = 0;
+    answers[0] = '\0';
+    for (const char *p = text; *p; p++)
+        if (answer_feed(&scan, (unsigned char)*p, t)) {
+            strncat(answers, scan.answer, size - strlen(answers) - 2);
+            strcat(answers, "|");
+        }
+    answer_idle(&scan, t + 1.0);
+    int k;
+    while ((k = answer_key(&scan)) >= 0 && n < sizeof keys - 1)
+        keys[n++] = (char)k;
+    keys[n] = '\0';
+    return keys;
+}
+
+static void setup_scan(void)
+{
+    memset(&scan, 0, sizeof scan);
+}
+
+static void answers_between_keys(void **state)
+{
+    (void)state;
+    char ans[2048];
+    setup_scan();
+    const char *in = "a\033[?63;1;2;4;6;9;15;22cb\033[6;20;10tc\033[4;600;1000t"
+                     "d\033[?1;0;256Se\033]11;rgb:ffff/ffff/ffff\033\\f"
+                     "\033]4;1;rgb:cd00/0000/0000\007g\033_Gi=31;OK\033\\h"
+                     "\033P1$r0m\033\\i";
+    assert_string_equal(run(in, 0.0, ans, sizeof ans), "abcdefghi");
+    assert_string_equal(ans, "\033[?63;1;2;4;6;9;15;22c|\033[6;20;10t|\033[4;600;1000t|"
+                             "\033[?1;0;256S|\033]11;rgb:ffff/ffff/ffff\033\\|"
+                             "\033]4;1;rgb:cd00/0000/0000\007|\033_Gi=31;OK\033\\|"
+                             "\033P1$r0m\033\\|");
+    assert_int_equal(scan.answers, 8);
+}
+
+/* The answers of a terminal 150 ms late, read one byte per call as curses hands them
+ * over, between keys typed before and after: the keys, nothing of the answers. */
+static void byte_by_byte_late(void **state)
+{
+    (void)state;
+    setup_scan();
+    const char *in = " \033[?62;1;2;6;9;15;22c\033[6;20;10tq";
+    double t = 0.15;
+    int keys[64], n = 0, k;
+    for (const char *p = in; *p; p++, t += 0.001) {
+        answer_feed(&scan, (unsigned char)*p, t);
+        if (*p != 0x1b) /* curses hands over what follows an Esc with it */
+            answer_idle(&scan, t); /* nothing more yet: a part-answer stays held */
+        while ((k = answer_key(&scan)) >= 0 && n < 64)
+            keys[n++] = k;
+    }
+    assert_int_equal(n, 2);
+    assert_int_equal(keys[0], ' ');
+    assert_int_equal(keys[1], 'q');
+    assert_int_equal(scan.answers, 2);
+}
+
+/* What only starts like an answer is keys. */
+static void not_answers(void **state)
+{
+    (void)state;
+    char ans[256];
+    setup_scan();
+    /* A lone Esc, Esc then a letter (Alt+x), Esc Esc. */
+    assert_string_equal(run("\033", 0, ans, sizeof ans), "\033");
+    assert_string_equal(run("\033x\033\033y", 0, ans, sizeof ans), "\033x\033\033y");
+    /* Arrows and F-keys curses did not translate: CSI with another final byte. */
+    assert_string_equal(run("\033[A\033[1;5C\033[15~", 0, ans, sizeof ans),
+                        "\033[A\033[1;5C\033[15~");
+    /* CSI t and CSI c whatever their parameters: a terminal's garbage, swallowed. */
+    assert_string_equal(run("\033[4;-5;-7t\033[>0;1c", 0, ans, sizeof ans), "");
+    assert_string_equal(ans, "\033[4;-5;-7t|\033[>0;1c|");
+    /* Alt+] then Enter: keys. */
+    assert_string_equal(run("\033]\rc", 0, ans, sizeof ans), "\033]\rc");
+    /* A string cut by a control character: dropped, what follows is keys. */
+    assert_string_equal(run("\033]ab\rc", 0, ans, sizeof ans), "\rc");
+    /* An ESC inside a string that is not ST: what came before is dropped, the ESC begins
+     * again (here an answer). A hostile terminal's unended OSC before a size answer:
+     * nothing of it reaches the keys (its ], g, r acted as keys). */
+    assert_string_equal(run("\033_x\033[?1c", 0, ans, sizeof ans), "");
+    assert_string_equal(ans, "\033[?1c|");
+    assert_string_equal(run("\033]11;rgb:zz\033[4;270000;100tq", 0, ans, sizeof ans), "q");
+    assert_string_equal(ans, "\033[4;270000;100t|");
+    /* A CSI with numbers cut by an Esc: dropped. */
+    assert_string_equal(run("\033[6;9000\033[?6cq", 0, ans, sizeof ans), "q");
+    /* A curses key code (above 255) ends a part-answer: it and the code are keys. */
+    setup_scan();
+    answer_feed(&scan, 0x1b, 0);
+    answer_feed(&scan, '[', 0);
+    answer_feed(&scan, 0x103, 0);
+    assert_int_equal(answer_key(&scan), 0x1b);
+    assert_int_equal(answer_key(&scan), '[');
+    assert_int_equal(answer_key(&scan), 0x103);
+    assert_int_equal(answer_key(&scan), -1);
+}
+
+/* A part-answer waits ANSWER_GAP for its next byte, then is keys; a lone Esc is a key at
+ * once when nothing follows it. */
+static void gaps(void **state)
+{
+    (void)state;
+    setup_scan();
+    answer_feed(&scan, 0x1b, 1.0);
+    answer_feed(&scan, '[', 1.0);
+    answer_feed(&scan, '?', 1.0);
+    answer_idle(&scan, 1.0 + ANSWER_GAP * 0.5);
+    assert_int_equal(answer_key(&scan), -1);
+    assert_true(answer_holding(&scan));
+    /* The rest within the gap: one answer. */
+    assert_false(answer_feed(&scan, '6', 1.0 + ANSWER_GAP * 0.9));
+    assert_true(answer_feed(&scan, 'c', 1.0 + ANSWER_GAP * 1.5));
+    assert_string_equal(scan.answer, "\033[?6c");
+    assert_int_equal(answer_key(&scan), -1);
+    /* A part-answer quiet longer than the gap: dropped, the next byte a key. */
+    answer_feed(&scan, 0x1b, 4.0);
+    answer_feed(&scan, '[', 4.0);
+    answer_feed(&scan, '6', 4.0);
+    answer_feed(&scan, 'q', 4.0 + ANSWER_GAP * 2);
+    assert_int_equal(answer_key(&scan), 'q');
+    assert_int_equal(answer_key(&scan), -1);
+    /* Alt+] quiet longer than the gap: keys, and the next byte is a key after them. */
+    answer_feed(&scan, 0x1b, 5.0);
+    answer_feed(&scan, ']', 5.0);
+    answer_feed(&scan, 'z', 5.0 + ANSWER_GAP * 2);
+    assert_int_equal(answer_key(&scan), 0x1b);
+    assert_int_equal(answer_key(&scan), ']');
+    assert_int_equal(answer_key(&scan), 'z');
+    /* A lone Esc. */
+    answer_feed(&scan, 0x1b, 6.0);
+    answer_idle(&scan, 6.0);
+    assert_int_equal(answer_key(&scan), 0x1b);
+    assert_false(answer_holding(&scan));
+}
+
+/* A string longer than ANSWER_MAX is swallowed to its end, not read; the keys after it
+ * come through. A CSI that long is dropped. */
+static void too_long(void **state)
+{
+    (void)state;
+    setup_scan();
+    char in[3 * ANSWER_MAX], ans[64];
+    strcpy(in, "\033]");
+    memset(in + 2, 'x', 2 * ANSWER_MAX);
+    strcpy(in + 2 + 2 * ANSWER_MAX, "\033\\q");
+    assert_string_equal(run(in, 0, ans, sizeof ans), "q");
+    assert_string_equal(ans, "");
+    assert_int_equal(scan.dropped, 1);
+    strcpy(in, "\033[");
+    memset(in + 2, '1', ANSWER_MAX + 10);
+    strcpy(in + 2 + ANSWER_MAX + 10, "tq");
+    const char *keys = run(in, 0, ans, sizeof ans);
+    assert_string_equal(ans, "");
+    assert_int_equal(strspn(keys, "1"), strlen(keys) - 2); /* what came after the drop */
+    assert_string_equal(keys + strlen(keys) - 2, "tq");
+    assert_int_equal(scan.dropped, 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(answers_between_keys), cmocka_unit_test(byte_by_byte_late),
+        cmocka_unit_test(not_answers),          cmocka_unit_test(gaps),
+        cmocka_unit_test(too_long),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
