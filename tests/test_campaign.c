@@ -36,10 +36,7 @@ static uint64_t rng_state;
 
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
+    return test_uniform(&rng_state, lo, hi);
 }
 
 struct kase {

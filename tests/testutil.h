@@ -20,4 +20,14 @@
             fail_msg("%s = %.15g, expected %.15g within %.3g", #got, g_, w_, t_);          \
     } while (0)
 
+/* A number in [lo, hi) from the xorshift64 generator in *state: the same sequence on
+ * every machine, so a random campaign's case j is the same case everywhere. */
+static inline double test_uniform(uint64_t *state, double lo, double hi)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    return lo + (hi - lo) * (double)(*state >> 11) / 9007199254740992.0;
+}
+
 #endif

@@ -14,7 +14,7 @@ const struct binding input_bindings[] = {
     {'r', ACT_RESET, "r", "r", "reset to the initial conditions, t = 0", false},
     {'R', ACT_RANDOM, "R", "R", "random initial positions", false},
     {'p', ACT_PRESETS, "p", "p", "preset menu", false},
-    {'L', ACT_LESSONS, "L", "L", "lesson menu (in a lesson: space on or ends a run, , back, Esc leaves)", false},
+    {'L', ACT_LESSONS, "L", "L", "lesson menu (lesson: space on, , back, Esc leaves)", false},
     {'1', ACT_ENLARGE, "1-6", "1-6",
      "enlarge: 1 x, 2 v, 3 a, 4 x-v, 5 x-a, 6 v-a (again: grid)", false},
     {'2', ACT_ENLARGE, "1-6", "1-6", NULL, false},
