@@ -90,6 +90,12 @@ int record_start(struct record *r, const char *path, const struct app *app, char
 static void format_run(double d, double dt, char *buf, size_t len)
 {
     double tol = fabs(dt) * 1e-10;
+    /* Plain decimals where they are short (run 500, run 1.34), exponents past them. */
+    for (int places = 0; places <= 6 && fabs(d) < 1e15; places++) {
+        snprintf(buf, len, "%.*f", places, d);
+        if (fabs(strtod(buf, NULL) - d) <= tol)
+            return;
+    }
     for (int digits = 1; digits <= 17; digits++) {
         snprintf(buf, len, "%.*g", digits, d);
         if (fabs(strtod(buf, NULL) - d) <= tol)
