@@ -287,13 +287,17 @@ static int scroll_max(const struct teach *t, const struct layout *l)
     return n > rows ? n - rows : 0;
 }
 
-/* Space, '.' and Esc in a demo: pause and play on, skip to the next command, leave. */
+/* Space, '.' and Esc in a demo: pause and play on, skip to the next command, leave. A
+ * '.' more than the commands left does nothing: the chain stays where the recording
+ * ended, and its verdict stays on the screen. */
 static bool demo_key(struct teach *t, struct app *app, int ch)
 {
     if (ch == ' ' && t->done) {
         leave(t, app, false);
         return true;
     }
+    if (ch == '.' && t->done)
+        return true;
     if (ch == ' ' && !t->held) {
         t->held = true;
         t->held_at = app_clock_now();
