@@ -81,6 +81,11 @@ int main(int argc, char **argv)
         return list_presets(exe_dir);
     if (cli.mode == MODE_LIST_LESSONS)
         return lessons_list(exe_dir);
+    /* Each row of a study makes its own chain, and is checked there. */
+    if (cli.mode == MODE_BATCH) {
+        run_catch_terminate();
+        return run_batch(&c, cli.batch);
+    }
     int bad_key;
     struct model *m = config_model(&c, &bad_key, err, sizeof err);
     if (!m) {

@@ -23,10 +23,16 @@
 static const char *progname = "springsim";
 
 static FILE *errors; /* where error lines go; NULL: standard error */
+static const char *context; /* what every line is about (a --batch row), or NULL */
 
 void options_set_errors(FILE *f)
 {
     errors = f;
+}
+
+void options_set_context(const char *what)
+{
+    context = what;
 }
 
 void options_say(const char *fmt, ...)
@@ -39,7 +45,13 @@ void options_say(const char *fmt, ...)
     va_end(ap);
     /* Whatever went into it, the line reaches the terminal as one line of text. */
     config_escape(line, strlen(line), sizeof line, safe, sizeof safe);
-    fprintf(out, "%s: %s\n", progname, safe);
+    if (context) {
+        char where[4 * sizeof line];
+        config_escape(context, strlen(context), sizeof line, where, sizeof where);
+        fprintf(out, "%s: %s: %s\n", progname, where, safe);
+    } else {
+        fprintf(out, "%s: %s\n", progname, safe);
+    }
 }
 
 int options_finish_stdout(bool close)
@@ -224,12 +236,14 @@ static bool outputs_clash(const struct config *c)
  * serves every mode. */
 static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
 {
-    bool csv = mode == MODE_HEADLESS || mode == MODE_MODES || mode == MODE_SWEEP;
+    bool csv = mode == MODE_HEADLESS || mode == MODE_MODES || mode == MODE_SWEEP ||
+               mode == MODE_BATCH;
     static const char *const names[] = {[MODE_INTERACTIVE] = "the interactive program",
                                         [MODE_HEADLESS] = "--headless", [MODE_MODES] = "--modes",
                                         [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
                                         [MODE_PLAIN] = "--plain",
-                                        [MODE_LIST_LESSONS] = "--list-lessons"};
+                                        [MODE_LIST_LESSONS] = "--list-lessons",
+                                        [MODE_BATCH] = "--batch"};
     static const int csv_only[] = {CFG_OUTPUT, CFG_META, CFG_FIGURE, CFG_FIGURE_SIZE,
                                    CFG_FIGURE_TITLE};
     for (size_t i = 0; i < sizeof csv_only / sizeof *csv_only; i++)
@@ -257,7 +271,8 @@ static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
     static const int series_only[] = {CFG_ENERGY, CFG_SAMPLE, CFG_DURATION};
     for (size_t i = 0; i < sizeof series_only / sizeof *series_only; i++) {
         int k = series_only[i];
-        if (given[k] && mode == MODE_HEADLESS && summary && k != CFG_DURATION) {
+        if (given[k] && (mode == MODE_HEADLESS || mode == MODE_BATCH) && summary &&
+            k != CFG_DURATION) {
             options_say("--%s: applies to --headless's rows, and --summary writes one row of "
                         "figures (expected --headless without --summary)", config_options[k].name);
             return true;
@@ -388,6 +403,10 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             m = MODE_SWEEP;
             cli->sweep = optarg;
             break;
+        case CFG_BATCH:
+            m = MODE_BATCH;
+            cli->batch = optarg;
+            break;
         case CFG_LIST_PRESETS:
             m = MODE_LIST;
             break;
@@ -402,8 +421,8 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         }
         if (m != MODE_INTERACTIVE) {
             if (modes++) {
-                options_say("%s: give only one of --headless, --modes, --sweep, --list-presets, "
-                            "--list-lessons and --plain, once%s", written(argv, before, q, sizeof q),
+                options_say("%s: give only one of --headless, --modes, --sweep, --batch, "
+                            "--list-presets, --list-lessons and --plain, once%s", written(argv, before, q, sizeof q),
                             cli->mode == m ? " (it was given twice)" : "");
                 return EXIT_USAGE;
             }
@@ -411,10 +430,12 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             snprintf(mode_option, sizeof mode_option, "--%s", config_options[k].name);
         }
     }
-    /* --summary is a headless run's: alone it asks for one. */
+    /* --summary is a headless run's: alone it asks for one. --batch writes summaries. */
     if (c->summary && cli->mode == MODE_INTERACTIVE)
         cli->mode = MODE_HEADLESS;
-    if (c->summary && cli->mode != MODE_HEADLESS) {
+    if (cli->mode == MODE_BATCH)
+        c->summary = true;
+    if (c->summary && cli->mode != MODE_HEADLESS && cli->mode != MODE_BATCH) {
         options_say("--summary: summarises a --headless run, but %s was given too (expected "
                     "--headless or no other mode)", mode_option);
         return EXIT_USAGE;
@@ -428,6 +449,11 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
     if (c->summary && given[CFG_FIGURE]) {
         options_say("--figure: a --summary run has one row of figures, no series to draw "
                     "(expected --headless without --summary)");
+        return EXIT_USAGE;
+    }
+    if (cli->mode == MODE_BATCH && given[CFG_META]) {
+        options_say("--meta: a --batch study's rows share one header, and '#' lines would "
+                    "come between them (expected --batch without --meta)");
         return EXIT_USAGE;
     }
     if (mode_mismatch(given, cli->mode, c->summary) || outputs_clash(c))

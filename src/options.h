@@ -18,12 +18,14 @@ enum mode {
     MODE_SWEEP,
     MODE_LIST,
     MODE_PLAIN,
-    MODE_LIST_LESSONS
+    MODE_LIST_LESSONS,
+    MODE_BATCH
 };
 
 struct cli {
     enum mode mode;             /* what to do */
     const char *sweep;          /* --sweep FMIN:FMAX:COUNT */
+    const char *batch;          /* --batch FILE|- */
     char preset_path[PATH_MAX]; /* the preset file applied, if any */
 };
 
@@ -36,7 +38,10 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
 /* Sends the error lines to f instead of standard error (NULL: back to it). */
 void options_set_errors(FILE *f);
 
-/* One line on standard error, prefixed "springsim: ". */
+/* Names what every later line is about (a --batch row, "FILE:LINE"), or NULL for none. */
+void options_set_context(const char *what);
+
+/* One line on standard error, prefixed "springsim: " (and the context, if one is set). */
 void options_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* Flushes standard output after help-type output, and closes it if close (the program

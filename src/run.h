@@ -3,11 +3,21 @@
 #ifndef SPRINGSIM_RUN_H
 #define SPRINGSIM_RUN_H
 
+#include <stdbool.h>
+#include <stdio.h>
+
 #include "core/config.h"
 #include "core/model.h"
 
 /* --headless: the run's CSV rows, or its --summary row (run_headless.c). */
 int run_headless(const struct config *c, const struct model *m);
+
+/* --summary's row for one run of c on m, written to fp after its header if header;
+ * nothing written if the run fails (said on standard error). Returns the exit status. */
+int run_summary(const struct config *c, const struct model *m, FILE *fp, bool header);
+
+/* --batch FILE|-: one --summary row per row of the file, on top of base (run_batch.c). */
+int run_batch(const struct config *base, const char *path);
 
 /* --modes: the natural frequencies and shapes (run_tables.c). */
 int run_modes(const struct config *c, const struct model *m);

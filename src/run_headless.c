@@ -80,107 +80,125 @@ static void figure_row(struct report_data *fig, double *row, const struct sim *s
     report_data_add(fig, sim_time(s), row);
 }
 
-int run_headless(const struct config *c, const struct model *m)
+/* One headless run as it goes: the chain, what dt is worth for it, what the cap did. */
+struct run {
+    const struct config *c;
+    struct sim *s;
+    double *x;           /* 3N: the start's x and v, then each row's accelerations */
+    struct summary *sum; /* --summary's figures, or NULL for the series */
+    struct limits l;     /* dt judged, where judged */
+    bool judged;         /* the limits are known */
+    bool unstable;       /* dt is past the stability limit */
+    double total;        /* steps in all */
+    double stride;       /* steps between rows */
+    double capped;       /* velocities capped, not yet said */
+    double first_cap;    /* when first (s) */
+    double fig_start;    /* the figure's first energy balance (NAN: none yet) */
+};
+
+/* Frees what run_begin made. */
+static void run_end(struct run *r)
 {
-    int n = m->n, status = EXIT_FAILURE;
+    free(r->x);
+    sim_free(r->s);
+    summary_free(r->sum);
+}
+
+/* Sets the run up: the chain at its start, dt judged (and its warnings said). Returns
+ * EXIT_SUCCESS, or EXIT_FAILURE after one line saying why (run_end frees either way). */
+static int run_begin(struct run *r, const struct config *c, const struct model *m)
+{
+    int n = m->n;
+    *r = (struct run){.c = c, .fig_start = NAN};
     /* Steps between rows and steps in all, kept in doubles: whole numbers up to 2^53,
      * and huge values (--sample 1e300) stay huge instead of overflowing an integer. */
-    double total = floor(c->duration / c->dt + 1e-9);
-    double stride = c->sample > 0.0 ? round(c->sample / c->dt) : 1.0;
-    if (stride < 1.0)
-        stride = 1.0;
-    double *x = malloc((size_t)(3 * n) * sizeof *x);
-    struct sim *s = sim_new(m, c->dt);
-    struct summary *sum = c->summary ? summary_new(n) : NULL;
-    /* The figure keeps the rows the CSV gets: x1..xN, v1..vN, a1..aN, motor. */
-    int fig_series = report_headless_series(n, c->energy);
-    double start_balance = NAN;
-    struct report_data *fig = c->figure ? report_data_new(fig_series, floor(total / stride) + 1)
-                                        : NULL;
-    double *row = c->figure ? malloc((size_t)fig_series * sizeof *row) : NULL;
-    struct output o = {0}, fo = {0};
-    struct limits l;
-    bool judged = false, unstable = false;
-    if (!x || !s || (c->summary && !sum) || (c->figure && (!fig || !row))) {
+    r->total = floor(c->duration / c->dt + 1e-9);
+    r->stride = c->sample > 0.0 ? round(c->sample / c->dt) : 1.0;
+    if (r->stride < 1.0)
+        r->stride = 1.0;
+    r->x = malloc((size_t)(3 * n) * sizeof *r->x);
+    r->s = sim_new(m, c->dt);
+    r->sum = c->summary ? summary_new(n) : NULL;
+    if (!r->x || !r->s || (c->summary && !r->sum)) {
         options_say("out of memory");
-        goto done;
+        return EXIT_FAILURE;
     }
-    judged = judge(c, m, &l);
-    unstable = judged && limits_unstable(&l);
-    if (judged)
-        warn_limits(&l);
-    sim_set_integrator(s, c->integrator);
-    if (config_initial(c, m, x, x + n) != 0) {
+    r->judged = judge(c, m, &r->l);
+    r->unstable = r->judged && limits_unstable(&r->l);
+    if (r->judged)
+        warn_limits(&r->l);
+    sim_set_integrator(r->s, c->integrator);
+    if (config_initial(c, m, r->x, r->x + n) != 0) {
         options_say("--start-mode: mode %d's shape cannot be computed for these values "
                     "(LAPACK failed, or the numbers overflow)", c->start_mode);
-        goto done;
+        return EXIT_FAILURE;
     }
-    sim_reset(s, x, x + n);
-    if (run_open_output(&o, c))
-        goto done;
-    if (run_open_figure(&fo, c)) {
-        output_close(&o, false);
-        goto done;
-    }
-    status = EXIT_SUCCESS;
-    /* A summary's '#' lines go out with its header and row, so a run that blows up
-     * leaves no '#' lines without them. */
-    if (!sum)
-        run_write_meta(o.fp, c, "headless", NULL);
-    double capped = 0.0, first_cap = 0.0; /* velocities capped, and when first */
+    sim_reset(r->s, r->x, r->x + n);
+    return EXIT_SUCCESS;
+}
+
+/* Steps the run to its end: a summary takes in each step, the series writes a CSV row
+ * to fp every stride steps (and adds it to fig, if there is one). Returns EXIT_SUCCESS,
+ * or EXIT_FAILURE when the run blew up (said) or a row could not be written. */
+static int run_steps(struct run *r, FILE *fp, struct report_data *fig, double *row)
+{
+    struct sim *s = r->s;
+    const struct config *c = r->c;
+    double *a = r->x + 2 * sim_model(s)->n;
+    int status = EXIT_SUCCESS;
     bool blown = false;
-    if (sum) {
-        blown = !output_state_finite(s, x + 2 * n);
-        summary_add(sum, s, 0.0, total);
+    if (r->sum) {
+        blown = !output_state_finite(s, a);
+        summary_add(r->sum, s, 0.0, r->total);
     } else {
-        output_csv_header(o.fp, n, c->energy);
-        blown = output_csv_row(o.fp, s, c->energy, x + 2 * n) != 0;
-        figure_row(fig, row, s, x + 2 * n, c->energy, &start_balance);
+        output_csv_header(fp, sim_model(s)->n, c->energy);
+        blown = output_csv_row(fp, s, c->energy, a) != 0;
+        figure_row(fig, row, s, a, c->energy, &r->fig_start);
     }
     if (blown) {
-        report_blowup(s, &l, judged, false);
+        report_blowup(s, &r->l, r->judged, false);
         status = EXIT_FAILURE;
     }
     struct energy e;
     struct limits_runaway watch;
     sim_energy(s, &e);
-    limits_runaway_start(&watch, m, &e);
+    limits_runaway_start(&watch, sim_model(s), &e);
     /* A run that takes more than a second says how far it has got (a terminal only). */
     struct progress prog;
-    progress_start(&prog, total * c->dt);
-    for (double step = 1; !blown && step <= total; step++) {
+    progress_start(&prog, r->total * c->dt);
+    for (double step = 1; !blown && step <= r->total; step++) {
         /* Past the stability limit a capped velocity, or energy made from nothing, means
          * the numbers are running away: stop rather than write nonsense (or a value that
          * is no longer finite). */
         bool bad = sim_step(s) != SIM_OK, runaway = false;
-        if (!bad && unstable) {
+        if (!bad && r->unstable) {
             sim_energy(s, &e);
             runaway = limits_runaway_check(&watch, &e);
         }
-        if (bad || (unstable && (sim_last_capped(s) || runaway))) {
+        if (bad || (r->unstable && (sim_last_capped(s) || runaway))) {
             progress_end(&prog);
-            report_blowup(s, &l, judged, runaway);
+            report_blowup(s, &r->l, r->judged, runaway);
             status = EXIT_FAILURE;
-            capped = 0.0; /* said already */
+            r->capped = 0.0; /* said already */
             break;
         }
         if (sim_last_capped(s)) {
-            if (capped == 0.0)
-                first_cap = sim_time(s);
-            capped += sim_last_capped(s);
+            if (r->capped == 0.0)
+                r->first_cap = sim_time(s);
+            r->capped += sim_last_capped(s);
         }
-        if (sum) {
-            summary_add(sum, s, step, total);
-        } else if (fmod(step, stride) == 0.0) {
-            if (output_csv_row(o.fp, s, c->energy, x + 2 * n) != 0) {
+        if (r->sum) {
+            summary_add(r->sum, s, step, r->total);
+        } else if (fmod(step, r->stride) == 0.0) {
+            if (output_csv_row(fp, s, c->energy, a) != 0) {
                 progress_end(&prog);
-                report_blowup(s, &l, judged, false);
+                report_blowup(s, &r->l, r->judged, false);
                 status = EXIT_FAILURE;
-                capped = 0.0;
+                r->capped = 0.0;
                 break;
             }
-            figure_row(fig, row, s, x + 2 * n, c->energy, &start_balance);
-            if (ferror(o.fp))
+            figure_row(fig, row, s, a, c->energy, &r->fig_start);
+            if (ferror(fp))
                 break;
         }
         /* The clock read every 64 steps, or every step of exact's (each may be slow). */
@@ -188,15 +206,80 @@ int run_headless(const struct config *c, const struct model *m)
             progress_tick(&prog, sim_time(s));
     }
     progress_end(&prog);
-    if (sum && status == EXIT_SUCCESS && !output_state_finite(s, x + 2 * n)) {
-        report_blowup(s, &l, judged, false);
+    if (r->sum && status == EXIT_SUCCESS && !output_state_finite(s, a)) {
+        report_blowup(s, &r->l, r->judged, false);
         status = EXIT_FAILURE;
     }
-    if (sum && status == EXIT_SUCCESS) {
-        run_write_meta(o.fp, c, "summary", NULL);
-        summary_header(o.fp, n);
-        summary_row(o.fp, sum, s);
+    return status;
+}
+
+/* The warning that the velocity cap acted, if it did and the run did not stop for it. */
+static void say_capped(const struct run *r)
+{
+    if (r->capped <= 0.0)
+        return;
+    char times[32];
+    snprintf(times, sizeof times, r->capped == 1.0 ? "once" : "%.0f times", r->capped);
+    options_say("warning: the velocity cap (%g m/s) acted %s, first at t = %.4g s; the "
+        "energy balance includes what it removed", MODEL_VMAX, times, r->first_cap);
+}
+
+/* A summary's '#' lines go out with its header and row, so a run that blows up leaves
+ * no '#' lines without them. */
+static void write_summary(FILE *fp, const struct run *r, bool header)
+{
+    run_write_meta(fp, r->c, "summary", NULL);
+    if (header)
+        summary_header(fp, sim_model(r->s)->n);
+    summary_row(fp, r->sum, r->s);
+}
+
+int run_summary(const struct config *c, const struct model *m, FILE *fp, bool header)
+{
+    struct run r;
+    int status = run_begin(&r, c, m);
+    if (status == EXIT_SUCCESS)
+        status = run_steps(&r, fp, NULL, NULL);
+    if (status == EXIT_SUCCESS) {
+        write_summary(fp, &r, header);
+        say_capped(&r);
     }
+    run_end(&r);
+    return status;
+}
+
+int run_headless(const struct config *c, const struct model *m)
+{
+    int n = m->n;
+    struct run r;
+    int status = run_begin(&r, c, m);
+    /* The figure keeps the rows the CSV gets: x1..xN, v1..vN, a1..aN, motor. */
+    int fig_series = report_headless_series(n, c->energy);
+    struct report_data *fig = c->figure ? report_data_new(fig_series,
+                                                          floor(r.total / r.stride) + 1)
+                                        : NULL;
+    double *row = c->figure ? malloc((size_t)fig_series * sizeof *row) : NULL;
+    struct output o = {0}, fo = {0};
+    if (status == EXIT_SUCCESS && c->figure && (!fig || !row)) {
+        options_say("out of memory");
+        status = EXIT_FAILURE;
+    }
+    if (status != EXIT_SUCCESS)
+        goto done;
+    if (run_open_output(&o, c)) {
+        status = EXIT_FAILURE;
+        goto done;
+    }
+    if (run_open_figure(&fo, c)) {
+        output_close(&o, false);
+        status = EXIT_FAILURE;
+        goto done;
+    }
+    if (!r.sum)
+        run_write_meta(o.fp, c, "headless", NULL);
+    status = run_steps(&r, o.fp, fig, row);
+    if (r.sum && status == EXIT_SUCCESS)
+        write_summary(o.fp, &r, true);
     status = run_close_output(&o, c, status);
     if (fig) {
         char settings[400];
@@ -205,21 +288,14 @@ int run_headless(const struct config *c, const struct model *m)
         bool moves = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
         int draw = status == EXIT_SUCCESS
                        ? report_headless(fo.fp, fig_format_of(c->figure), fig, n, moves,
-                                         c->energy, 0.0, sim_time(s), &look)
+                                         c->energy, 0.0, sim_time(r.s), &look)
                        : 0;
         status = run_close_figure(&fo, c, draw, status);
     }
-    if (capped > 0.0) {
-        char times[32];
-        snprintf(times, sizeof times, capped == 1.0 ? "once" : "%.0f times", capped);
-        options_say("warning: the velocity cap (%g m/s) acted %s, first at t = %.4g s; the "
-            "energy balance includes what it removed", MODEL_VMAX, times, first_cap);
-    }
+    say_capped(&r);
 done:
-    free(x);
     free(row);
-    sim_free(s);
-    summary_free(sum);
+    run_end(&r);
     report_data_free(fig);
     return status;
 }

@@ -1,15 +1,14 @@
 #!/bin/sh
 # tests/summary.sh: --summary end to end (issue 13): a single undamped mass's closed forms,
 # the dampers' books against the energy lost, the contacts against a count from the
-# --headless time series of the same run, -o, the errors, and the README's GNU parallel
-# study run exactly as README.md writes it (taken from the file, so the two cannot drift).
+# --headless time series of the same run, -o and the errors (the README's study, which
+# runs through --batch, is tests/batch.sh's).
 # Prints one line per failing case, then "summary: N passed, M failed".
 
 NAME=summary
 . "$(dirname "$0")/lib/check.sh"
 trap 'exit 1' HUP INT TERM
 plain_env
-root=$(cd "$(dirname "$0")/.." && pwd)
 
 
 # col NAME [FILE]: the value of column NAME in the row of a summary (quoted lists, which
@@ -136,49 +135,6 @@ usage_error --summary -- --summary=yes
 run --summary --integrator euler --dt 0.05 --spring 1000 --no-collisions --duration 100
 if [ "$rc" -eq 1 ] && ! [ -s "$out" ] && grep -q 'blew up' "$err"; then pass; else
     fail "$cmd: exit $rc (expected 1), stdout $(wc -c <"$out") bytes (expected none)"
-fi
-
-# The README's study, exactly as written there: the block that starts "parallel -k",
-# its continuation lines joined, run by sh with springsim on the PATH.
-study=$(awk '/^    parallel -k / { on = 1 } on { sub(/^    /, ""); print } on && !/\\$/ { exit }' \
-    "$root/README.md")
-if ! command -v parallel >/dev/null 2>&1; then
-    fail "GNU parallel is not installed (mk/deps.sh test installs it); the README's study did not run"
-elif [ -z "$study" ]; then
-    fail "README.md has no study starting 'parallel -k'"
-else
-    mkdir -p "$tmp/bin" "$tmp/study"
-    ln -s "$SPRINGSIM" "$tmp/bin/springsim"
-    (cd "$tmp/study" && PATH=$tmp/bin:$PATH HOME=$tmp sh -c "$study") >"$out" 2>"$err"
-    rc=$?
-    table=$tmp/study/$(printf '%s\n' "$study" | sed -n 's/.*> *\([^ ]*\) *$/\1/p' | tail -n 1)
-    # The grid the command asks for: the values after its two ':::'.
-    grid=$(printf '%s\n' "$study" | tr -d '\\\n' | sed 's/|.*//' | awk -F':::' '{
-        n1 = split($2, a, " "); n2 = split($3, b, " ")
-        for (i = 1; i <= n1; i++) for (j = 1; j <= n2; j++) print a[i] "," b[j] }')
-    if [ "$rc" -ne 0 ] || ! [ -s "$table" ]; then
-        fail "the README's study: exit $rc, no table; stderr: $(head -c 300 "$err")"
-    else
-        headers=$(grep -c '^masses,' "$table")
-        rows=$(grep -vc '^masses,' "$table")
-        want=$(printf '%s\n' "$grid" | awk 'END { print NR }')
-        [ "$headers" = 1 ] && [ "$(head -n 1 "$table" | cut -c1-7)" = masses, ] && pass ||
-            fail "the study's table has $headers headers (expected one, first)"
-        [ "$rows" = "$want" ] && [ "$want" -ge 4 ] && pass ||
-            fail "the study's table has $rows rows (expected $want, one per run)"
-        # Each row's damping and frequency, in the grid's order (-k), and each row the one
-        # a run of those values alone gives.
-        got=$(sed 's/"[^"]*"/L/g' "$table" | awk -F, 'NR > 1 { print $4 "," $5 }')
-        [ "$got" = "$grid" ] && pass || fail "the study's damping,frequency: $(echo $got) (expected $(echo $grid))"
-        one=$(printf '%s\n' "$study" | tr -d '\\\n' | sed 's/^parallel -k //; s/ *:::.*//')
-        same=0
-        for pair in $grid; do
-            job=$(printf '%s\n' "$one" | sed "s/{1}/${pair%,*}/; s/{2}/${pair#*,}/")
-            PATH=$tmp/bin:$PATH sh -c "$job" | sed -n 2p >"$tmp/one"
-            grep -qxF -f "$tmp/one" "$table" && same=$((same + 1))
-        done
-        [ "$same" = "$want" ] && pass || fail "only $same of the study's rows are what a run alone gives"
-    fi
 fi
 
 summary

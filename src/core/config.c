@@ -189,6 +189,10 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                    .help = "natural frequencies, mode shapes and damping, CSV"},
     [CFG_SWEEP] = {.name = "sweep", .kind = CONFIG_MODE, .arg = "FMIN:FMAX:COUNT",
                    .help = "steady-state amplitude and phase against motor frequency, CSV"},
+    [CFG_BATCH] = {.name = "batch", .kind = CONFIG_MODE, .arg = "FILE|-",
+                   .help = "a parameter study: a CSV whose header names settings "
+                           "(masses,damping,frequency,...) and whose rows are runs; one "
+                           "--summary row per run, in order"},
     [CFG_PLAIN] = {.name = "plain", .kind = CONFIG_MODE,
                    .help = "the interactive program as lines of text, commands on standard "
                            "input: no escape sequences (also when TERM=dumb)"},

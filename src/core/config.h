@@ -54,6 +54,7 @@ enum config_key {
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
     CFG_MODES,
     CFG_SWEEP,
+    CFG_BATCH,
     CFG_PLAIN,
     CFG_LIST_PRESETS,
     CFG_LIST_LESSONS,

@@ -25,7 +25,15 @@
  * the 2x2 step is the mode's share of S only approximately. The drive: the steady motion
  * at its frequency with the integrator against the exact one (onestep_drive_error), up to
  * ONESTEP_MAX masses; above, the error per period of an undamped mode at the drive's
- * frequency. The good steps are found along h by onestep_search (scan, then bisection). */
+ * frequency. The good steps are found along h by onestep_search (scan, then bisection).
+ *
+ * What the searches cost at start-up: for euler and rk4 the modes answer the stability
+ * search's question wherever the answer is clear by far more than rounding, and S's
+ * radius (a dgeev each) is asked only near the edge (36 solves instead of 95 at N = 10,
+ * the same limit); the drive's search asks the steady state only (the exact one solved
+ * once, no radius below the stability limit); a least over the modes stops each mode's
+ * search once it cannot go lower; above LIMITS_DGEEV_MAX the undamped modes are solved
+ * once, not again for the stability region. */
 #include "limits.h"
 
 #include <math.h>
@@ -235,16 +243,18 @@ static bool mode_accurate(void *ctx, double h)
     return limits_mode_error(c->md, c->i, h, NULL, NULL) <= LIMITS_LOSS;
 }
 
-/* The least over the n modes of the largest good h of each. */
+/* The least over the n modes of the largest good h of each. The fastest modes, which
+ * usually set it, go first: a slower mode's search stops as soon as it cannot go below
+ * the least so far (most take one or two steps of it). */
 static double modes_search(const struct limits_mode *mode, int n, enum integrator i,
                            bool (*good)(void *, double), bool oscillating_only)
 {
     double dt = INFINITY;
-    for (int j = 0; j < n; j++) {
+    for (int j = n - 1; j >= 0; j--) {
         if (oscillating_only && mode[j].s * mode[j].s >= mode[j].w2)
             continue;
         struct mode_ctx c = {&mode[j], i};
-        dt = fmin(dt, onestep_search(good, &c, mode_scale(&mode[j])));
+        dt = fmin(dt, onestep_search_below(good, &c, mode_scale(&mode[j]), dt));
     }
     return dt;
 }
@@ -253,14 +263,14 @@ static double modes_search(const struct limits_mode *mode, int n, enum integrato
 
 /* euler and rk4 above LIMITS_DGEEV_MAX masses: the modes sampled on the region that holds
  * every eigenvalue of the chain, from the undamped modes' extremes. */
-static double region_stable_dt(const struct model *m, enum integrator i, const double *w2,
-                               int n)
+static double region_stable_dt(const struct model *m, enum integrator i, double w2_min,
+                               double w2_max)
 {
     struct limits_mode *mode = malloc(REGION_MODES * sizeof *mode);
     double *buf = malloc(2 * REGION_MODES * sizeof *buf);
     double dt = 0.0; /* no memory: not known stable at any step */
     if (mode && buf) {
-        stability_region_modes(m, w2[0], w2[n - 1], REGION_MODES, buf, buf + REGION_MODES);
+        stability_region_modes(m, w2_min, w2_max, REGION_MODES, buf, buf + REGION_MODES);
         for (int k = 0; k < REGION_MODES; k++)
             mode[k] = (struct limits_mode){fmax(buf[k], 0.0), buf[REGION_MODES + k]};
         dt = modes_search(mode, REGION_MODES, i, mode_stable, false);
@@ -278,11 +288,44 @@ static double long_chain_stable_dt(const struct model *m, const struct limits_mo
         return stability_semi_implicit(m);
     if ((i == INTEGRATOR_EULER || i == INTEGRATOR_RK4) && n <= LIMITS_DGEEV_MAX)
         return modes_search(mode, n, i, mode_stable, false);
+    /* Above LIMITS_DGEEV_MAX the modes are the undamped ones (modal_modes): their w2
+     * are dstevr's own, unless one was clamped at 0. */
+    if (n > LIMITS_DGEEV_MAX && mode[0].w2 > 0.0)
+        return i == INTEGRATOR_VERLET ? stability_verlet(mode[n - 1].w2)
+                                      : region_stable_dt(m, i, mode[0].w2, mode[n - 1].w2);
     double *w2 = malloc((size_t)(2 * n) * sizeof *w2), dt = 0.0;
     if (w2 && modes_modal(m, w2, w2 + n) == 0)
-        dt = i == INTEGRATOR_VERLET ? stability_verlet(w2[n - 1]) : region_stable_dt(m, i, w2, n);
+        dt = i == INTEGRATOR_VERLET ? stability_verlet(w2[n - 1])
+                                    : region_stable_dt(m, i, w2[0], w2[n - 1]);
     free(w2);
     return dt;
+}
+
+/* What the search for S's stable steps is given: euler's and rk4's S = R(hA) has the
+ * eigenvalues R(h lambda) of the modes' own 2x2 steps, so where every one is inside the
+ * unit circle, or one outside it, by more than MODES_CLEAR (far beyond the rounding of
+ * either computation) the modes decide; near the edge S's radius itself does. The search
+ * asks the same question at the same h as with S alone, and gets the same answers. */
+struct clear_ctx {
+    const struct limits_mode *mode;
+    int n;
+    enum integrator i;
+    struct onestep *o;
+};
+
+#define MODES_CLEAR 1e-6
+
+static bool stable_clear(void *ctx, double h)
+{
+    const struct clear_ctx *c = ctx;
+    double most = 0.0;
+    for (int j = 0; j < c->n; j++)
+        most = fmax(most, cabs(mode_mu(&c->mode[j], c->i, h)));
+    if (most < 1.0 - MODES_CLEAR)
+        return true;
+    if (most > 1.0 + MODES_CLEAR)
+        return false;
+    return onestep_radius(c->o, c->i, h) <= 1.0 + RHO_TOL; /* NAN: not known stable */
 }
 
 double limits_stable_dt(const struct model *m, const struct limits_mode *mode, int n,
@@ -296,7 +339,15 @@ double limits_stable_dt(const struct model *m, const struct limits_mode *mode, i
     for (int j = 0; j < n; j++)
         scale = fmax(scale, mode_scale(&mode[j]));
     struct onestep *o = onestep_new(m);
-    double dt = o ? onestep_stable_dt(o, i, scale) : long_chain_stable_dt(m, mode, n, i);
+    double dt;
+    if (!o) {
+        dt = long_chain_stable_dt(m, mode, n, i);
+    } else if (i == INTEGRATOR_EULER || i == INTEGRATOR_RK4) {
+        struct clear_ctx c = {mode, n, i, o};
+        dt = onestep_search(stable_clear, &c, scale);
+    } else {
+        dt = onestep_stable_dt(o, i, scale);
+    }
     onestep_free(o);
     return dt;
 }
@@ -326,10 +377,13 @@ struct drive_ctx {
     double f, stable_dt;
 };
 
-static double drive_error(const struct drive_ctx *c, double h)
+/* The drive's error at h; known_stable: h is below the stability limit (the search),
+ * so the radius need not be asked again. */
+static double drive_error(const struct drive_ctx *c, double h, bool known_stable)
 {
     if (c->o)
-        return onestep_drive_error(c->o, c->i, h, c->f);
+        return known_stable ? onestep_drive_error_stable(c->o, c->i, h, c->f)
+                            : onestep_drive_error(c->o, c->i, h, c->f);
     double w = 2.0 * M_PI * c->f;
     struct limits_mode md = {w * w, 0.0};
     return limits_mode_error(&md, c->i, h, NULL, NULL);
@@ -338,7 +392,7 @@ static double drive_error(const struct drive_ctx *c, double h)
 static bool drive_accurate(void *ctx, double h)
 {
     const struct drive_ctx *c = ctx;
-    return h <= c->stable_dt && drive_error(c, h) <= LIMITS_LOSS; /* NAN: not accurate */
+    return h <= c->stable_dt && drive_error(c, h, true) <= LIMITS_LOSS; /* NAN: not accurate */
 }
 
 /* The steady motion at the drive's frequency: its error at out->dt and the largest step
@@ -352,7 +406,7 @@ static void judge_drive(const struct model *m, struct limits *out)
     }
     if (m->n <= ONESTEP_MAX)
         c.o = onestep_new(m);
-    out->drive_error = limits_unstable(out) ? NAN : drive_error(&c, out->dt);
+    out->drive_error = limits_unstable(out) ? NAN : drive_error(&c, out->dt, false);
     out->drive_dt = fmin(onestep_search(drive_accurate, &c, 2.0 * M_PI * c.f), out->stable_dt);
     onestep_free(c.o);
 }

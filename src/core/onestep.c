@@ -11,7 +11,8 @@
  * The largest stable h is found along h: a scan of h * scale in steps of 1/16 up to 8,
  * then growing by 1/16 a step up to 1e6 (verlet's implicit damping keeps a heavily
  * damped chain stable far past its fastest eigenvalue), then bisection inside the first
- * bad interval. A stable interval narrower than the scan's step beyond the first
+ * bad interval (stopping when lo and hi are neighbouring doubles, where halving no
+ * longer moves either). A stable interval narrower than the scan's step beyond the first
  * unstable h does not count: the limit is the first h that fails. */
 #include "onestep.h"
 
@@ -40,6 +41,8 @@ struct onestep {
     double *y;               /* a state for the stepper, 2N + 2 */
     lapack_complex_double *lhs, *rhs; /* the steady-state solves, 2N x 2N and 2N x 2 */
     lapack_int *pivot;       /* 2N */
+    double exact_f;          /* the drive frequency whose exact steady state rhs's second
+                              * column holds, or NAN */
 };
 
 struct onestep *onestep_new(const struct model *m)
@@ -52,6 +55,7 @@ struct onestep *onestep_new(const struct model *m)
     if (!o)
         return NULL;
     o->n = n;
+    o->exact_f = NAN;
     o->model = model_new(n);
     o->s = malloc((2 * sq + 3 * n2 + 2) * sizeof *o->s);
     o->lhs = malloc((sq + 2 * n2) * sizeof *o->lhs);
@@ -126,7 +130,8 @@ double onestep_radius(struct onestep *o, enum integrator i, double h)
     return rho;
 }
 
-double onestep_search(bool (*good)(void *ctx, double h), void *ctx, double scale)
+double onestep_search_below(bool (*good)(void *ctx, double h), void *ctx, double scale,
+                            double ceiling)
 {
     if (!(scale > 0.0) || !isfinite(scale))
         return INFINITY;
@@ -138,17 +143,28 @@ double onestep_search(bool (*good)(void *ctx, double h), void *ctx, double scale
             break;
         }
         lo = t;
+        if (lo / scale >= ceiling)
+            return INFINITY; /* the answer is at least lo / scale */
     }
     if (isnan(hi))
         return INFINITY;
     for (int k = 0; k < BISECTIONS; k++) {
         double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi)
+            break; /* lo and hi are neighbours: no later halving moves either */
         if (good(ctx, mid / scale))
             lo = mid;
         else
             hi = mid;
+        if (lo / scale >= ceiling)
+            return INFINITY;
     }
     return lo / scale;
+}
+
+double onestep_search(bool (*good)(void *ctx, double h), void *ctx, double scale)
+{
+    return onestep_search_below(good, ctx, scale, INFINITY);
 }
 
 /* What the search along h is given. */
@@ -224,15 +240,21 @@ static int exact_steady(struct onestep *o, double w)
     return LAPACKE_zgesv(LAPACK_COL_MAJOR, n2, 1, o->lhs, n2, o->pivot, z, n2) == 0 ? 0 : -1;
 }
 
-double onestep_drive_error(struct onestep *o, enum integrator i, double h, double f)
+/* onestep_drive_error, h stable or not. The exact steady state depends on f alone: it is
+ * solved once for a search along h and waits in rhs's second column, which the
+ * integrator's solve (the first) leaves alone. */
+static double drive_error(struct onestep *o, enum integrator i, double h, double f)
 {
     int n = o->n;
     double w = 2.0 * M_PI * f;
     o->model->motor.frequency = f;
     stepper_set_model(o->stepper, o->model, h);
-    if (onestep_radius(o, i, h) > 1.0 + RHO_TOL || exact_steady(o, w) != 0)
-        return NAN;
-    /* The exact solution waits in rhs's second column while the first is solved. */
+    if (!(o->exact_f == f)) {
+        o->exact_f = NAN;
+        if (exact_steady(o, w) != 0)
+            return NAN;
+        o->exact_f = f;
+    }
     if (numerical_steady(o, i, h, w) != 0)
         return NAN;
     const lapack_complex_double *num = o->rhs, *ex = o->rhs + 2 * n;
@@ -242,4 +264,17 @@ double onestep_drive_error(struct onestep *o, enum integrator i, double h, doubl
         size = fmax(size, cabs(ex[k]));
     }
     return size > 0.0 ? diff / size : NAN;
+}
+
+double onestep_drive_error(struct onestep *o, enum integrator i, double h, double f)
+{
+    stepper_set_model(o->stepper, o->model, h);
+    if (onestep_radius(o, i, h) > 1.0 + RHO_TOL)
+        return NAN;
+    return drive_error(o, i, h, f);
+}
+
+double onestep_drive_error_stable(struct onestep *o, enum integrator i, double h, double f)
+{
+    return drive_error(o, i, h, f);
 }

@@ -44,4 +44,14 @@ double onestep_drive_error(struct onestep *o, enum integrator i, double h, doubl
  * and bisection; INFINITY when nothing up to 1e6 / scale fails, or scale is not > 0. */
 double onestep_search(bool (*good)(void *ctx, double h), void *ctx, double scale);
 
+/* onestep_search's answer where it is below ceiling; INFINITY where it is not (found
+ * without finishing the search: a least over many searches skips those that cannot
+ * lower it). */
+double onestep_search_below(bool (*good)(void *ctx, double h), void *ctx, double scale,
+                            double ceiling);
+
+/* onestep_drive_error at a step h already known stable (below onestep_stable_dt): the
+ * same number without the spectral radius. */
+double onestep_drive_error_stable(struct onestep *o, enum integrator i, double h, double f);
+
 #endif
