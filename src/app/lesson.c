@@ -20,7 +20,7 @@
 /* The commands a lesson may not hold: they write files or end the program. */
 static bool forbidden(int cmd)
 {
-    return cmd == CMD_SAVE || cmd == CMD_EXPORT || cmd == CMD_QUIT;
+    return commands[cmd].flags & COMMAND_NOT_IN_LESSON;
 }
 
 struct reader {
