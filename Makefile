@@ -50,7 +50,7 @@ TEST_LIBS = $(shell $(PKG_CONFIG) --libs cmocka)
 CORE_SRC = $(wildcard src/core/*.c)
 CORE_OBJ = $(CORE_SRC:src/%.c=$(BUILD)/%.o)
 CORE_LIB = $(BUILD)/libspringsim-core.a
-APP_SRC = $(wildcard src/app/*.c)
+APP_SRC = $(wildcard src/app/*.c src/lab/*.c src/chart/*.c)
 APP_OBJ = $(APP_SRC:src/%.c=$(BUILD)/%.o)
 TUI_SRC = $(wildcard src/tui/*.c)
 TUI_OBJ = $(TUI_SRC:src/%.c=$(BUILD)/%.o)
@@ -85,14 +85,15 @@ $(BUILD)/.deps-test: | $(BUILD)/.deps-build
 deps: $(BUILD)/.deps-build
 deps-test: $(BUILD)/.deps-test
 
-# The core, the app, the figures and the plain mode never see curses: this fails the build
-# if one of their files includes it (or a tui header), and they are compiled without the
-# ncurses flags and the tests linked without -lncursesw.
-$(BUILD)/.core-pure: $(wildcard src/core/*.[ch] src/app/*.[ch] src/fig/*.[ch] src/plain/*.[ch]) \
-    | $(BUILD)/.deps-build
+# Below the terminal program nothing sees curses: the core, the app, the lab, the charts,
+# the figures and the plain mode. This fails the build if one of their files includes it
+# (or a tui header); they are compiled without the ncurses flags and the tests linked
+# without -lncursesw.
+PURE_DIRS = src/core src/app src/lab src/chart src/fig src/plain
+$(BUILD)/.core-pure: $(wildcard $(PURE_DIRS:%=%/*.[ch])) | $(BUILD)/.deps-build
 	@if grep -lE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"](n?curses|ncursesw/|term\.h|\.\./tui/|tui/)' \
-	    src/core/*.[ch] src/app/*.[ch] src/fig/*.[ch] src/plain/*.[ch]; then \
-	    echo "error: src/core, src/app, src/fig and src/plain must not include curses" >&2; \
+	    $(PURE_DIRS:%=%/*.[ch]); then \
+	    echo "error: $(PURE_DIRS) must not include curses" >&2; \
 	    exit 1; fi
 	@touch $@
 
@@ -101,6 +102,14 @@ $(BUILD)/core/%.o: src/core/%.c | $(BUILD)/.core-pure
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/app/%.o: src/app/%.c | $(BUILD)/.core-pure
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+
+$(BUILD)/lab/%.o: src/lab/%.c | $(BUILD)/.core-pure
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
+
+$(BUILD)/chart/%.o: src/chart/%.c | $(BUILD)/.core-pure
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) -Isrc -MMD -MP -c -o $@ $<
 
@@ -219,13 +228,15 @@ $(BUILD)/tests/sixelcheck: tests/sixelcheck.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(WARN) $(FIG_CFLAGS) $(LDFLAGS) -o $@ $< $(FIG_LIBS)
 
-# tests/deb.sh builds the Debian package (make deb) unless DEB_CHECK=no.
+# tests/deb.sh builds the Debian package (make deb) unless DEB_CHECK=no; SANITIZED=yes
+# (make sanitize) tells the tests that memory and time figures are the sanitizer's.
 DEB_CHECK ?= yes
+SANITIZED ?= no
 check: $(BIN) $(TEST_BIN) $(BUILD)/tests/slowterm $(BUILD)/tests/pixterm $(BUILD)/tests/sixelcheck \
     completions $(BUILD)/mk/docgen | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) SLOWTERM=$(BUILD)/tests/slowterm PIXTERM=$(BUILD)/tests/pixterm \
 	    SIXELCHECK=$(BUILD)/tests/sixelcheck COMPLETIONS=$(BUILD)/completions \
-	    DOCGEN=$(BUILD)/mk/docgen BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) T="$(T)" TESTS="$(TESTS)" J="$(J)" \
+	    DOCGEN=$(BUILD)/mk/docgen BUILD=$(BUILD) DEB_CHECK=$(DEB_CHECK) SANITIZED=$(SANITIZED) T="$(T)" TESTS="$(TESTS)" J="$(J)" \
 	    sh tests/run.sh $(TEST_BIN)
 
 # Everything again under AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -234,7 +245,7 @@ sanitize:
 	@mkdir -p $(BUILD)/san && ln -sfn $(CURDIR)/presets $(BUILD)/san/presets && \
 	    ln -sfn $(CURDIR)/lessons $(BUILD)/san/lessons
 	$(MAKE) BUILD=$(BUILD)/san BIN=$(BUILD)/san/springsim CFLAGS="$(SAN_FLAGS)" \
-	    LDFLAGS="$(SAN_FLAGS)" DEB_CHECK=no check
+	    LDFLAGS="$(SAN_FLAGS)" DEB_CHECK=no SANITIZED=yes check
 
 # The unit tests and a headless run with collisions under valgrind's memcheck: zero
 # errors and no definite leaks, or it fails.

@@ -2,7 +2,7 @@
 #ifndef SPRINGSIM_LESSONS_CLI_H
 #define SPRINGSIM_LESSONS_CLI_H
 
-#include "app/lesson.h"
+#include "lab/lesson.h"
 #include "core/config.h"
 
 /* --list-lessons: "NAME  TITLE", one line each, escaped; the exit status. */

@@ -12,7 +12,7 @@
 
 #include "core/config.h"
 #include "core/preset.h"
-#include "app/lesson.h"
+#include "lab/lesson.h"
 #include "lessons_cli.h"
 #include "options.h"
 #include "plain/plain.h"

@@ -29,7 +29,7 @@
 #include "../core/sim.h"
 #include "../core/sweep.h"
 #include "scope.h"
-#include "trail.h"
+#include "../chart/trail.h"
 
 #define APP_MAX_MASSES CONFIG_INTERACTIVE_MAX_MASSES /* the interactive program's N */
 #define APP_FMIN 0.1         /* the frequency control's range (Hz) */

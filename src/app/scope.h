@@ -10,7 +10,7 @@
 #include <stddef.h>
 
 #include "measure.h"
-#include "trail.h"
+#include "../chart/trail.h"
 
 struct app;
 

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "app/axis.h"
+#include "../chart/axis.h"
 
 /* Puts v among x's ticks if there is room. */
 static void add_tick(struct fig_axis *x, double v)

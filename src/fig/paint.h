@@ -8,7 +8,7 @@
 
 #include <cairo.h>
 
-#include "app/strokes.h"
+#include "../chart/strokes.h"
 
 /* Paints k with the drawing area's top left at the origin, a cell cw x ch units (dots
  * are half a cell across and a quarter down), on a dark or a light background. */

@@ -7,7 +7,7 @@
 #include <stdbool.h>
 #include <stdio.h>
 
-#include "app/strokes.h"
+#include "../chart/strokes.h"
 #include "figure.h"
 
 #define FIG_VIEW_TICKS 16

@@ -27,8 +27,8 @@
 #include "../app/app.h"
 #include "../app/clock.h"
 #include "../app/command.h"
-#include "../app/lesson.h"
-#include "../app/record.h"
+#include "../lab/lesson.h"
+#include "../lab/record.h"
 #include "../app/watch.h"
 #include "words.h"
 

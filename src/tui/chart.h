@@ -6,11 +6,11 @@
 
 #include <stdbool.h>
 
-#include "../app/axis.h"
-#include "../app/braille.h"
-#include "../app/layout.h"
-#include "../app/plot_canvas.h"
-#include "../app/trail.h"
+#include "../chart/axis.h"
+#include "../chart/braille.h"
+#include "../chart/layout.h"
+#include "../chart/plot_canvas.h"
+#include "../chart/trail.h"
 #include "../fig/view_picture.h"
 
 #define CHART_MAX_TICKS 16

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../app/caption.h"
+#include "../lab/caption.h"
 #include "../app/spell.h"
 #include "term.h"
 

@@ -7,8 +7,8 @@
 
 #include <curses.h>
 
-#include "../app/braille.h"
-#include "../app/layout.h"
+#include "../chart/braille.h"
+#include "../chart/layout.h"
 
 /* Line-drawing characters: the terminal's own in UTF-8, plain ASCII otherwise. */
 enum line { L_H, L_V, L_UL, L_UR, L_LL, L_LR, L_RTEE, L_TTEE, L_PLUS };

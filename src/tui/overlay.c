@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../app/caption.h"
+#include "../lab/caption.h"
 #include "../app/verb.h"
 #include "draw.h"
 #include "input.h"

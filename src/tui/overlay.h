@@ -7,8 +7,8 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/layout.h"
-#include "../app/lesson.h"
+#include "../chart/layout.h"
+#include "../lab/lesson.h"
 #include "../app/select.h"
 #include "../core/preset.h"
 

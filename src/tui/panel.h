@@ -6,7 +6,7 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/layout.h"
+#include "../chart/layout.h"
 #include "../app/select.h"
 
 /* What the footer's hints depend on besides the app. */

@@ -6,7 +6,7 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/layout.h"
+#include "../chart/layout.h"
 #include "chart.h"
 
 struct plots {

@@ -4,7 +4,7 @@
 #define SPRINGSIM_READOUT_H
 
 #include "../app/app.h"
-#include "../app/layout.h"
+#include "../chart/layout.h"
 
 /* Draws the readout of app's cursors, and the measurements of the mass measured over
  * the window, in the controls' rectangle. */

@@ -4,7 +4,7 @@
 #define SPRINGSIM_SCENE_H
 
 #include "../app/app.h"
-#include "../app/layout.h"
+#include "../chart/layout.h"
 #include "../app/select.h"
 
 struct scene {

@@ -7,8 +7,8 @@
 
 #include "../app/app.h"
 #include "../app/clock.h"
-#include "../app/layout.h"
-#include "../app/record.h"
+#include "../chart/layout.h"
+#include "../lab/record.h"
 #include "../app/select.h"
 #include "chart.h"
 #include "graphics.h"

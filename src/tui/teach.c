@@ -6,7 +6,7 @@
 
 #include <curses.h>
 
-#include "../app/caption.h"
+#include "../lab/caption.h"
 #include "../app/clock.h"
 #include "../app/command.h"
 #include "draw.h"

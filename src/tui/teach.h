@@ -13,8 +13,8 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/layout.h"
-#include "../app/lesson.h"
+#include "../chart/layout.h"
+#include "../lab/lesson.h"
 
 struct teach {
     struct lesson own;           /* a lesson chosen from the menu (L), read here */

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "../app/strokes.h"
+#include "../chart/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
 #include "term.h"

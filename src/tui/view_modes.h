@@ -10,7 +10,7 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/braille.h"
+#include "../chart/braille.h"
 #include "chart.h"
 
 #define MODES_VIEW_FASTEST 0.6 /* the fastest mode swings at most this often on screen (Hz) */

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../app/strokes.h"
+#include "../chart/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
 #include "term.h"

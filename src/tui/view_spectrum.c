@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "../app/ghost.h"
-#include "../app/strokes.h"
+#include "../chart/strokes.h"
 #include "../core/motor.h"
 #include "draw.h"
 #include "term.h"

@@ -8,7 +8,7 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/layout.h"
+#include "../chart/layout.h"
 #include "../core/spectrum.h"
 #include "chart.h"
 

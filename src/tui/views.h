@@ -7,7 +7,7 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
-#include "../app/layout.h"
+#include "../chart/layout.h"
 #include "../app/select.h"
 #include "chart.h"
 #include "view_modes.h"

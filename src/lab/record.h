@@ -18,7 +18,7 @@
 
 #include "../core/config.h"
 #include "../core/output.h"
-#include "verb.h"
+#include "../app/verb.h"
 
 struct app;
 

@@ -15,7 +15,7 @@
 
 #include "../core/lines.h"
 #include "../core/search.h"
-#include "command.h"
+#include "../app/command.h"
 
 /* The commands a lesson may not hold: they write files or end the program. */
 static bool forbidden(int cmd)

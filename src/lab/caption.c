@@ -8,7 +8,7 @@
 #include <uniwidth.h>
 
 #include "../core/config.h"
-#include "spell.h"
+#include "../app/spell.h"
 
 void caption_text(const char *text, bool utf8, char *out, size_t len)
 {

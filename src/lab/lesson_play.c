@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "../core/preset.h"
-#include "app.h"
-#include "clock.h"
-#include "command.h"
+#include "../app/app.h"
+#include "../app/clock.h"
+#include "../app/command.h"
 
 bool lesson_run_over(const struct app *app, double end)
 {

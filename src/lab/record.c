@@ -11,9 +11,9 @@
 #include <unistd.h>
 
 #include "../core/preset.h"
-#include "app.h"
-#include "clock.h"
-#include "command.h"
+#include "../app/app.h"
+#include "../app/clock.h"
+#include "../app/command.h"
 #include "lesson.h"
 
 #ifndef VERSION
