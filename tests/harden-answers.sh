@@ -65,6 +65,13 @@ capped() {
         fail "$cmd: $n images, over the caps: $bad"
     fi
 }
+# Peak memory at most 64 MB. Under AddressSanitizer (make sanitize) the shadow memory
+# and quarantine make the figure meaningless: the limit is checked by the plain build.
+memory_ok() {
+    if [ "${SANITIZED:-no}" = yes ]; then pass; return; fi
+    [ -n "$rss" ] && [ "$rss" -lt 65536 ] && pass || fail "$cmd: peak memory $rss kB (at most 64 MB)"
+}
+
 term sixel 79 24 200 400 ' ~~q'
 [ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
 capped sixel
@@ -74,7 +81,7 @@ set -- $(head -n 1 "$tmp/chart") 0 0 0 0
 aw=$3 ah=$4
 big=$(awk -v w=$((aw * 64)) -v h=$((ah * 128)) '$1 == "sixel" && ($4 > w || $5 > h)' "$tmp/images" | head -n 1)
 [ -z "$big" ] && pass || fail "$cmd: an image past 64 x 128 pixels a cell ($aw x $ah cells): $big"
-[ -n "$rss" ] && [ "$rss" -lt 65536 ] && pass || fail "$cmd: peak memory $rss kB (at most 64 MB)"
+memory_ok
 term kitty 120 40 200 400 '1 ~~q'
 [ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
 capped kitty
@@ -83,6 +90,6 @@ if LC_ALL=C grep -q "$(printf '\033_Ga=T,f=100,i=[0-9]*,q=2,C=1,z=-1,c=[0-9]*,r=
 else
     fail "$cmd: kitty's images are not placed over their area's cells (c=, r=)"
 fi
-[ -n "$rss" ] && [ "$rss" -lt 65536 ] && pass || fail "$cmd: peak memory $rss kB (at most 64 MB)"
+memory_ok
 
 summary

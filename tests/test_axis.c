@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/axis.h"
+#include "chart/axis.h"
 
 /* True when step is 1, 2 or 5 x 10^k. */
 static bool one_two_five(double step)

@@ -5,8 +5,8 @@
 
 #include <string.h>
 
-#include "app/braille.h"
-#include "app/strokes.h"
+#include "chart/braille.h"
+#include "chart/strokes.h"
 
 static void dot_bits(void **state)
 {

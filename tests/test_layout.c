@@ -5,7 +5,7 @@
  * lesson's caption panel below everything but the hints. */
 #include "testutil.h"
 
-#include "app/layout.h"
+#include "chart/layout.h"
 
 static bool inside(struct rect r, int cols, int rows)
 {

@@ -18,10 +18,10 @@
 #include <uniwidth.h>
 
 #include "app/app.h"
-#include "app/caption.h"
+#include "lab/caption.h"
 #include "app/clock.h"
 #include "app/command.h"
-#include "app/lesson.h"
+#include "lab/lesson.h"
 
 static char dir[] = "/tmp/springsim-lesson-XXXXXX";
 

@@ -6,7 +6,7 @@
 #include <stdbool.h>
 #include <string.h>
 
-#include "app/plot_canvas.h"
+#include "chart/plot_canvas.h"
 
 static void ticks(void **state)
 {

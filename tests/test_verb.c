@@ -16,7 +16,7 @@
 
 #include "app/app.h"
 #include "app/command.h"
-#include "app/lesson.h"
+#include "lab/lesson.h"
 #include "app/verb.h"
 #include "core/preset.h"
 
