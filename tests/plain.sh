@@ -75,7 +75,7 @@ back
 back
 reset
 random
-set amplitude 0.2
+set amplitude 0.05
 set right-end wall
 set boundary motor
 faster

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "../app/strokes.h"
+#include "../app/sweeping.h"
 #include "../core/modes.h"
 #include "draw.h"
 #include "term.h"
@@ -69,6 +70,9 @@ static void solve_curves(struct response_view *rv, const struct app *app, int wi
         }
     }
     rv->drive_phase_ok = modes_response_phase(m, m->motor.frequency, amp, rv->drive_phase) == 0;
+    struct sweep_plan plan;
+    char why[200];
+    rv->contact = sweeping_plan(app, &plan, why, sizeof why) == 0 ? plan.contact : INFINITY;
     rv->version = app->version;
     rv->width = width;
 }
@@ -298,9 +302,14 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     else if (sweep_measured(sw) && sw->contacts > 0)
         snprintf(state, sizeof state, "■ %d points; %ld contact%s: off the linear theory",
                  sweep_measured(sw), sw->contacts, sw->contacts == 1 ? "" : "s");
+    else if (sweep_measured(sw) && sw->unsteady > 0)
+        snprintf(state, sizeof state, "■ %d points, %d not steady (w sweeps again)",
+                 sweep_measured(sw), sw->unsteady);
     else if (sweep_measured(sw))
         snprintf(state, sizeof state, "■ measured: %d points (w sweeps again)",
                  sweep_measured(sw));
+    else if (m->motor.amplitude >= rv->contact)
+        snprintf(state, sizeof state, "w: sweep; contacts expected above %.2g m", rv->contact);
     else
         snprintf(state, sizeof state, "┃ drive %.3f Hz  ┊ modes  w: sweep", m->motor.frequency);
     struct legend_item legend[11];
