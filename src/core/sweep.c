@@ -195,10 +195,11 @@ static bool settled(struct sweep *s, double t, double since)
         return false;
     if (s->hold <= 0.0)
         return true;
-    double period = 1.0 / s->freq[s->index];
-    if (!isnan(s->t_level) && t - s->t_level >= fmax(s->hold, 4.0 * period) - 1e-9)
+    double period = 1.0 / s->freq[s->index], hold = fmax(s->hold, 4.0 * period);
+    if (!isnan(s->t_level) && t - s->t_level >= hold - 1e-9)
         return true;
-    if (since < s->most)
+    /* Never given up before twice the least a point can take. */
+    if (since < fmax(s->most, 2.0 * (s->settle + hold)))
         return false;
     s->unsteady++;
     return true;

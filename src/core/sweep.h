@@ -70,8 +70,8 @@ void sweep_start(struct sweep *s, double fmin, double fmax, double settle, doubl
  * hold seconds and 4 periods, every mass's swing (its largest |x| in each whole drive
  * period, by the parabola through the extreme sample and its neighbours) has stayed
  * within SWEEP_LEVEL of the largest swing of any mass, and so has its phasor (that
- * period's lock-in: amplitude and phase together); or for most seconds at most (counted
- * in unsteady). */
+ * period's lock-in: amplitude and phase together); or for most seconds at most, or twice
+ * the least it can take if that is longer (counted in unsteady). */
 void sweep_until_steady(struct sweep *s, double hold, double most);
 
 /* The least motor amplitude (m) at which the linear steady state at one of the count

@@ -300,14 +300,15 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
         snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz (w stops)", sw->index + 1,
                  sw->points, sweep_frequency(sw));
     else if (sweep_measured(sw) && sw->contacts > 0)
-        snprintf(state, sizeof state, "■ %d points; %ld contact%s: off the linear theory",
-                 sweep_measured(sw), sw->contacts, sw->contacts == 1 ? "" : "s");
+        snprintf(state, sizeof state, "■ %d point%s; %ld contact%s: off the linear theory",
+                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s", sw->contacts,
+                 sw->contacts == 1 ? "" : "s");
     else if (sweep_measured(sw) && sw->unsteady > 0)
-        snprintf(state, sizeof state, "■ %d points, %d not steady (w sweeps again)",
-                 sweep_measured(sw), sw->unsteady);
+        snprintf(state, sizeof state, "■ %d point%s, %d not steady (w sweeps again)",
+                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s", sw->unsteady);
     else if (sweep_measured(sw))
-        snprintf(state, sizeof state, "■ measured: %d points (w sweeps again)",
-                 sweep_measured(sw));
+        snprintf(state, sizeof state, "■ measured: %d point%s (w sweeps again)",
+                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s");
     else if (m->motor.amplitude >= rv->contact)
         snprintf(state, sizeof state, "w: sweep; contacts expected above %.2g m", rv->contact);
     else
