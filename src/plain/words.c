@@ -13,6 +13,7 @@ static const char *const hints[][2] = {
     {"; space starts", "; start starts it"},
     {" (f shows them)", ""},
     {"; ] runs faster, w stops", "; faster runs it faster, sweep stops it"},
+    {", w stops", ", sweep stops it"},
 };
 
 /* text with the key hints reworded, into out. */
