@@ -13,6 +13,7 @@
 #include "../core/limits.h"
 #include "../core/modes.h"
 #include "ghost.h"
+#include "action.h"
 
 /* The chain-sized parts, made together and swapped in together. The parameters are the
  * sim's own: the app reads them through app->model, a pointer to them. */
@@ -313,7 +314,15 @@ int app_change(struct app *app, struct config *next, unsigned how, const char *w
 
 int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
 {
+    return app_init_named(app, cfg, exe_dir, NULL, false);
+}
+
+int app_init_named(struct app *app, const struct config *cfg, const char *exe_dir,
+                   const char *(*name_of)(int action), bool keys)
+{
     memset(app, 0, sizeof *app);
+    app->name_of = name_of;
+    app->keys = keys;
     app->exe_dir = exe_dir;
     app->speed = 1.0;
     snprintf(app->preset, sizeof app->preset, "%s", cfg->name);
@@ -323,8 +332,8 @@ int app_init(struct app *app, const struct config *cfg, const char *exe_dir)
         return -1;
     /* The seed --random chose, so that the start can be repeated. */
     if (cfg->random && !cfg->seed_set && app->message[0] == '\0')
-        app_say(app, SAID_NOTE, "random positions from seed %llu (--seed repeats them); space starts",
-                (unsigned long long)cfg->seed);
+        app_say(app, SAID_NOTE, "random positions from seed %llu (--seed repeats them); %s "
+                "starts it", (unsigned long long)cfg->seed, app_key(app, ACT_RUN));
     return 0;
 }
 
@@ -437,13 +446,16 @@ unsigned app_step(struct app *app)
         break;
     case SWEEP_DONE:
         what |= app_retune(app, app->sweep_from);
+        char hint[64];
         if (app->sweep->unsteady > 0)
             what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies, %d not steady in %.0f s; "
                             "back at %.3f Hz", app->sweep->points, app->sweep->unsteady,
                             app->sweep->most, app->sweep_from);
         else
-            what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured (f shows them); "
-                            "back at %.3f Hz", app->sweep->points, app->sweep_from);
+            what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured%s; back at %.3f Hz",
+                            app->sweep->points,
+                            app_key_hint(app, ACT_RESPONSE, "shows them", hint, sizeof hint),
+                            app->sweep_from);
         break;
     default:
         break;
@@ -454,7 +466,9 @@ unsigned app_step(struct app *app)
 unsigned app_back(struct app *app)
 {
     if (app->running) {
-        app_say(app, SAID_NOTE, "pause first (space) to step back");
+        char hint[32];
+        app_say(app, SAID_NOTE, "pause first%s to step back",
+                app_key_hint(app, ACT_RUN, NULL, hint, sizeof hint));
         return 0;
     }
     if (history_pop(app->hist, app->sim) != 0) {
@@ -520,7 +534,9 @@ unsigned app_place_start(struct app *app, int i, double x0)
     if (i < 0 || i >= n)
         return 0;
     if (app->running) {
-        app_say(app, SAID_NOTE, "pause first (space) to move a mass");
+        char hint[32];
+        app_say(app, SAID_NOTE, "pause first%s to move a mass",
+                app_key_hint(app, ACT_RUN, NULL, hint, sizeof hint));
         return 0;
     }
     double w = model_block_width(m), eq = model_equilibrium(m, i);

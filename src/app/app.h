@@ -134,6 +134,12 @@ struct app {
                               * on it is decided on this, never on its words */
     unsigned says;           /* messages said so far (app_say): a new one moves it */
     const char *exe_dir;     /* for the preset search path */
+    /* How the front end showing the messages names an action (enum action): its key in
+     * the terminal program ("space", "]"), its command in the plain mode ("start",
+     * "faster"); NULL for none. With keys, a message may name one in brackets ("pause
+     * first (space)"), which a command word would only repeat. Unset: no names. */
+    const char *(*name_of)(int action);
+    bool keys;
     double modes[APP_MAX_MASSES];                  /* natural frequencies (Hz) */
     double shapes[APP_MAX_MASSES * APP_MAX_MASSES]; /* mode shapes, mode-major */
     bool modes_ok;           /* modes[] and shapes[] are those of the model */
@@ -155,6 +161,10 @@ struct app {
 
 /* Sets up app from cfg (N already checked to be 1..APP_MAX_MASSES); 0, or -1 on no memory. */
 int app_init(struct app *app, const struct config *cfg, const char *exe_dir);
+
+/* app_init for a front end that names its actions in the messages (app->name_of, keys). */
+int app_init_named(struct app *app, const struct config *cfg, const char *exe_dir,
+                   const char *(*name_of)(int action), bool keys);
 
 /* Frees what app holds. */
 void app_free(struct app *app);
@@ -280,6 +290,14 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
 /* Sets the status message (printf-style) and what it is; returns APP_CHANGED_MESSAGE. */
 unsigned app_say(struct app *app, enum app_said said, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* What the front end calls action a (app->name_of), or "" for none. */
+const char *app_key(const struct app *app, int a);
+
+/* " (KEY)" and " (KEY what)" where the front end has keys and one for action a: a hint in
+ * brackets; "" elsewhere. */
+const char *app_key_hint(const struct app *app, int a, const char *what, char *buf,
+                         size_t len);
 
 /* No message (a note, so that nothing left of an old one is read as a warning). */
 void app_quiet(struct app *app);

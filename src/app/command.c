@@ -13,51 +13,9 @@
 
 #include "../core/preset.h"
 #include "app.h"
+#include "command_say.h"
 #include "scope_text.h"
 
-const struct command commands[CMD_COUNT] = {
-    [CMD_START] = {"start", ACT_RUN, "", "start the simulation; time follows the clock at the "
-                                         "Speed control's rate", true},
-    [CMD_PAUSE] = {"pause", ACT_RUN, "", "pause it", true},
-    [CMD_STEP] = {"step", ACT_STEP, "", "one step of dt forward (pauses)", true},
-    [CMD_BACK] = {"back", ACT_BACK, "", "one step back (paused; up to 500 states)"},
-    [CMD_RESET] = {"reset", ACT_RESET, "", "back to the initial conditions, t = 0"},
-    [CMD_RANDOM] = {"random", ACT_RANDOM, "[SEED]",
-                    "random initial positions (from SEED: the same each time), and a reset"},
-    [CMD_SET] = {"set", ACT_SET, "CONTROL VALUE",
-                 "set a control as typed in the interactive program (controls lists them)"},
-    [CMD_PRESET] = {"preset", ACT_PRESET, "NAME", "load a preset by name or file"},
-    [CMD_PRESETS] = {"presets", ACT_PRESETS, "", "the presets' names"},
-    [CMD_MODES] = {"modes", ACT_MODES, "", "each natural frequency with its damping ratio and Q"},
-    [CMD_MODE] = {"mode", ACT_MODE, "K", "start the chain in mode K, at rest, running", true},
-    [CMD_PLACE] = {"place", ACT_PLACE, "MASS X0",
-                   "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
-                   "where they stand, at rest, t = 0 (paused)"},
-    [CMD_ELEMENT] = {"element", ACT_ELEMENT, "m|c|k I VALUE",
-                     "one element: mass I's mass (m) or damping (c), or spring I's constant "
-                     "(k; spring 0 is the wall's, spring N the motor's)"},
-    [CMD_NEAREST] = {"nearest", ACT_NEAREST, "", "drive at the nearest natural frequency"},
-    [CMD_SWEEP] = {"sweep", ACT_SWEEP, "", "start / stop a sine-sweep experiment"},
-    [CMD_FASTER] = {"faster", ACT_FASTER, "", "playback faster"},
-    [CMD_SLOWER] = {"slower", ACT_SLOWER, "", "playback slower"},
-    [CMD_SAVE] = {"save", ACT_SAVE, "NAME", "save the set-up as a user preset"},
-    [CMD_EXPORT] = {"export", ACT_EXPORT, "", "export the samples as CSV (and a sweep's points)"},
-    [CMD_CURSOR] = {"cursor", ACT_CURSOR, "T",
-                    "every mass's x, v, a and the motor at the recorded sample nearest to time T"},
-    [CMD_MEASURE] = {"measure", ACT_CURSOR, "[MASS]",
-                     "period, frequency, peak-to-peak, rms, log decrement and zeta of a mass "
-                     "over the time window"},
-    [CMD_RUN] = {"run", ACT_NONE, "SECONDS",
-                 "run SECONDS of simulated time at once (not in real time), then pause", true},
-    [CMD_VIEW] = {"view", ACT_NONE, "NAME",
-                  "what the interactive program shows (lessons set the scene with it): plots, "
-                  "x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
-                  "spectrum; nothing changes here"},
-    [CMD_STATUS] = {"status", ACT_NONE, "", "the status line now"},
-    [CMD_CONTROLS] = {"controls", ACT_NONE, "", "every control, its name for set and its value"},
-    [CMD_HELP] = {"help", ACT_HELP, "[COMMAND]", "the commands, or what one does"},
-    [CMD_QUIT] = {"quit", ACT_QUIT, "", "quit (so does the end of input)"},
-};
 
 const char *const command_views[CV_COUNT] = {
     [CV_PLOTS] = "plots", [CV_X] = "x",   [CV_V] = "v",     [CV_A] = "a",
@@ -118,76 +76,6 @@ static void control_list(char *buf, size_t len)
                                  app_control_name((enum control)c));
     if (used < len) /* a setting with keys (< and >) but no row of the panel */
         snprintf(buf + used, len - used, ", window");
-}
-
-void command_status(const struct app *app, char *buf, size_t len)
-{
-    const struct sim *s = app->sim;
-    const double *x = sim_x(s), *v = sim_v(s);
-    size_t used = (size_t)snprintf(buf, len, "t=%.*f", app_time_decimals(sim_dt(s)), sim_time(s));
-    char a[32], b[32];
-    for (int i = 0; i < sim_model(s)->n && used < len; i++)
-        used += (size_t)snprintf(buf + used, len - used, " x%d=%s v%d=%s", i + 1,
-                                 app_fixed(x[i], 4, a, sizeof a), i + 1,
-                                 app_fixed(v[i], 4, b, sizeof b));
-    if (used < len)
-        snprintf(buf + used, len - used, " drive=%s",
-                 app_fixed(sim_end_position(s), 4, a, sizeof a));
-}
-
-/* The modes in one line: frequency, damping ratio and Q = 1/(2 zeta) of each. */
-static enum command_reply say_modes(const struct app *app, char *answer, size_t len)
-{
-    if (!app->modes_ok) {
-        snprintf(answer, len, "modes: the modes of this chain are not known");
-        return REPLY_ERROR;
-    }
-    size_t used = (size_t)snprintf(answer, len, "modes:");
-    for (int j = 0; j < app->model->n && used < len; j++) {
-        double z = app->damping_ratio[j];
-        char damping[64] = "";
-        if (!app->damping_ok)
-            snprintf(damping, sizeof damping, ", damping not known");
-        else if (z >= 1.0)
-            snprintf(damping, sizeof damping, ", damping ratio %.3g, overdamped", z);
-        else if (z > 0.0)
-            snprintf(damping, sizeof damping, ", damping ratio %.3g, Q %.3g", z, 0.5 / z);
-        else
-            snprintf(damping, sizeof damping, ", damping ratio 0, Q unbounded");
-        used += (size_t)snprintf(answer + used, len - used, "%s %d: %.4g Hz%s", j ? ";" : "",
-                                 j + 1, app->modes[j], damping);
-    }
-    return REPLY_OK;
-}
-
-/* Every control with its name for set and its value, in one line. */
-static enum command_reply say_controls(const struct app *app, char *answer, size_t len)
-{
-    size_t used = 0;
-    answer[0] = '\0';
-    for (int c = 0; c < CTL_COUNT && used < len; c++) {
-        char value[96];
-        app_control_value(app, (enum control)c, value, sizeof value);
-        used += (size_t)snprintf(answer + used, len - used, "%s%s %s", c ? "; " : "controls: ",
-                                 app_control_name((enum control)c), value);
-    }
-    if (used < len)
-        snprintf(answer + used, len - used, "; window %g s", app_window(app));
-    return REPLY_OK;
-}
-
-/* The presets' names in one line. */
-static enum command_reply say_presets(const struct app *app, char *answer, size_t len)
-{
-    struct preset_entry *list = NULL;
-    int n = preset_scan(app->exe_dir, &list);
-    size_t used = (size_t)snprintf(answer, len, "presets:");
-    for (int i = 0; i < n && used < len; i++)
-        used += (size_t)snprintf(answer + used, len - used, "%s %s", i ? "," : "", list[i].name);
-    if (n == 0)
-        snprintf(answer + used, len - used, " none found");
-    free(list);
-    return REPLY_OK;
 }
 
 /* What a verb's result is as a reply. */
@@ -263,29 +151,361 @@ static int whole(const char *text, int hi)
     return (int)v;
 }
 
-/* One line: its reply, the answer into answer, a run's seconds or a view's number into
- * *value, the command's row into *cmd (-1 for none). */
-static enum command_reply dispatch(struct app *app, const char *line, char *answer, size_t len,
-                                   double *seconds, int *row)
+/* Each command's work: the words after its name in c->rest (blanks trimmed), its answer
+ * into c->answer. */
+
+static enum command_reply do_start_pause(struct command_call *c)
 {
-    char buf[2048], q[4 * CONFIG_QUOTE_MAX + 48], list[600];
+    struct app *app = c->app;
+    bool run = c->cmd == CMD_START, was = app->running;
+    int d;
+    verb_do(app, ACT_RUN, &(struct verb_arg){.dir = run ? 1 : -1}, NULL);
+    double t = now_t(app, &d);
+    snprintf(c->answer, c->len, "%s at t = %.*f s", was == run ? run ? "running already" :
+             "paused already" : run ? "started" : "paused", d, t);
+    return REPLY_OK;
+}
+
+static enum command_reply do_step(struct command_call *c)
+{
+    int d;
+    if (verb(c->app, ACT_STEP, NULL, c->answer, c->len) != REPLY_OK)
+        return REPLY_ERROR; /* a blow-up: paused, and the message says why */
+    double t = now_t(c->app, &d);
+    snprintf(c->answer, c->len, "stepped to t = %.*f s, paused", d, t);
+    return REPLY_OK;
+}
+
+static enum command_reply do_back(struct command_call *c)
+{
+    int d;
+    if (verb_do(c->app, ACT_BACK, NULL, NULL) != RESULT_OK)
+        return snprintf(c->answer, c->len, "back: %s", c->app->message), REPLY_ERROR;
+    double t = now_t(c->app, &d);
+    snprintf(c->answer, c->len, "back to t = %.*f s", d, t);
+    return REPLY_OK;
+}
+
+static enum command_reply do_reset(struct command_call *c)
+{
+    return verb(c->app, ACT_RESET, NULL, c->answer, c->len);
+}
+
+static enum command_reply do_random(struct command_call *c)
+{
+    const char *rest = c->rest;
+    if (!*rest)
+        return verb(c->app, ACT_RANDOM, NULL, c->answer, c->len);
+    errno = 0;
+    unsigned long long seed = strtoull(rest, NULL, 10);
+    if (errno || strlen(rest) > 20 || strspn(rest, "0123456789") != strlen(rest)) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(rest, strlen(rest), q, sizeof q);
+        snprintf(c->answer, c->len, "random: %s is not a seed (expected a whole number from 0 "
+                 "to 2^64 - 1)", q);
+        return REPLY_ERROR;
+    }
+    return verb(c->app, ACT_RANDOM, &(struct verb_arg){.seeded = true, .seed = seed}, c->answer,
+                c->len);
+}
+
+/* The next word of *rest, cut off; *rest moves past it and its blanks. */
+static char *next_word(char **rest)
+{
+    char *word = *rest, *after = word + strcspn(word, " \t");
+    if (*after)
+        *after++ = '\0';
+    *rest = after + strspn(after, " \t");
+    return word;
+}
+
+static enum command_reply do_set(struct command_call *c)
+{
+    char *value = c->rest, *name = next_word(&value);
+    return set_control(c->app, name, value, c->answer, c->len);
+}
+
+static enum command_reply do_preset(struct command_call *c)
+{
+    return load_preset(c->app, c->rest, c->answer, c->len);
+}
+
+static enum command_reply do_presets(struct command_call *c)
+{
+    return say_presets(c->app, c->answer, c->len);
+}
+
+static enum command_reply do_modes(struct command_call *c)
+{
+    return say_modes(c->app, c->answer, c->len);
+}
+
+static enum command_reply do_mode(struct command_call *c)
+{
+    int k = whole(c->rest, c->app->model->n);
+    if (!k) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(c->rest, strlen(c->rest), q, sizeof q);
+        snprintf(c->answer, c->len, "mode: %s is not a mode of this chain (expected 1 <= K <= "
+                 "%d)", q, c->app->model->n);
+        return REPLY_ERROR;
+    }
+    return verb(c->app, ACT_MODE, &(struct verb_arg){.index = k - 1}, c->answer, c->len);
+}
+
+static enum command_reply do_place(struct command_call *c)
+{
+    char *x = c->rest, *mass = next_word(&x);
+    int k = whole(mass, c->app->model->n);
+    double x0;
+    if (!k || !*x || config_parse_number(x, &x0)) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(k ? x : mass, strlen(k ? x : mass), q, sizeof q);
+        snprintf(c->answer, c->len, "place: %s is not %s (expected place MASS X0, 1 <= MASS <= "
+                 "%d, X0 in m)", q, k ? "a displacement" : "a mass of this chain",
+                 c->app->model->n);
+        return REPLY_ERROR;
+    }
+    return verb(c->app, ACT_PLACE, &(struct verb_arg){.index = k - 1, .value = x0}, c->answer,
+                c->len);
+}
+
+static enum command_reply do_element(struct command_call *c)
+{
+    char *v = c->rest, *what = next_word(&v), *i = next_word(&v);
+    int n = c->app->model->n;
+    char kind = strlen(what) == 1 ? what[0] : 0;
+    double idx;
+    bool spring = kind == 'k';
+    if ((kind != 'm' && kind != 'c' && kind != 'k') || config_parse_number(i, &idx) ||
+        idx != floor(idx) || idx < (spring ? 0 : 1) || idx > n || !*v) {
+        snprintf(c->answer, c->len, "element: expected element m|c|k I VALUE (mass I from 1 to "
+                 "%d: m its mass, c its damping; k spring I from 0 to %d)", n, n);
+        return REPLY_ERROR;
+    }
+    return verb(c->app, ACT_ELEMENT, &(struct verb_arg){.what = kind,
+                .index = (int)idx - !spring, .text = v}, c->answer, c->len);
+}
+
+static enum command_reply do_nearest(struct command_call *c)
+{
+    return verb(c->app, ACT_NEAREST, NULL, c->answer, c->len);
+}
+
+static enum command_reply do_sweep(struct command_call *c)
+{
+    return verb(c->app, ACT_SWEEP, NULL, c->answer, c->len);
+}
+
+static enum command_reply do_speed(struct command_call *c)
+{
+    bool faster = c->cmd == CMD_FASTER;
+    unsigned changed;
+    verb_do(c->app, faster ? ACT_FASTER : ACT_SLOWER, NULL, &changed);
+    char value[32];
+    app_control_value(c->app, CTL_SPEED, value, sizeof value);
+    snprintf(c->answer, c->len, "Speed %s%s", value,
+             changed ? "" : faster ? " (the fastest)" : " (the slowest)");
+    return REPLY_OK;
+}
+
+static enum command_reply do_save(struct command_call *c)
+{
+    char *how = c->rest, *name = next_word(&how);
+    if (*how && strcmp(how, "replace") != 0) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(how, strlen(how), q, sizeof q);
+        snprintf(c->answer, c->len, "save: %s is not 'replace' (expected save NAME [replace])",
+                 q);
+        return REPLY_ERROR;
+    }
+    enum app_save st = app_save(c->app, name, *how != '\0');
+    if (st == SAVE_EXISTS) {
+        snprintf(c->answer, c->len, "save: preset %s exists (save %s replace replaces it)", name,
+                 name);
+        return REPLY_ERROR;
+    }
+    snprintf(c->answer, c->len, "%s", c->app->message);
+    return st == SAVE_OK ? REPLY_OK : REPLY_ERROR;
+}
+
+/* The samples; after a sweep, its points beside the theory too. */
+static enum command_reply do_export(struct command_call *c)
+{
+    enum command_reply r = verb(c->app, ACT_EXPORT, NULL, c->answer, c->len);
+    if (r != REPLY_OK || sweep_measured(c->app->sweep) == 0)
+        return r;
+    size_t used = strlen(c->answer);
+    r = reply_of(verb_do(c->app, ACT_EXPORT, &(struct verb_arg){.sweep = true}, NULL));
+    snprintf(c->answer + used, c->len - used, "; %s", c->app->message);
+    return r;
+}
+
+static enum command_reply do_cursor(struct command_call *c)
+{
+    return scope_say_cursor(c->app, c->rest, c->answer, c->len) ? REPLY_OK : REPLY_ERROR;
+}
+
+static enum command_reply do_measure(struct command_call *c)
+{
+    return scope_say_measure(c->app, c->rest, c->answer, c->len) ? REPLY_OK : REPLY_ERROR;
+}
+
+static enum command_reply do_run(struct command_call *c)
+{
+    const char *why = config_parse_number(c->rest, c->value);
+    if (why || !(*c->value > 0.0 && *c->value <= RUN_MAX)) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(c->rest, strlen(c->rest), q, sizeof q);
+        snprintf(c->answer, c->len, "run: %s %s (expected 0 < SECONDS <= %g)", q,
+                 why ? why : "is out of range", RUN_MAX);
+        return REPLY_ERROR;
+    }
+    return REPLY_RUN;
+}
+
+static enum command_reply do_view(struct command_call *c)
+{
+    for (int v = 0; v < CV_COUNT; v++)
+        if (strcmp(c->rest, command_views[v]) == 0) {
+            *c->value = v;
+            snprintf(c->answer, c->len, "view %s (the interactive program shows it)", c->rest);
+            return REPLY_VIEW;
+        }
+    char q[4 * CONFIG_QUOTE_MAX + 48];
+    config_quote(c->rest, strlen(c->rest), q, sizeof q);
+    snprintf(c->answer, c->len, "view: %s is not a view (expected plots, x, v, a, x-v, x-a, "
+             "v-a, modes, response, energy or spectrum)", q);
+    return REPLY_ERROR;
+}
+
+static enum command_reply do_status(struct command_call *c)
+{
+    command_status(c->app, c->answer, c->len);
+    return REPLY_OK;
+}
+
+static enum command_reply do_controls(struct command_call *c)
+{
+    return say_controls(c->app, c->answer, c->len);
+}
+
+/* "PREFIX'WORD' is not a command (expected ...)": what dispatch and help both say. */
+static enum command_reply not_a_command(const char *prefix, const char *word, char *answer,
+                                        size_t len)
+{
+    char q[4 * CONFIG_QUOTE_MAX + 48], list[600];
+    command_list(list, sizeof list);
+    config_quote(word, strlen(word), q, sizeof q);
+    snprintf(answer, len, "%s%s is not a command (expected %s)", prefix, q, list);
+    return REPLY_ERROR;
+}
+
+static enum command_reply do_help(struct command_call *c)
+{
+    char list[600];
+    if (!*c->rest) {
+        command_list(list, sizeof list);
+        snprintf(c->answer, c->len, "commands: %s (help COMMAND says what one does)", list);
+        return REPLY_OK;
+    }
+    int h = command_find(c->rest, strlen(c->rest));
+    if (h < 0)
+        return not_a_command("help: ", c->rest, c->answer, c->len);
+    const struct command *row = &commands[h];
+    if (h == CMD_SET) {
+        control_list(list, sizeof list);
+        snprintf(c->answer, c->len, "set CONTROL VALUE: %s; controls: %s", row->help, list);
+    } else {
+        snprintf(c->answer, c->len, "%s%s%s: %s", row->name, row->args[0] ? " " : "", row->args,
+                 row->help);
+    }
+    return REPLY_OK;
+}
+
+static enum command_reply do_quit(struct command_call *c)
+{
+    int d;
+    double t = now_t(c->app, &d);
+    snprintf(c->answer, c->len, "quit at t = %.*f s", d, t);
+    return REPLY_QUIT;
+}
+
+/* Recorded (R): a recording replays it (not pause: in a lesson it waits for the user,
+ * and every run ends paused anyway). Not in a lesson (N): it writes files or ends the
+ * program. Says play (P): its answer says whether the chain runs now. */
+#define R COMMAND_RECORDED
+#define N COMMAND_NOT_IN_LESSON
+#define P COMMAND_SAYS_PLAY
+const struct command commands[CMD_COUNT] = {
+    [CMD_START] = {"start", "", "start the simulation; time follows the clock at the Speed "
+                                "control's rate", do_start_pause, R | P},
+    [CMD_PAUSE] = {"pause", "", "pause it", do_start_pause, P},
+    [CMD_STEP] = {"step", "", "one step of dt forward (pauses)", do_step, R | P},
+    [CMD_BACK] = {"back", "", "one step back (paused; up to 500 states)", do_back, R},
+    [CMD_RESET] = {"reset", "", "back to the initial conditions, t = 0", do_reset, R},
+    [CMD_RANDOM] = {"random", "[SEED]",
+                    "random initial positions (from SEED: the same each time), and a reset",
+                    do_random, R},
+    [CMD_SET] = {"set", "CONTROL VALUE",
+                 "set a control as typed in the interactive program (controls lists them)",
+                 do_set, R},
+    [CMD_PRESET] = {"preset", "NAME", "load a preset by name or file", do_preset, R},
+    [CMD_PRESETS] = {"presets", "", "the presets' names", do_presets, 0},
+    [CMD_MODES] = {"modes", "", "each natural frequency with its damping ratio and Q", do_modes,
+                   0},
+    [CMD_MODE] = {"mode", "K", "start the chain in mode K, at rest, running", do_mode, R | P},
+    [CMD_PLACE] = {"place", "MASS X0",
+                   "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
+                   "where they stand, at rest, t = 0 (paused)", do_place, R},
+    [CMD_ELEMENT] = {"element", "m|c|k I VALUE",
+                     "one element: mass I's mass (m) or damping (c), or spring I's constant "
+                     "(k; spring 0 is the wall's, spring N the motor's)", do_element, R},
+    [CMD_NEAREST] = {"nearest", "", "drive at the nearest natural frequency", do_nearest, R},
+    [CMD_SWEEP] = {"sweep", "", "start / stop a sine-sweep experiment", do_sweep, R},
+    [CMD_FASTER] = {"faster", "", "playback faster", do_speed, R},
+    [CMD_SLOWER] = {"slower", "", "playback slower", do_speed, R},
+    [CMD_SAVE] = {"save", "NAME", "save the set-up as a user preset", do_save, N},
+    [CMD_EXPORT] = {"export", "", "export the samples as CSV (and a sweep's points)", do_export,
+                    N},
+    [CMD_CURSOR] = {"cursor", "T",
+                    "every mass's x, v, a and the motor at the recorded sample nearest to time T",
+                    do_cursor, 0},
+    [CMD_MEASURE] = {"measure", "[MASS]",
+                     "period, frequency, peak-to-peak, rms, log decrement and zeta of a mass "
+                     "over the time window", do_measure, 0},
+    [CMD_RUN] = {"run", "SECONDS",
+                 "run SECONDS of simulated time at once (not in real time), then pause", do_run,
+                 P},
+    [CMD_VIEW] = {"view", "NAME",
+                  "what the interactive program shows (lessons set the scene with it): plots, "
+                  "x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
+                  "spectrum; nothing changes here", do_view, R},
+    [CMD_STATUS] = {"status", "", "the status line now", do_status, 0},
+    [CMD_CONTROLS] = {"controls", "", "every control, its name for set and its value",
+                      do_controls, 0},
+    [CMD_HELP] = {"help", "[COMMAND]", "the commands, or what one does", do_help, 0},
+    [CMD_QUIT] = {"quit", "", "quit (so does the end of input)", do_quit, N},
+};
+#undef R
+#undef N
+#undef P
+
+/* One line: its reply, the answer into answer, a run's seconds or a view's number into
+ * *value, the command's row into *row (-1 for none). */
+static enum command_reply dispatch(struct app *app, const char *line, char *answer, size_t len,
+                                   double *value, int *row)
+{
+    char buf[2048];
     snprintf(buf, sizeof buf, "%s", line);
-    char *word = buf + strspn(buf, " \t");
-    char *rest = word + strcspn(word, " \t");
-    if (*rest)
-        *rest++ = '\0';
-    rest += strspn(rest, " \t");
+    char *rest = buf + strspn(buf, " \t"), *word = next_word(&rest);
     for (char *end = rest + strlen(rest); end > rest && (end[-1] == ' ' || end[-1] == '\t');)
         *--end = '\0';
     if (!*word)
         return REPLY_NONE;
     int cmd = command_find(word, strlen(word));
-    if (cmd < 0) {
-        command_list(list, sizeof list);
-        config_quote(word, strlen(word), q, sizeof q);
-        snprintf(answer, len, "%s is not a command (expected %s)", q, list);
-        return REPLY_ERROR;
-    }
+    if (cmd < 0)
+        return not_a_command("", word, answer, len);
     const struct command *c = &commands[cmd];
     *row = cmd;
     bool wants = c->args[0] && c->args[0] != '[';
@@ -296,217 +516,14 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
         return REPLY_ERROR;
     }
     if (!c->args[0] && *rest) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(rest, strlen(rest), q, sizeof q);
         snprintf(answer, len, "%s: takes nothing, but was given %s", c->name, q);
         return REPLY_ERROR;
     }
     app_quiet(app);
-    int d;
-    double t;
-    unsigned changed;
-    switch ((enum command_id)cmd) {
-    case CMD_START:
-    case CMD_PAUSE: {
-        bool run = cmd == CMD_START;
-        bool was = app->running;
-        verb_do(app, ACT_RUN, &(struct verb_arg){.dir = run ? 1 : -1}, NULL);
-        t = now_t(app, &d);
-        snprintf(answer, len, "%s at t = %.*f s", was == run ? run ? "running already" :
-                 "paused already" : run ? "started" : "paused", d, t);
-        return REPLY_OK;
-    }
-    case CMD_STEP:
-        if (verb(app, ACT_STEP, NULL, answer, len) != REPLY_OK)
-            return REPLY_ERROR; /* a blow-up: paused, and the message says why */
-        t = now_t(app, &d);
-        snprintf(answer, len, "stepped to t = %.*f s, paused", d, t);
-        return REPLY_OK;
-    case CMD_BACK:
-        if (verb_do(app, ACT_BACK, NULL, NULL) != RESULT_OK)
-            return snprintf(answer, len, "back: %s", app->message), REPLY_ERROR;
-        t = now_t(app, &d);
-        snprintf(answer, len, "back to t = %.*f s", d, t);
-        return REPLY_OK;
-    case CMD_RESET:
-        return verb(app, ACT_RESET, NULL, answer, len);
-    case CMD_RANDOM: {
-        if (!*rest)
-            return verb(app, ACT_RANDOM, NULL, answer, len);
-        errno = 0;
-        unsigned long long seed = strtoull(rest, NULL, 10);
-        if (errno || strlen(rest) > 20 || strspn(rest, "0123456789") != strlen(rest)) {
-            config_quote(rest, strlen(rest), q, sizeof q);
-            snprintf(answer, len, "random: %s is not a seed (expected a whole number from 0 "
-                     "to 2^64 - 1)", q);
-            return REPLY_ERROR;
-        }
-        return verb(app, ACT_RANDOM, &(struct verb_arg){.seeded = true, .seed = seed}, answer,
-                    len);
-    }
-    case CMD_SET: {
-        char *value = rest + strcspn(rest, " \t");
-        if (*value)
-            *value++ = '\0';
-        value += strspn(value, " \t");
-        return set_control(app, rest, value, answer, len);
-    }
-    case CMD_PRESET:
-        return load_preset(app, rest, answer, len);
-    case CMD_PRESETS:
-        return say_presets(app, answer, len);
-    case CMD_MODES:
-        return say_modes(app, answer, len);
-    case CMD_MODE: {
-        int k = whole(rest, app->model->n);
-        if (!k) {
-            config_quote(rest, strlen(rest), q, sizeof q);
-            snprintf(answer, len, "mode: %s is not a mode of this chain (expected 1 <= K <= %d)",
-                     q, app->model->n);
-            return REPLY_ERROR;
-        }
-        return verb(app, ACT_MODE, &(struct verb_arg){.index = k - 1}, answer, len);
-    }
-    case CMD_PLACE: {
-        char *x = rest + strcspn(rest, " \t");
-        if (*x)
-            *x++ = '\0';
-        x += strspn(x, " \t");
-        int k = whole(rest, app->model->n);
-        double x0;
-        if (!k || !*x || config_parse_number(x, &x0)) {
-            config_quote(k ? x : rest, strlen(k ? x : rest), q, sizeof q);
-            snprintf(answer, len, "place: %s is not %s (expected place MASS X0, 1 <= MASS <= "
-                     "%d, X0 in m)", q, k ? "a displacement" : "a mass of this chain",
-                     app->model->n);
-            return REPLY_ERROR;
-        }
-        return verb(app, ACT_PLACE, &(struct verb_arg){.index = k - 1, .value = x0}, answer,
-                    len);
-    }
-    case CMD_ELEMENT: {
-        char *i = rest + strcspn(rest, " \t"), *v;
-        if (*i)
-            *i++ = '\0';
-        i += strspn(i, " \t");
-        v = i + strcspn(i, " \t");
-        if (*v)
-            *v++ = '\0';
-        v += strspn(v, " \t");
-        int n = app->model->n;
-        char kind = strlen(rest) == 1 ? rest[0] : 0;
-        double idx;
-        bool spring = kind == 'k';
-        if ((kind != 'm' && kind != 'c' && kind != 'k') || config_parse_number(i, &idx) ||
-            idx != floor(idx) || idx < (spring ? 0 : 1) || idx > n || !*v) {
-            snprintf(answer, len, "element: expected element m|c|k I VALUE (mass I from 1 to "
-                     "%d: m its mass, c its damping; k spring I from 0 to %d)", n, n);
-            return REPLY_ERROR;
-        }
-        return verb(app, ACT_ELEMENT, &(struct verb_arg){.what = kind, .index = (int)idx - !spring,
-                    .text = v}, answer, len);
-    }
-    case CMD_NEAREST:
-        return verb(app, ACT_NEAREST, NULL, answer, len);
-    case CMD_SWEEP:
-        return verb(app, ACT_SWEEP, NULL, answer, len);
-    case CMD_FASTER:
-    case CMD_SLOWER: {
-        verb_do(app, cmd == CMD_FASTER ? ACT_FASTER : ACT_SLOWER, NULL, &changed);
-        char value[32];
-        app_control_value(app, CTL_SPEED, value, sizeof value);
-        snprintf(answer, len, "Speed %s%s", value,
-                 changed ? "" : cmd == CMD_FASTER ? " (the fastest)" : " (the slowest)");
-        return REPLY_OK;
-    }
-    case CMD_SAVE: {
-        char *how = rest + strcspn(rest, " \t");
-        if (*how)
-            *how++ = '\0';
-        how += strspn(how, " \t");
-        if (*how && strcmp(how, "replace") != 0) {
-            config_quote(how, strlen(how), q, sizeof q);
-            snprintf(answer, len, "save: %s is not 'replace' (expected save NAME [replace])", q);
-            return REPLY_ERROR;
-        }
-        enum app_save st = app_save(app, rest, *how != '\0');
-        if (st == SAVE_EXISTS) {
-            snprintf(answer, len, "save: preset %s exists (save %s replace replaces it)", rest,
-                     rest);
-            return REPLY_ERROR;
-        }
-        snprintf(answer, len, "%s", app->message);
-        return st == SAVE_OK ? REPLY_OK : REPLY_ERROR;
-    }
-    case CMD_EXPORT: {
-        /* The samples; after a sweep, its points beside the theory too. */
-        enum command_reply r = verb(app, ACT_EXPORT, NULL, answer, len);
-        if (r != REPLY_OK || sweep_measured(app->sweep) == 0)
-            return r;
-        size_t used = strlen(answer);
-        r = reply_of(verb_do(app, ACT_EXPORT, &(struct verb_arg){.sweep = true}, NULL));
-        snprintf(answer + used, len - used, "; %s", app->message);
-        return r;
-    }
-    case CMD_CURSOR:
-        return scope_say_cursor(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;
-    case CMD_MEASURE:
-        return scope_say_measure(app, rest, answer, len) ? REPLY_OK : REPLY_ERROR;
-    case CMD_RUN: {
-        const char *why = config_parse_number(rest, seconds);
-        if (why || !(*seconds > 0.0 && *seconds <= RUN_MAX)) {
-            config_quote(rest, strlen(rest), q, sizeof q);
-            snprintf(answer, len, "run: %s %s (expected 0 < SECONDS <= %g)", q,
-                     why ? why : "is out of range", RUN_MAX);
-            return REPLY_ERROR;
-        }
-        return REPLY_RUN;
-    }
-    case CMD_VIEW:
-        for (int v = 0; v < CV_COUNT; v++)
-            if (strcmp(rest, command_views[v]) == 0) {
-                *seconds = v;
-                snprintf(answer, len, "view %s (the interactive program shows it)", rest);
-                return REPLY_VIEW;
-            }
-        config_quote(rest, strlen(rest), q, sizeof q);
-        snprintf(answer, len, "view: %s is not a view (expected plots, x, v, a, x-v, x-a, v-a, "
-                 "modes, response, energy or spectrum)", q);
-        return REPLY_ERROR;
-    case CMD_STATUS:
-        command_status(app, answer, len);
-        return REPLY_OK;
-    case CMD_CONTROLS:
-        return say_controls(app, answer, len);
-    case CMD_HELP: {
-        if (!*rest) {
-            command_list(list, sizeof list);
-            snprintf(answer, len, "commands: %s (help COMMAND says what one does)", list);
-            return REPLY_OK;
-        }
-        int h = command_find(rest, strlen(rest));
-        if (h < 0) {
-            command_list(list, sizeof list);
-            config_quote(rest, strlen(rest), q, sizeof q);
-            snprintf(answer, len, "help: %s is not a command (expected %s)", q, list);
-            return REPLY_ERROR;
-        }
-        if (h == CMD_SET) {
-            control_list(list, sizeof list);
-            snprintf(answer, len, "set CONTROL VALUE: %s; controls: %s", commands[h].help, list);
-        } else {
-            snprintf(answer, len, "%s%s%s: %s", commands[h].name, commands[h].args[0] ? " " : "",
-                     commands[h].args, commands[h].help);
-        }
-        return REPLY_OK;
-    }
-    case CMD_QUIT:
-        t = now_t(app, &d);
-        snprintf(answer, len, "quit at t = %.*f s", d, t);
-        return REPLY_QUIT;
-    case CMD_COUNT:
-        break;
-    }
-    return REPLY_NONE;
+    struct command_call call = {app, cmd, rest, answer, len, value};
+    return c->run(&call);
 }
 
 enum command_reply command_do(struct app *app, const char *line, struct command_result *res)
@@ -517,7 +534,7 @@ enum command_reply command_do(struct app *app, const char *line, struct command_
     res->reply = dispatch(app, line, res->answer, sizeof res->answer, &value, &row);
     res->seconds = res->reply == REPLY_RUN ? value : 0.0;
     res->view = res->reply == REPLY_VIEW ? (int)value : -1;
-    res->says_play = row >= 0 && commands[row].says_play;
+    res->says_play = row >= 0 && (commands[row].flags & COMMAND_SAYS_PLAY);
     return res->reply;
 }
 

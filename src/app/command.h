@@ -43,14 +43,49 @@ enum command_id {
     CMD_COUNT
 };
 
+/* What a command line came to. */
+enum command_reply {
+    REPLY_NONE,    /* a blank line: nothing to answer */
+    REPLY_OK,      /* done; the answer says what it did */
+    REPLY_WARNING, /* done, with a caveat the answer carries (dt past a limit of the chain
+                    * now): an ok all the same */
+    REPLY_ERROR,   /* refused, nothing changed; the answer says what was wrong and what is
+                    * allowed */
+    REPLY_RUN,   /* run: the caller runs *seconds of simulated time, then pauses */
+    REPLY_VIEW,  /* view: the interactive program shows view *seconds (enum command_view);
+                  * the answer says so */
+    REPLY_QUIT   /* quit */
+};
+
+struct command_call;
+
+/* The flags of a command's row. */
+#define COMMAND_RECORDED 1u      /* a recording writes it (it changes the chain or the view) */
+#define COMMAND_NOT_IN_LESSON 2u /* a lesson may not hold it: it writes files or ends */
+#define COMMAND_SAYS_PLAY 4u     /* its answer says whether the chain runs now (start, step,
+                                  * run, mode): a start or a pause it made is no event of
+                                  * its own */
+
+/* One row per command (tmux's cmd_entry): the plain mode, lessons, recordings and help
+ * all read it; adding a command is a row and its function. */
 struct command {
-    const char *name;   /* the word typed */
-    enum action action; /* the verb it does (verb.h), or the key's action it answers to
-                         * in words (ACT_NONE: none) */
-    const char *args;   /* its arguments, for help ("" for none) */
-    const char *help;   /* what it does */
-    bool says_play;     /* its answer says whether the chain runs now (start, pause, step,
-                         * run, mode): a start or a pause it made is no event of its own */
+    const char *name; /* the word typed */
+    const char *args; /* its arguments, for help ("" for none; "[X]" optional) */
+    const char *help; /* what it does */
+    enum command_reply (*run)(struct command_call *c); /* does it */
+    unsigned flags;   /* COMMAND_* */
+};
+
+/* What a command's function is given: its row, the words after its name (blanks
+ * trimmed; its own to cut up), where its answer goes, and where a run's seconds or a
+ * view's number goes. */
+struct command_call {
+    struct app *app;
+    int cmd;
+    char *rest;
+    char *answer;
+    size_t len;
+    double *value;
 };
 
 /* The commands, indexed by enum command_id. */
@@ -79,19 +114,6 @@ enum command_view {
 /* Their names, as `view` takes them. */
 extern const char *const command_views[CV_COUNT];
 
-/* What a command line came to. */
-enum command_reply {
-    REPLY_NONE,    /* a blank line: nothing to answer */
-    REPLY_OK,      /* done; the answer says what it did */
-    REPLY_WARNING, /* done, with a caveat the answer carries (dt past a limit of the chain
-                    * now): an ok all the same */
-    REPLY_ERROR,   /* refused, nothing changed; the answer says what was wrong and what is
-                    * allowed */
-    REPLY_RUN,   /* run: the caller runs *seconds of simulated time, then pauses */
-    REPLY_VIEW,  /* view: the interactive program shows view *seconds (enum command_view);
-                  * the answer says so */
-    REPLY_QUIT   /* quit */
-};
 
 /* What a command line came to, its answer beside it (tmux's cmd_retval and the
  * message): what is decided on it is decided on reply and says_play, never on answer's

@@ -20,7 +20,7 @@
 /* The commands a lesson may not hold: they write files or end the program. */
 static bool forbidden(int cmd)
 {
-    return cmd == CMD_SAVE || cmd == CMD_EXPORT || cmd == CMD_QUIT;
+    return commands[cmd].flags & COMMAND_NOT_IN_LESSON;
 }
 
 struct reader {
@@ -85,114 +85,136 @@ static int close_ask(struct reader *r)
 }
 
 /* One line (NUL-terminated, its end of line gone). */
-static int read_line(struct reader *r, char *s)
+/* A question's choice line: its text added to the question being asked. */
+static int word_choice(struct reader *r, char *rest)
 {
-    for (const char *c = s; *c; c++)
-        if ((unsigned char)*c < 0x20 && *c != '\t')
-            return bad(r, "a control character (\\x%02x) in the text (a lesson is plain text)",
-                       (unsigned char)*c);
-    char *word = s + strspn(s, " \t");
-    char *rest = word + strcspn(word, " \t");
-    size_t wlen = (size_t)(rest - word);
-    rest += strspn(rest, " \t");
-    for (char *e = rest + strlen(rest); e > rest && (e[-1] == ' ' || e[-1] == '\t');)
-        *--e = '\0';
-    if (!*word || *word == '#')
-        return 0;
-#define IS(w) (wlen == strlen(w) && strncmp(word, w, wlen) == 0)
-    if (r->ask >= 0 && IS("choice")) {
-        struct lesson_item *q = &r->l->items[r->ask];
-        if (r->answered)
-            return bad(r, "a choice after the answer line (the choices come first)");
-        if (!*rest)
-            return bad(r, "choice needs its text");
-        if (q->nchoices == LESSON_MAX_CHOICES)
-            return bad(r, "a question has %d choices at most", LESSON_MAX_CHOICES);
-        if (!(q->choice[q->nchoices] = strdup(rest)))
-            return 1;
-        q->nchoices++;
-        return 0;
-    }
-    if (r->ask >= 0 && IS("answer")) {
-        struct lesson_item *q = &r->l->items[r->ask];
-        int k = lesson_choice(q, rest);
-        if (r->answered)
-            return bad(r, "the question has its answer already");
-        if (!k)
-            return bad(r, "answer: '%.40s' is not one of the %d choices above (expected 1 to "
-                       "%d)", rest, q->nchoices, q->nchoices);
-        q->answer = k;
-        r->answered = true;
-        return 0;
-    }
-    int st = close_ask(r);
-    if (st)
-        return st;
-    if (IS("choice") || IS("answer"))
-        return bad(r, "%.*s outside a question (it follows an 'ask' line)", (int)wlen, word);
-    if (IS("title")) {
-        if (r->l->title[0])
-            return bad(r, "a second title line (a lesson has one)");
-        if (!*rest)
-            return bad(r, "title needs its text");
-        snprintf(r->l->title, sizeof r->l->title, "%s", rest);
-        return 0;
-    }
-    if (IS("say")) {
-        r->said += strlen(rest) + 1;
-        if (r->said >= LESSON_CAPTION)
-            return bad(r, "the step's say lines come to more than %d bytes here (a caption is "
-                       "a paragraph: end the step with pause, or say less)", LESSON_CAPTION - 1);
-        return add(r, LESSON_SAY, rest) ? 0 : 1;
-    }
-    if (IS("pause") || IS("ask"))
-        r->said = 0;
-    if (IS("pause")) {
-        if (*rest)
-            return bad(r, "pause takes nothing, but was given '%.40s'", rest);
-        r->l->steps++;
-        return add(r, LESSON_PAUSE, "") ? 0 : 1;
-    }
-    if (IS("ask")) {
-        if (!*rest)
-            return bad(r, "ask needs its question");
-        if (!add(r, LESSON_ASK, rest))
-            return 1;
-        r->l->steps++;
-        r->ask = r->l->count - 1;
-        r->answered = false;
-        return 0;
-    }
-    if (IS("expect")) {
-        if (strncmp(rest, "t=", 2) != 0)
-            return bad(r, "expect needs the state, 't=... x1=... v1=...' as --record writes it");
-        return add(r, LESSON_EXPECT, rest) ? 0 : 1;
-    }
-    if (IS("wait")) {
-        double sec = 0.0;
-        const char *why = config_parse_number(rest, &sec);
-        if (why || !(sec > 0.0 && sec <= LESSON_MAX_WAIT))
-            return bad(r, "wait: '%.40s' %s (expected 0 < SECONDS <= %g, the wall-clock time "
-                       "the program waits)", rest, why ? why : "is out of range", LESSON_MAX_WAIT);
-        struct lesson_item *it = add(r, LESSON_WAIT, rest);
-        if (!it)
-            return 1;
-        it->value = sec;
-        return 0;
-    }
-    if (IS("speed")) {
-        /* The playback speed of the runs that follow: the Speed control, as set sets it
-         * (the dry run says what is wrong with the number). */
-        char line[LESSON_MAX_LINE + 16];
-        if (!*rest)
-            return bad(r, "speed needs a number (the playback speed, 0.1 to 10)");
-        snprintf(line, sizeof line, "set speed %s", rest);
-        return add(r, LESSON_COMMAND, line) ? 0 : 1;
-    }
-    if (IS("end"))
-        return bad(r, "end without a setup line before it");
-    if (IS("setup"))
-        return bad(r, "setup needs its 'end' line");
+    struct lesson_item *q = &r->l->items[r->ask];
+    if (r->answered)
+        return bad(r, "a choice after the answer line (the choices come first)");
+    if (!*rest)
+        return bad(r, "choice needs its text");
+    if (q->nchoices == LESSON_MAX_CHOICES)
+        return bad(r, "a question has %d choices at most", LESSON_MAX_CHOICES);
+    if (!(q->choice[q->nchoices] = strdup(rest)))
+        return 1;
+    q->nchoices++;
+    return 0;
+}
+
+/* A question's answer line: which of its choices is right. */
+static int word_answer(struct reader *r, char *rest)
+{
+    struct lesson_item *q = &r->l->items[r->ask];
+    int k = lesson_choice(q, rest);
+    if (r->answered)
+        return bad(r, "the question has its answer already");
+    if (!k)
+        return bad(r, "answer: '%.40s' is not one of the %d choices above (expected 1 to %d)",
+                   rest, q->nchoices, q->nchoices);
+    q->answer = k;
+    r->answered = true;
+    return 0;
+}
+
+static int word_title(struct reader *r, char *rest)
+{
+    if (r->l->title[0])
+        return bad(r, "a second title line (a lesson has one)");
+    if (!*rest)
+        return bad(r, "title needs its text");
+    snprintf(r->l->title, sizeof r->l->title, "%s", rest);
+    return 0;
+}
+
+static int word_say(struct reader *r, char *rest)
+{
+    r->said += strlen(rest) + 1;
+    if (r->said >= LESSON_CAPTION)
+        return bad(r, "the step's say lines come to more than %d bytes here (a caption is a "
+                   "paragraph: end the step with pause, or say less)", LESSON_CAPTION - 1);
+    return add(r, LESSON_SAY, rest) ? 0 : 1;
+}
+
+static int word_pause(struct reader *r, char *rest)
+{
+    r->said = 0;
+    if (*rest)
+        return bad(r, "pause takes nothing, but was given '%.40s'", rest);
+    r->l->steps++;
+    return add(r, LESSON_PAUSE, "") ? 0 : 1;
+}
+
+static int word_ask(struct reader *r, char *rest)
+{
+    r->said = 0;
+    if (!*rest)
+        return bad(r, "ask needs its question");
+    if (!add(r, LESSON_ASK, rest))
+        return 1;
+    r->l->steps++;
+    r->ask = r->l->count - 1;
+    r->answered = false;
+    return 0;
+}
+
+static int word_expect(struct reader *r, char *rest)
+{
+    if (strncmp(rest, "t=", 2) != 0)
+        return bad(r, "expect needs the state, 't=... x1=... v1=...' as --record writes it");
+    return add(r, LESSON_EXPECT, rest) ? 0 : 1;
+}
+
+static int word_wait(struct reader *r, char *rest)
+{
+    double sec = 0.0;
+    const char *why = config_parse_number(rest, &sec);
+    if (why || !(sec > 0.0 && sec <= LESSON_MAX_WAIT))
+        return bad(r, "wait: '%.40s' %s (expected 0 < SECONDS <= %g, the wall-clock time the "
+                   "program waits)", rest, why ? why : "is out of range", LESSON_MAX_WAIT);
+    struct lesson_item *it = add(r, LESSON_WAIT, rest);
+    if (!it)
+        return 1;
+    it->value = sec;
+    return 0;
+}
+
+/* The playback speed of the runs that follow: the Speed control, as set sets it (the dry
+ * run says what is wrong with the number). */
+static int word_speed(struct reader *r, char *rest)
+{
+    char line[LESSON_MAX_LINE + 16];
+    if (!*rest)
+        return bad(r, "speed needs a number (the playback speed, 0.1 to 10)");
+    snprintf(line, sizeof line, "set speed %s", rest);
+    return add(r, LESSON_COMMAND, line) ? 0 : 1;
+}
+
+static int word_end(struct reader *r, char *rest)
+{
+    (void)rest;
+    return bad(r, "end without a setup line before it");
+}
+
+static int word_setup(struct reader *r, char *rest)
+{
+    (void)rest;
+    return bad(r, "setup needs its 'end' line");
+}
+
+/* A lesson's own words (beside the plain mode's commands), each read by its function. */
+static const struct {
+    const char *word;
+    int (*read)(struct reader *r, char *rest);
+} lesson_words[] = {
+    {"title", word_title}, {"say", word_say},     {"pause", word_pause},
+    {"ask", word_ask},     {"expect", word_expect}, {"wait", word_wait},
+    {"speed", word_speed}, {"end", word_end},     {"setup", word_setup},
+};
+
+/* A command of the plain mode in a lesson: allowed there, within the lesson's time, after
+ * its preset; kept as written, its blanks made one. */
+static int command_line(struct reader *r, const char *word, size_t wlen, const char *rest)
+{
     int cmd = command_find(word, wlen);
     if (cmd < 0)
         return bad(r, "'%.*s' is not a command or a lesson's word (expected title, say, pause, "
@@ -212,11 +234,40 @@ static int read_line(struct reader *r, char *s)
     if (r->commands++ == 0 && cmd != CMD_PRESET)
         return bad(r, "a lesson starts from a known chain: its first command is 'preset NAME' "
                    "(or a setup block), not %s", commands[cmd].name);
-    /* The command as written, its blanks made one. */
     char line[LESSON_MAX_LINE + 2];
     snprintf(line, sizeof line, "%.*s%s%s", (int)wlen, word, *rest ? " " : "", rest);
     return add(r, LESSON_COMMAND, line) ? 0 : 1;
+}
+
+static int read_line(struct reader *r, char *s)
+{
+    for (const char *c = s; *c; c++)
+        if ((unsigned char)*c < 0x20 && *c != '\t')
+            return bad(r, "a control character (\\x%02x) in the text (a lesson is plain text)",
+                       (unsigned char)*c);
+    char *word = s + strspn(s, " \t");
+    char *rest = word + strcspn(word, " \t");
+    size_t wlen = (size_t)(rest - word);
+    rest += strspn(rest, " \t");
+    for (char *e = rest + strlen(rest); e > rest && (e[-1] == ' ' || e[-1] == '\t');)
+        *--e = '\0';
+    if (!*word || *word == '#')
+        return 0;
+#define IS(w) (wlen == strlen(w) && strncmp(word, w, wlen) == 0)
+    if (r->ask >= 0 && IS("choice"))
+        return word_choice(r, rest);
+    if (r->ask >= 0 && IS("answer"))
+        return word_answer(r, rest);
+    int st = close_ask(r);
+    if (st)
+        return st;
+    if (IS("choice") || IS("answer"))
+        return bad(r, "%.*s outside a question (it follows an 'ask' line)", (int)wlen, word);
+    for (size_t i = 0; i < sizeof lesson_words / sizeof *lesson_words; i++)
+        if (IS(lesson_words[i].word))
+            return lesson_words[i].read(r, rest);
 #undef IS
+    return command_line(r, word, wlen, rest);
 }
 
 /* A setup block, from the line after `setup` to its `end`: the preset text, with as many

@@ -20,7 +20,6 @@
 #define VERSION "0.1.0"
 #endif
 
-/* Not pause: in a lesson it waits for the user, and every run ends paused anyway. */
 /* "PATH: reason" into err, the path escaped. */
 static void say_failed(char *err, size_t errlen, const char *path, const char *why)
 {
@@ -31,26 +30,7 @@ static void say_failed(char *err, size_t errlen, const char *path, const char *w
 
 bool record_wants(int cmd)
 {
-    switch ((enum command_id)cmd) {
-    case CMD_START:
-    case CMD_STEP:
-    case CMD_BACK:
-    case CMD_RESET:
-    case CMD_RANDOM:
-    case CMD_SET:
-    case CMD_PRESET:
-    case CMD_MODE:
-    case CMD_PLACE:
-    case CMD_ELEMENT:
-    case CMD_NEAREST:
-    case CMD_SWEEP:
-    case CMD_FASTER:
-    case CMD_SLOWER:
-    case CMD_VIEW:
-        return true;
-    default:
-        return false;
-    }
+    return cmd >= 0 && cmd < CMD_COUNT && (commands[cmd].flags & COMMAND_RECORDED);
 }
 
 int record_start(struct record *r, const char *path, const struct app *app, char *err,
@@ -319,19 +299,14 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
 void record_key(char *out, size_t len, enum action a, const struct verb_arg *arg,
                 unsigned changed, bool running, const char *view)
 {
-    switch (a) {
-    case ACT_MODES:
-    case ACT_RESPONSE:
-    case ACT_ENERGY:
-    case ACT_SPECTRUM:
-    case ACT_ENLARGE:
-    case ACT_GRID:
+    /* The actions that change what is shown: a view line (as `view NAME`). */
+    static const bool shows[ACT_COUNT] = {[ACT_MODES] = true,    [ACT_RESPONSE] = true,
+                                          [ACT_ENERGY] = true,   [ACT_SPECTRUM] = true,
+                                          [ACT_ENLARGE] = true,  [ACT_GRID] = true};
+    if (a > ACT_NONE && a < ACT_COUNT && shows[a])
         snprintf(out, len, "view %s", view);
-        return;
-    default:
+    else
         verb_command(a, arg, changed, running, out, len);
-        return;
-    }
 }
 
 void record_abandon(struct record *r)

@@ -21,6 +21,23 @@ unsigned app_say(struct app *app, enum app_said said, const char *fmt, ...)
     return APP_CHANGED_MESSAGE;
 }
 
+const char *app_key(const struct app *app, int a)
+{
+    const char *name = app->name_of ? app->name_of(a) : NULL;
+    return name ? name : "";
+}
+
+const char *app_key_hint(const struct app *app, int a, const char *what, char *buf,
+                         size_t len)
+{
+    const char *key = app_key(app, a);
+    if (app->keys && *key)
+        snprintf(buf, len, " (%s%s%s)", key, what ? " " : "", what ? what : "");
+    else if (len)
+        buf[0] = '\0';
+    return buf;
+}
+
 void app_quiet(struct app *app)
 {
     app->message[0] = '\0';

@@ -8,6 +8,7 @@
 
 #include "../core/modes.h"
 #include "app.h"
+#include "action.h"
 
 #define EPS 1e-9 /* s: times closer than this are the same sample's */
 
@@ -158,8 +159,10 @@ unsigned scope_jump(struct app *app, int dir)
 
 unsigned scope_page(struct app *app, int dir)
 {
+    char hint[32];
     if (app->running)
-        return app_say(app, SAID_NOTE, "pause (space) to scroll back through the recording");
+        return app_say(app, SAID_NOTE, "pause%s to scroll back through the recording",
+                       app_key_hint(app, ACT_RUN, NULL, hint, sizeof hint));
     double back = held_back(app) - dir * app_window(app), m = max_back(app);
     back = back < 0.0 ? 0.0 : back > m ? m : back;
     if (back == app->scope.back)

@@ -194,6 +194,11 @@ enum result verb_do(struct app *app, enum action a, const struct verb_arg *arg,
     return r;
 }
 
+const char *verb_command_name(int a)
+{
+    return verb_bound((enum action)a) ? verbs[a].command : NULL;
+}
+
 void verb_command(enum action a, const struct verb_arg *arg, unsigned changed, bool running,
                   char *out, size_t len)
 {

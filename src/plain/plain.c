@@ -97,15 +97,14 @@ static void put(struct plain *p, const char *kind, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 static void put(struct plain *p, const char *kind, const char *fmt, ...)
 {
-    char text[2048], words[2048], safe[4 * sizeof text];
+    char text[2048], safe[4 * sizeof text];
     va_list ap;
     if (p->closed || p->quiet)
         return;
     va_start(ap, fmt);
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
-    plain_reword(text, words, sizeof words);
-    plain_text(words, p->utf8, safe, sizeof safe);
+    plain_text(text, p->utf8, safe, sizeof safe);
     errno = 0;
     if (printf("%s %s\n", kind, safe) < 0 || fflush(stdout) != 0) {
         p->closed = true;
@@ -475,7 +474,7 @@ int plain_run(const struct config *cfg, const char *exe_dir, const struct lesson
     static struct plain p;
     memset(&p, 0, sizeof p);
     p.cap_second = -1.0;
-    if (app_init(&p.app, cfg, exe_dir) != 0) {
+    if (app_init_named(&p.app, cfg, exe_dir, verb_command_name, false) != 0) {
         fprintf(stderr, "springsim: out of memory\n");
         return EXIT_FAILURE;
     }

@@ -7,33 +7,6 @@
 #include "../app/spell.h"
 #include "../core/config.h"
 
-/* The terminal program's key hints in its messages, in the plain mode's words. */
-static const char *const hints[][2] = {
-    {" (space)", ""},
-    {"; space starts", "; start starts it"},
-    {" (f shows them)", ""},
-    {"; ] runs faster, w stops", "; faster runs it faster, sweep stops it"},
-    {", w stops", ", sweep stops it"},
-};
-
-/* text with the key hints reworded, into out. */
-void plain_reword(const char *text, char *out, size_t len)
-{
-    size_t o = 0;
-    while (*text && o + 1 < len) {
-        size_t h = 0, n = sizeof hints / sizeof *hints;
-        while (h < n && strncmp(text, hints[h][0], strlen(hints[h][0])) != 0)
-            h++;
-        if (h < n) {
-            o += (size_t)snprintf(out + o, len - o, "%s", hints[h][1]);
-            text += strlen(hints[h][0]);
-        } else {
-            out[o++] = *text++;
-        }
-    }
-    out[o < len ? o : len - 1] = '\0';
-}
-
 /* text made safe to print into out: control bytes and invalid UTF-8 escaped, the
  * program's own symbols in ASCII, other UTF-8 kept in a UTF-8 locale and escaped byte by
  * byte in any other. */

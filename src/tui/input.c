@@ -83,6 +83,14 @@ const struct binding input_bindings[] = {
     {0, ACT_NONE, NULL, NULL, NULL, false},
 };
 
+const char *input_key_name(int a, bool utf8)
+{
+    for (const struct binding *b = input_bindings; b->key; b++)
+        if ((int)b->action == a && !b->cursor)
+            return utf8 ? b->name : b->ascii;
+    return NULL;
+}
+
 enum action input_action(int key, bool cursor)
 {
     for (int pass = cursor ? 0 : 1; pass < 2; pass++)

@@ -25,6 +25,10 @@ extern const struct binding input_bindings[];
  * cursor's binding of the key comes first. */
 enum action input_action(int key, bool cursor);
 
+/* The key of action a as shown (the first binding's; its ASCII name without utf8), or
+ * NULL for an action no key has. */
+const char *input_key_name(int a, bool utf8);
+
 /* Prints the key table, one "KEY<TAB>WHAT" line per action (for --keys). */
 void input_print_keys(FILE *out);
 

@@ -165,86 +165,130 @@ static void enter(struct tui *t)
 }
 
 /* What is only the screen's to do: overlays, focus, the arrows in the panels, views,
- * cursors shown or not, a figure of what is shown. */
-static void on_screen_action(struct tui *t, enum action a, int ch, unsigned *changed)
+ * cursors shown or not, a figure of what is shown; one function per action, in the table
+ * below (the key table names the action, the verb table the app's verbs). */
+typedef void screen_fn(struct tui *t, enum action a, int ch, unsigned *changed);
+
+static void scr_presets(struct tui *t, enum action a, int ch, unsigned *changed)
 {
-    struct app *app = &t->app;
-    switch (a) {
-    case ACT_PRESETS:
-        overlay_presets(&t->overlay, app);
-        break;
-    case ACT_LESSONS:
-        if (t->rec.mem)
-            app_say(app, SAID_NOTE, "no lessons while recording (--record): the recording "
-                    "would miss their commands");
-        else
-            overlay_lessons(&t->overlay, app);
-        break;
-    case ACT_HELP:
-        overlay_help(&t->overlay);
-        break;
-    case ACT_UP:
-    case ACT_DOWN:
-        select_move(&t->sel, a == ACT_UP ? -1 : 1, CTL_COUNT, app->model);
-        break;
-    case ACT_LEFT:
-    case ACT_RIGHT:
-    case ACT_LEFT_BIG:
-    case ACT_RIGHT_BIG:
-        *changed = adjust(t, a == ACT_LEFT || a == ACT_LEFT_BIG ? -1 : 1,
-                          a == ACT_LEFT_BIG || a == ACT_RIGHT_BIG);
-        break;
-    case ACT_ENTER:
-        enter(t);
-        break;
-    case ACT_DAMPING:
-        if (select_mass(&t->sel) >= 0)
-            overlay_edit(&t->overlay, EDIT_DAMPING);
-        else
-            app_say(app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
-        break;
-    case ACT_FOCUS:
-        select_toggle_focus(&t->sel, app->model, t->views.shown == VIEW_MODES);
-        break;
-    case ACT_MODES:
-    case ACT_RESPONSE:
-    case ACT_ENERGY:
-    case ACT_SPECTRUM:
-        toggle_view(t, a == ACT_MODES      ? VIEW_MODES
-                       : a == ACT_RESPONSE ? VIEW_RESPONSE
-                       : a == ACT_ENERGY   ? VIEW_ENERGY
-                                           : VIEW_SPECTRUM);
-        break;
-    case ACT_HIDE:
-        plots_toggle_mass(&t->plots, app, select_mass(&t->sel));
-        break;
-    case ACT_SAVE:
-        overlay_edit(&t->overlay, EDIT_SAVE);
-        break;
-    case ACT_FIGURE:
-        save_view(t);
-        break;
-    case ACT_ENLARGE:
-        enlarge(t, ch - '1');
-        break;
-    case ACT_GRID:
-        enlarge(t, -1);
-        break;
-    case ACT_ESCAPE:
-        t->sel.focus = FOCUS_CONTROLS;
-        break;
-    case ACT_CURSOR:
-    case ACT_CURSOR_OFF:
-        *changed = cursor_action(t, a);
-        break;
-    case ACT_REDRAW:
-        clearok(curscr, TRUE);
-        graphics_invalidate(&t->gfx);
-        break;
-    default:
-        break;
-    }
+    (void)a, (void)ch, (void)changed;
+    overlay_presets(&t->overlay, &t->app);
 }
+
+static void scr_lessons(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    if (t->rec.mem)
+        app_say(&t->app, SAID_NOTE, "no lessons while recording (--record): the recording "
+                "would miss their commands");
+    else
+        overlay_lessons(&t->overlay, &t->app);
+}
+
+static void scr_help(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    overlay_help(&t->overlay);
+}
+
+static void scr_move(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)ch, (void)changed;
+    select_move(&t->sel, a == ACT_UP ? -1 : 1, CTL_COUNT, t->app.model);
+}
+
+static void scr_adjust(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)ch;
+    *changed = adjust(t, a == ACT_LEFT || a == ACT_LEFT_BIG ? -1 : 1,
+                      a == ACT_LEFT_BIG || a == ACT_RIGHT_BIG);
+}
+
+static void scr_enter(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    enter(t);
+}
+
+static void scr_damping(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    if (select_mass(&t->sel) >= 0)
+        overlay_edit(&t->overlay, EDIT_DAMPING);
+    else
+        app_say(&t->app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
+}
+
+static void scr_focus(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    select_toggle_focus(&t->sel, t->app.model, t->views.shown == VIEW_MODES);
+}
+
+static void scr_view(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)ch, (void)changed;
+    toggle_view(t, a == ACT_MODES      ? VIEW_MODES
+                   : a == ACT_RESPONSE ? VIEW_RESPONSE
+                   : a == ACT_ENERGY   ? VIEW_ENERGY
+                                       : VIEW_SPECTRUM);
+}
+
+static void scr_hide(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    plots_toggle_mass(&t->plots, &t->app, select_mass(&t->sel));
+}
+
+static void scr_save(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    overlay_edit(&t->overlay, EDIT_SAVE);
+}
+
+static void scr_figure(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    save_view(t);
+}
+
+static void scr_enlarge(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)changed;
+    enlarge(t, a == ACT_GRID ? -1 : ch - '1');
+}
+
+static void scr_escape(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    t->sel.focus = FOCUS_CONTROLS;
+}
+
+static void scr_cursor(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)ch;
+    *changed = cursor_action(t, a);
+}
+
+static void scr_redraw(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    clearok(curscr, TRUE);
+    graphics_invalidate(&t->gfx);
+}
+
+/* The screen's actions; NULL where the action is a verb of the app's, or nothing. */
+static screen_fn *const screen_actions[ACT_COUNT] = {
+    [ACT_PRESETS] = scr_presets,   [ACT_LESSONS] = scr_lessons, [ACT_HELP] = scr_help,
+    [ACT_UP] = scr_move,           [ACT_DOWN] = scr_move,       [ACT_LEFT] = scr_adjust,
+    [ACT_RIGHT] = scr_adjust,      [ACT_LEFT_BIG] = scr_adjust, [ACT_RIGHT_BIG] = scr_adjust,
+    [ACT_ENTER] = scr_enter,       [ACT_DAMPING] = scr_damping, [ACT_FOCUS] = scr_focus,
+    [ACT_MODES] = scr_view,        [ACT_RESPONSE] = scr_view,   [ACT_ENERGY] = scr_view,
+    [ACT_SPECTRUM] = scr_view,     [ACT_HIDE] = scr_hide,       [ACT_SAVE] = scr_save,
+    [ACT_FIGURE] = scr_figure,     [ACT_ENLARGE] = scr_enlarge, [ACT_GRID] = scr_enlarge,
+    [ACT_ESCAPE] = scr_escape,     [ACT_CURSOR] = scr_cursor,   [ACT_CURSOR_OFF] = scr_cursor,
+    [ACT_REDRAW] = scr_redraw,
+};
 
 /* Acts on a: a verb through the verb table (verb.h), with its argument from the screen;
  * the rest on the screen. False to quit. */
@@ -269,8 +313,8 @@ static bool on_action(struct tui *t, enum action a, int ch)
         verb_do(app, a, &arg, &changed);
         if (a == ACT_SWEEP && app->sweep->active && t->views.shown != VIEW_RESPONSE)
             toggle_view(t, VIEW_RESPONSE);
-    } else {
-        on_screen_action(t, a, ch, &changed);
+    } else if (a > ACT_NONE && a < ACT_COUNT && screen_actions[a]) {
+        screen_actions[a](t, a, ch, &changed);
     }
     if (changed & APP_CHANGED_SIZE)
         select_clamp(&t->sel, app->model);
@@ -328,8 +372,10 @@ static void on_mouse(struct tui *t)
         if (pick >= 0 && dist < model_block_width(m) + 1.0 / l->scene_cpm) {
             t->sel.elem = 2 * pick + 1;
             t->dragging = !t->app.running;
+            char hint[32];
             if (t->app.running)
-                app_say(&t->app, SAID_NOTE, "pause (space) to drag a mass");
+                app_say(&t->app, SAID_NOTE, "pause%s to drag a mass",
+                        app_key_hint(&t->app, ACT_RUN, NULL, hint, sizeof hint));
         } else {
             /* Between masses: the spring there (spring j lies left of mass j+1). */
             int j = 0;

@@ -120,6 +120,60 @@ static const char *span_text(const struct scope_view *v, double now, int w, char
     return first_fitting(forms, 2, w);
 }
 
+/* The cursors' times (with two, the difference too), the columns' header and the
+ * motor's row. */
+static void heads(const double *c0, const double *c1, int d, int cw, char head[2][LINE],
+                  char *hdr, char *motor)
+{
+    /* The cursors' times, and with two the difference. */
+    if (c1) {
+        double dt = c1[TRAIL_T] - c0[TRAIL_T];
+        char a[32], b[32];
+        snprintf(head[0], LINE, "t1 %.*f s  t2 %.*f s", d, c0[TRAIL_T], d, c1[TRAIL_T]);
+        scope_number(a, sizeof a, dt, 9);
+        scope_number(b, sizeof b, dt != 0.0 ? 1.0 / fabs(dt) : NAN, 9);
+        snprintf(head[1], LINE, "Δt %s s  1/Δt %s Hz", a, b);
+    } else {
+        snprintf(head[0], LINE, "t %.*f s", d, c0[TRAIL_T]);
+    }
+    const char *const labels[2][3] = {{"x m", "v m/s", "a m/s²"}, {"x@1", "x@2", "Δx"}};
+    const char *const *lab = labels[c1 != NULL];
+    char cols[3][32];
+    for (int k = 0; k < 3; k++) {
+        /* right-aligned by columns drawn, which UTF-8 and ASCII count differently */
+        int pad = cw - draw_width(lab[k]);
+        snprintf(cols[k], sizeof cols[k], "%*s%s", pad > 0 ? pad : 0, "", lab[k]);
+    }
+    snprintf(hdr, LINE, "  %s%s%s", cols[0], cols[1], cols[2]);
+    if (c1) {
+        double u[3] = {c0[TRAIL_U], c1[TRAIL_U], c1[TRAIL_U] - c0[TRAIL_U]};
+        row3(motor, "u", u, cw);
+    } else {
+        char num[32];
+        scope_number(num, sizeof num, c0[TRAIL_U], cw - 1);
+        snprintf(motor, LINE, "u %*s", cw, num);
+    }
+}
+
+/* Mass i's row: x, v, a at the cursor (with two: x at each and the difference), in its
+ * colour; its number in reverse when it is the mass measured. */
+static void mass_row(int y, int x, int w, int cw, const struct trail *tr, const double *c0,
+                     const double *c1, int i, bool measured)
+{
+    char line[LINE], label[16];
+    snprintf(label, sizeof label, "%d", i + 1);
+    double vals[3] = {c0[TRAIL_X(tr, i)], c0[TRAIL_V(tr, i)], c0[TRAIL_A(tr, i)]};
+    if (c1) {
+        vals[1] = c1[TRAIL_X(tr, i)];
+        vals[2] = c1[TRAIL_X(tr, i)] - c0[TRAIL_X(tr, i)];
+    }
+    row3(line, label, vals, cw);
+    attr_t a = term_attr(PAIR_MASS + i % 10);
+    fit(y, x, w, a, line);
+    if (measured)
+        draw_text_attr(y, x, 2, a | A_REVERSE, label);
+}
+
 void readout_draw(const struct layout *l, const struct app *app)
 {
     struct rect r = l->controls;
@@ -140,35 +194,8 @@ void readout_draw(const struct layout *l, const struct app *app)
     char head[2][LINE], span[2][LINE], hdr[LINE], motor[LINE];
     char meas[12][LINE];
     int nm = measure_lines(app, &v, mass, meas);
-    /* The cursors' times, and with two the difference. */
-    if (c1) {
-        double dt = c1[TRAIL_T] - c0[TRAIL_T];
-        char a[32], b[32];
-        snprintf(head[0], LINE, "t1 %.*f s  t2 %.*f s", d, c0[TRAIL_T], d, c1[TRAIL_T]);
-        scope_number(a, sizeof a, dt, 9);
-        scope_number(b, sizeof b, dt != 0.0 ? 1.0 / fabs(dt) : NAN, 9);
-        snprintf(head[1], LINE, "Δt %s s  1/Δt %s Hz", a, b);
-    } else {
-        snprintf(head[0], LINE, "t %.*f s", d, c0[TRAIL_T]);
-    }
+    heads(c0, c1, d, cw, head, hdr, motor);
     const char *spant = span_text(&v, sim_time(app->sim), w, span[0], span[1]);
-    const char *const labels[2][3] = {{"x m", "v m/s", "a m/s²"}, {"x@1", "x@2", "Δx"}};
-    const char *const *lab = labels[c1 != NULL];
-    char cols[3][32];
-    for (int k = 0; k < 3; k++) {
-        /* right-aligned by columns drawn, which UTF-8 and ASCII count differently */
-        int pad = cw - draw_width(lab[k]);
-        snprintf(cols[k], sizeof cols[k], "%*s%s", pad > 0 ? pad : 0, "", lab[k]);
-    }
-    snprintf(hdr, LINE, "  %s%s%s", cols[0], cols[1], cols[2]);
-    if (c1) {
-        double u[3] = {c0[TRAIL_U], c1[TRAIL_U], c1[TRAIL_U] - c0[TRAIL_U]};
-        row3(motor, "u", u, cw);
-    } else {
-        char num[32];
-        scope_number(num, sizeof num, c0[TRAIL_U], cw - 1);
-        snprintf(motor, LINE, "u %*s", cw, num);
-    }
     /* Rows by importance: the times, the header and the mass measured, the measurements,
      * the span, the motor, the other masses, a blank before the measurements. */
     int left = rows;
@@ -194,22 +221,8 @@ void readout_draw(const struct layout *l, const struct app *app)
     if (show_span)
         fit(y++, x, w, 0, spant);
     fit(y++, x, w, 0, hdr);
-    for (int i = first; i < first + shown; i++) {
-        char line[LINE], label[16];
-        snprintf(label, sizeof label, "%d", i + 1);
-        const double *q = c0;
-        double vals[3] = {q[TRAIL_X(tr, i)], q[TRAIL_V(tr, i)], q[TRAIL_A(tr, i)]};
-        if (c1) {
-            vals[1] = c1[TRAIL_X(tr, i)];
-            vals[2] = c1[TRAIL_X(tr, i)] - c0[TRAIL_X(tr, i)];
-        }
-        row3(line, label, vals, cw);
-        attr_t a = term_attr(PAIR_MASS + i % 10);
-        fit(y, x, w, a, line);
-        if (i == mass && n > 1)
-            draw_text_attr(y, x, 2, a | A_REVERSE, label);
-        y++;
-    }
+    for (int i = first; i < first + shown; i++)
+        mass_row(y++, x, w, cw, tr, c0, c1, i, i == mass && n > 1);
     if (cut && shown < mrows) {
         char more[LINE];
         snprintf(more, LINE, "… %d more masses (%s)", n - shown, term_utf8() ? "↑↓" : "Up/Down");

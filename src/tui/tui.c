@@ -10,6 +10,7 @@
 
 #include <curses.h>
 
+#include "input.h"
 #include "keys.h"
 #include "panel.h"
 #include "readout.h"
@@ -196,12 +197,18 @@ bool tui_dumb_terminal(void)
     return term_dumb();
 }
 
+/* The key of action a as this terminal shows it: how the app's messages name it. */
+static const char *action_key(int a)
+{
+    return input_key_name(a, term_utf8());
+}
+
 int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson)
 {
     static struct tui t;
     memset(&t, 0, sizeof t);
     t.enlarged = -1;
-    if (app_init(&t.app, cfg, exe_dir) != 0) {
+    if (app_init_named(&t.app, cfg, exe_dir, action_key, true) != 0) {
         fprintf(stderr, "springsim: out of memory\n");
         return EXIT_FAILURE;
     }
@@ -229,7 +236,8 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         app_say(&t.app, SAID_ERROR, "--graphics %s: %s",
                 config_options[CFG_GRAPHICS].choice_name((int)cfg->graphics), t.gfx.said);
     if (t.app.message[0] == '\0' && !lesson) /* a lesson's panel says what space does */
-        app_say(&t.app, SAID_NOTE, "space starts; ? lists every key");
+        app_say(&t.app, SAID_NOTE, "%s starts; %s lists every key", app_key(&t.app, ACT_RUN),
+                app_key(&t.app, ACT_HELP));
 
     double last = app_clock_now(), next_frame = last;
     bool go = true;

@@ -1,0 +1,79 @@
+/* command_say.c: the plain mode's answers that tell rather than do: the status line, the
+ * modes, the controls and the presets, each in one line. */
+#include "command_say.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "../core/preset.h"
+#include "app.h"
+
+void command_status(const struct app *app, char *buf, size_t len)
+{
+    const struct sim *s = app->sim;
+    const double *x = sim_x(s), *v = sim_v(s);
+    size_t used = (size_t)snprintf(buf, len, "t=%.*f", app_time_decimals(sim_dt(s)), sim_time(s));
+    char a[32], b[32];
+    for (int i = 0; i < sim_model(s)->n && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, " x%d=%s v%d=%s", i + 1,
+                                 app_fixed(x[i], 4, a, sizeof a), i + 1,
+                                 app_fixed(v[i], 4, b, sizeof b));
+    if (used < len)
+        snprintf(buf + used, len - used, " drive=%s",
+                 app_fixed(sim_end_position(s), 4, a, sizeof a));
+}
+
+/* The modes in one line: frequency, damping ratio and Q = 1/(2 zeta) of each. */
+enum command_reply say_modes(const struct app *app, char *answer, size_t len)
+{
+    if (!app->modes_ok) {
+        snprintf(answer, len, "modes: the modes of this chain are not known");
+        return REPLY_ERROR;
+    }
+    size_t used = (size_t)snprintf(answer, len, "modes:");
+    for (int j = 0; j < app->model->n && used < len; j++) {
+        double z = app->damping_ratio[j];
+        char damping[64] = "";
+        if (!app->damping_ok)
+            snprintf(damping, sizeof damping, ", damping not known");
+        else if (z >= 1.0)
+            snprintf(damping, sizeof damping, ", damping ratio %.3g, overdamped", z);
+        else if (z > 0.0)
+            snprintf(damping, sizeof damping, ", damping ratio %.3g, Q %.3g", z, 0.5 / z);
+        else
+            snprintf(damping, sizeof damping, ", damping ratio 0, Q unbounded");
+        used += (size_t)snprintf(answer + used, len - used, "%s %d: %.4g Hz%s", j ? ";" : "",
+                                 j + 1, app->modes[j], damping);
+    }
+    return REPLY_OK;
+}
+
+/* Every control with its name for set and its value, in one line. */
+enum command_reply say_controls(const struct app *app, char *answer, size_t len)
+{
+    size_t used = 0;
+    answer[0] = '\0';
+    for (int c = 0; c < CTL_COUNT && used < len; c++) {
+        char value[96];
+        app_control_value(app, (enum control)c, value, sizeof value);
+        used += (size_t)snprintf(answer + used, len - used, "%s%s %s", c ? "; " : "controls: ",
+                                 app_control_name((enum control)c), value);
+    }
+    if (used < len)
+        snprintf(answer + used, len - used, "; window %g s", app_window(app));
+    return REPLY_OK;
+}
+
+/* The presets' names in one line. */
+enum command_reply say_presets(const struct app *app, char *answer, size_t len)
+{
+    struct preset_entry *list = NULL;
+    int n = preset_scan(app->exe_dir, &list);
+    size_t used = (size_t)snprintf(answer, len, "presets:");
+    for (int i = 0; i < n && used < len; i++)
+        used += (size_t)snprintf(answer + used, len - used, "%s %s", i ? "," : "", list[i].name);
+    if (n == 0)
+        snprintf(answer + used, len - used, " none found");
+    free(list);
+    return REPLY_OK;
+}
