@@ -26,10 +26,10 @@ if wait_for 'space starts' 5; then
     wait_for 'w: sweep' 3
     keys w
     t0=$(now)
-    if wait_re 'sweep 1/40 at 0\.25[0-9] Hz' 3 && has 'points steady to 1 %' && has_re '│ 50x'; then
+    if wait_re 'sweep 1/40 at 0\.25[0-9] Hz' 3 && has 'at 50x, each point once steady to 1 %; w stops it' && has_re '│ 50x'; then
         pass
     else
-        fail "w at the defaults: expected 'sweep 1/40 at 0.25x Hz', the message 'points steady to 1 %' and the pace 50x in the status line; screen: $(brief "$scr" 'sweep')"
+        fail "w at the defaults: expected 'sweep 1/40 at 0.25x Hz', the message 'at 50x, each point once steady to 1 %; w stops it' and the pace 50x in the status line; screen: $(brief "$scr" 'sweep')"
     fi
     # Once a second until it ends (2 minutes at most): the count only goes up.
     count=1 back=
@@ -80,7 +80,7 @@ if wait_for 'space starts' 5; then
         fail "f at 1 m: the view should say 'contacts expected above $want m' before w; $(brief "$scr" 'sweep')"
     fi
     keys w
-    if wait_for "contacts expected above $want m: lower the amplitude; sweeping at 50x" 3 &&
+    if wait_for "contacts expected above $want m: lower the amplitude; sweeping, w stops it" 3 &&
         has_re 'sweep 1/40 at'; then pass; else
         fail "w at 1 m: the message should say 'contacts expected above $want m: lower the amplitude' and the sweep start; $(brief "$scr" 'sweep|contact')"
     fi

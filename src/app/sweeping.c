@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "action.h"
 #include "change.h"
 
 int sweeping_plan(const struct app *app, struct sweep_plan *plan, char *why, size_t len)
@@ -64,8 +65,9 @@ unsigned app_toggle_sweep(struct app *app)
     snprintf(pace, sizeof pace, "%gx", app->speed * APP_SWEEP_PACE);
     if (app->model->motor.amplitude >= plan.contact)
         return what | app_say(app, SAID_WARNING, "contacts expected above %.2g m: lower the "
-                              "amplitude; sweeping at %s, w stops", plan.contact, pace);
-    return what | app_say(app, SAID_NOTE, "sweeping %s..%s Hz at %s, points steady to 1 %%; ] "
-                          "runs faster, w stops", app_fixed(plan.lo, 2, a, sizeof a),
-                          app_fixed(plan.hi, 2, b, sizeof b), pace);
+                              "amplitude; sweeping, %s stops it", plan.contact,
+                              app_key(app, ACT_SWEEP));
+    return what | app_say(app, SAID_NOTE, "sweeping %s..%s Hz at %s, each point once steady to "
+                          "1 %%; %s stops it", app_fixed(plan.lo, 2, a, sizeof a),
+                          app_fixed(plan.hi, 2, b, sizeof b), pace, app_key(app, ACT_SWEEP));
 }
