@@ -70,7 +70,7 @@ fi
 # A summary's own header and rows read back as a study: the settings columns repeat it.
 run --batch - <<'EOF'
 masses,mass,spring,damping,frequency,amplitude,wave,dt,integrator
-2,1,10,0.1,1,1,sine,0.01,rk4
+2,1,10,0.1,1,0.1,sine,0.01,rk4
 EOF
 "$SPRINGSIM" --summary --duration 10 >"$tmp/default"
 cmp -s "$out" "$tmp/default" && [ "$rc" -eq 0 ] && pass ||

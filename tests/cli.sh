@@ -318,7 +318,7 @@ if expect_ok --sweep 0.1:2:20 -n 1; then
             f = 0.1 + 1.9 * r / 19
             if (abs($1 - f) > 1e-12) { print "row " r + 1 " frequency " $1 ", expected " f; exit }
             w = 2 * atan2(0, -1) * $1
-            k = 10; m = 1; c = 0.1; A = 1
+            k = 10; m = 1; c = 0.1; A = 0.1 # the default amplitude
             want = k * A / sqrt((2 * k - m * w * w) ^ 2 + (c * w) ^ 2)
             if (abs($2 - want) > 1e-9 * want) { print "f = " $1 ": amp " $2 ", expected " want; exit }
             ph = atan2(-c * w, 2 * k - m * w * w) * 180 / atan2(0, -1)
@@ -649,7 +649,8 @@ expect_warnings 0 "the steady motion at the 2 Hz drive's frequency is off by 3.9
     --headless --frequency 2 --dt 0.05 --integrator verlet --duration 1
 # the velocity cap: one line at the end with the count and the first time
 expect_warnings 0 "springsim: warning: the velocity cap (50 m/s) acted 46 times, first at t = 0.014 s; the energy balance includes what it removed" \
-    --headless -n 1 --spring 1000 --damping 0 --x0 2 --no-collisions --dt 0.001 --duration 2 --energy
+    --headless -n 1 --spring 1000 --damping 0 --x0 2 --no-collisions --dt 0.001 --duration 2 --energy \
+    --amplitude 1
 expect_equal "$cmd: lines on stderr" 1 "$(lines "$err")"
 check_csv "$out" "$cmd"
 # the contact column holds what the cap took: 0 at the start, more than 0 at the end

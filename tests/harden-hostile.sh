@@ -99,12 +99,14 @@ if grep -q '^frequency *= *1$' "$tmp/xdg/springsim/presets/bigf.ini" 2>/dev/null
     fail "the preset saved after a refused nearest: $(grep frequency "$tmp/xdg/springsim/presets/bigf.ini" 2>/dev/null) $(show "$err")"
 fi
 rm -f "$tmp/xdg/springsim/presets/bigf.ini"
-plain 'sweep\n' -n 2 --spring 1e11
+# (at 0.01 m: the motor's default 0.1 m would make contacts at resonance, and the
+# message would say that first)
+plain 'sweep\n' -n 2 --spring 1e11 --amplitude 0.01
 has "sweep capped at 1e6 Hz" '^ok sweeping 25164\.61\.\.130759\.13 Hz'
 
 # --- 7: the sweep runs from half the first mode to 1.5 times the last (README) ---
 # -n 2, k = 1000 N/m, m = 1 kg, motor end: w^2 = (2 -+ 1) 1000, f = 5.03 and 8.72 Hz.
-plain 'sweep\n' -n 2 --spring 1000
+plain 'sweep\n' -n 2 --spring 1000 --amplitude 0.01
 has "sweep to 1.5 times the last mode" '^ok sweeping 2\.52\.\.13\.08 Hz'
 
 # --- 9: the words ---

@@ -126,6 +126,24 @@ else
     fail "$cmd: not the '#' lines then the row, or '$again' does not repeat it"
 fi
 
+# The default chain (no option but the frequency) driven at either natural frequency
+# (--modes) makes no contact in 60 s: the default amplitude lets a class find resonance.
+# The swings are large all the same (over five times the drive's): resonance, not a
+# drive too weak to see.
+"$SPRINGSIM" --modes >"$tmp/modes.csv" 2>"$err"
+nat=$(awk -F, 'NR > 1 { print $2 }' "$tmp/modes.csv")
+if [ "$(echo "$nat" | wc -w)" = 2 ]; then pass; else fail "--modes of the default chain: $(show "$tmp/modes.csv")"; fi
+for f in $nat; do
+    run --summary --frequency "$f" --duration 60
+    if ok; then
+        near "contacts at the default amplitude, driven at $f Hz" "$(col contacts)" 0 0
+        amp=$(col amplitude) x=$(col max_abs_x1)
+        if awk -v a="$amp" -v x="$x" 'BEGIN { exit !(a > 0 && x > 5 * a) }'; then pass; else
+            fail "$cmd: max |x1| = $x m at amplitude $amp m: not a resonance"
+        fi
+    fi
+done
+
 usage_error --summary --modes -- --summary --modes
 usage_error --summary --sweep -- --sweep 0.1:1:3 --summary
 usage_error --summary --list-presets -- --list-presets --summary

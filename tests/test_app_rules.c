@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/limits.h"
+#include "app/sweeping.h"
 #include "core/modes.h"
 
 /* Everything a refused change must leave as it was. */
@@ -256,6 +257,45 @@ static void sweep_done_gives_the_drive_back(void **state)
     assert_true(what & APP_CHANGED_DRIVE);
     assert_true(what & APP_CHANGED_MESSAGE);
     assert_non_null(strstr(app.message, "sweep done"));
+}
+
+/* The sweep's plan for the fixture's chain (three masses, 1 kg, c = 0.1: every mode
+ * decays as exp(-c t / 2m)): a point holds level for 2m/c = 20 s, at most ten times
+ * that; 1 % below the amplitude from which contacts are expected the sweep just starts,
+ * 1 % above it it starts with a warning that says that amplitude. */
+static void sweep_warns_of_contacts(void **state)
+{
+    (void)state;
+    struct sweep_plan plan;
+    char why[200];
+    assert_int_equal(sweeping_plan(&app, &plan, why, sizeof why), 0);
+    assert_close(plan.hold, 2.0 * 1.0 / 0.1, 1e-9);
+    assert_close(plan.most, 10.0 * plan.hold, 1e-9);
+    assert_close(plan.lo, 0.5 * app.modes[0], 0.0);
+    assert_close(plan.hi, 1.5 * app.modes[2], 0.0);
+    assert_true(plan.contact > app.model->motor.amplitude && isfinite(plan.contact));
+    char text[32], want[96];
+    snprintf(text, sizeof text, "%.17g", 0.99 * plan.contact);
+    assert_true(app_set_text(&app, CTL_AMPLITUDE, text));
+    assert_true(app_toggle_sweep(&app) & APP_CHANGED_MESSAGE);
+    assert_true(app.sweep->active);
+    assert_int_equal(app.said, SAID_NOTE);
+    assert_non_null(strstr(app.message, "sweeping "));
+    assert_null(strstr(app.message, "contact"));
+    app_toggle_sweep(&app);
+    snprintf(text, sizeof text, "%.17g", 1.01 * plan.contact);
+    assert_true(app_set_text(&app, CTL_AMPLITUDE, text));
+    assert_true(app_toggle_sweep(&app) & APP_CHANGED_MESSAGE);
+    assert_true(app.sweep->active);
+    assert_int_equal(app.said, SAID_WARNING);
+    snprintf(want, sizeof want, "contacts expected above %.2g m: lower the amplitude",
+             plan.contact);
+    assert_non_null(strstr(app.message, want));
+    /* A chain no motor drives has no plan. */
+    app_toggle_sweep(&app);
+    assert_true(app_set_text(&app, CTL_BOUNDARY, "wall"));
+    assert_int_equal(sweeping_plan(&app, &plan, why, sizeof why), -1);
+    assert_non_null(strstr(why, "needs the motor"));
 }
 
 /* ---- once per change ---- */
@@ -515,6 +555,7 @@ int main(void)
         T(sweep_ends_on_every_route),
         T(sweep_survives_its_own_retunes),
         T(sweep_done_gives_the_drive_back),
+        T(sweep_warns_of_contacts),
         T(modes_once_per_change),
         T(failed_rebuild_keeps_the_old_chain),
         T(failed_init_leaves_nothing),

@@ -1,7 +1,7 @@
 /* test_clock.c: the chain following the wall clock (app/clock.c), the one catch-up both
  * front ends use: as many steps of dt as the wall time times the speed owes, the rest
  * kept for later; nothing owed while paused; a step that fails stops it; a budget
- * spent leaves the chain behind, and a large debt is let go. */
+ * spent leaves the chain behind, and a large debt is let go; a sweep plays faster. */
 #include "testutil.h"
 
 #include "app/app.h"
@@ -107,6 +107,33 @@ static void a_spent_budget_leaves_it_behind(void **state)
     assert_false(c.behind);
 }
 
+/* A running sweep plays 50 times the Speed control's rate, so that the defaults' sweep
+ * of some 4100 simulated seconds ends within two minutes; stopped, the rate is the
+ * control's again. */
+static void a_sweep_plays_faster(void **state)
+{
+    (void)state;
+    struct app_clock c = {0};
+    app.speed = 1.0;
+    app_toggle_sweep(&app);
+    assert_true(app.sweep->active && app.running);
+    assert_close(app_clock_pace(&app), 50.0, 0.0);
+    /* 10 ms of wall time owe 0.5 s: what is stepped (1 ms at a time) and what is owed
+     * add up to it, less than a step owed. */
+    app_clock_follow(&c, &app, 0.010, 10.0, NULL, NULL);
+    assert_close(sim_time(app.sim) + c.debt, 0.5, 1e-9);
+    assert_true(c.debt < 0.001);
+    app.speed = 0.5;
+    assert_close(app_clock_pace(&app), 25.0, 0.0);
+    app_clock_follow(&c, &app, 0.010, 10.0, NULL, NULL);
+    assert_close(sim_time(app.sim) + c.debt, 0.75, 1e-9);
+    app_toggle_sweep(&app);
+    assert_false(app.sweep->active);
+    assert_close(app_clock_pace(&app), 0.5, 0.0);
+    app_clock_follow(&c, &app, 0.010, 10.0, NULL, NULL);
+    assert_close(sim_time(app.sim) + c.debt, 0.755, 1e-9);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -114,6 +141,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(owes_nothing_while_paused, setup, teardown),
         cmocka_unit_test_setup_teardown(a_failed_step_stops_it, setup, teardown),
         cmocka_unit_test_setup_teardown(a_spent_budget_leaves_it_behind, setup, teardown),
+        cmocka_unit_test_setup_teardown(a_sweep_plays_faster, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -227,6 +227,7 @@ static void long_chain_blocks(void **state)
 static double books_error(int n, double dt, enum integrator integ)
 {
     struct model *m = model_new(n);
+    m->motor.amplitude = 1.0; /* the piston of pile_up_makes_no_energy */
     m->collisions = false;
     struct sim *s = sim_new(m, dt);
     sim_set_integrator(s, integ);
@@ -257,6 +258,7 @@ static void pile_up_makes_no_energy(void **state)
         double dt = dts[(c >> 1) & 1];
         enum integrator integ = c & 4 ? INTEGRATOR_VERLET : INTEGRATOR_RK4;
         struct model *m = model_new(n);
+        m->motor.amplitude = 1.0; /* ten times the default's stroke: a pile-up at once */
         struct sim *s = sim_new(m, dt);
         assert_non_null(s);
         sim_set_integrator(s, integ);

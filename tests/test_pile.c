@@ -302,6 +302,7 @@ static long pile_run(int n, double dt, double duration, enum integrator integ, d
 {
     struct model *m = model_new(n);
     assert_non_null(m);
+    m->motor.amplitude = 1.0; /* the piston's 1 m stroke these piles were measured with */
     struct sim *s = sim_new(m, dt);
     assert_non_null(s);
     sim_set_integrator(s, integ);

@@ -30,8 +30,10 @@ sessions="energy energy80 nodamp modes modes80 near resp wall to-wall sweep swee
 for s in energy energy80 nodamp; do
     if up $s; then keys e Space; fi
 done
+# The sweeps that a change of frequency ends play at 0.1x (the sweep's pace 5x): their
+# first point lasts about 12 s of wall time, long enough to change the frequency in it.
 for s in sweep-arrow sweep-n sweep-typed; do
-    if up $s; then keys w; fi
+    if up $s; then keys '[' '[' '[' '['; fi
 done
 
 # ---- m: the modes view ----
@@ -192,7 +194,8 @@ sweep_ends() {
     esac
 }
 if up sweep-arrow; then
-    if wait_re 'sweep 1/40 at 0\.19[0-9]* Hz'; then
+    keys w
+    if wait_re 'sweep 1/40 at 0\.19[0-9]* Hz' && has '│ 5x'; then
         if select_control Frequency && wait_re '▸Frequency +0\.19'; then
             keys Right
             sweep_ends "→ on Frequency" 0.20
@@ -200,19 +203,21 @@ if up sweep-arrow; then
             fail "sweep, → on Frequency: cannot select Frequency at 0.19 Hz; screen: $(brief "$scr" Frequency)"
         fi
     else
-        fail "sweep: w should start a sweep at 0.19 Hz; screen: $(brief "$scr" sweep)"
+        fail "sweep: w at 0.1x should start a sweep at 0.19 Hz, played at 5x; screen: $(brief "$scr" sweep)"
     fi
 fi
 if up sweep-n; then
-    if wait_re 'sweep 1/40 at 0\.19[0-9]* Hz'; then
+    keys w
+    if wait_re 'sweep 1/40 at 0\.19[0-9]* Hz' && has '│ 5x'; then
         keys n
         sweep_ends "n" 0.39
     else
-        fail "sweep: w should start a sweep at 0.19 Hz; screen: $(brief "$scr" sweep)"
+        fail "sweep: w at 0.1x should start a sweep at 0.19 Hz, played at 5x; screen: $(brief "$scr" sweep)"
     fi
 fi
 if up sweep-typed; then
-    if wait_re 'sweep 1/40 at 0\.19[0-9]* Hz'; then
+    keys w
+    if wait_re 'sweep 1/40 at 0\.19[0-9]* Hz' && has '│ 5x'; then
         if select_control Frequency; then
             keys Enter
             wait_for 'Frequency = ' 3
@@ -223,7 +228,7 @@ if up sweep-typed; then
             fail "sweep, typed frequency: cannot select Frequency; screen: $(brief "$scr" Frequency)"
         fi
     else
-        fail "sweep: w should start a sweep at 0.19 Hz; screen: $(brief "$scr" sweep)"
+        fail "sweep: w at 0.1x should start a sweep at 0.19 Hz, played at 5x; screen: $(brief "$scr" sweep)"
     fi
 fi
 

@@ -1,8 +1,8 @@
 /* app.c: the interactive program's state, independent of the terminal: its lifecycle,
  * the one path by which its parameters change (app_change, for controls.c and files.c),
- * and time: steps forward and back, resets, the initial positions, the sweep, and the
- * plots' samples (their window: window.c). The ghost (ghost.c) follows each of these
- * moves in time. */
+ * and time: steps forward and back, resets, the initial positions, the sweep's points
+ * (its plan and start: sweeping.c), and the plots' samples (their window: window.c).
+ * The ghost (ghost.c) follows each of these moves in time. */
 #include "change.h"
 
 #include <math.h>
@@ -345,8 +345,7 @@ void app_free(struct app *app)
     parts_free(&p);
 }
 
-/* Ends a running sweep, giving the drive the user's frequency back (why as app_change). */
-static unsigned end_sweep(struct app *app, const char *why)
+unsigned app_end_sweep(struct app *app, const char *why)
 {
     unsigned what = 0;
     if (!app->sweep->active)
@@ -357,8 +356,7 @@ static unsigned end_sweep(struct app *app, const char *why)
     return what;
 }
 
-/* Drives at frequency f from now on, phase continuous: the sweep's own retune. */
-static unsigned retune(struct app *app, double f)
+unsigned app_retune(struct app *app, double f)
 {
     unsigned what = 0;
     struct config next = app->cfg;
@@ -369,7 +367,7 @@ static unsigned retune(struct app *app, double f)
 
 unsigned app_reset(struct app *app)
 {
-    unsigned what = end_sweep(app, "the reset");
+    unsigned what = app_end_sweep(app, "the reset");
     restart(app);
     return what | APP_CHANGED_STATE;
 }
@@ -444,15 +442,20 @@ unsigned app_step(struct app *app)
     sweep_count_contacts(app->sweep, sim_last_contacts(app->sim) - sim_last_capped(app->sim));
     switch (sweep_update(app->sweep, t, sim_x(app->sim), drive->frequency * t + drive->phase)) {
     case SWEEP_RETUNE:
-        what |= retune(app, sweep_frequency(app->sweep));
+        what |= app_retune(app, sweep_frequency(app->sweep));
         break;
     case SWEEP_DONE:
-        what |= retune(app, app->sweep_from);
+        what |= app_retune(app, app->sweep_from);
         char hint[64];
-        what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured%s; back at %.3f Hz",
-                        app->sweep->points,
-                        app_key_hint(app, ACT_RESPONSE, "shows them", hint, sizeof hint),
-                        app->sweep_from);
+        if (app->sweep->unsteady > 0)
+            what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies, %d not steady in %.0f s; "
+                            "back at %.3f Hz", app->sweep->points, app->sweep->unsteady,
+                            app->sweep->most, app->sweep_from);
+        else
+            what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured%s; back at %.3f Hz",
+                            app->sweep->points,
+                            app_key_hint(app, ACT_RESPONSE, "shows them", hint, sizeof hint),
+                            app->sweep_from);
         break;
     default:
         break;
@@ -565,40 +568,4 @@ unsigned app_move_mass(struct app *app, int i, double dx)
     if (i < 0 || i >= app->model->n)
         return 0;
     return app_place_mass(app, i, model_equilibrium(app->model, i) + sim_x(app->sim)[i] + dx);
-}
-
-unsigned app_toggle_sweep(struct app *app)
-{
-    if (app->sweep->active)
-        return end_sweep(app, NULL);
-    if (app->model->boundary != BOUNDARY_MOTOR)
-        return app_say(app, SAID_ERROR, "a sweep needs the motor at the right end");
-    if (!app->modes_ok)
-        return app_say(app, SAID_ERROR, "a sweep needs the modes, and those of this chain are not "
-                                  "known");
-    int n = app->model->n;
-    /* Half the first mode to 1.5 times the last, as far as the drive goes (0.1 Hz up to
-     * the frequency's limit, 1e6 Hz). */
-    double top = config_options[CFG_FREQUENCY].hi;
-    double lo = fmax(APP_FMIN, 0.5 * app->modes[0]);
-    double hi = fmin(top, 1.5 * app->modes[n - 1]);
-    if (!(lo < hi)) {
-        char range[64];
-        config_expected(CFG_FREQUENCY, range, sizeof range);
-        return app_say(app, SAID_ERROR, "a sweep needs a mode the drive reaches: the first is at "
-                                  "%.4g Hz (the drive: %s Hz)", app->modes[0], range);
-    }
-    /* Settle for a few damping times of the slowest-decaying mode, within reason. */
-    double cmin = app->model->c[0], mmax = app->model->m[0];
-    for (int i = 1; i < n; i++)
-        cmin = fmin(cmin, app->model->c[i]), mmax = fmax(mmax, app->model->m[i]);
-    double settle = cmin > 0 ? fmin(30.0, fmax(4.0, 3.0 * 2.0 * mmax / cmin)) : 30.0;
-    app->sweep_from = app->model->motor.frequency;
-    sweep_start(app->sweep, lo, hi, settle, sim_time(app->sim));
-    unsigned what = retune(app, sweep_frequency(app->sweep)) | app_set_running(app, true);
-    char a[32], b[32];
-    return what | app_say(app, SAID_NOTE, "sweeping %s..%s Hz, %d steps of %.0f s or more; %s "
-                          "runs it faster, %s stops it", app_fixed(lo, 2, a, sizeof a),
-                          app_fixed(hi, 2, b, sizeof b), app->sweep->points, settle,
-                          app_key(app, ACT_FASTER), app_key(app, ACT_SWEEP));
 }

@@ -35,6 +35,8 @@
 #define APP_FMIN 0.1         /* the frequency control's range (Hz) */
 #define APP_FMAX 5.0
 #define APP_SWEEP_POINTS 40  /* frequencies in a sine-sweep experiment */
+#define APP_SWEEP_PACE 50.0  /* a running sweep plays this many times the Speed control's
+                              * rate: the defaults' sweep, about 4100 s, in 82 s */
 #define APP_MODE_AMPLITUDE 0.5 /* largest |x| when the chain starts in a mode (m) */
 
 /* What an action changed: bits of the unsigned it returns. */
@@ -235,7 +237,8 @@ unsigned app_nearest_mode(struct app *app);
  * running. With the modes unknown, 0 and a message. */
 unsigned app_start_mode(struct app *app, int j);
 
-/* Starts (or stops, if running) the sine-sweep experiment across the modes. */
+/* Starts (or stops, if running) the sine-sweep experiment across the modes
+ * (sweeping.c), each point measured once its swings are steady. */
 unsigned app_toggle_sweep(struct app *app);
 
 /* The time plots' window (s): cfg.window, 10 unless --window or a preset says otherwise. */

@@ -23,4 +23,10 @@ enum change_how {
 int app_change(struct app *app, struct config *next, unsigned how, const char *why,
                unsigned *changed);
 
+/* Ends a running sweep, giving the drive the user's frequency back (why as app_change). */
+unsigned app_end_sweep(struct app *app, const char *why);
+
+/* Drives at frequency f from now on, phase continuous: the sweep's own retune. */
+unsigned app_retune(struct app *app, double f);
+
 #endif

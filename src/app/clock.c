@@ -5,6 +5,11 @@
 
 #include "app.h"
 
+double app_clock_pace(const struct app *app)
+{
+    return app->speed * (app->sweep && app->sweep->active ? APP_SWEEP_PACE : 1.0);
+}
+
 double app_clock_now(void)
 {
     struct timespec ts;
@@ -20,7 +25,8 @@ void app_clock_follow(struct app_clock *c, struct app *app, double elapsed, doub
         c->behind = false;
         return;
     }
-    c->debt += elapsed * app->speed;
+    double pace = app_clock_pace(app);
+    c->debt += elapsed * pace;
     double start = app_clock_now();
     while (c->debt >= app->cfg.dt && app->running) {
         if (!(step ? step(ctx) : app_step(app) != 0))
@@ -28,7 +34,7 @@ void app_clock_follow(struct app_clock *c, struct app *app, double elapsed, doub
         c->debt -= app->cfg.dt;
         if (app_clock_now() - start > budget) {
             c->behind = c->debt > 2.0 * app->cfg.dt;
-            if (c->debt > 0.25 * app->speed)
+            if (c->debt > 0.25 * pace)
                 c->debt = 0.0;
             return;
         }

@@ -13,10 +13,14 @@ struct app_clock {
     bool behind;  /* the last catch-up ran out of time with more than two steps owed */
 };
 
+/* Simulated seconds per wall second: the Speed control's rate, APP_SWEEP_PACE times
+ * that while a sweep runs. */
+double app_clock_pace(const struct app *app);
+
 /* Wall-clock seconds from a fixed start (monotonic). */
 double app_clock_now(void);
 
-/* Brings app's simulated time up to `elapsed` more wall seconds times its speed, a step
+/* Brings app's simulated time up to `elapsed` more wall seconds times its pace, a step
  * of dt at a time through step(ctx) (app_step when step is NULL; false stops: a blow-up,
  * or the caller wants to stop). Spends at most `budget` wall seconds: past it the chain
  * falls behind the clock (behind says so when more than two steps are owed) and a debt

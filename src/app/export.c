@@ -128,10 +128,17 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
     int e = output_open(&o, path), rows = 0;
     if (e == 0) {
         meta_lines(o.fp, &c, "sweep", spec);
-        fprintf(o.fp, "# measured by springsim's sweep (w): a stepped sine, each point after "
-                "settling at least %.3g s and 8 periods, over 3 s or 4 periods; amp: peak |x| "
-                "(m), phase: x to the drive (degrees); theory_: the linear steady state, as the "
-                "line above gives it%s\n", s->settle_min,
+        char settle[160];
+        if (s->hold > 0.0)
+            snprintf(settle, sizeof settle, "once steady (8 periods at least, then every swing "
+                     "and phasor level within 1 %% of the largest for %.3g s and 4 periods; "
+                     "%d not steady after %.3g s)", s->hold, s->unsteady, s->most);
+        else
+            snprintf(settle, sizeof settle, "after settling at least %.3g s and 8 periods",
+                     s->settle_min);
+        fprintf(o.fp, "# measured by springsim's sweep (w): a stepped sine, each point %s, over "
+                "3 s or 4 periods; amp: peak |x| (m), phase: x to the drive (degrees); "
+                "theory_: the linear steady state, as the line above gives it%s\n", settle,
                 s->active ? "; the sweep was still running" : "");
         if (s->contacts > 0)
             fprintf(o.fp, "# %ld contact%s during the sweep: off the linear theory\n",

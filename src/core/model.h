@@ -16,7 +16,7 @@
 #define MODEL_DEFAULT_MASS 1.0       /* kg */
 #define MODEL_DEFAULT_SPRING 10.0    /* N/m */
 #define MODEL_DEFAULT_DAMPING 0.1    /* N s/m */
-#define MODEL_DEFAULT_AMPLITUDE 1.0  /* m */
+#define MODEL_DEFAULT_AMPLITUDE 0.1  /* m */
 #define MODEL_DEFAULT_FREQUENCY 1.0  /* Hz */
 
 enum boundary { BOUNDARY_MOTOR, BOUNDARY_WALL, BOUNDARY_FREE, BOUNDARY_COUNT };
@@ -32,7 +32,7 @@ struct model {
 };
 
 /* A model of n masses with the page's defaults (1 kg, 10 N/m, 0.1 N s/m, motor,
- * sine 1 m 1 Hz), or NULL when n is out of range or memory runs out. */
+ * sine 0.1 m 1 Hz), or NULL when n is out of range or memory runs out. */
 struct model *model_new(int n);
 
 /* Frees a model from model_new. */

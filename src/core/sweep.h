@@ -1,11 +1,16 @@
 /* sweep.h: the stepped-sine experiment of a test rig: drive at one frequency after
- * another, let the chain settle, record each mass's peak amplitude and its phase to the
- * drive (a lock-in: x correlated with the drive's sine and cosine over whole periods),
- * move on. Pure bookkeeping: the caller steps the simulation and retunes the motor. */
+ * another, let the chain settle (for a time, or until its swings are steady), record each
+ * mass's peak amplitude and its phase to the drive (a lock-in: x correlated with the
+ * drive's sine and cosine over whole periods), move on. Pure bookkeeping: the caller
+ * steps the simulation and retunes the motor. */
 #ifndef SPRINGSIM_SWEEP_H
 #define SPRINGSIM_SWEEP_H
 
 #include <stdbool.h>
+
+#include "model.h"
+
+#define SWEEP_LEVEL 0.01 /* swings steady: level within this of the largest (relative) */
 
 enum sweep_event {
     SWEEP_IDLE,     /* not running */
@@ -30,6 +35,22 @@ struct sweep {
                      * until measured */
     double *in, *quad; /* n sums of x sin(theta) and x cos(theta) over this point */
     long contacts;  /* contacts while it ran: with any, the linear theory does not hold */
+    double hold;    /* 0: settle for settle; else also until the swings stay level this
+                     * long (s; sweep_until_steady) */
+    double most;    /* with hold: a point settles at most this long (s) */
+    double t_measure; /* when this point's measuring began */
+    double t_level; /* the swings have been level since then (NAN: not yet) */
+    long cycle;     /* the drive's period being watched (floor of its cycles) */
+    int seen;       /* samples taken at this point (the parabola needs two before) */
+    bool whole;     /* the period being watched began at this point */
+    double *x1, *x2; /* n: the last two samples of each mass */
+    double *swing;  /* n: each mass's largest |x| in this period (parabola-refined) */
+    double *band;   /* 6n: each mass's least and largest swing, phasor real part and
+                     * imaginary part since t_level */
+    double *lock;   /* 2n: each mass's sums of x sin(theta), x cos(theta) in this period */
+    double gram[3]; /* this period's sums of sin^2, sin cos and cos^2 of theta */
+    double *extreme; /* n: each mass's |x| at the last sample, parabola-refined at a turn */
+    int unsteady;   /* points measured after `most` without becoming steady */
 };
 
 /* A sweep of up to points frequencies for n masses, or NULL on no memory. */
@@ -38,9 +59,25 @@ struct sweep *sweep_new(int n, int points);
 /* Frees a sweep. */
 void sweep_free(struct sweep *s);
 
+/* Frequency p of points spaced evenly from fmin to fmax (fmin when points is 1). */
+double sweep_point(double fmin, double fmax, int points, int p);
+
 /* Starts at time t over fmin..fmax (evenly spaced), settling for at least settle
  * seconds and 8 periods at each point, then measuring 3 s or 4 periods. */
 void sweep_start(struct sweep *s, double fmin, double fmax, double settle, double t);
+
+/* From the next point on (call it after sweep_start), a point settles also until, for
+ * hold seconds and 4 periods, every mass's swing (its largest |x| in each whole drive
+ * period, by the parabola through the extreme sample and its neighbours) has stayed
+ * within SWEEP_LEVEL of the largest swing of any mass, and so has its phasor (that
+ * period's lock-in: amplitude and phase together); or for most seconds at most, or twice
+ * the least it can take if that is longer (counted in unsteady). */
+void sweep_until_steady(struct sweep *s, double hold, double most);
+
+/* The least motor amplitude (m) at which the linear steady state at one of the count
+ * frequencies (Hz) would close a gap of model m (a mass on a wall, its neighbour or the
+ * piston); INFINITY when none would (no collisions, no motor, a response unknown). */
+double sweep_contact_amplitude(const struct model *m, const double *freq, int count);
 
 /* Stops a sweep; what was measured stays. */
 void sweep_stop(struct sweep *s);

@@ -84,15 +84,16 @@ static void format_run(double d, double dt, char *buf, size_t len)
     config_format_exact(d, buf, len);
 }
 
-/* The time run up to t (on a grid of step dt) at playback speed `speed`, as a run line. */
-static void run_to(struct record *r, double t, double dt, double speed)
+/* The time run up to t (on a grid of step dt) at `pace` simulated seconds a wall second,
+ * as a run line. */
+static void run_to(struct record *r, double t, double dt, double pace)
 {
     if (!r->mem || !(t > r->t))
         return;
     char num[32];
     format_run(t - r->t, dt, num, sizeof num);
     fprintf(r->mem, "run %s\n", num);
-    r->run_wall += (t - r->t) / (speed > 0.0 ? speed : 1.0);
+    r->run_wall += (t - r->t) / (pace > 0.0 ? pace : 1.0);
     r->t = t;
 }
 
@@ -110,7 +111,7 @@ static void wait_now(struct record *r)
 
 void record_time(struct record *r, const struct app *app)
 {
-    run_to(r, sim_time(app->sim), app->cfg.dt, app->speed);
+    run_to(r, sim_time(app->sim), app->cfg.dt, app_clock_pace(app));
 }
 
 void record_line(struct record *r, const struct app *app, const char *line)
@@ -171,6 +172,7 @@ void record_mark(struct record *r, const struct app *app)
     k->amplitude = m->motor.amplitude;
     k->frequency = m->motor.frequency;
     k->speed = app->speed;
+    k->pace = app_clock_pace(app);
     k->integrator = (int)app->cfg.integrator;
     k->boundary = (int)m->boundary;
     k->wave = (int)m->motor.wave;
@@ -196,7 +198,7 @@ static void put(struct record *r, const char *fmt, ...) __attribute__((format(pr
 static void put(struct record *r, const char *fmt, ...)
 {
     va_list ap;
-    run_to(r, r->mark.t, r->mark.dt, r->mark.speed);
+    run_to(r, r->mark.t, r->mark.dt, r->mark.pace);
     wait_now(r);
     va_start(ap, fmt);
     vfprintf(r->mem, fmt, ap);

@@ -30,6 +30,7 @@ struct record_mark {
     double t;                            /* the simulated time then */
     int n;                               /* masses */
     double dt, amplitude, frequency, speed;
+    double pace;                         /* simulated seconds per wall second then */
     int integrator, boundary, wave;
     bool low_bandwidth, sweeping;
     int graphics; /* the Graphics control (enum config_graphics) */

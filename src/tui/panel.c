@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../app/clock.h"
 #include "../app/ghost.h"
 #include "draw.h"
 #include "term.h"
@@ -29,8 +30,9 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
                  m->motor.frequency, m->motor.amplitude);
     else
         snprintf(motor, sizeof motor, "%s end", model_boundary_name(m->boundary));
-    if (app->speed != 1.0 || behind || app->cfg.low_bandwidth)
-        snprintf(speed, sizeof speed, " %s %gx%s%s", bar, app->speed, behind ? " behind" : "",
+    double pace = app_clock_pace(app);
+    if (pace != 1.0 || behind || app->cfg.low_bandwidth)
+        snprintf(speed, sizeof speed, " %s %gx%s%s", bar, pace, behind ? " behind" : "",
                  app->cfg.low_bandwidth ? " low refresh" : "");
     if (app->ghost) {
         /* The ghost by what differs from the live chain. */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "../app/sweeping.h"
 #include "../chart/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
@@ -69,6 +70,9 @@ static void solve_curves(struct response_view *rv, const struct app *app, int wi
         }
     }
     rv->drive_phase_ok = modes_response_phase(m, m->motor.frequency, amp, rv->drive_phase) == 0;
+    struct sweep_plan plan;
+    char why[200];
+    rv->contact = sweeping_plan(app, &plan, why, sizeof why) == 0 ? plan.contact : INFINITY;
     rv->version = app->version;
     rv->width = width;
 }
@@ -296,11 +300,17 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
         snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz (w stops)", sw->index + 1,
                  sw->points, sweep_frequency(sw));
     else if (sweep_measured(sw) && sw->contacts > 0)
-        snprintf(state, sizeof state, "■ %d points; %ld contact%s: off the linear theory",
-                 sweep_measured(sw), sw->contacts, sw->contacts == 1 ? "" : "s");
+        snprintf(state, sizeof state, "■ %d point%s; %ld contact%s: off the linear theory",
+                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s", sw->contacts,
+                 sw->contacts == 1 ? "" : "s");
+    else if (sweep_measured(sw) && sw->unsteady > 0)
+        snprintf(state, sizeof state, "■ %d point%s, %d not steady (w sweeps again)",
+                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s", sw->unsteady);
     else if (sweep_measured(sw))
-        snprintf(state, sizeof state, "■ measured: %d points (w sweeps again)",
-                 sweep_measured(sw));
+        snprintf(state, sizeof state, "■ measured: %d point%s (w sweeps again)",
+                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s");
+    else if (m->motor.amplitude >= rv->contact)
+        snprintf(state, sizeof state, "w: sweep; contacts expected above %.2g m", rv->contact);
     else
         snprintf(state, sizeof state, "┃ drive %.3f Hz  ┊ modes  w: sweep", m->motor.frequency);
     struct legend_item legend[11];

@@ -25,6 +25,8 @@ struct response_view {
     double *phase_curve; /* width x N phases (degrees, (-180, 180]) */
     double drive_phase[APP_MAX_MASSES]; /* each mass's phase at the drive's frequency */
     bool drive_phase_ok; /* drive_phase[] was solved */
+    double contact;      /* the motor amplitude from which a sweep's steady swings make
+                          * contacts (m; INFINITY: none, or no sweep) */
 };
 
 /* Places the view in area; false on no memory. */
