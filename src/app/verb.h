@@ -44,7 +44,7 @@ enum action {
     ACT_SWEEP,     /* start / stop the sine-sweep experiment */
     ACT_SAVE,      /* save the set-up as a preset */
     ACT_EXPORT,    /* export the recorded samples as CSV */
-    ACT_FIGURE,    /* save the view as SVG and PNG */
+    ACT_FIGURE,    /* write the view as a report figure */
     ACT_DAMPING,   /* chain: the selected mass's own damping */
     ACT_ENLARGE,   /* enlarge the plot of the digit pressed (again: the grid) */
     ACT_GRID,      /* all plots again */

@@ -50,17 +50,32 @@ struct fig_series {
     bool dashed;       /* dashed (the motor, a ghost) */
     bool markers;      /* a small circle at every point, part of the same stroke */
     bool no_line;      /* markers only (points measured), no line between them */
+    bool vline;        /* a line across the whole panel at the first point's x (a
+                        * frequency marked), not part of the data's range */
     double max_jump;   /* > 0: a step in y larger than this breaks the line (a phase that
                         * wraps at +-180, or turns faster than the points can follow) */
 };
 
 struct fig_legend;
 
+#define FIG_MARK_LINES 12
+
+/* A vertical line across a panel at x (a time cursor), dashed, with lines of text beside
+ * it, each in its colour (the values read there). */
+struct fig_mark {
+    double x;
+    int nlines;
+    const char *line[FIG_MARK_LINES];
+    int color[FIG_MARK_LINES];
+};
+
 /* One panel: axes, labels and lines, and a legend of its own under it (or none). */
 struct fig_panel {
+    const char *title;                /* over the panel, or NULL */
     const char *xlabel, *ylabel;      /* with their units, e.g. "t (s)" */
     bool xlog, ylog;                  /* logarithmic axes */
     bool xfixed;                      /* x from xlo to xhi as given (rounded out to ticks) */
+    bool xexact;                      /* x from xlo to xhi exactly, ticks inside */
     bool xwhole;                      /* x ticks on whole numbers only (masses) */
     double xlo, xhi;
     double ystep;                     /* > 0: y from ylo to yhi, ticks ystep apart */
@@ -69,6 +84,8 @@ struct fig_panel {
     int nseries;
     const struct fig_legend *legend;  /* entries for this panel alone, or NULL */
     int nlegend;
+    const struct fig_mark *marks;     /* cursors, or NULL */
+    int nmarks;
 };
 
 /* One legend entry. */

@@ -43,6 +43,7 @@ struct chart {
     char legend[12][24];
     int legend_pair[12];
     bool drawn;                /* drawn with its axes */
+    struct fig_report report;  /* what X's report figure says of it (chart_report) */
 };
 
 /* Places the chart in frame, header rows of text between the frame's top and the drawing
@@ -93,6 +94,10 @@ double chart_dot_yf(const struct chart *c, double v);
  * canvas and the legend on the bottom border; keeps the title, unit and legend shown. */
 void chart_draw(struct chart *c, const char *title, const char *short_title,
                 const char *xunit, const struct legend_item *legend, int nlegend);
+
+/* What a report figure of the chart says (X): title, axis titles with units; the names
+ * of its colours and its cursors emptied, for the view to give. */
+void chart_report(struct chart *c, const char *title, const char *xlabel, const char *ylabel);
 
 /* The chart as last drawn, for a picture of the view: frame, area, ticks, title, legend
  * and the drawing's strokes. */

@@ -252,6 +252,19 @@ static int phase_legend(const struct response_view *rv, const struct app *app,
     return k;
 }
 
+/* What a report figure of chart c says: its words on the log frequency axis, the masses'
+ * names (measured points and theory), the drive's frequency. */
+static void report_words(struct chart *c, const struct app *app, const char *title,
+                         const char *ylabel, bool ylog)
+{
+    chart_report(c, title, "motor frequency f (Hz)", ylabel);
+    struct fig_report *r = &c->report;
+    r->xfreq = true, r->fmin = APP_FMIN, r->fmax = APP_FMAX, r->ylog = ylog;
+    for (int i = 0; i < app->model->n && i < 10; i++)
+        snprintf(r->name[FIG_MASS + i], sizeof r->name[0], "mass %d", i + 1);
+    snprintf(r->name[FIG_MOTOR], sizeof r->name[0], "drive %.3f Hz", app->model->motor.frequency);
+}
+
 void response_view_draw(struct response_view *rv, const struct app *app, bool fresh)
 {
     const struct model *m = app->model;
@@ -309,11 +322,16 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
         legend[k++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
     legend[k++] = (struct legend_item){state, PAIR_MOTOR};
     chart_draw(c, title, "Response (m) against Hz", "Hz", legend, k);
+    report_words(c, app, "Frequency response", "steady-state amplitude (m)", true);
     if (rv->phase.frame.h > 0) {
         char text[APP_MAX_MASSES + 1][24];
         struct legend_item pl[APP_MAX_MASSES + 1];
         int np = phase_legend(rv, app, text, pl);
         chart_draw(&rv->phase, "Phase of each mass to the drive (degrees; a lag is negative)",
                    "Phase (deg)", "Hz", pl, np);
+        report_words(&rv->phase, app, "Phase", "phase to the drive (°; a lag is negative)",
+                     false);
+        rv->phase.report.ylo = -180.0, rv->phase.report.yhi = 180.0;
+        rv->phase.report.ystep = 90.0;
     }
 }

@@ -413,5 +413,8 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
     if (app->modes_ok)
         legend[k++] = (struct legend_item){modes, 0};
     chart_draw(c, title, brief, "Hz", legend, k);
+    snprintf(title, sizeof title, "Spectrum of mass %d's displacement", mass);
+    chart_report(c, title, "frequency f (Hz)", "level (dB re 1 m)");
+    snprintf(c->report.name[FIG_MASS + sv->shown % 10], sizeof c->report.name[0], "mass %d", mass);
     draw_labels(sv, app);
 }
