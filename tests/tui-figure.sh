@@ -6,7 +6,8 @@
 # the time axis absolute (about 15..25 s, as the screen's), the cursor's values written
 # (its time the readout's), the settings under the title; its SVG: the mass's curve, the
 # motor's only where it moves. The response and modes views saved too, and six instances
-# pressing X in the same second leave six pairs.
+# pressing X in the same second leave six pairs. A sweep's measured points: markers of one
+# small size in the figure, its state on the response view's border never cut.
 # Ends with "tui-figure: N passed, M failed".
 NAME=tui-figure
 . "$(dirname "$0")/lib/check.sh"
@@ -15,7 +16,8 @@ fc="python3 $(cd "$(dirname "$0")" && pwd)/lib/figcheck.py"
 M1=0,95,255
 MOTOR=215,0,175
 
-mkdir -p "$tmp/fig" "$tmp/drv" "$tmp/still" "$tmp/six"
+mkdir -p "$tmp/fig" "$tmp/drv" "$tmp/still" "$tmp/six" "$tmp/sweep"
+start_in "$tmp/sweep" sweeping 80 24 -- -n 3 --amplitude 0.05
 start_in "$tmp/fig" cosine 100 30 -- -n 1 --boundary wall --x0 0.5 --damping 0
 start_in "$tmp/drv" driven 100 30 -- -n 1
 start_in "$tmp/still" still 100 30 -- -n 1 --amplitude 0 --x0 0.3
@@ -171,6 +173,35 @@ if up driven; then
         fail "X: expected three SVG and PNG pairs; found $(ls "$tmp/drv" | tr '\n' ' ')"
 fi
 
+S=sweeping
+if up sweeping; then
+    keys f w ] ] ] ] ] ]
+    # Four points measured (the fifth being measured), each a marker on both panels.
+    if wait_re 'sweep [5-9]/40|sweep [1-9][0-9]/40' 60; then pass; else
+        fail "sweep: expected the fifth point within a minute; screen: $(brief)"
+    fi
+    border=$(grep '^└.*sweep [0-9]*/40' "$scr" | head -n 1)
+    case $border in
+    *'(w stops)'*) pass ;;
+    *) fail "sweep: the state should be whole on the border at 80 columns: '$border'" ;;
+    esac
+    keys X
+    wait_for 'figure name'
+    text sweep.svg
+    keys Enter
+    if wait_for 'saved the figure as ./sweep.svg'; then pass; else
+        fail "X, sweep.svg: not saved; screen: $(brief)"
+    fi
+    set -- $($fc markers "$tmp/sweep/sweep.svg" $M1)
+    # Mass 1's points on the amplitude and the phase panels, each 3.2 points across.
+    if [ "${1:-0}" -ge 8 ] && awk -v a="$2" -v b="$3" 'BEGIN { exit !(a > 3.0 && b < 3.4) }'
+    then pass; else
+        fail "sweep's X: expected 8 or more markers of mass 1, each 3.2 pt across; got ${1:-0}, ${2:-?}..${3:-?} pt"
+    fi
+    [ "$($fc curves "$tmp/sweep/sweep.svg" $M1)" -ge 2 ] && pass ||
+        fail "sweep's X: the theory's lines (amplitude and phase) are missing"
+fi
+
 # Six instances pressing X in the same second (issue 33 item 6): six pairs, none replaced.
 ok=1
 for i in 1 2 3 4 5 6; do up six$i || ok=; done
@@ -193,6 +224,6 @@ if [ -n "$ok" ]; then
     echo "tui-figure: six X presses fell in $seconds distinct second(s)" >&2
 fi
 
-all_alive cosine still driven six1 six2 six3 six4 six5 six6
+all_alive cosine still driven sweeping six1 six2 six3 six4 six5 six6
 
 summary

@@ -89,8 +89,18 @@ static int chart_series(const struct fig_chart *c, double *xy, struct fig_series
     return n;
 }
 
+/* Adds e to lg (nl entries) unless its text is there. */
+static void add_once(struct fig_legend *lg, int *nl, struct fig_legend e)
+{
+    for (int i = 0; i < *nl; i++)
+        if (strcmp(lg[i].text, e.text) == 0)
+            return;
+    if (*nl < LEGEND_MAX)
+        lg[(*nl)++] = e;
+}
+
 /* Adds to lg (nl entries) what the series s of chart c are, each name once: the named
- * colours, then the ghost (the masses' colours dashed). */
+ * colours, then the ghost (the masses' colours dashed) and a sweep's points and lines. */
 static void add_legend(const struct fig_chart *c, const struct fig_series *s, int ns,
                        struct fig_legend *lg, int *nl)
 {
@@ -104,22 +114,21 @@ static void add_legend(const struct fig_chart *c, const struct fig_series *s, in
                 continue;
             if (mass && s[i].dashed)
                 ghost = true;
-            else if (solid < 0)
-                solid = i;
+            else if (solid < 0 || (s[solid].no_line && !s[i].no_line))
+                solid = i; /* a line rather than points */
         }
-        if (!name[0] || solid < 0)
-            continue;
-        bool seen = false;
-        for (int e = 0; e < *nl && !seen; e++)
-            seen = lg[e].color == col && strcmp(lg[e].text, name) == 0;
-        if (!seen && *nl < LEGEND_MAX - 1)
-            lg[(*nl)++] = (struct fig_legend){name, col, s[solid].dashed, s[solid].no_line};
+        if (name[0] && solid >= 0 && *nl < LEGEND_MAX - 3)
+            add_once(lg, nl, (struct fig_legend){name, col, s[solid].dashed, s[solid].no_line});
     }
-    bool seen = false;
-    for (int e = 0; e < *nl && !seen; e++)
-        seen = strcmp(lg[e].text, "ghost (dashed)") == 0;
-    if (ghost && !seen)
-        lg[(*nl)++] = (struct fig_legend){"ghost (dashed)", FIG_WALL, true, false};
+    bool points = false;
+    for (int i = 0; i < ns; i++)
+        points |= s[i].no_line;
+    if (ghost)
+        add_once(lg, nl, (struct fig_legend){"ghost (dashed)", FIG_WALL, true, false});
+    if (points) { /* a sweep's: the points measured on the lines of the theory */
+        add_once(lg, nl, (struct fig_legend){"measured", FIG_WALL, false, true});
+        add_once(lg, nl, (struct fig_legend){"linear theory", FIG_WALL, false, false});
+    }
 }
 
 /* The page's title from the panels' (one: its own; more: "A, b and c"). */
