@@ -14,7 +14,7 @@ NAME=tui-figure
 . "$(dirname "$0")/lib/tmux.sh"
 fc="python3 $(cd "$(dirname "$0")" && pwd)/lib/figcheck.py"
 M1=0,95,255
-MOTOR=215,0,175
+MOTOR=0,0,0
 
 mkdir -p "$tmp/fig" "$tmp/drv" "$tmp/still" "$tmp/six" "$tmp/sweep"
 start_in "$tmp/sweep" sweeping 80 24 -- -n 3 --amplitude 0.05

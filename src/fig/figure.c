@@ -48,14 +48,14 @@ static const unsigned char mass_rgb[10][3] = {
 
 void fig_rgb(int c, bool dark, double rgb[3])
 {
-    static const unsigned char motor[3] = {215, 0, 175}, spring[3] = {0, 135, 0},
+    static const unsigned char spring[3] = {0, 135, 0},
                                title[3] = {0, 135, 215}, warn[3] = {215, 0, 0};
     const unsigned char *p = NULL;
     double grey = dark ? 0.85 : 0.1;
     if (c >= FIG_MASS && c < FIG_MASS + 10)
         p = mass_rgb[c - FIG_MASS];
-    else if (c == FIG_MOTOR)
-        p = motor;
+    else if (c == FIG_MOTOR) /* the foreground: white on a dark ground, black on paper */
+        grey = dark ? 1.0 : 0.0;
     else if (c == FIG_SPRING)
         p = spring;
     else if (c == FIG_TITLE)
@@ -66,6 +66,12 @@ void fig_rgb(int c, bool dark, double rgb[3])
         grey = dark ? 0.32 : 0.84;
     for (int i = 0; i < 3; i++)
         rgb[i] = p ? p[i] / 255.0 : grey;
+}
+
+void fig_palette_default(struct fig_palette *p, bool dark)
+{
+    for (int c = 0; c < FIG_COLOR_COUNT; c++)
+        fig_rgb(c, dark, p->rgb[c]);
 }
 
 int fig_energy_color(int i)

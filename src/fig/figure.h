@@ -37,8 +37,18 @@ enum fig_format fig_format_of(const char *path);
  * the balance's error), as the energy view draws them. */
 int fig_energy_color(int i);
 
-/* The red, green and blue (0..1) of colour c on a dark or a light background. */
+/* The red, green and blue (0..1) of colour c on a dark or a light background: a report
+ * figure's, and an image's where the terminal did not say its own. The motor is the
+ * text's colour (as the terminal shows it: its foreground), black on paper. */
 void fig_rgb(int c, bool dark, double rgb[3]);
+
+/* The colours an image is drawn in: each fig_color's red, green and blue (0..1). */
+struct fig_palette {
+    double rgb[FIG_COLOR_COUNT][3];
+};
+
+/* fig_rgb's colours into p. */
+void fig_palette_default(struct fig_palette *p, bool dark);
 
 /* One line of a panel: count points (x[k * stride], y[k * stride]); a point that is not
  * finite (or not positive on a log axis) breaks the line. */

@@ -320,7 +320,7 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
         legend[n++] = (struct legend_item){p->hidden >> i & 1u ? hidden_keys[i] : mass_keys[i],
                                            PAIR_MASS + i};
     if (app->ghost)
-        legend[n++] = (struct legend_item){"┄ghost", PAIR_TITLE};
+        legend[n++] = (struct legend_item){"┄ghost", PAIR_WALL};
     for (int k = 0; k < l->nplots; k++) {
         enum plot_id id = l->plot_id[k];
         struct chart *c = &p->chart[id];

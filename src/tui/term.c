@@ -204,24 +204,32 @@ static void install_signals(void)
  * black or light grey for anything that carries information. 256 colours: blue, green,
  * orange, red, purple, teal, ochre, magenta, brown, slate. 8 colours have no mid tones
  * and yellow does not read on white: five hues (blue, green, red, magenta, cyan), again
- * for masses 6 to 10 (told apart by their digit at the curve's end, plots.c). The motor
- * is the terminal's own foreground, in bold, so that it is no mass's colour in either. */
+ * for masses 6 to 10 (told apart by their digit at the curve's end, plots.c), always bold
+ * (a terminal such as xterm shows them bright then, and the legends are bold: one colour
+ * a mass, in the legend, the curve and the chain). The motor is the terminal's own
+ * foreground, in bold, so that it is no mass's colour in either. */
+static const short c256[10] = {27, 28, 166, 160, 128, 30, 136, 163, 94, 61};
+static const short c8[10] = {COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN,
+                             COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN};
+static short shown_as[PAIR_COUNT]; /* the colour each pair's text shows in (-1: foreground) */
+
 static void init_colors(enum config_color want)
 {
     const char *no_color = getenv("NO_COLOR");
     bool refused = want == CONFIG_COLOR_NEVER ||
                    (want == CONFIG_COLOR_AUTO && no_color && *no_color);
     color = has_colors() && !refused;
+    for (int p = 0; p < PAIR_COUNT; p++)
+        shown_as[p] = -1;
     if (!color)
         return;
     start_color();
     use_default_colors();
-    static const short c256[10] = {27, 28, 166, 160, 128, 30, 136, 163, 94, 61};
-    static const short c8[10] = {COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN,
-                                 COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN};
     rich = COLORS >= 256;
-    for (int i = 0; i < 10; i++)
+    for (int i = 0; i < 10; i++) {
         init_pair((short)(PAIR_MASS + i), rich ? c256[i] : c8[i], -1);
+        shown_as[PAIR_MASS + i] = rich ? c256[i] : (short)(c8[i] + 8); /* bold: bright */
+    }
     init_pair(PAIR_MOTOR, -1, -1);
     init_pair(PAIR_SPRING, rich ? 28 : COLOR_GREEN, -1);
     init_pair(PAIR_GRID, rich ? 245 : -1, -1);
@@ -229,6 +237,28 @@ static void init_colors(enum config_color want)
     init_pair(PAIR_WARN, rich ? 160 : COLOR_RED, -1);
     init_pair(PAIR_WALL, -1, -1);
     init_pair(PAIR_SELECT, -1, -1);
+    shown_as[PAIR_SPRING] = rich ? 28 : COLOR_GREEN;
+    shown_as[PAIR_GRID] = rich ? 245 : -1;
+    shown_as[PAIR_TITLE] = rich ? 32 : -1;
+    shown_as[PAIR_WARN] = rich ? 160 : COLOR_RED + 8;
+}
+
+int term_pair_color(int p)
+{
+    return p > 0 && p < PAIR_COUNT ? shown_as[p] : -1;
+}
+
+int term_color_candidates(int *idx, int max)
+{
+    static const short more[] = {28, 245, 32, 160, COLOR_GREEN, COLOR_RED + 8};
+    int n = 0;
+    for (int i = 0; i < 5 && n < max; i++)
+        idx[n++] = c8[i] + 8;
+    for (int i = 0; i < 10 && n < max; i++)
+        idx[n++] = c256[i];
+    for (size_t i = 0; i < sizeof more / sizeof more[0] && n < max; i++)
+        idx[n++] = more[i];
+    return n;
 }
 
 static attr_t eight_color_boost(int p);
@@ -264,12 +294,11 @@ attr_t term_mass_attr(int i)
     return term_attr(PAIR_MASS + i % 10);
 }
 
-/* With 8 colours, blue is too dark to read on black: its bright form reads on both. */
+/* With 8 colours the masses are bold: blue is too dark to read on black, its bright form
+ * reads on both, and every mass is shown the one way (the legends are bold). */
 static attr_t eight_color_boost(int p)
 {
-    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 && (p - PAIR_MASS) % 5 == 0
-               ? A_BOLD
-               : 0;
+    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 ? A_BOLD : 0;
 }
 
 /* 1 when the terminal on standard output can place the cursor, 0 when it cannot, -1

@@ -407,7 +407,7 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
     legend[k++] = (struct legend_item){mass_key, PAIR_MASS + sv->shown % 10};
     legend[k++] = (struct legend_item){peak_text, 0};
     if (sv->ghost_shown && app->ghost)
-        legend[k++] = (struct legend_item){"┄ghost", PAIR_TITLE};
+        legend[k++] = (struct legend_item){"┄ghost", PAIR_WALL};
     if (driven(m))
         legend[k++] = (struct legend_item){drive, PAIR_MOTOR};
     if (app->modes_ok)
