@@ -124,27 +124,54 @@ static void add_legend(const struct fig_chart *c, const struct fig_series *s, in
     for (int i = 0; i < ns; i++)
         points |= s[i].no_line;
     if (ghost)
-        add_once(lg, nl, (struct fig_legend){"ghost (dashed)", FIG_WALL, true, false});
+        add_once(lg, nl, (struct fig_legend){"ghost: dashed, each mass's colour", FIG_MASS,
+                                             true, false});
     if (points) { /* a sweep's: the points measured on the lines of the theory */
         add_once(lg, nl, (struct fig_legend){"measured", FIG_WALL, false, true});
         add_once(lg, nl, (struct fig_legend){"linear theory", FIG_WALL, false, false});
     }
 }
 
-/* The page's title from the panels' (one: its own; more: "A, b and c"). */
+/* The page's title from the panels' (one: its own; more: "A, b and c"), the phase
+ * portraits ("X against Y") said together where there are more than one. */
 static void page_title(const struct fig_chart *const *c, int n, char *buf, size_t len)
 {
+    const char *part[PANELS_MAX];
+    int np = 0, portraits = 0;
+    for (int i = 0; i < n; i++)
+        portraits += strstr(c[i]->report->title, " against ") != NULL;
+    for (int i = 0; i < n; i++) {
+        bool portrait = strstr(c[i]->report->title, " against ") != NULL;
+        if (portraits < 2 || !portrait)
+            part[np++] = c[i]->report->title;
+        else if (np == 0 || strcmp(part[np - 1], "Phase portraits") != 0)
+            part[np++] = "Phase portraits";
+    }
     size_t at = 0;
     buf[0] = '\0';
-    for (int i = 0; i < n && at < len; i++) {
-        const char *sep = i == 0 ? "" : i + 1 == n ? " and " : ", ";
-        int w = snprintf(buf + at, len - at, "%s%s", sep, c[i]->report->title);
+    for (int i = 0; i < np && at < len; i++) {
+        const char *sep = i == 0 ? "" : i + 1 == np ? " and " : ", ";
+        int w = snprintf(buf + at, len - at, "%s%s", sep, part[i]);
         if (w < 0)
             break;
         if (i > 0 && at + strlen(sep) < len)
             buf[at + strlen(sep)] = (char)tolower((unsigned char)buf[at + strlen(sep)]);
         at += (size_t)w;
     }
+}
+
+/* Axis title t shortened to its symbol and unit ("displacement x (m)": "x (m)") into buf,
+ * for panels too short for the whole; t itself where it has no symbol. */
+static const char *short_label(const char *t, char *buf, size_t len)
+{
+    const char *paren = strstr(t, " (");
+    const char *word = paren;
+    while (word && word > t && word[-1] != ' ')
+        word--;
+    if (!paren || !word || word == t)
+        return t;
+    snprintf(buf, len, "%s", word);
+    return buf;
 }
 
 int fig_view_report(FILE *fp, enum fig_format f, const struct fig_chart *charts, int n,
@@ -171,14 +198,20 @@ int fig_view_report(FILE *fp, enum fig_format f, const struct fig_chart *charts,
     struct fig_panel p[PANELS_MAX];
     struct fig_mark marks[PANELS_MAX][FIG_CURSORS];
     struct fig_legend lg[LEGEND_MAX];
+    char shorter[PANELS_MAX][2][48];
     int nl = 0, used = 0;
     size_t at = 0;
     for (int i = 0; i < np; i++) {
         const struct fig_report *r = c[i]->report;
         int ns = chart_series(c[i], xy + 2 * at, s + used, (int)strokes - used);
         add_legend(c[i], s + used, ns, lg, &nl);
-        p[i] = (struct fig_panel){.title = np > 1 ? r->title : NULL, .xlabel = r->xlabel,
-                                  .ylabel = r->ylabel, .xlog = r->xfreq, .ylog = r->ylog,
+        bool brief = np > 3; /* panels too short for a whole axis title */
+        p[i] = (struct fig_panel){.title = np > 1 ? r->title : NULL,
+                                  .xlabel = brief ? short_label(r->xlabel, shorter[i][0], 48)
+                                                  : r->xlabel,
+                                  .ylabel = brief ? short_label(r->ylabel, shorter[i][1], 48)
+                                                  : r->ylabel,
+                                  .xlog = r->xfreq, .ylog = r->ylog,
                                   .xfixed = true, .series = s + used, .nseries = ns,
                                   .ystep = r->ystep, .ylo = r->ylo, .yhi = r->yhi};
         if (r->xfreq)
@@ -202,7 +235,7 @@ int fig_view_report(FILE *fp, enum fig_format f, const struct fig_chart *charts,
     char title[200];
     page_title(c, np, title, sizeof title);
     double w = look->w_mm > 0.0 ? look->w_mm : 160.0;
-    double h = look->h_mm > 0.0 ? look->h_mm : 100.0 + 60.0 * (np - 1);
+    double h = look->h_mm > 0.0 ? look->h_mm : fmin(100.0 + 60.0 * (np - 1), 240.0);
     struct fig_page pg = {.title = look->title ? look->title : title, .subtitle = look->subtitle,
                           .legend = lg, .nlegend = nl, .panels = p, .npanels = np,
                           .width = w * FIG_MM, .height = h * FIG_MM};

@@ -302,8 +302,9 @@ void overlay_draw(const struct overlay *o, const struct app *app, const struct l
         attron(A_BOLD);
         int x = 1 + draw_printf(y, 1, l->cols - 1, "%s %s", prompt, o->edit);
         attroff(A_BOLD);
-        draw_text(y, x, l->cols - x, o->target == EDIT_FIGURE ? "_   (Enter saves, Esc cancels)"
-                                                               : "_   (Enter sets it, Esc cancels)");
+        const char *how = o->target == EDIT_FIGURE ? "_   (Enter saves, Esc cancels)"
+                                                   : "_   (Enter sets it, Esc cancels)";
+        draw_text(y, x, l->cols - x, how);
         break;
     }
     case OVERLAY_CONFIRM:
