@@ -296,6 +296,15 @@ PIXTERM_TERM=xterm term sixel ' ~e~~q' -n 3
 if holding 5c5cff 00ff00 ff0000 && lacking $M3; then pass; else
     fail "$cmd: TERM=xterm, the energy view: expected bright blue, green and red terms, no orange: $(head -n 3 "$tmp/images" | tr '\n' '|')"
 fi
+# Direct colour (TERM=xterm-direct): the masses' colours sent as they are (SGR 38:2), the
+# images in the same.
+PIXTERM_TERM=xterm-direct term sixel ' ~~q' -n 3
+if LC_ALL=C grep -q "$(printf '\033')\[38:2::0:95:255m" "$tmp/out" &&
+    LC_ALL=C grep -q "$(printf '\033')\[38:2::215:95:0m" "$tmp/out" && holding $M1 $M2 $M3; then
+    pass
+else
+    fail "$cmd: TERM=xterm-direct: expected mass 1 and 3's colours as SGR 38:2 and in the images: $(head -n 3 "$tmp/images9" | tr '\n' '|')"
+fi
 # A terminal that does not say its colours: the legend in the image as well, its last row
 # of cells (masses 1-3 and the motor there, and only there in the first image, at rest).
 # lastrow_marks: the first sixel image holds 20 pixels of each colour asked, all in its

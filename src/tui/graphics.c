@@ -314,9 +314,12 @@ static void pair_colors(const struct graphics *g, struct fig_palette *pal, bool 
     fig_palette_default(pal, g->dark);
     *known = true;
     for (int p = 1; p < PAIR_COUNT && p < FIG_COLOR_COUNT; p++) {
-        int idx = term_pair_color(p);
+        int idx = term_pair_color(p), rgb = term_pair_rgb(p);
         if (p == PAIR_GRID || p == PAIR_SELECT) {
             continue;
+        } else if (rgb >= 0) { /* direct colour: what it was given */
+            for (int i = 0; i < 3; i++)
+                pal->rgb[p][i] = (rgb >> (16 - 8 * i) & 255) / 255.0;
         } else if (idx < 0 && g->fg_known) {
             memcpy(pal->rgb[p], g->fg, sizeof g->fg);
         } else if (idx < 0) {

@@ -58,6 +58,10 @@ attr_t term_attr(int p);
  * mass's bright form), or -1 for the terminal's foreground (no colour, or the pair's). */
 int term_pair_color(int p);
 
+/* With direct colour (TERM=xterm-direct), the 0xRRGGBB pair p's text shows in, which
+ * the terminal takes as it is; -1 otherwise. */
+int term_pair_rgb(int p);
+
 /* Every colour some pair may show in, with 8 colours or 256, into idx (max at most);
  * returns how many: the ones to ask the terminal for before curses knows which. */
 int term_color_candidates(int *idx, int max);
