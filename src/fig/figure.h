@@ -26,7 +26,6 @@ enum fig_color {
 /* File formats, chosen by a file name's extension. */
 enum fig_format { FIG_FORMAT_NONE = -1, FIG_PNG, FIG_SVG, FIG_PDF };
 
-#define FIG_PNG_SCALE 2.0            /* pixels a point in X's picture of the screen */
 #define FIG_PAGE_SCALE (300.0 / 72.0) /* pixels a point in a report figure's PNG: 300 dpi */
 #define FIG_MM (72.0 / 25.4)          /* points a millimetre */
 

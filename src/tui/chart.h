@@ -36,7 +36,7 @@ struct chart {
     struct axis xa, ya;        /* the axes as last fitted */
     struct chart_ticks xt, yt; /* what the axes show */
     bool zero_line;            /* the y = 0 gridline drawn solid */
-    /* What chart_draw drew last, for a picture of the view (X) and pixel output. */
+    /* What chart_draw drew last, for X's figure of the view and pixel output. */
     char title[160];           /* the title shown */
     char xunit[16];
     int nlegend;
@@ -99,7 +99,7 @@ void chart_draw(struct chart *c, const char *title, const char *short_title,
  * of its colours and its cursors emptied, for the view to give. */
 void chart_report(struct chart *c, const char *title, const char *xlabel, const char *ylabel);
 
-/* The chart as last drawn, for a picture of the view: frame, area, ticks, title, legend
+/* The chart as last drawn, for X's figure and the images: frame, area, ticks, title, legend
  * and the drawing's strokes. */
 void chart_picture(const struct chart *c, struct fig_chart *out);
 
