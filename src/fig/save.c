@@ -65,7 +65,7 @@ static int name_files(struct output *o, const enum fig_format *fmt, int nf, char
 
 unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const char *name)
 {
-    char base[4096], dir[4096];
+    char base[4096], dir[4096], path[4096];
     enum fig_format fmt[2] = {FIG_SVG, FIG_PNG};
     int nf = 2;
     if (name && name[0]) {
@@ -83,8 +83,8 @@ unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const 
         strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
         snprintf(base, sizeof base, "./springsim-%s", stamp);
     }
-    snprintf(dir, sizeof dir, "%s", base);
-    snprintf(dir, sizeof dir, "%s", dirname(dir));
+    snprintf(path, sizeof path, "%s", base);
+    snprintf(dir, sizeof dir, "%s", dirname(path)); /* dirname may write into path */
     struct output o[2] = {{0}, {0}};
     int e = 0;
     for (int i = 0; i < nf && e == 0; i++)
