@@ -4,10 +4,10 @@
 # fontconfig, libsixel, GLib for base64, libunistring for Unicode's classes), test (cmocka,
 # tmux, bash, zsh and fish for the completions, numpy and pandas for --meta's CSV, GNU
 # parallel for the --summary study, libsixel's tools, Xvfb, xterm, ImageMagick, the DejaVu
-# fonts and pyte for the pixel tests and screenshots), deb (dpkg-dev, debhelper, lintian,
-# build-essential), bench (GSL), valgrind, fuzz (clang with libFuzzer). As root the missing
-# ones are installed with apt-get; otherwise the one apt-get line to run is printed and
-# the step stops.
+# fonts and pyte for the pixel tests and screenshots, ncurses-term for xterm-direct), deb
+# (dpkg-dev, debhelper, lintian, build-essential), bench (GSL), valgrind, fuzz (clang with
+# libFuzzer). As root the missing ones are installed with apt-get; otherwise the one
+# apt-get line to run is printed and the step stops.
 need=""
 has_pc() { pkg-config --exists "$1" 2>/dev/null; }
 want_pc() { has_pc "$1" || need="$need $2"; }
@@ -45,6 +45,7 @@ for group in "$@"; do
         want_bin convert imagemagick
         want_py pyte python3-pyte
         [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || need="$need fonts-dejavu-core"
+        infocmp xterm-direct >/dev/null 2>&1 || need="$need ncurses-term"
         ;;
     bench)
         want_pc gsl libgsl-dev

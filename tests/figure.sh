@@ -16,7 +16,7 @@ fc="python3 $(cd "$(dirname "$0")" && pwd)/lib/figcheck.py"
 M1=0,95,255
 M2=0,135,0
 M3=215,95,0
-MOTOR=215,0,175
+MOTOR=0,0,0
 
 # expect WHAT GOT WANT
 expect() {

@@ -12,7 +12,10 @@
 # charts are braille again; back, they are sent again; a terminal never asked is asked then.
 # The modes view's shapes are images too, under their cells' text, in the masses' colours.
 # A terminal that says it has fewer than 256 sixel colour registers (XTSMGRAPHICS) gets
-# images of no more colours than that.
+# images of no more colours than that. The images are in the colours the terminal shows
+# the text in (its palette and foreground, asked with OSC 4 and OSC 10): a palette of its
+# own, xterm's 8 colours (the masses bold, so bright), the energy view's terms; where it
+# does not say, the legends' marks are drawn in the images too.
 # Ends with "pixels: N passed, M failed".
 NAME=pixels
 . "$(dirname "$0")/lib/check.sh"
@@ -29,7 +32,7 @@ export LC_ALL NCURSES_NO_UTF8_ACS
 M1=005fff
 M2=008700
 M3=d75f00
-MOTOR=d700af
+MOTOR=000000
 COSINE="-n 1 --boundary wall --x0 0.5 --damping 0"
 
 # term KIND KEYS ARGS...: the program ($PROG, or springsim) in a 100x30 terminal of KIND
@@ -39,7 +42,8 @@ term() {
     kind=$1 keys=$2
     shift 2
     cmd="pixterm $kind '$keys' springsim $*"
-    "$PIXTERM" "$kind" 100 30 10 20 ffffff "$tmp/out" "$keys" ${PROG:-"$SPRINGSIM"} "$@"
+    PIXTERM_PALETTE=${PIXTERM_PALETTE-} PIXTERM_TERM=${PIXTERM_TERM-} \
+        "$PIXTERM" "$kind" 100 30 10 20 ffffff "$tmp/out" "$keys" ${PROG:-"$SPRINGSIM"} "$@"
     rc=$?
     "$SIXELCHECK" "$tmp/out" $M1 $M2 $M3 $MOTOR >"$tmp/images"
 }
@@ -263,6 +267,60 @@ fi
 term sixel/4 ' ~~q' -n 3
 if colours_ok 2 4; then pass; else
     fail "$cmd: 4 colour registers: expected images of 2 to 4 colours; got $(colours)"
+fi
+
+# 9. One colour a mass: the images in the terminal's own colours. holding COLOURS...: some
+# sixel image holds 20 pixels or more of every colour given (sixelcheck run again for them).
+holding() {
+    "$SIXELCHECK" "$tmp/out" "$@" >"$tmp/images9"
+    grep '^sixel ' "$tmp/images9" | awk -v n="$#" '
+        { for (i = 6; i < 6 + n; i++) { split($i, s, ":"); if (s[3] < 20) next } found = 1 }
+        END { exit !found }'
+}
+# lacking COLOUR: no sixel image holds 20 pixels of it.
+lacking() {
+    "$SIXELCHECK" "$tmp/out" "$1" >"$tmp/images9"
+    ! grep '^sixel ' "$tmp/images9" | awk '{ split($6, s, ":"); if (s[3] >= 20) found = 1 }
+        END { exit !found }'
+}
+# A palette of its own: mass 1 (entry 27) teal, mass 3 (166) violet, the foreground dark
+# red; mass 2 keeps xterm's green (entry 28).
+PIXTERM_PALETTE=27=00af87,166=5f00af,fg=af0000 term sixel ' ~~q' -n 3
+if holding 00af87 $M2 5f00af af0000 && lacking $M1 && lacking $M3; then pass; else
+    fail "$cmd: the terminal's palette (mass 1 00af87, mass 3 5f00af, motor af0000): $(head -n 3 "$tmp/images9" | tr '\n' '|')"
+fi
+# TERM=xterm: 8 colours, the masses bold, which xterm shows bright (entries 12, 10, 9);
+# in the energy view kinetic, potential and damped are masses 1 to 3's colours, not the
+# orange of 256 colours.
+PIXTERM_TERM=xterm term sixel ' ~e~~q' -n 3
+if holding 5c5cff 00ff00 ff0000 && lacking $M3; then pass; else
+    fail "$cmd: TERM=xterm, the energy view: expected bright blue, green and red terms, no orange: $(head -n 3 "$tmp/images" | tr '\n' '|')"
+fi
+# Direct colour (TERM=xterm-direct): the masses' colours sent as they are (SGR 38:2), the
+# images in the same.
+PIXTERM_TERM=xterm-direct term sixel ' ~~q' -n 3
+if LC_ALL=C grep -q "$(printf '\033')\[38:2::0:95:255m" "$tmp/out" &&
+    LC_ALL=C grep -q "$(printf '\033')\[38:2::215:95:0m" "$tmp/out" && holding $M1 $M2 $M3; then
+    pass
+else
+    fail "$cmd: TERM=xterm-direct: expected mass 1 and 3's colours as SGR 38:2 and in the images: $(head -n 3 "$tmp/images9" | tr '\n' '|')"
+fi
+# A terminal that does not say its colours: the legend in the image as well, its last row
+# of cells (masses 1-3 and the motor there, and only there in the first image, at rest).
+# lastrow_marks: the first sixel image holds 20 pixels of each colour asked, all in its
+# last 20 rows.
+lastrow_marks() {
+    grep -m 1 '^sixel ' "$tmp/images" | awk '{ h = $5; ok = 1; for (i = 6; i <= 9; i++) {
+        split($i, s, ":"); if (s[1] < h - 20 || s[3] < 20) ok = 0 } exit !ok }'
+}
+PIXTERM_PALETTE=none term sixel '~ ~~q' -n 3
+if lastrow_marks; then pass; else
+    fail "$cmd: no palette answered: expected the legend (masses 1-3, motor) in the first image's last row: $(head -n 2 "$tmp/images" | tr '\n' '|')"
+fi
+# With the palette said, no legend in the image.
+term sixel '~ ~~q' -n 3
+if ! lastrow_marks; then pass; else
+    fail "$cmd: the palette said, yet the legend is drawn in the image: $(head -n 2 "$tmp/images" | tr '\n' '|')"
 fi
 
 summary

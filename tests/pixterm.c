@@ -8,7 +8,10 @@
  *   vt220  device attributes without 4, cell size: a terminal without images
  *   none   answers nothing
  * KIND may end in "+MS": the answers come MS milliseconds after the queries, as over a
- * slow link. KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is
+ * slow link. The palette (OSC 4) and the foreground (OSC 10) are answered as xterm's
+ * defaults (black on the background given), but for the entries PIXTERM_PALETTE gives
+ * ("N=RRGGBB,...,fg=RRGGBB"); PIXTERM_PALETTE=none answers neither. PIXTERM_TERM is the
+ * program's TERM (default xterm-256color). KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is
  * Esc; a first character '^' types the one after it as soon as the queries are seen,
  * before any answer. The
  * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s;
@@ -52,6 +55,44 @@ static void say(int fd, const char *s)
         perror("pixterm: write");
 }
 
+/* xterm's default colour of palette entry idx, as RRGGBB. */
+static void xterm_hex(int idx, char *out, size_t len)
+{
+    static const char *const sixteen[16] = {
+        "000000", "cd0000", "00cd00", "cdcd00", "0000ee", "cd00cd", "00cdcd", "e5e5e5",
+        "7f7f7f", "ff0000", "00ff00", "ffff00", "5c5cff", "ff00ff", "00ffff", "ffffff"};
+    static const int level[6] = {0, 95, 135, 175, 215, 255};
+    if (idx < 16)
+        snprintf(out, len, "%s", sixteen[idx]);
+    else if (idx < 232)
+        snprintf(out, len, "%02x%02x%02x", level[(idx - 16) / 36], level[(idx - 16) / 6 % 6],
+                 level[(idx - 16) % 6]);
+    else
+        snprintf(out, len, "%02x%02x%02x", 8 + 10 * (idx - 232), 8 + 10 * (idx - 232),
+                 8 + 10 * (idx - 232));
+}
+
+/* The colour of entry key ("27", "fg") as an OSC answer's "rgb:RRRR/GGGG/BBBB" into
+ * out: PIXTERM_PALETTE's, else xterm's; false when PIXTERM_PALETTE is "none". */
+static bool palette_rgb(const char *key, char *out, size_t len)
+{
+    const char *pal = getenv("PIXTERM_PALETTE");
+    char hex[8];
+    size_t k = strlen(key);
+    if (pal && strcmp(pal, "none") == 0)
+        return false;
+    if (strcmp(key, "fg") == 0)
+        snprintf(hex, sizeof hex, "000000");
+    else
+        xterm_hex(atoi(key) & 255, hex, sizeof hex);
+    for (const char *p = pal; p && *p; p = strchr(p, ',') ? strchr(p, ',') + 1 : NULL)
+        if (strncmp(p, key, k) == 0 && p[k] == '=' && strlen(p + k + 1) >= 6)
+            snprintf(hex, sizeof hex, "%.6s", p + k + 1);
+    snprintf(out, len, "rgb:%.2s%.2s/%.2s%.2s/%.2s%.2s", hex, hex, hex + 2, hex + 2, hex + 4,
+             hex + 4);
+    return true;
+}
+
 /* Answers each query in what the program wrote (its queries come in one write). */
 static void answer(int fd, const char *kind, const char *tail, int cw, int ch, int cols,
                    int rows, const char *bg)
@@ -77,6 +118,27 @@ static void answer(int fd, const char *kind, const char *tail, int cw, int ch, i
             snprintf(buf, sizeof buf, "\033]11;rgb:%.2s%.2s/%.2s%.2s/%.2s%.2s\033\\", bg, bg,
                      bg + 2, bg + 2, bg + 4, bg + 4);
             say(fd, buf);
+        } else if (strncmp(q, "\033]10;?", 6) == 0) {
+            char rgb[40];
+            if (palette_rgb("fg", rgb, sizeof rgb)) {
+                snprintf(buf, sizeof buf, "\033]10;%s\033\\", rgb);
+                say(fd, buf);
+            }
+        } else if (strncmp(q, "\033]4;", 4) == 0) {
+            /* "4;N;?;M;?...": each entry it knows, an answer of its own, as xterm does. */
+            const char *p = q + 3;
+            while (*p == ';') {
+                char key[8], rgb[40];
+                int idx = atoi(p + 1), used = 0;
+                if (sscanf(p + 1, "%*d;?%n", &used) < 0 || used == 0)
+                    break;
+                snprintf(key, sizeof key, "%d", idx);
+                if (palette_rgb(key, rgb, sizeof rgb)) {
+                    snprintf(buf, sizeof buf, "\033]4;%d;%s\033\\", idx, rgb);
+                    say(fd, buf);
+                }
+                p += 1 + used;
+            }
         } else if (strncmp(q, "\033[?1;1;0S", 9) == 0 && registers > 0) {
             snprintf(buf, sizeof buf, "\033[?1;0;%dS", registers);
             say(fd, buf);
@@ -114,7 +176,8 @@ int main(int argc, char **argv)
         return 1;
     }
     if (pid == 0) {
-        setenv("TERM", "xterm-256color", 1);
+        const char *term = getenv("PIXTERM_TERM");
+        setenv("TERM", term && *term ? term : "xterm-256color", 1);
         unsetenv("TMUX");
         unsetenv("STY");
         execvp(argv[9], argv + 9);

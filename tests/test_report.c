@@ -1,15 +1,22 @@
-/* test_report.c: the rows a figure keeps (fig/report.c) and the figure formats. Few rows:
+/* test_report.c: the rows a figure keeps (fig/report.c), the figure formats, and X's
+ * figure of a chart (fig/view_report.c): its curves at the values the strokes stand for,
+ * a motor that does not move left out, no figure of a chart without a report. Few rows:
  * every one. Many rows: the first, then per bucket the smallest and the largest in time
  * order, then the last, each one of the rows given (so the curve lies on the CSV's rows);
  * an oscillation faster than a bucket keeps its envelope; a value that is not finite
  * breaks the line. */
 #include "testutil.h"
 
+#include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "chart/axis.h"
+#include "chart/strokes.h"
 #include "fig/figure.h"
 #include "fig/report.h"
+#include "fig/view_report.h"
 
 static void few_rows_are_all_kept(void **state)
 {
@@ -105,6 +112,55 @@ static void format_from_extension(void **state)
     assert_int_equal(fig_format_of("dir.png/a"), FIG_FORMAT_NONE);
 }
 
+/* The SVG of the n charts c (report r each) in *svg (freed by the caller); the status. */
+static int view_svg(const struct fig_chart *c, int n, char **svg)
+{
+    size_t len = 0;
+    FILE *fp = open_memstream(svg, &len);
+    assert_non_null(fp);
+    struct report_look look = {NULL, "settings", 0.0, 0.0};
+    int e = fig_view_report(fp, FIG_SVG, c, n, &look);
+    fclose(fp);
+    return e;
+}
+
+/* A chart 40 x 10 cells (80 x 40 dots) over t 0..8 s and x -1..1 m: mass 1's line from
+ * the bottom left to the top right dot, a motor standing at 0. The figure draws mass 1
+ * (one stroked path of its colour) and no motor (nothing black); without a report there
+ * is no figure. */
+static void view_report_draws_values(void **state)
+{
+    (void)state;
+    struct strokes *k = strokes_new();
+    assert_non_null(k);
+    struct fig_chart c = {.aw = 40, .ah = 10, .axes = true, .strokes = k};
+    axis_fit(&c.xa, 0.0, 8.0, 4, 40, 2, 4);
+    axis_fit(&c.ya, -1.0, 1.0, 4, 10, 4, 2);
+    strokes_begin(k, FIG_MASS, STROKE_LINE);
+    strokes_point(k, 0.0, 39.0);
+    strokes_point(k, 79.0, 0.0);
+    strokes_begin(k, FIG_MOTOR, STROKE_DASHED);
+    double zero = 39.0 - axis_dot(&c.ya, 0.0);
+    strokes_point(k, 0.0, zero);
+    strokes_point(k, 79.0, zero);
+    struct fig_report r = {.title = "Displacement", .xlabel = "time t (s)",
+                           .ylabel = "displacement x (m)", .time = true};
+    snprintf(r.name[FIG_MASS], sizeof r.name[0], "mass 1");
+    snprintf(r.name[FIG_MOTOR], sizeof r.name[0], "motor u(t)");
+    c.report = &r;
+    char *svg = NULL;
+    assert_int_equal(view_svg(&c, 1, &svg), 0);
+    assert_non_null(strstr(svg, "</svg>"));
+    assert_non_null(strstr(svg, "stroke:rgb(0%,37.254902%,100%)"));
+    assert_null(strstr(svg, "stroke:rgb(0%,0%,0%)"));
+    free(svg);
+    c.report = NULL;
+    assert_int_equal(view_svg(&c, 1, &svg), EDOM);
+    free(svg);
+    fig_done();
+    strokes_free(k);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -112,6 +168,7 @@ int main(void)
         cmocka_unit_test(many_rows_keep_the_envelope),
         cmocka_unit_test(not_finite_breaks),
         cmocka_unit_test(format_from_extension),
+        cmocka_unit_test(view_report_draws_values),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,24 +1,27 @@
 #!/bin/sh
-# tests/tui-figure.sh: X in the program (issue 18), in a real terminal (tmux): the view on
-# the screen saved as SVG and PNG in the working directory, said in the status line. The
-# picture is checked against what tmux shows: its gridlines on the rows of the screen's y
-# tick labels, a known cosine's peaks (x0 = 0.5 m, undamped, between walls) on the rows
-# those labels give for +-0.5 m, the PNG the frame's size at 16 x 32 pixels a cell and in
-# the mass's colour; the response and modes views saved too.
+# tests/tui-figure.sh: X in the program, in a real terminal (tmux): a report figure of the
+# view on the screen, its file name asked for (Enter keeps the default), said where it
+# went. The displacement plot's figure, after 25 s shown in a 10 s window with a cursor,
+# read back from its PDF: a title with no key digit, axis titles with units on both axes,
+# the time axis absolute (about 15..25 s, as the screen's), the cursor's values written
+# (its time the readout's), the settings under the title; its SVG: the mass's curve, the
+# motor's only where it moves. The response and modes views saved too, and six instances
+# pressing X in the same second leave six pairs. A sweep's measured points: markers of one
+# small size in the figure, its state on the response view's border never cut.
 # Ends with "tui-figure: N passed, M failed".
 NAME=tui-figure
 . "$(dirname "$0")/lib/check.sh"
 . "$(dirname "$0")/lib/tmux.sh"
 fc="python3 $(cd "$(dirname "$0")" && pwd)/lib/figcheck.py"
 M1=0,95,255
-GRID=214,214,214
+MOTOR=0,0,0
 
-mkdir -p "$tmp/fig"
-mkdir -p "$tmp/drv"
+mkdir -p "$tmp/fig" "$tmp/drv" "$tmp/still" "$tmp/six" "$tmp/sweep"
+start_in "$tmp/sweep" sweeping 80 24 -- -n 3 --amplitude 0.05
 start_in "$tmp/fig" cosine 100 30 -- -n 1 --boundary wall --x0 0.5 --damping 0
 start_in "$tmp/drv" driven 100 30 -- -n 1
+start_in "$tmp/still" still 100 30 -- -n 1 --amplitude 0 --x0 0.3
 # Six instances in one directory, for X pressed in all of them at once.
-mkdir -p "$tmp/six"
 for i in 1 2 3 4 5 6; do start_in "$tmp/six" six$i 80 24 -- -n 1; done
 
 # saved DIR: waits for X's message naming files other than the last ones; sets $base to
@@ -30,76 +33,173 @@ saved() {
     [ -f "$1/$base.svg" ] && [ -f "$1/$base.png" ]
 }
 new_name() {
-    base=$(sed -n 's/.*saved the view as \.\/\(springsim-[0-9]\{8\}-[0-9]\{6\}\(-[0-9]*\)\{0,1\}\)\.svg and \.png.*/\1/p' "$scr" | head -n 1)
+    base=$(sed -n 's/.*saved the figure as \.\/\(springsim-[0-9]\{8\}-[0-9]\{6\}\(-[0-9]*\)\{0,1\}\)\.svg and \.png.*/\1/p' "$scr" | head -n 1)
     [ -n "$base" ] && [ "$base" != "$prev" ]
+}
+
+# expect WHAT GOT WANT
+expect() {
+    if [ "$2" = "$3" ]; then pass; else fail "$1: got '$2', expected '$3'"; fi
+}
+
+# within LO HI WORDS...: every word a number in [LO, HI], and at least three.
+within() {
+    lo=$1 hi=$2
+    shift 2
+    echo "$@" | awk -v lo="$lo" -v hi="$hi" '
+        { for (i = 1; i <= NF; i++) { n++; if ($i + 0 < lo || $i + 0 > hi) bad = 1 } }
+        END { exit !(n >= 3 && !bad) }'
 }
 
 S=cosine
 if up cosine; then
-    keys 1 Space
-    wait_t 3 && keys Space
+    # 25 s and more in the 10 s window, the displacement plot enlarged, paused, a cursor.
+    keys 1 ] ] ] Space
+    wait_t 25 30
+    keys Space
     settled_t >/dev/null
-    keys X
-    if saved "$tmp/fig"; then pass; else fail "X: expected 'saved the view as ./springsim-...svg and .png' and both files; screen: $(brief); files: $(ls "$tmp/fig" | tr '\n' ' ')"; fi
+    keys '|'
+    wait_for 'Cursor'
+    keys H H
+    sleep 0.3
+    cap
     cp "$scr" "$tmp/x-screen"
+    cursor_t=$(sed -n 's/.*│t \([0-9][0-9.]*\) s .*/\1/p' "$tmp/x-screen" | head -n 1)
+    # The screen's time labels, under the plot.
+    screen_ticks=$(sed -n 's/^│ s *\([0-9 ]*\)│.*/\1/p' "$tmp/x-screen" | head -n 1)
+    keys X
+    if wait_for 'figure name [springsim-'; then pass; else
+        fail "X: expected it to ask for the figure's name with the default; screen: $(brief)"
+    fi
+    text x.pdf
+    keys Enter
+    if wait_for 'saved the figure as ./x.pdf' && [ -s "$tmp/fig/x.pdf" ]; then pass; else
+        fail "X, x.pdf: expected 'saved the figure as ./x.pdf' and the file; screen: $(brief); files: $(ls "$tmp/fig" | tr '\n' ' ')"
+    fi
+    pdf=$tmp/fig/x.pdf
+    $fc text "$pdf" >"$tmp/x-text" 2>&1
+    expect "X: the title (no key digit, no unit)" "$(sed -n 1p "$tmp/x-text")" "Displacement"
+    grep -q 'wall' "$tmp/x-text" && grep -q 'rk4, dt 0.01 s' "$tmp/x-text" && pass ||
+        fail "X: the settings should be under the title: $(sed -n 2p "$tmp/x-text")"
+    grep -q '^time t (s)$' "$tmp/x-text" && pass ||
+        fail "X: no x axis title 'time t (s)': $(tr '\n' '|' <"$tmp/x-text")"
+    # The y axis title is turned upright: pdftotext gives its words a line each.
+    grep -qx 'displacement' "$tmp/x-text" && grep -qx '(m)' "$tmp/x-text" && pass ||
+        fail "X: no y axis title 'displacement x (m)': $(tr '\n' '|' <"$tmp/x-text")"
+    ticks=$($fc xticks "$pdf" time)
+    # Absolute time: the window's 10 s ending past 25 s, labelled as the screen is.
+    if within 14 47 $ticks && within 14 47 $screen_ticks &&
+        [ "$(echo $ticks | awk '{ print $NF - $1 }')" -le 10 ]; then pass; else
+        fail "X: the time axis should be absolute, 10 s past 15 s: labels '$ticks' (the screen's '$screen_ticks')"
+    fi
+    first=$(echo $screen_ticks | awk '{ print $1 }') last=$(echo $screen_ticks | awk '{ print $NF }')
+    if echo $ticks | awk -v a="$first" -v b="$last" '{ exit !($1 + 0 >= a - 2 && $NF + 0 <= b + 2) }'
+    then pass; else fail "X: time labels '$ticks' should span the screen's $first..$last"; fi
+    # The cursor: its time and mass 1's value written beside it.
+    if [ -n "$cursor_t" ] && grep -q "t = $cursor_t" "$tmp/x-text" && grep -q 'x1 = -\{0,1\}0\.[0-9]* m' "$tmp/x-text"
+    then pass; else
+        fail "X: the cursor's values (t = $cursor_t s, x1 = ... m) should be written: $(tr '\n' '|' <"$tmp/x-text")"
+    fi
+    if grep -q '^1 Displacement\|Displacement (m)' "$tmp/x-text"; then
+        fail "X: the screen's words are in the figure: $(tr '\n' '|' <"$tmp/x-text")"
+    else pass; fi
+    # Enter keeps the default: the SVG and PNG pair.
+    keys X
+    wait_for 'figure name [springsim-'
+    keys Enter
+    if saved "$tmp/fig"; then pass; else
+        fail "X, Enter: expected 'saved the figure as ./springsim-...svg and .png' and both files; screen: $(brief); files: $(ls "$tmp/fig" | tr '\n' ' ')"
+    fi
     svg=$tmp/fig/$base.svg
-    png=$tmp/fig/$base.png
-    # The frame on the screen: its top row, width and height in cells.
-    geo=$(python3 -c '
-import sys
-lines = open(sys.argv[1], encoding="utf-8").read().split("\n")
-top = next(i for i, l in enumerate(lines) if "1 Displacement" in l)
-bot = next(i for i in range(top, len(lines)) if lines[i].startswith("\u2514"))
-print(top, lines[top].index("\u2510") + 1, bot - top + 1)' "$tmp/x-screen")
-    set -- $geo
-    top=$1 w=$2 h=$3
-    # Each y label's row, as a page y in the picture (cells of 16 points, from the frame).
-    sed -n 's/^│ *\(-\{0,1\}[0-9.][0-9.]*\)┤.*/\1/p' "$tmp/x-screen" >"$tmp/labels"
-    grep -n '^│ *-\{0,1\}[0-9.][0-9.]*┤' "$tmp/x-screen" | cut -d: -f1 |
-        awk -v top="$top" '{ print ($1 - 1 - top + 0.5) * 16 }' >"$tmp/label-y"
-    $fc gridrows "$svg" $GRID >"$tmp/grid-y"
-    if [ -s "$tmp/label-y" ] && [ "$(sort -n "$tmp/label-y")" = "$(sort -n "$tmp/grid-y" | awk '{ print $1 + 0 }')" ]
-    then pass; else
-        fail "X: the picture's gridlines ($(tr '\n' ' ' <"$tmp/grid-y")) should be on the label rows ($(tr '\n' ' ' <"$tmp/label-y"))"
-    fi
-    # The cosine's peaks: +-0.5 m on the page y the labels' rows give (within a dot, 4 pt).
-    ext=$($fc extent "$svg" $M1 0)
-    if paste -d' ' "$tmp/labels" "$tmp/label-y" | awk -v ext="$ext" '
-        { v[NR] = $1; y[NR] = $2; n = NR }
-        END { a = (y[n] - y[1]) / (v[n] - v[1]); b = y[1] - a * v[1]
-              split(ext, e, " ")
-              exit !(n >= 3 && (e[1] - (a * 0.5 + b)) ^ 2 < 16 && (e[2] - (a * -0.5 + b)) ^ 2 < 16) }'
-    then pass; else
-        fail "X: the cosine's curve spans page y $ext, expected the rows of +-0.5 m from the labels $(paste -d= "$tmp/labels" "$tmp/label-y" | tr '\n' ' ')"
-    fi
-    expect_png=$((w * 16))" "$((h * 32))
-    got=$($fc png "$png" 2>&1)
-    [ "$got" = "$expect_png" ] && pass || fail "X: PNG size $got, expected $expect_png (the frame, $w x $h cells)"
-    blue=$(convert "$png" -format %c histogram:info:- 2>/dev/null | grep -ci '#005FFF')
-    [ "${blue:-0}" -ge 1 ] && pass || fail "X: the PNG has no pixel of mass 1's colour #005FFF"
+    expect "X: the mass's curve in the SVG" "$($fc curves "$svg" $M1)" 1
+    expect "X: no motor (a wall at the right end)" "$($fc curves "$svg" $MOTOR)" 0
+    # The curve is the cosine, 0.5 m each side: its extent is most of the plot's height.
+    got=$($fc png "$tmp/fig/$base.png" 2>&1)
+    [ "$got" = "1890 1181" ] && pass || fail "X: PNG $got, expected 1890 x 1181 (160 x 100 mm at 300 dpi)"
+    # Esc cancels: nothing written.
+    n=$(ls "$tmp/fig" | wc -l)
+    keys X
+    wait_for 'figure name'
+    keys Escape
+    wait_gone 'figure name'
+    [ "$(ls "$tmp/fig" | wc -l)" -eq "$n" ] && pass || fail "X, Esc: files were written: $(ls "$tmp/fig" | tr '\n' ' ')"
+fi
 
+S=still
+if up still; then
+    # A motor end whose amplitude is 0: the motor does not move, so no motor line.
+    keys Space
+    wait_t 2
+    keys X
+    wait_for 'figure name'
+    keys Enter
+    if saved "$tmp/still" && [ "$($fc curves "$tmp/still/$base.svg" $MOTOR)" = 0 ] &&
+        [ "$($fc curves "$tmp/still/$base.svg" $M1)" -ge 2 ]; then pass; else
+        fail "X, amplitude 0: expected the mass's curves and no motor line; screen: $(brief)"
+    fi
 fi
 
 S=driven
 if up driven; then
     keys Space
     wait_t 2
+    keys X
+    wait_for 'figure name'
+    keys Enter
+    # The plots' grid: the motor moves, dashed, in the displacement panel only.
+    if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $MOTOR)" = 1 ] &&
+        [ "$($fc dashed "$tmp/drv/$base.svg" $MOTOR)" = 1 ]; then pass; else
+        fail "X, driven: expected one dashed motor line; screen: $(brief)"
+    fi
     # The response view: its amplitude and phase curves.
     keys f
     wait_for 'Frequency response'
     keys X
+    wait_for 'figure name'
+    keys Enter
     if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $M1)" -ge 2 ]; then pass; else
-        fail "X in the response view: expected a picture with the amplitude and phase curves; screen: $(brief)"
+        fail "X in the response view: expected a figure with the amplitude and phase curves; screen: $(brief)"
     fi
     # The modes view: the shape of the one mode, as --modes --figure draws it.
     keys m
     wait_for 'Modes'
     keys X
+    wait_for 'figure name'
+    keys Enter
     if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $M1)" = 1 ]; then pass; else
         fail "X in the modes view: expected the mode's shape; screen: $(brief)"
     fi
-    [ "$(ls "$tmp/drv" | wc -l)" -eq 4 ] && pass ||
-        fail "X: expected two SVG and PNG pairs; found $(ls "$tmp/drv" | tr '\n' ' ')"
+    [ "$(ls "$tmp/drv" | wc -l)" -eq 6 ] && pass ||
+        fail "X: expected three SVG and PNG pairs; found $(ls "$tmp/drv" | tr '\n' ' ')"
+fi
+
+S=sweeping
+if up sweeping; then
+    keys f w ] ] ] ] ] ]
+    # Four points measured (the fifth being measured), each a marker on both panels.
+    if wait_re 'sweep [5-9]/40|sweep [1-9][0-9]/40' 60; then pass; else
+        fail "sweep: expected the fifth point within a minute; screen: $(brief)"
+    fi
+    border=$(grep '^└.*sweep [0-9]*/40' "$scr" | head -n 1)
+    case $border in
+    *'(w stops)'*) pass ;;
+    *) fail "sweep: the state should be whole on the border at 80 columns: '$border'" ;;
+    esac
+    keys X
+    wait_for 'figure name'
+    text sweep.svg
+    keys Enter
+    if wait_for 'saved the figure as ./sweep.svg'; then pass; else
+        fail "X, sweep.svg: not saved; screen: $(brief)"
+    fi
+    set -- $($fc markers "$tmp/sweep/sweep.svg" $M1)
+    # Mass 1's points on the amplitude and the phase panels, each 3.2 points across.
+    if [ "${1:-0}" -ge 8 ] && awk -v a="$2" -v b="$3" 'BEGIN { exit !(a > 3.0 && b < 3.4) }'
+    then pass; else
+        fail "sweep's X: expected 8 or more markers of mass 1, each 3.2 pt across; got ${1:-0}, ${2:-?}..${3:-?} pt"
+    fi
+    [ "$($fc curves "$tmp/sweep/sweep.svg" $M1)" -ge 2 ] && pass ||
+        fail "sweep's X: the theory's lines (amplitude and phase) are missing"
 fi
 
 # Six instances pressing X in the same second (issue 33 item 6): six pairs, none replaced.
@@ -107,7 +207,10 @@ ok=1
 for i in 1 2 3 4 5 6; do up six$i || ok=; done
 if [ -n "$ok" ]; then
     for i in 1 2 3 4 5 6; do S=six$i; keys X; done
-    for i in 1 2 3 4 5 6; do S=six$i; wait_for 'saved the view as' || ok=; done
+    for i in 1 2 3 4 5 6; do S=six$i; wait_for 'figure name' || ok=; done
+    # The default names were given in the same second or two: Enter in all at once.
+    for i in 1 2 3 4 5 6; do S=six$i; keys Enter; done
+    for i in 1 2 3 4 5 6; do S=six$i; wait_for 'saved the figure as' || ok=; done
     svgs=$(ls "$tmp/six" | grep -c '\.svg$') pngs=$(ls "$tmp/six" | grep -c '\.png$')
     seconds=$(ls "$tmp/six" | sed -n 's/^springsim-\([0-9]*-[0-9]*\).*\.svg$/\1/p' | sort -u | wc -l)
     if [ -n "$ok" ] && [ "$svgs" -eq 6 ] && [ "$pngs" -eq 6 ]; then pass; else
@@ -121,6 +224,6 @@ if [ -n "$ok" ]; then
     echo "tui-figure: six X presses fell in $seconds distinct second(s)" >&2
 fi
 
-all_alive cosine driven six1 six2 six3 six4 six5 six6
+all_alive cosine still driven sweeping six1 six2 six3 six4 six5 six6
 
 summary

@@ -11,6 +11,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "chart/axis.h"
 #include "axes.h"
 #include "surface.h"
 
@@ -47,14 +48,14 @@ static const unsigned char mass_rgb[10][3] = {
 
 void fig_rgb(int c, bool dark, double rgb[3])
 {
-    static const unsigned char motor[3] = {215, 0, 175}, spring[3] = {0, 135, 0},
+    static const unsigned char spring[3] = {0, 135, 0},
                                title[3] = {0, 135, 215}, warn[3] = {215, 0, 0};
     const unsigned char *p = NULL;
     double grey = dark ? 0.85 : 0.1;
     if (c >= FIG_MASS && c < FIG_MASS + 10)
         p = mass_rgb[c - FIG_MASS];
-    else if (c == FIG_MOTOR)
-        p = motor;
+    else if (c == FIG_MOTOR) /* the foreground: white on a dark ground, black on paper */
+        grey = dark ? 1.0 : 0.0;
     else if (c == FIG_SPRING)
         p = spring;
     else if (c == FIG_TITLE)
@@ -65,6 +66,12 @@ void fig_rgb(int c, bool dark, double rgb[3])
         grey = dark ? 0.32 : 0.84;
     for (int i = 0; i < 3; i++)
         rgb[i] = p ? p[i] / 255.0 : grey;
+}
+
+void fig_palette_default(struct fig_palette *p, bool dark)
+{
+    for (int c = 0; c < FIG_COLOR_COUNT; c++)
+        fig_rgb(c, dark, p->rgb[c]);
 }
 
 int fig_energy_color(int i)
@@ -169,6 +176,14 @@ static void series(cairo_t *cr, const struct fig_series *s, const struct fig_axi
     int run = 0; /* points in the line's current piece */
     set_color(cr, s->color);
     cairo_set_line_width(cr, 1.0);
+    if (s->vline) {
+        if (s->count > 0 && fig_axis_ok(x, s->x[0])) {
+            cairo_move_to(cr, fig_axis_map(x, s->x[0]), y->a);
+            cairo_line_to(cr, fig_axis_map(x, s->x[0]), y->b);
+            cairo_stroke(cr);
+        }
+        return;
+    }
     cairo_set_dash(cr, dash, s->dashed ? 2 : 0, 0.0);
     cairo_new_path(cr);
     for (int k = 0; !s->no_line && k < s->count; k++) {
@@ -209,6 +224,8 @@ static void data_range(const struct fig_panel *p, int which, const struct fig_ax
     for (int s = 0; s < p->nseries; s++) {
         const struct fig_series *sr = &p->series[s];
         const double *v = which ? sr->y : sr->x;
+        if (sr->vline)
+            continue;
         for (int k = 0; k < sr->count; k++) {
             double d = v[(size_t)k * sr->stride];
             if (fig_axis_ok(x, d))
@@ -230,6 +247,8 @@ static void fit_axes(const struct fig_panel *p, double w, double h, struct fig_a
     int nx = (int)fmax(2.0, w / 55.0), ny = (int)fmax(2.0, h / 18.0);
     if (p->xlog)
         fig_axis_log(x, lo, hi, 0.0, nx);
+    else if (p->xexact && hi > lo)
+        fig_axis_fixed(x, lo, hi, axis_step(lo, hi, nx));
     else
         fig_axis_linear(x, lo, hi, 0.0, nx, p->xwhole);
     if (p->ystep > 0.0) {
@@ -258,6 +277,36 @@ static double ylabel_width(cairo_t *cr, const struct fig_panel *p, double w, dou
     return most;
 }
 
+/* Mark m across the panel (x its axis, top and bottom the panel's): a dashed line, its
+ * text beside it on a white ground, right of the line or, past the middle, left of it. */
+static void mark(cairo_t *cr, const struct fig_mark *m, const struct fig_axis *x, double top,
+                 double bottom)
+{
+    static const double dash[] = {2.0, 2.0};
+    if (!fig_axis_ok(x, m->x))
+        return;
+    double at = fig_axis_map(x, m->x), widest = 0.0;
+    set_color(cr, FIG_WALL);
+    cairo_set_line_width(cr, 0.8);
+    cairo_set_dash(cr, dash, 2, 0.0);
+    cairo_move_to(cr, at, top);
+    cairo_line_to(cr, at, bottom);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0.0);
+    font(cr, TICK_PT, false);
+    for (int i = 0; i < m->nlines; i++)
+        widest = fmax(widest, text_width(cr, m->line[i]));
+    bool left = at > 0.5 * (x->a + x->b);
+    double tx = left ? at - 3.0 - widest : at + 3.0, ty = top + 2.0;
+    cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.85);
+    cairo_rectangle(cr, tx - 1.0, ty, widest + 2.0, m->nlines * LINE * TICK_PT + 2.0);
+    cairo_fill(cr);
+    for (int i = 0; i < m->nlines; i++) {
+        set_color(cr, m->color[i]);
+        text_at(cr, tx, ty + (i + 1) * LINE * TICK_PT - 1.0, m->line[i], 0.0);
+    }
+}
+
 /* Panel p in the box (left, top, width, height) of its plot area; margin: the room left of
  * it for the y label and tick labels. */
 static void panel(cairo_t *cr, const struct fig_panel *p, double left, double top, double w,
@@ -276,6 +325,8 @@ static void panel(cairo_t *cr, const struct fig_panel *p, double left, double to
     for (int s = 0; s < p->nseries; s++)
         series(cr, &p->series[s], &x, &y);
     cairo_restore(cr);
+    for (int k = 0; k < p->nmarks; k++)
+        mark(cr, &p->marks[k], &x, top, top + h);
     set_color(cr, FIG_WALL);
     cairo_set_line_width(cr, 0.7);
     cairo_rectangle(cr, left, top, w, h);
@@ -374,6 +425,7 @@ static void draw_page(cairo_t *cr, const struct fig_page *pg)
     for (int i = 0; i < np; i++) {
         const struct fig_panel *p = &pg->panels[i];
         under[i] = GAP_X + (i + 1 < np ? GAP_PANEL : 0.0);
+        under[i] += p->title ? LINE * LABEL_PT : 0.0;
         if (p->nlegend)
             under[i] += legend(cr, p->legend, p->nlegend, EDGE, right, 0.0, false);
         room -= under[i];
@@ -384,11 +436,17 @@ static void draw_page(cairo_t *cr, const struct fig_page *pg)
     margin += LABEL_PT * LINE + 8.0;
     for (int i = 0; i < np; i++) {
         const struct fig_panel *p = &pg->panels[i];
+        if (p->title) {
+            font(cr, LABEL_PT, true);
+            set_color(cr, FIG_WALL);
+            text_at(cr, EDGE + margin, top + LABEL_PT, p->title, 0.0);
+            top += LINE * LABEL_PT;
+        }
         panel(cr, p, EDGE + margin, top, right - EDGE - margin, ph, margin);
         if (p->nlegend)
             legend(cr, p->legend, p->nlegend, EDGE + margin, right, top + ph + GAP_X + LABEL_PT,
                    true);
-        top += ph + under[i];
+        top += ph + under[i] - (p->title ? LINE * LABEL_PT : 0.0); /* its title is above */
     }
 }
 

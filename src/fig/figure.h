@@ -26,7 +26,6 @@ enum fig_color {
 /* File formats, chosen by a file name's extension. */
 enum fig_format { FIG_FORMAT_NONE = -1, FIG_PNG, FIG_SVG, FIG_PDF };
 
-#define FIG_PNG_SCALE 2.0            /* pixels a point in X's picture of the screen */
 #define FIG_PAGE_SCALE (300.0 / 72.0) /* pixels a point in a report figure's PNG: 300 dpi */
 #define FIG_MM (72.0 / 25.4)          /* points a millimetre */
 
@@ -37,8 +36,18 @@ enum fig_format fig_format_of(const char *path);
  * the balance's error), as the energy view draws them. */
 int fig_energy_color(int i);
 
-/* The red, green and blue (0..1) of colour c on a dark or a light background. */
+/* The red, green and blue (0..1) of colour c on a dark or a light background: a report
+ * figure's, and an image's where the terminal did not say its own. The motor is the
+ * text's colour (as the terminal shows it: its foreground), black on paper. */
 void fig_rgb(int c, bool dark, double rgb[3]);
+
+/* The colours an image is drawn in: each fig_color's red, green and blue (0..1). */
+struct fig_palette {
+    double rgb[FIG_COLOR_COUNT][3];
+};
+
+/* fig_rgb's colours into p. */
+void fig_palette_default(struct fig_palette *p, bool dark);
 
 /* One line of a panel: count points (x[k * stride], y[k * stride]); a point that is not
  * finite (or not positive on a log axis) breaks the line. */
@@ -50,17 +59,32 @@ struct fig_series {
     bool dashed;       /* dashed (the motor, a ghost) */
     bool markers;      /* a small circle at every point, part of the same stroke */
     bool no_line;      /* markers only (points measured), no line between them */
+    bool vline;        /* a line across the whole panel at the first point's x (a
+                        * frequency marked), not part of the data's range */
     double max_jump;   /* > 0: a step in y larger than this breaks the line (a phase that
                         * wraps at +-180, or turns faster than the points can follow) */
 };
 
 struct fig_legend;
 
+#define FIG_MARK_LINES 12
+
+/* A vertical line across a panel at x (a time cursor), dashed, with lines of text beside
+ * it, each in its colour (the values read there). */
+struct fig_mark {
+    double x;
+    int nlines;
+    const char *line[FIG_MARK_LINES];
+    int color[FIG_MARK_LINES];
+};
+
 /* One panel: axes, labels and lines, and a legend of its own under it (or none). */
 struct fig_panel {
+    const char *title;                /* over the panel, or NULL */
     const char *xlabel, *ylabel;      /* with their units, e.g. "t (s)" */
     bool xlog, ylog;                  /* logarithmic axes */
     bool xfixed;                      /* x from xlo to xhi as given (rounded out to ticks) */
+    bool xexact;                      /* x from xlo to xhi exactly, ticks inside */
     bool xwhole;                      /* x ticks on whole numbers only (masses) */
     double xlo, xhi;
     double ystep;                     /* > 0: y from ylo to yhi, ticks ystep apart */
@@ -69,6 +93,8 @@ struct fig_panel {
     int nseries;
     const struct fig_legend *legend;  /* entries for this panel alone, or NULL */
     int nlegend;
+    const struct fig_mark *marks;     /* cursors, or NULL */
+    int nmarks;
 };
 
 /* One legend entry. */

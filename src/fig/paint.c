@@ -7,7 +7,8 @@
 
 #include "figure.h"
 
-void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double ch, bool dark)
+void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double ch,
+                       const struct fig_palette *pal)
 {
     static const double dash[] = {6.0, 4.0};
     double sx = cw / 2.0, sy = ch / 4.0, lw = fmax(1.0, ch / 12.0);
@@ -17,10 +18,9 @@ void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double c
     for (int i = 0; i < k->ns; i++) {
         const struct stroke *s = &k->s[i];
         const double *p = k->xy + 2 * (size_t)s->start;
-        double c[3];
         if (s->count == 0)
             continue;
-        fig_rgb(s->color ? s->color : FIG_WALL, dark, c);
+        const double *c = pal->rgb[s->color && s->color < FIG_COLOR_COUNT ? s->color : FIG_WALL];
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);
         cairo_new_path(cr);
         if (s->kind == STROKE_DOTS || s->kind == STROKE_MARKS) {

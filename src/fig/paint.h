@@ -9,9 +9,11 @@
 #include <cairo.h>
 
 #include "../chart/strokes.h"
+#include "figure.h"
 
 /* Paints k with the drawing area's top left at the origin, a cell cw x ch units (dots
- * are half a cell across and a quarter down), on a dark or a light background. */
-void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double ch, bool dark);
+ * are half a cell across and a quarter down), in the colours of pal. */
+void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double ch,
+                       const struct fig_palette *pal);
 
 #endif

@@ -77,12 +77,45 @@ static cairo_status_t png_write(void *closure, const unsigned char *data, unsign
     return b->failed ? CAIRO_STATUS_NO_MEMORY : CAIRO_STATUS_SUCCESS;
 }
 
-/* Gridlines (dotted) on the ticks, the y = 0 one solid, then the strokes. */
-static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch, bool dark,
-                  const double bg[3])
+/* The legend inside the image, in its last row of cells from the left (on the background,
+ * over the curves): each entry a bar in its colour a cell and a half long, then its text
+ * (without the mark the border's has: "━1" is a bar and "1"), so that the marks and the
+ * curves are matched within the image whatever colours the terminal shows the text in. */
+static void legend_marks(cairo_t *cr, const struct fig_chart *c, int cw, int ch,
+                         const struct fig_palette *pal, const double bg[3])
 {
-    double grid[3];
-    fig_rgb(FIG_GRID, dark, grid);
+    double x = 0.5 * cw, top = (c->ah - 1) * ch, mid = top + 0.5 * ch;
+    double bar = fmax(2.0, floor(ch / 4.0));
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, 0.6 * ch);
+    for (int i = 0; i < c->nlegend && x < c->aw * cw; i++) {
+        int col = c->legend_color[i];
+        if (col <= 0 || col >= FIG_COLOR_COUNT)
+            continue;
+        const char *text = c->legend[i];
+        while (*text && ((unsigned char)*text >= 0x80 || *text == ' '))
+            text++; /* the mark: ━, ┅, ┄, · */
+        cairo_text_extents_t e;
+        cairo_text_extents(cr, text, &e);
+        double w = 1.5 * cw + 0.2 * cw + e.x_advance + 0.5 * cw;
+        cairo_set_source_rgb(cr, bg[0], bg[1], bg[2]);
+        cairo_rectangle(cr, x - 0.25 * cw, top, w, ch);
+        cairo_fill(cr);
+        const double *v = pal->rgb[col];
+        cairo_set_source_rgb(cr, v[0], v[1], v[2]);
+        cairo_rectangle(cr, x, floor(mid - 0.5 * bar), 1.5 * cw, bar);
+        cairo_fill(cr);
+        cairo_move_to(cr, x + 1.7 * cw, mid + 0.35 * 0.6 * ch);
+        cairo_show_text(cr, text);
+        x += w;
+    }
+}
+
+/* Gridlines (dotted) on the ticks, the y = 0 one solid, then the strokes. */
+static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch,
+                  const struct fig_palette *pal, const double bg[3])
+{
+    const double *grid = pal->rgb[FIG_GRID];
     cairo_set_source_rgb(cr, bg[0], bg[1], bg[2]);
     cairo_paint(cr);
     cairo_set_source_rgb(cr, grid[0], grid[1], grid[2]);
@@ -104,7 +137,7 @@ static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch, bool d
     cairo_stroke(cr);
     cairo_set_dash(cr, NULL, 0, 0.0);
     if (c->strokes)
-        fig_paint_strokes(cr, c->strokes, cw, ch, dark);
+        fig_paint_strokes(cr, c->strokes, cw, ch, pal);
 }
 
 static int encode_sixel(unsigned char *rgb, int w, int h, int registers, struct fig_bytes *out)
@@ -138,9 +171,9 @@ static int encode_sixel(unsigned char *rgb, int w, int h, int registers, struct 
     return SIXEL_SUCCEEDED(st) && !out->failed ? 0 : ENOMEM;
 }
 
-int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
-               enum fig_encoding e, int registers, struct fig_bytes *out,
-               struct fig_bytes *scratch)
+int fig_pixels(const struct fig_chart *c, int cw, int ch, const struct fig_palette *pal,
+               const double bg[3], bool marks, enum fig_encoding e, int registers,
+               struct fig_bytes *out, struct fig_bytes *scratch)
 {
     int w = c->aw * cw, h = c->ah * ch;
     out->len = 0;
@@ -155,7 +188,9 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const doubl
     bool few = e == FIG_SIXEL && registers >= 2 && registers < 256;
     if (few)
         cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-    paint(cr, c, cw, ch, dark, bg);
+    paint(cr, c, cw, ch, pal, bg);
+    if (marks)
+        legend_marks(cr, c, cw, ch, pal, bg);
     cairo_status_t cs = cairo_status(cr);
     cairo_destroy(cr);
     cairo_surface_flush(s);

@@ -20,16 +20,19 @@ struct fig_bytes {
 
 enum fig_encoding { FIG_SIXEL, FIG_KITTY_PNG };
 
-/* The image of c's drawing area (aw * cw by ah * ch pixels) on a dark or light background
- * bg (red, green, blue, 0..1), encoded e into out (emptied first): a whole sixel sequence
- * (DCS ... ST), or the PNG file; scratch holds the pixels on their way (kept for the next
- * image). Sixel on xterm's 256 colours, or, for a terminal with 2 to 255 colour registers,
- * drawn without anti-aliasing on a palette of that many that libsixel chooses for the
- * image. Returns 0 or an errno
- * value. */
-int fig_pixels(const struct fig_chart *c, int cw, int ch, bool dark, const double bg[3],
-               enum fig_encoding e, int registers, struct fig_bytes *out,
-               struct fig_bytes *scratch);
+/* The image of c's drawing area (aw * cw by ah * ch pixels) on the background bg (red,
+ * green, blue, 0..1) in the colours of pal (the ones the terminal shows the text in, so a
+ * legend's mark and its curve are one colour), encoded e into out (emptied first): a
+ * whole sixel sequence (DCS ... ST), or the PNG file; scratch holds the pixels on their
+ * way (kept for the next image). With marks (the terminal's colours not known), the
+ * legend is drawn in the image too, its last row of cells: each entry's mark (a bar) and
+ * text in its colour, so marks and curves are matched within it. Sixel
+ * on xterm's 256 colours, or, for a terminal with 2 to 255 colour registers, drawn
+ * without anti-aliasing on a palette of that many that libsixel chooses for the image.
+ * Returns 0 or an errno value. */
+int fig_pixels(const struct fig_chart *c, int cw, int ch, const struct fig_palette *pal,
+               const double bg[3], bool marks, enum fig_encoding e, int registers,
+               struct fig_bytes *out, struct fig_bytes *scratch);
 
 /* What a terminal says of its cells is not trusted: a cell is drawn with at most
  * FIG_PIXELS_CELL_W x FIG_PIXELS_CELL_H pixels and an image has at most FIG_PIXELS_SIDE

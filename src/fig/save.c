@@ -1,57 +1,60 @@
-/* save.c: the picture of the view written twice, SVG and PNG, each whole (core/output.c),
- * then named as a pair exclusively: a name that replaces nothing, between instances too. */
+/* save.c: X's figure written in each format asked for, each file whole (core/output.c),
+ * then named exclusively: a name that replaces nothing, between instances too. */
 #include "save.h"
 
 #include <errno.h>
+#include <libgen.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
 
 #include "core/output.h"
 #include "report.h"
+#include "view_report.h"
 
-/* Draws the picture in format f into o, opened on a temporary file in dir; 0 or an errno
+static const char *const ext[3] = {[FIG_PNG] = ".png", [FIG_SVG] = ".svg", [FIG_PDF] = ".pdf"};
+
+/* Draws the figure in format f into o, opened on a temporary file in dir; 0 or an errno
  * value. */
 static int draw_one(struct app *app, const struct fig_chart *c, int n, struct output *o,
                     const char *dir, enum fig_format f)
 {
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s/springsim-figure%s", dir, f == FIG_SVG ? ".svg" : ".png");
+    char tmp[4200], settings[400];
+    snprintf(tmp, sizeof tmp, "%s/springsim-figure%s", dir, ext[f]);
     int e = output_open(o, tmp);
     if (e)
         return e;
-    if (n > 0) {
-        e = fig_view_write(o->fp, f, c, n);
-    } else {
-        struct config cfg = app->cfg;
-        char settings[400];
-        cfg.dt = sim_dt(app->sim);
-        cfg.integrator = sim_integrator(app->sim);
-        report_settings(&cfg, app->model, settings, sizeof settings);
-        struct report_look look = {NULL, settings, 0.0, 0.0};
-        e = app->modes_ok ? report_modes(o->fp, f, app->model, app->modes, app->shapes, &look)
-                          : EDOM;
-    }
-    return e;
+    struct config cfg = app->cfg;
+    cfg.dt = sim_dt(app->sim);
+    cfg.integrator = sim_integrator(app->sim);
+    report_settings(&cfg, app->model, settings, sizeof settings);
+    struct report_look look = {NULL, settings, 0.0, 0.0};
+    if (n > 0)
+        return fig_view_report(o->fp, f, c, n, &look);
+    return app->modes_ok ? report_modes(o->fp, f, app->model, app->modes, app->shapes, &look)
+                         : EDOM;
 }
 
-/* Gives the two complete files the first pair of names base.svg, base.png (then base-2,
- * base-3, ...) that no file has, each linked exclusively: the SVG's name claims the pair,
- * so of programs saving at the same moment each gets its own. base is rewritten to the
- * name taken. 0 or an errno value. */
-static int name_pair(struct output o[2], char *base, size_t len)
+/* Gives the nf complete files the first names base + their extension (then base-2,
+ * base-3, ...) that no file has, each linked exclusively: the first's name claims the
+ * set, so of programs saving at the same moment each gets its own. base is rewritten to
+ * the name taken. 0 or an errno value. */
+static int name_files(struct output *o, const enum fig_format *fmt, int nf, char *base,
+                      size_t len)
 {
-    char first[4000], svg[4200], png[4200];
+    char first[4000], path[4200];
     snprintf(first, sizeof first, "%.3990s", base);
     for (int k = 2; k < 10000; k++) {
-        snprintf(svg, sizeof svg, "%s.svg", base);
-        snprintf(png, sizeof png, "%s.png", base);
-        int e = output_link_new(&o[0], svg);
-        if (e == 0) {
-            e = output_link_new(&o[1], png);
-            if (e == 0)
-                return 0;
-            remove(svg);
+        int e = 0, done = 0;
+        for (; done < nf && e == 0; done++) {
+            snprintf(path, sizeof path, "%s%s", base, ext[fmt[done]]);
+            e = output_link_new(&o[done], path);
+        }
+        if (e == 0)
+            return 0;
+        for (int i = 0; i < done - 1; i++) { /* those linked before the one that failed */
+            snprintf(path, sizeof path, "%s%s", base, ext[fmt[i]]);
+            remove(path);
         }
         if (e != EEXIST)
             return e;
@@ -60,30 +63,46 @@ static int name_pair(struct output o[2], char *base, size_t len)
     return EEXIST;
 }
 
-unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const char *dir)
+unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const char *name)
 {
-    time_t now = time(NULL);
-    struct tm tm;
-    char stamp[32], base[4096];
-    localtime_r(&now, &tm);
-    strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-    if (!dir)
-        dir = ".";
-    snprintf(base, sizeof base, "%s/springsim-%s", dir, stamp);
+    char base[4096], dir[4096], path[4096];
+    enum fig_format fmt[2] = {FIG_SVG, FIG_PNG};
+    int nf = 2;
+    if (name && name[0]) {
+        /* A name with an extension of a figure's: that file alone; else the pair. */
+        enum fig_format one = fig_format_of(name);
+        size_t keep = strlen(name);
+        if (one != FIG_FORMAT_NONE)
+            fmt[0] = one, nf = 1, keep -= 4;
+        snprintf(base, sizeof base, "%s%.*s", strchr(name, '/') ? "" : "./", (int)keep, name);
+    } else {
+        time_t now = time(NULL);
+        struct tm tm;
+        char stamp[32];
+        localtime_r(&now, &tm);
+        strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+        snprintf(base, sizeof base, "./springsim-%s", stamp);
+    }
+    snprintf(path, sizeof path, "%s", base);
+    snprintf(dir, sizeof dir, "%s", dirname(path)); /* dirname may write into path */
     struct output o[2] = {{0}, {0}};
-    int e = draw_one(app, c, n, &o[0], dir, FIG_SVG);
+    int e = 0;
+    for (int i = 0; i < nf && e == 0; i++)
+        e = draw_one(app, c, n, &o[i], dir, fmt[i]);
     if (e == 0)
-        e = draw_one(app, c, n, &o[1], dir, FIG_PNG);
-    if (e == 0)
-        e = name_pair(o, base, sizeof base);
-    for (int i = 0; i < 2; i++) {
+        e = name_files(o, fmt, nf, base, sizeof base);
+    for (int i = 0; i < nf; i++) {
         int closed = output_close(&o[i], false); /* the temporary names go */
         e = e ? e : closed;
     }
     fig_done();
-    if (e == EDOM)
+    if (e == EDOM && n == 0)
         return app_say(app, SAID_ERROR, "figure: the modes cannot be computed for this chain");
+    if (e == EDOM)
+        return app_say(app, SAID_ERROR, "figure: this view has no figure to write");
     if (e)
         return app_say(app, SAID_ERROR, "figure: %s: %s", base, strerror(e));
-    return app_say(app, SAID_NOTE, "saved the view as %s.svg and .png", base);
+    if (nf == 1)
+        return app_say(app, SAID_NOTE, "saved the figure as %s%s", base, ext[fmt[0]]);
+    return app_say(app, SAID_NOTE, "saved the figure as %s.svg and .png", base);
 }

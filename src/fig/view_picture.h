@@ -1,25 +1,48 @@
-/* view_picture.h: a picture of the charts on the screen, as the terminal lays them out (frames,
- * titles, tick labels, gridlines and legends in their cells) with their drawing areas
- * painted sharp from their strokes: what X in the program saves, as SVG and PNG. */
+/* view_picture.h: a chart of the screen as fig/ takes it: its frame, ticks and legend in
+ * cells, the strokes its drawing area was drawn with (painted sharp by pixels.c), and
+ * what a report figure of it needs (view_report.c): its words, the values its dots stand
+ * for, the names of its colours and its cursors. No curses here. */
 #ifndef SPRINGSIM_VIEW_PICTURE_H
 #define SPRINGSIM_VIEW_PICTURE_H
 
 #include <stdbool.h>
-#include <stdio.h>
 
+#include "../chart/axis.h"
 #include "../chart/strokes.h"
 #include "figure.h"
 
 #define FIG_VIEW_TICKS 16
 #define FIG_VIEW_LEGEND 12
-#define FIG_CELL_W 8.0  /* points a cell is wide in the picture */
-#define FIG_CELL_H 16.0 /* and high */
+#define FIG_CURSORS 2
 
 /* One axis's ticks: cells from the axis's start (x: the left, y: the bottom). */
 struct fig_ticks {
     int n;
     int cell[FIG_VIEW_TICKS];
     char label[FIG_VIEW_TICKS][12];
+};
+
+/* A time cursor for a report figure: where it is and what it reads there. */
+struct fig_cursor {
+    double x;                          /* on the x axis (s) */
+    int nlines;
+    char line[FIG_MARK_LINES][40];     /* "t = 17.25 s", "x1 = 0.0312 m", ... */
+    int color[FIG_MARK_LINES];
+};
+
+/* What a chart shows, in a report's words and values (empty words: no report of it). */
+struct fig_report {
+    char title[80];                    /* "Displacement": no key digit, no unit */
+    char xlabel[48], ylabel[48];       /* with their units: "time t (s)" */
+    char name[FIG_COLOR_COUNT][32];    /* what the curves of each colour are, or "" */
+    bool time;                         /* x is time: the axis starts no earlier than 0 */
+    bool xfreq;                        /* x dot d is the frequency fmin (fmax/fmin)^(d/(W-1))
+                                        * (W the dots across), not the x axis's value */
+    double fmin, fmax;
+    bool ylog;                         /* the y axis's values are log10 of what is shown */
+    double ylo, yhi, ystep;            /* ystep > 0: y from ylo to yhi, ticks ystep apart */
+    int ncursors;
+    struct fig_cursor cursor[FIG_CURSORS];
 };
 
 /* One chart as the terminal shows it. */
@@ -34,10 +57,8 @@ struct fig_chart {
     char legend[FIG_VIEW_LEGEND][24];
     int legend_color[FIG_VIEW_LEGEND];
     const struct strokes *strokes; /* the drawing area's, or NULL */
+    struct axis xa, ya;      /* the axes the strokes' dots were laid on */
+    const struct fig_report *report; /* what a report figure says of it, or NULL */
 };
-
-/* Writes the n charts as one picture (the box around them) to fp in format f (PNG: 2
- * pixels a point). Returns 0 or an errno value. */
-int fig_view_write(FILE *fp, enum fig_format f, const struct fig_chart *c, int n);
 
 #endif

@@ -292,6 +292,15 @@ static void picture_ticks(const struct chart_ticks *t, struct fig_ticks *out)
     }
 }
 
+void chart_report(struct chart *c, const char *title, const char *xlabel, const char *ylabel)
+{
+    struct fig_report *r = &c->report;
+    memset(r, 0, sizeof *r);
+    snprintf(r->title, sizeof r->title, "%s", title);
+    snprintf(r->xlabel, sizeof r->xlabel, "%s", xlabel);
+    snprintf(r->ylabel, sizeof r->ylabel, "%s", ylabel);
+}
+
 void chart_picture(const struct chart *c, struct fig_chart *out)
 {
     memset(out, 0, sizeof *out);
@@ -304,6 +313,8 @@ void chart_picture(const struct chart *c, struct fig_chart *out)
         picture_ticks(&c->xt, &out->xt);
         picture_ticks(&c->yt, &out->yt);
         out->strokes = c->canvas->strokes;
+        out->xa = c->xa, out->ya = c->ya;
+        out->report = c->report.title[0] ? &c->report : NULL;
     }
     out->nlegend = c->nlegend < FIG_VIEW_LEGEND ? c->nlegend : FIG_VIEW_LEGEND;
     for (int i = 0; i < out->nlegend; i++) {

@@ -36,13 +36,14 @@ struct chart {
     struct axis xa, ya;        /* the axes as last fitted */
     struct chart_ticks xt, yt; /* what the axes show */
     bool zero_line;            /* the y = 0 gridline drawn solid */
-    /* What chart_draw drew last, for a picture of the view (X) and pixel output. */
+    /* What chart_draw drew last, for X's figure of the view and pixel output. */
     char title[160];           /* the title shown */
     char xunit[16];
     int nlegend;
     char legend[12][24];
     int legend_pair[12];
     bool drawn;                /* drawn with its axes */
+    struct fig_report report;  /* what X's report figure says of it (chart_report) */
 };
 
 /* Places the chart in frame, header rows of text between the frame's top and the drawing
@@ -94,7 +95,11 @@ double chart_dot_yf(const struct chart *c, double v);
 void chart_draw(struct chart *c, const char *title, const char *short_title,
                 const char *xunit, const struct legend_item *legend, int nlegend);
 
-/* The chart as last drawn, for a picture of the view: frame, area, ticks, title, legend
+/* What a report figure of the chart says (X): title, axis titles with units; the names
+ * of its colours and its cursors emptied, for the view to give. */
+void chart_report(struct chart *c, const char *title, const char *xlabel, const char *ylabel);
+
+/* The chart as last drawn, for X's figure and the images: frame, area, ticks, title, legend
  * and the drawing's strokes. */
 void chart_picture(const struct chart *c, struct fig_chart *out);
 

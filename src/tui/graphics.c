@@ -18,6 +18,8 @@
 
 #include <curses.h>
 
+#include "term.h"
+
 #define KITTY_CHUNK 4096 /* base64 bytes a kitty escape carries, at most */
 #define KITTY_ID 1811    /* our images' numbers: KITTY_ID + slot */
 
@@ -25,6 +27,8 @@ static const char queries[] = "\033_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\033\\" /* ki
                               "\033[16t"                                   /* cell size */
                               "\033[14t"                                   /* text area */
                               "\033]11;?\033\\"                            /* background */
+                              "\033]10;?\033\\"                            /* foreground */
+                              "%s"                      /* OSC 4: the palette's colours used */
                               "\033[?1;1;0S"      /* XTSMGRAPHICS: sixel's colour registers */
                               "\033[c";                                    /* DA1 */
 
@@ -48,6 +52,10 @@ struct answers {
     bool bg;
     double rgb[3];
     int registers;       /* XTSMGRAPHICS: sixel's colour registers (0: not said) */
+    bool fg_known;       /* OSC 10: the foreground */
+    double fg[3];
+    bool pal_known[256]; /* OSC 4: palette entries */
+    double pal[256][3];
 };
 
 /* The numbers of a CSI answer "ESC [ ? a ; b ; ... F" at p (F its final byte). */
@@ -106,6 +114,20 @@ static void parse(const char *buf, struct answers *a)
             for (int i = 0; i < 3; i++)
                 a->rgb[i] = hex_part(&q);
             a->bg = true;
+        } else if (p[1] == ']' && strncmp(p + 2, "10;rgb:", 7) == 0) {
+            const char *q = p + 9;
+            for (int i = 0; i < 3; i++)
+                a->fg[i] = hex_part(&q);
+            a->fg_known = true;
+        } else if (p[1] == ']' && p[2] == '4' && p[3] == ';') {
+            char *q;
+            long idx = strtol(p + 4, &q, 10);
+            if (q > p + 4 && idx >= 0 && idx < 256 && strncmp(q, ";rgb:", 5) == 0) {
+                const char *h = q + 5;
+                for (int i = 0; i < 3; i++)
+                    a->pal[idx][i] = hex_part(&h);
+                a->pal_known[idx] = true;
+            }
         }
     }
 }
@@ -123,7 +145,15 @@ static void ask(struct graphics *g, struct answers *a)
     raw.c_cc[VMIN] = 0;
     raw.c_cc[VTIME] = 0;
     tcsetattr(STDIN_FILENO, TCSANOW, &raw);
-    if (write(STDOUT_FILENO, queries, sizeof queries - 1) == (ssize_t)(sizeof queries - 1)) {
+    /* The palette entries any pair may use, one OSC 4 asking for them all. */
+    int idx[32], n = term_color_candidates(idx, 32);
+    char pal[400] = "\033]4", out[sizeof queries + sizeof pal];
+    size_t at = strlen(pal);
+    for (int i = 0; i < n && at + 8 < sizeof pal; i++)
+        at += (size_t)snprintf(pal + at, sizeof pal - at, ";%d;?", idx[i]);
+    snprintf(pal + at, sizeof pal - at, "\033\\");
+    int len = snprintf(out, sizeof out, queries, pal);
+    if (len > 0 && write(STDOUT_FILENO, out, (size_t)len) == (ssize_t)len) {
         double end = now_ms() + GRAPHICS_TIMEOUT_MS;
         while (!a->da1) {
             unsigned char buf[512];
@@ -171,6 +201,10 @@ static void query(struct graphics *g)
         g->dark = 0.2126 * a.rgb[0] + 0.7152 * a.rgb[1] + 0.0722 * a.rgb[2] < 0.5;
     }
     g->registers = a.registers;
+    g->fg_known = a.fg_known;
+    memcpy(g->fg, a.fg, sizeof g->fg);
+    memcpy(g->pal_known, a.pal_known, sizeof g->pal_known);
+    memcpy(g->pal, a.pal, sizeof g->pal);
     /* However large the terminal says its cells are: images are scaled down to
      * fig_pixels_fit's caps. */
     g->sized = g->cw >= 2 && g->ch >= 4;
@@ -255,6 +289,51 @@ void graphics_invalidate(struct graphics *g)
     g->n = 0;
 }
 
+/* xterm's default colour idx (0..255): its 16, the 6x6x6 cube, the greys. */
+static void xterm_rgb(int idx, double rgb[3])
+{
+    static const unsigned char sixteen[16][3] = {
+        {0, 0, 0},       {205, 0, 0},   {0, 205, 0},   {205, 205, 0},
+        {0, 0, 238},     {205, 0, 205}, {0, 205, 205}, {229, 229, 229},
+        {127, 127, 127}, {255, 0, 0},   {0, 255, 0},   {255, 255, 0},
+        {92, 92, 255},   {255, 0, 255}, {0, 255, 255}, {255, 255, 255}};
+    static const unsigned char level[6] = {0, 95, 135, 175, 215, 255};
+    for (int i = 0; i < 3; i++) {
+        int c = idx < 16    ? sixteen[idx][i]
+                : idx < 232 ? level[(idx - 16) / (i == 0 ? 36 : i == 1 ? 6 : 1) % 6]
+                            : 8 + 10 * (idx - 232);
+        rgb[i] = c / 255.0;
+    }
+}
+
+/* The colours the terminal shows each pair's text in, for the images: the palette's
+ * entries and the foreground as it said them, else xterm's and black or white; *known
+ * tells whether it said every one used (the gridlines keep their faint grey). */
+static void pair_colors(const struct graphics *g, struct fig_palette *pal, bool *known)
+{
+    fig_palette_default(pal, g->dark);
+    *known = true;
+    for (int p = 1; p < PAIR_COUNT && p < FIG_COLOR_COUNT; p++) {
+        int idx = term_pair_color(p), rgb = term_pair_rgb(p);
+        if (p == PAIR_GRID || p == PAIR_SELECT) {
+            continue;
+        } else if (rgb >= 0) { /* direct colour: what it was given */
+            for (int i = 0; i < 3; i++)
+                pal->rgb[p][i] = (rgb >> (16 - 8 * i) & 255) / 255.0;
+        } else if (idx < 0 && g->fg_known) {
+            memcpy(pal->rgb[p], g->fg, sizeof g->fg);
+        } else if (idx < 0) {
+            fig_rgb(FIG_MOTOR, g->dark, pal->rgb[p]); /* white on dark, black on light */
+            *known = false;
+        } else if (g->pal_known[idx]) {
+            memcpy(pal->rgb[p], g->pal[idx], sizeof g->pal[idx]);
+        } else {
+            xterm_rgb(idx, pal->rgb[p]);
+            *known = false;
+        }
+    }
+}
+
 /* FNV-1a of more bytes. */
 static uint64_t mix(uint64_t h, const void *p, size_t n)
 {
@@ -270,6 +349,9 @@ static uint64_t chart_hash(const struct fig_chart *c)
     uint64_t h = c->strokes ? strokes_hash(c->strokes) : 0xcbf29ce484222325ULL;
     h = mix(h, &c->ax, 4 * sizeof c->ax);
     h = mix(h, &c->xt, sizeof c->xt);
+    h = mix(h, c->legend, sizeof c->legend); /* drawn in the image where the palette is not
+                                              * known */
+    h = mix(h, c->legend_color, sizeof c->legend_color);
     return mix(h, &c->yt, sizeof c->yt);
 }
 
@@ -342,6 +424,9 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         out_add(&g->out, "\033[?80l", 6);
     int sent = 0;
     double pixels = 0.0;
+    struct fig_palette pal;
+    bool known;
+    pair_colors(g, &pal, &known);
     for (int i = 0; i < n && i < GRAPHICS_SLOTS; i++) {
         struct fig_chart pic;
         chart_picture(charts[i], &pic);
@@ -354,7 +439,8 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
         int cw = g->cw, ch = g->ch;
         fig_pixels_fit(pic.aw, pic.ah, &cw, &ch);
-        if (fig_pixels(&pic, cw, ch, g->dark, g->bg, e, g->registers, &g->img, &g->rgb) != 0)
+        if (fig_pixels(&pic, cw, ch, &pal, g->bg, !known, e, g->registers, &g->img, &g->rgb) !=
+            0)
             continue;
         char pos[32];
         int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);

@@ -1,7 +1,10 @@
 /* graphics.h: the charts' drawing areas as images in terminals that show them: the
  * terminal asked once at start (before curses) what it can do (primary device attributes:
  * 4 is sixel; kitty's graphics query), its cell size in pixels (TIOCGWINSZ, CSI 16 t, CSI
- * 14 t), its background (OSC 11) and sixel's colour registers (XTSMGRAPHICS); each chart's image sent at its drawing area's cell
+ * 14 t), its background and foreground (OSC 11, 10), the palette entries the colour
+ * pairs use (OSC 4: the images are drawn in the colours the text is shown in, or carry
+ * the legend's marks where it does not say) and sixel's colour registers (XTSMGRAPHICS);
+ * each chart's image sent at its drawing area's cell
  * only when its content changed, never over an overlay, again after a resize, Ctrl+L or
  * an overlay closing. Braille otherwise: inside tmux or screen, with low bandwidth, in a
  * terminal that does not answer. */
@@ -42,6 +45,10 @@ struct graphics {
                                 * 0: not said) */
     bool dark;                 /* the background is dark */
     double bg[3];              /* the background (0..1) */
+    bool fg_known;             /* the terminal said its foreground (OSC 10) */
+    double fg[3];              /* and it is this */
+    bool pal_known[256];       /* the palette entries it said (OSC 4) */
+    double pal[256][3];        /* and their colours */
     bool overlay;              /* an overlay was open at the last frame */
     int n;                     /* images on the screen */
     struct rect at[GRAPHICS_SLOTS];  /* where */

@@ -35,7 +35,7 @@ const struct binding input_bindings[] = {
     {'w', ACT_SWEEP, "w", "w", "start / stop a sine-sweep experiment (see it in f)", false},
     {'s', ACT_SAVE, "s", "s", "save the set-up as a preset", false},
     {'x', ACT_EXPORT, "x", "x", "export the samples as CSV (f view: the sweep's points)", false},
-    {'X', ACT_FIGURE, "X", "X", "save the view (plots or analysis view) as SVG and PNG", false},
+    {'X', ACT_FIGURE, "X", "X", "report figure of the view (asks its name): SVG, PNG", false},
     {'|', ACT_CURSOR, "|", "|", "time cursor, readout; again: a second cursor; again: none", false},
     {KEY_UP, ACT_UP, "↑", "Up", "select the control above (chain: element to the left)", false},
     {'k', ACT_UP, "k", "k", NULL, false},

@@ -2,6 +2,7 @@
 #include "keys.h"
 
 #include <math.h>
+#include <time.h>
 
 #include <curses.h>
 
@@ -73,8 +74,20 @@ static unsigned cursor_action(struct tui *t, enum action a)
     return changed;
 }
 
-/* X: the charts on the screen (the plots, or the analysis view's) as SVG and PNG. */
-static void save_view(struct tui *t)
+/* X: asks for the figure's file name, the default one springsim-YYYYmmdd-HHMMSS. */
+static void ask_figure(struct tui *t)
+{
+    time_t now = time(NULL);
+    struct tm tm;
+    char name[40];
+    localtime_r(&now, &tm);
+    strftime(name, sizeof name, "springsim-%Y%m%d-%H%M%S", &tm);
+    overlay_figure(&t->overlay, name);
+}
+
+/* The charts on the screen (the plots, or the analysis view's) as a report figure in
+ * file name (SVG and PNG, or the one format its extension names). */
+static void save_view(struct tui *t, const char *name)
 {
     struct chart *charts[GRAPHICS_SLOTS];
     struct fig_chart pics[GRAPHICS_SLOTS];
@@ -84,7 +97,7 @@ static void save_view(struct tui *t)
     if (t->layout.too_small)
         app_say(&t->app, SAID_ERROR, "figure: the terminal is too small to show the view");
     else
-        fig_save_view(&t->app, pics, n, NULL);
+        fig_save_view(&t->app, pics, n, name);
 }
 
 /* What a lesson's `view` asked for, shown (the plots' grid, one enlarged, a view). */
@@ -249,7 +262,7 @@ static void scr_save(struct tui *t, enum action a, int ch, unsigned *changed)
 static void scr_figure(struct tui *t, enum action a, int ch, unsigned *changed)
 {
     (void)a, (void)ch, (void)changed;
-    save_view(t);
+    ask_figure(t);
 }
 
 static void scr_enlarge(struct tui *t, enum action a, int ch, unsigned *changed)
@@ -407,6 +420,10 @@ static bool handle_key(struct tui *t, int ch)
         if (changed & APP_CHANGED_SIZE)
             select_clamp(&t->sel, t->app.model);
         t->plots_dirty = true;
+        if (t->overlay.figure[0]) {
+            save_view(t, t->overlay.figure);
+            t->overlay.figure[0] = '\0';
+        }
         if (t->overlay.chosen[0]) {
             teach_open(&t->teach, t->overlay.chosen, &t->app);
             t->overlay.chosen[0] = '\0';

@@ -275,6 +275,9 @@ static void edit_prompt(const struct overlay *o, const struct app *app,
     case EDIT_SAVE:
         snprintf(buf, len, "save preset as:");
         break;
+    case EDIT_FIGURE:
+        snprintf(buf, len, "figure name [%.40s]:", o->save_name);
+        break;
     }
 }
 
@@ -299,7 +302,9 @@ void overlay_draw(const struct overlay *o, const struct app *app, const struct l
         attron(A_BOLD);
         int x = 1 + draw_printf(y, 1, l->cols - 1, "%s %s", prompt, o->edit);
         attroff(A_BOLD);
-        draw_text(y, x, l->cols - x, "_   (Enter sets it, Esc cancels)");
+        const char *how = o->target == EDIT_FIGURE ? "_   (Enter saves, Esc cancels)"
+                                                   : "_   (Enter sets it, Esc cancels)";
+        draw_text(y, x, l->cols - x, how);
         break;
     }
     case OVERLAY_CONFIRM:
@@ -347,6 +352,12 @@ void overlay_edit(struct overlay *o, enum edit_target target)
     o->edit_len = 0;
 }
 
+void overlay_figure(struct overlay *o, const char *def)
+{
+    overlay_edit(o, EDIT_FIGURE);
+    snprintf(o->save_name, sizeof o->save_name, "%s", def);
+}
+
 void overlay_free(struct overlay *o)
 {
     free(o->presets);
@@ -389,6 +400,9 @@ static unsigned finish_edit(struct overlay *o, struct app *app, const struct sel
             o->kind = OVERLAY_CONFIRM;
         }
         return APP_CHANGED_MESSAGE;
+    case EDIT_FIGURE:
+        snprintf(o->figure, sizeof o->figure, "%s", o->edit_len ? o->edit : o->save_name);
+        return 0;
     }
     return 0;
 }

@@ -22,7 +22,7 @@ enum overlay_kind {
 };
 
 /* What the text being typed is for. */
-enum edit_target { EDIT_CONTROL, EDIT_MASS, EDIT_DAMPING, EDIT_SPRING, EDIT_SAVE };
+enum edit_target { EDIT_CONTROL, EDIT_MASS, EDIT_DAMPING, EDIT_SPRING, EDIT_SAVE, EDIT_FIGURE };
 
 struct overlay {
     enum overlay_kind kind;
@@ -35,7 +35,8 @@ struct overlay {
     enum edit_target target;
     char edit[256];                /* text being typed */
     int edit_len;
-    char save_name[256];           /* name waiting for the replace confirmation */
+    char save_name[256];           /* name waiting for the replace confirmation; X's default */
+    char figure[300];              /* X's file name typed (Enter), for the caller to write; "" */
 };
 
 /* Opens the help. */
@@ -49,6 +50,9 @@ void overlay_lessons(struct overlay *o, const struct app *app);
 
 /* Starts typing a value for target. */
 void overlay_edit(struct overlay *o, enum edit_target target);
+
+/* Starts typing X's file name, Enter keeping def. */
+void overlay_figure(struct overlay *o, const char *def);
 
 /* Takes key ch while an overlay is up; returns what changed in the app. */
 unsigned overlay_key(struct overlay *o, struct app *app, const struct selection *sel,

@@ -258,6 +258,52 @@ static void cursor_points(const struct chart *c, enum plot_id id, const struct a
     }
 }
 
+/* What a report figure of plot id says (chart_report): its words, each mass's and the
+ * motor's name, and on a time plot the cursors with what each shown mass reads there. */
+static void report_words(struct chart *c, enum plot_id id, const struct app *app,
+                         unsigned hidden)
+{
+    static const char *const what[4] = {"Time", "Displacement", "Velocity", "Acceleration"};
+    static const char *const label[4] = {"time t (s)", "displacement x (m)", "velocity v (m/s)",
+                                         "acceleration a (m/s²)"};
+    static const char *const sym[4] = {"t", "x", "v", "a"};
+    static const char *const unit[4] = {"s", "m", "m/s", "m/s²"};
+    int xq = kinds[id].xq, yq = kinds[id].yq;
+    char title[80];
+    if (xq)
+        snprintf(title, sizeof title, "%s against %c%s", what[yq], what[xq][0] + 'a' - 'A',
+                 what[xq] + 1);
+    else
+        snprintf(title, sizeof title, "%s", what[yq]);
+    chart_report(c, title, label[xq], label[yq]);
+    struct fig_report *r = &c->report;
+    r->time = xq == 0;
+    for (int i = 0; i < app->model->n && i < 10; i++)
+        snprintf(r->name[FIG_MASS + i], sizeof r->name[0], "mass %d", i + 1);
+    snprintf(r->name[FIG_MOTOR], sizeof r->name[0], "motor u(t)");
+    if (xq || !app->scope.cursors)
+        return;
+    struct scope_view v;
+    scope_view(app, &v);
+    for (int k = 0; k < app->scope.cursors && k < FIG_CURSORS; k++) {
+        const double *rec = scope_record(app, &v, k);
+        if (!rec)
+            continue;
+        struct fig_cursor *cu = &r->cursor[r->ncursors++];
+        cu->x = rec[TRAIL_T];
+        snprintf(cu->line[0], sizeof cu->line[0], "t = %.3f s", rec[TRAIL_T]);
+        cu->color[0] = FIG_WALL;
+        cu->nlines = 1;
+        for (int i = 0; i < v.trail->n && cu->nlines < FIG_MARK_LINES; i++) {
+            if (hidden >> i & 1u)
+                continue;
+            snprintf(cu->line[cu->nlines], sizeof cu->line[0], "%s%d = %.4g %s", sym[yq], i + 1,
+                     rec[field(v.trail, yq, i)], unit[yq]);
+            cu->color[cu->nlines++] = FIG_MASS + i % 10;
+        }
+    }
+}
+
 void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool fresh)
 {
     const struct model *m = app->model;
@@ -274,7 +320,7 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
         legend[n++] = (struct legend_item){p->hidden >> i & 1u ? hidden_keys[i] : mass_keys[i],
                                            PAIR_MASS + i};
     if (app->ghost)
-        legend[n++] = (struct legend_item){"┄ghost", PAIR_TITLE};
+        legend[n++] = (struct legend_item){"┄ghost", PAIR_WALL};
     for (int k = 0; k < l->nplots; k++) {
         enum plot_id id = l->plot_id[k];
         struct chart *c = &p->chart[id];
@@ -286,6 +332,7 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
         chart_draw(c, kinds[id].title, kinds[id].short_title, kinds[id].xq ? NULL : "s", legend,
                    items);
         end_marks(c, p->end_row[id], p->end_col[id], m->n, p->hidden);
+        report_words(c, id, app, p->hidden);
         if (kinds[id].xq)
             cursor_points(c, id, app);
     }

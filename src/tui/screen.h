@@ -51,7 +51,7 @@ void screen_relayout(struct tui *t);
 
 /* The charts on the screen (the plots, or the analysis view's): into out (room for
  * GRAPHICS_SLOTS), how many; with images, the modes view's shapes too, which are drawn
- * as charts' areas are but are not charts in a picture of the view (X). */
+ * as charts' areas are but are not charts in X's figure of the view. */
 int screen_charts(struct tui *t, struct chart **out, bool images);
 
 #endif

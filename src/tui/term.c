@@ -204,31 +204,100 @@ static void install_signals(void)
  * black or light grey for anything that carries information. 256 colours: blue, green,
  * orange, red, purple, teal, ochre, magenta, brown, slate. 8 colours have no mid tones
  * and yellow does not read on white: five hues (blue, green, red, magenta, cyan), again
- * for masses 6 to 10 (told apart by their digit at the curve's end, plots.c). The motor
- * is the terminal's own foreground, in bold, so that it is no mass's colour in either. */
+ * for masses 6 to 10 (told apart by their digit at the curve's end, plots.c), always bold
+ * (a terminal such as xterm shows them bright then, and the legends are bold: one colour
+ * a mass, in the legend, the curve and the chain). The motor is the terminal's own
+ * foreground, in bold, so that it is no mass's colour in either. */
+static const short c256[10] = {27, 28, 166, 160, 128, 30, 136, 163, 94, 61};
+static const short c8[10] = {COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN,
+                             COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN};
+static short shown_as[PAIR_COUNT]; /* the colour each pair's text shows in (-1: foreground) */
+static int shown_rgb[PAIR_COUNT];  /* direct colour: the pair's 0xRRGGBB (-1: none) */
+static bool direct;                /* the terminal takes colours as 0xRRGGBB (xterm-direct) */
+
+/* xterm's 256-colour entry idx (16..255) as 0xRRGGBB: the 6x6x6 cube, the greys. */
+static int cube_rgb(int idx)
+{
+    static const int level[6] = {0, 95, 135, 175, 215, 255};
+    if (idx >= 232)
+        return (8 + 10 * (idx - 232)) * 0x010101;
+    idx -= 16;
+    return level[idx / 36] << 16 | level[idx / 6 % 6] << 8 | level[idx % 6];
+}
+
+/* Pair p in foreground fg (a 256-colour entry, or -1), as the terminal takes it: with
+ * direct colour, that entry's red, green and blue themselves, so every terminal shows
+ * the same colours. */
+static void pair_256(short p, short fg)
+{
+    shown_as[p] = fg;
+    if (direct && fg >= 16) {
+        shown_rgb[p] = cube_rgb(fg);
+        init_extended_pair(p, shown_rgb[p], -1);
+    } else {
+        init_pair(p, fg, -1);
+    }
+}
+
 static void init_colors(enum config_color want)
 {
     const char *no_color = getenv("NO_COLOR");
     bool refused = want == CONFIG_COLOR_NEVER ||
                    (want == CONFIG_COLOR_AUTO && no_color && *no_color);
     color = has_colors() && !refused;
+    for (int p = 0; p < PAIR_COUNT; p++)
+        shown_as[p] = -1, shown_rgb[p] = -1;
     if (!color)
         return;
     start_color();
     use_default_colors();
-    static const short c256[10] = {27, 28, 166, 160, 128, 30, 136, 163, 94, 61};
-    static const short c8[10] = {COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN,
-                                 COLOR_BLUE, COLOR_GREEN, COLOR_RED, COLOR_MAGENTA, COLOR_CYAN};
     rich = COLORS >= 256;
-    for (int i = 0; i < 10; i++)
-        init_pair((short)(PAIR_MASS + i), rich ? c256[i] : c8[i], -1);
+    direct = COLORS > 256 && tigetflag("RGB") > 0;
+    if (rich) {
+        for (int i = 0; i < 10; i++)
+            pair_256((short)(PAIR_MASS + i), c256[i]);
+        pair_256(PAIR_SPRING, 28);
+        pair_256(PAIR_GRID, 245);
+        pair_256(PAIR_TITLE, 32);
+        pair_256(PAIR_WARN, 160);
+    } else {
+        for (int i = 0; i < 10; i++) {
+            init_pair((short)(PAIR_MASS + i), c8[i], -1);
+            shown_as[PAIR_MASS + i] = (short)(c8[i] + 8); /* bold: bright */
+        }
+        init_pair(PAIR_SPRING, COLOR_GREEN, -1);
+        init_pair(PAIR_GRID, -1, -1);
+        init_pair(PAIR_TITLE, -1, -1);
+        init_pair(PAIR_WARN, COLOR_RED, -1);
+        shown_as[PAIR_SPRING] = COLOR_GREEN;
+        shown_as[PAIR_WARN] = COLOR_RED + 8;
+    }
     init_pair(PAIR_MOTOR, -1, -1);
-    init_pair(PAIR_SPRING, rich ? 28 : COLOR_GREEN, -1);
-    init_pair(PAIR_GRID, rich ? 245 : -1, -1);
-    init_pair(PAIR_TITLE, rich ? 32 : -1, -1);
-    init_pair(PAIR_WARN, rich ? 160 : COLOR_RED, -1);
     init_pair(PAIR_WALL, -1, -1);
     init_pair(PAIR_SELECT, -1, -1);
+}
+
+int term_pair_color(int p)
+{
+    return p > 0 && p < PAIR_COUNT ? shown_as[p] : -1;
+}
+
+int term_pair_rgb(int p)
+{
+    return p > 0 && p < PAIR_COUNT ? shown_rgb[p] : -1;
+}
+
+int term_color_candidates(int *idx, int max)
+{
+    static const short more[] = {28, 245, 32, 160, COLOR_GREEN, COLOR_RED + 8};
+    int n = 0;
+    for (int i = 0; i < 5 && n < max; i++)
+        idx[n++] = c8[i] + 8;
+    for (int i = 0; i < 10 && n < max; i++)
+        idx[n++] = c256[i];
+    for (size_t i = 0; i < sizeof more / sizeof more[0] && n < max; i++)
+        idx[n++] = more[i];
+    return n;
 }
 
 static attr_t eight_color_boost(int p);
@@ -264,12 +333,11 @@ attr_t term_mass_attr(int i)
     return term_attr(PAIR_MASS + i % 10);
 }
 
-/* With 8 colours, blue is too dark to read on black: its bright form reads on both. */
+/* With 8 colours the masses are bold: blue is too dark to read on black, its bright form
+ * reads on both, and every mass is shown the one way (the legends are bold). */
 static attr_t eight_color_boost(int p)
 {
-    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 && (p - PAIR_MASS) % 5 == 0
-               ? A_BOLD
-               : 0;
+    return color && !rich && p >= PAIR_MASS && p < PAIR_MASS + 10 ? A_BOLD : 0;
 }
 
 /* 1 when the terminal on standard output can place the cursor, 0 when it cannot, -1

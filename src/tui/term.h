@@ -54,6 +54,18 @@ bool term_blocks(void);
 /* Attribute for colour pair p, or its mono stand-in. */
 attr_t term_attr(int p);
 
+/* The terminal colour (0..255) pair p's text shows in, bold included (8 colours: a
+ * mass's bright form), or -1 for the terminal's foreground (no colour, or the pair's). */
+int term_pair_color(int p);
+
+/* With direct colour (TERM=xterm-direct), the 0xRRGGBB pair p's text shows in, which
+ * the terminal takes as it is; -1 otherwise. */
+int term_pair_rgb(int p);
+
+/* Every colour some pair may show in, with 8 colours or 256, into idx (max at most);
+ * returns how many: the ones to ask the terminal for before curses knows which. */
+int term_color_candidates(int *idx, int max);
+
 /* Attribute for mass i's colour. */
 attr_t term_mass_attr(int i);
 

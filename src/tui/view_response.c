@@ -151,19 +151,51 @@ static void mark_frequencies(struct canvas *cv, const struct app *app)
                  H - 1, PAIR_MOTOR);
 }
 
-/* A measured point: a 3 x 3 square of dots. */
-static void mark_point(struct canvas *cv, int x, int y, int color)
+/* The points measured by the sweep, each mass's as one stroke of marks of a fixed small
+ * size (a disc two dots across in pixels, one dot in braille: points that do not
+ * merge into blocks), at dot row dot_of(value) of each point's frequency; on the theory's
+ * line, drawn after it. */
+static void mark_points(struct chart *c, const struct app *app, const double *values,
+                        double (*dot_of)(const struct chart *, double))
 {
-    for (int dx = -1; dx <= 1 && y < 4 * cv->rows; dx++)
-        for (int dy = -1; dy <= 1; dy++)
-            canvas_set(cv, x + dx, y + dy, (uint8_t)color);
+    const struct sweep *sw = app->sweep;
+    struct canvas *cv = c->canvas;
+    int n = app->model->n, W = 2 * cv->cols, H = 4 * cv->rows;
+    for (int i = 0; i < n; i++) {
+        uint8_t color = (uint8_t)(PAIR_MASS + i % 10);
+        if (cv->strokes) {
+            strokes_begin(cv->strokes, color, STROKE_MARKS);
+            strokes_mark_size(cv->strokes, 2);
+        }
+        cv->mute++;
+        for (int p = 0; p < sweep_measured(sw); p++) {
+            double x = app_freq_fraction(sw->freq[p]) * (W - 1), y = dot_of(c, values[p * n + i]);
+            if (!isfinite(y) || y < -0.5 || y > H - 0.5)
+                continue;
+            canvas_set(cv, (int)lround(x), (int)lround(y), color);
+            if (cv->strokes)
+                strokes_point(cv->strokes, x, y);
+        }
+        cv->mute--;
+    }
+}
+
+/* Dot rows (unrounded) of amplitude a on the log axis and of phase p, NAN off it. */
+static double amp_dotf(const struct chart *c, double a)
+{
+    return a > 0.0 && isfinite(a) ? chart_dot_yf(c, log10(a)) : NAN;
+}
+
+static double phase_dotf(const struct chart *c, double p)
+{
+    return isfinite(p) ? chart_dot_yf(c, p) : NAN;
 }
 
 static void draw_amplitude(struct response_view *rv, const struct app *app)
 {
     const struct sweep *sw = app->sweep;
     struct chart *c = &rv->chart;
-    int n = app->model->n, W = 2 * c->canvas->cols, H = 4 * c->canvas->rows;
+    int n = app->model->n, H = 4 * c->canvas->rows;
     double top = rv->top;
     for (int p = 0; p < sweep_measured(sw); p++)
         for (int i = 0; i < n; i++)
@@ -191,10 +223,7 @@ static void draw_amplitude(struct response_view *rv, const struct app *app)
         }
     }
     c->canvas->mute--;
-    for (int p = 0; p < sweep_measured(sw); p++)
-        for (int i = 0; i < n; i++)
-            mark_point(c->canvas, (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1)),
-                       amp_dot(c, sw->peak[p * n + i]), PAIR_MASS + i % 10);
+    mark_points(c, app, sw->peak, amp_dotf);
 }
 
 /* The phase curves; a jump across +-180 degrees is not joined. */
@@ -229,10 +258,7 @@ static void draw_phase(struct response_view *rv, const struct app *app)
         }
     }
     c->canvas->mute--;
-    for (int p = 0; p < sweep_measured(sw); p++)
-        for (int i = 0; i < n; i++)
-            mark_point(c->canvas, (int)lround(app_freq_fraction(sw->freq[p]) * (W - 1)),
-                       phase_dot(c, sw->phase[p * n + i]), PAIR_MASS + i % 10);
+    mark_points(c, app, sw->phase, phase_dotf);
 }
 
 /* The phase panel's legend: each mass's phase at the drive's frequency, in its colour,
@@ -256,10 +282,80 @@ static int phase_legend(const struct response_view *rv, const struct app *app,
     return k;
 }
 
+/* What a report figure of chart c says: its words on the log frequency axis, the masses'
+ * names (measured points and theory), the drive's frequency. */
+static void report_words(struct chart *c, const struct app *app, const char *title,
+                         const char *ylabel, bool ylog)
+{
+    chart_report(c, title, "motor frequency f (Hz)", ylabel);
+    struct fig_report *r = &c->report;
+    r->xfreq = true, r->fmin = APP_FMIN, r->fmax = APP_FMAX, r->ylog = ylog;
+    for (int i = 0; i < app->model->n && i < 10; i++)
+        snprintf(r->name[FIG_MASS + i], sizeof r->name[0], "mass %d", i + 1);
+    snprintf(r->name[FIG_MOTOR], sizeof r->name[0], "drive %.3f Hz", app->model->motor.frequency);
+}
+
+/* What the sweep is doing, in the longest of its forms that fits in room columns (the
+ * shortest if none does): the legend is never cut. */
+static void sweep_state(const struct app *app, double contact, int room, char *buf,
+                        size_t len)
+{
+    const struct sweep *sw = app->sweep;
+    int at = sw->index + 1, of = sw->points, got = sweep_measured(sw), bad = sw->unsteady;
+    long hit = sw->contacts;
+    const char *s = hit == 1 ? "" : "s", *ps = got == 1 ? "" : "s";
+    double hz = sw->active ? sweep_frequency(sw) : app->model->motor.frequency;
+    for (int form = 0; form < 4; form++) {
+        if (sw->active && hit > 0)
+            snprintf(buf, len, form == 0   ? "sweep %d/%d at %.3f Hz, %ld contact%s (w stops)"
+                               : form == 1 ? "sweep %d/%d at %.3f Hz, %ld contact%s"
+                               : form == 2 ? "%d/%d, %.3f Hz, %ld contact%s"
+                                           : "%d/%d",
+                     at, of, hz, hit, s);
+        else if (sw->active)
+            snprintf(buf, len, form == 0   ? "sweep %d/%d at %.3f Hz (w stops)"
+                               : form == 1 ? "sweep %d/%d at %.3f Hz"
+                               : form == 2 ? "sweep %d/%d"
+                                           : "%d/%d",
+                     at, of, hz);
+        else if (got && hit > 0) /* contacts: the points are not the linear theory's */
+            snprintf(buf, len, form == 0   ? "● %d point%s; %ld contact%s: off the linear theory"
+                               : form == 1 ? "● %d point%s; %ld contact%s"
+                               : form == 2 ? "● %d%s; %ld contact%s"
+                                           : "● %d%s",
+                     got, form == 2 || form == 3 ? "" : ps, hit, s);
+        else if (got && bad > 0)
+            snprintf(buf, len, form == 0   ? "● %d point%s, %d not steady (w sweeps again)"
+                               : form == 1 ? "● %d point%s, %d not steady"
+                               : form == 2 ? "● %d%s, %d not steady"
+                                           : "● %d%s",
+                     got, form == 2 || form == 3 ? "" : ps, bad);
+        else if (got)
+            snprintf(buf, len, form == 0   ? "● measured: %d point%s (w sweeps again)"
+                               : form == 1 ? "● measured: %d point%s"
+                               : form == 2 ? "● %d point%s"
+                                           : "● %d%s",
+                     got, form == 3 ? "" : ps);
+        else if (app->model->motor.amplitude >= contact)
+            snprintf(buf, len, form == 0   ? "w: sweep; contacts expected above %.2g m"
+                               : form == 1 ? "contacts expected above %.2g m"
+                               : form == 2 ? "contacts above %.2g m"
+                                           : "> %.2g m",
+                     contact);
+        else
+            snprintf(buf, len, form == 0   ? "┃ drive %.3f Hz  ┊ modes  w: sweep"
+                               : form == 1 ? "┃ drive %.3f Hz  ┊ modes"
+                               : form == 2 ? "┃ drive %.3f Hz"
+                                           : "┃ %.3f Hz",
+                     hz);
+        if (draw_width(buf) <= room)
+            return;
+    }
+}
+
 void response_view_draw(struct response_view *rv, const struct app *app, bool fresh)
 {
     const struct model *m = app->model;
-    const struct sweep *sw = app->sweep;
     struct chart *c = &rv->chart;
     int n = m->n;
     const char *title = "Frequency response: steady-state amplitude (m) against frequency, log-log";
@@ -290,40 +386,27 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
         if (rv->phase.canvas)
             draw_phase(rv, app);
     }
-    char state[120];
-    /* Contacts during the sweep: its points are not the linear theory's to match. */
-    if (sw->active && sw->contacts > 0)
-        snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz, %ld contact%s (w stops)",
-                 sw->index + 1, sw->points, sweep_frequency(sw), sw->contacts,
-                 sw->contacts == 1 ? "" : "s");
-    else if (sw->active)
-        snprintf(state, sizeof state, "sweep %d/%d at %.3f Hz (w stops)", sw->index + 1,
-                 sw->points, sweep_frequency(sw));
-    else if (sweep_measured(sw) && sw->contacts > 0)
-        snprintf(state, sizeof state, "■ %d point%s; %ld contact%s: off the linear theory",
-                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s", sw->contacts,
-                 sw->contacts == 1 ? "" : "s");
-    else if (sweep_measured(sw) && sw->unsteady > 0)
-        snprintf(state, sizeof state, "■ %d point%s, %d not steady (w sweeps again)",
-                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s", sw->unsteady);
-    else if (sweep_measured(sw))
-        snprintf(state, sizeof state, "■ measured: %d point%s (w sweeps again)",
-                 sweep_measured(sw), sweep_measured(sw) == 1 ? "" : "s");
-    else if (m->motor.amplitude >= rv->contact)
-        snprintf(state, sizeof state, "w: sweep; contacts expected above %.2g m", rv->contact);
-    else
-        snprintf(state, sizeof state, "┃ drive %.3f Hz  ┊ modes  w: sweep", m->motor.frequency);
     struct legend_item legend[11];
-    int k = 0;
-    for (int i = 0; i < n && i < 10; i++)
+    int k = 0, keys = 0;
+    for (int i = 0; i < n && i < 10; i++) {
         legend[k++] = (struct legend_item){mass_keys[i], PAIR_MASS + i};
+        keys += draw_width(mass_keys[i]) + 1;
+    }
+    char state[120];
+    int room = c->frame.w - 4; /* the masses' keys give way to the state where it needs */
+    sweep_state(app, rv->contact, room - (keys < room / 2 ? keys : room / 2), state, sizeof state);
     legend[k++] = (struct legend_item){state, PAIR_MOTOR};
     chart_draw(c, title, "Response (m) against Hz", "Hz", legend, k);
+    report_words(c, app, "Frequency response", "steady-state amplitude (m)", true);
     if (rv->phase.frame.h > 0) {
         char text[APP_MAX_MASSES + 1][24];
         struct legend_item pl[APP_MAX_MASSES + 1];
         int np = phase_legend(rv, app, text, pl);
         chart_draw(&rv->phase, "Phase of each mass to the drive (degrees; a lag is negative)",
                    "Phase (deg)", "Hz", pl, np);
+        report_words(&rv->phase, app, "Phase", "phase to the drive (°; a lag is negative)",
+                     false);
+        rv->phase.report.ylo = -180.0, rv->phase.report.yhi = 180.0;
+        rv->phase.report.ystep = 90.0;
     }
 }

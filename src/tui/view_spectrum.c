@@ -407,11 +407,14 @@ void spectrum_view_draw(struct spectrum_view *sv, const struct app *app, bool fr
     legend[k++] = (struct legend_item){mass_key, PAIR_MASS + sv->shown % 10};
     legend[k++] = (struct legend_item){peak_text, 0};
     if (sv->ghost_shown && app->ghost)
-        legend[k++] = (struct legend_item){"┄ghost", PAIR_TITLE};
+        legend[k++] = (struct legend_item){"┄ghost", PAIR_WALL};
     if (driven(m))
         legend[k++] = (struct legend_item){drive, PAIR_MOTOR};
     if (app->modes_ok)
         legend[k++] = (struct legend_item){modes, 0};
     chart_draw(c, title, brief, "Hz", legend, k);
+    snprintf(title, sizeof title, "Spectrum of mass %d's displacement", mass);
+    chart_report(c, title, "frequency f (Hz)", "level (dB re 1 m)");
+    snprintf(c->report.name[FIG_MASS + sv->shown % 10], sizeof c->report.name[0], "mass %d", mass);
     draw_labels(sv, app);
 }

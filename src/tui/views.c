@@ -102,6 +102,11 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
     }
     chart_draw(c, "Energy (J): balance = kinetic + potential + damped + contact − motor",
                "Energy (J)", "s", NULL, 0);
+    chart_report(c, "Energy balance", "time t (s)", "energy (J)");
+    c->report.time = true;
+    for (int q = 0; q < TRAIL_ENERGIES; q++)
+        snprintf(c->report.name[colors[q]], sizeof c->report.name[0], "%s",
+                 q == TRAIL_WORK ? "motor work" : names[q]);
     /* Above the data: each energy now, in its colour, then how good the balance is. */
     struct rect f = c->frame;
     const double vals[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,

@@ -24,6 +24,8 @@
                                            colour (the phase panel: the last five gridlines,
                                            of 90 degrees each, give the scale)
   figcheck.py fills FILE.svg R,G,B         number of filled paths (markers) in that colour
+  figcheck.py markers FILE.svg R,G,B       "N SMALLEST LARGEST": the markers (each filled
+                                           sub-path) in that colour and their widths
   figcheck.py xticks FILE.pdf WORD         the numbers on the row above each x axis title
                                            holding WORD, one line per panel, left to right
   figcheck.py yticks FILE.pdf WORD         the numbers right-aligned left of each panel
@@ -242,9 +244,9 @@ def main():
         for y in sorted(ys):
             print(y)
         return
-    if cmd == 'fills':
+    if cmd in ('fills', 'markers'):
         root = ET.parse(sys.argv[2]).getroot()
-        n = 0
+        n, widths = 0, []
         for el in root.iter(SVG + 'path'):
             style = el.get('style', '') + ';fill:' + el.get('fill', '')
             m = re.search(r'fill:\s*rgb\(([^)]*)\)', style)
@@ -252,8 +254,15 @@ def main():
                 parts = [p.strip() for p in m.group(1).split(',')]
                 c = tuple(round(float(p[:-1]) * 2.55) if p.endswith('%') else int(p)
                           for p in parts)
-                n += c == rgb and 'stroke:' not in el.get('style', '').replace('stroke:none', '')
-        print(n)
+                filled = c == rgb and 'stroke:' not in el.get('style', '').replace('stroke:none', '')
+                n += filled
+                for sp in sub_paths(el.get('d', '')) if filled else []:
+                    pts = transformed(el, sp)
+                    widths.append(max(p[0] for p in pts) - min(p[0] for p in pts))
+        if cmd == 'fills':
+            print(n)
+        else:
+            print('%d %.2f %.2f' % (len(widths), min(widths or [0]), max(widths or [0])))
         return
     if cmd == 'phasejump':
         root = ET.parse(sys.argv[2]).getroot()

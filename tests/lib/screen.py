@@ -61,4 +61,5 @@ def main():
         chart(screen(path, cols, rows, upto), sys.argv[5])
 
 
-main()
+if __name__ == '__main__':
+    main()
