@@ -45,7 +45,7 @@ if wait_for 'space starts' 5; then
     took=$(since "$t0")
     echo "the defaults' sweep took $took s of wall time"
     if has 'sweep done: 40 frequencies measured' && has 'back at 1.000 Hz' &&
-        has '■ measured: 40 points' && lacks 'contact'; then pass; else
+        has '● measured: 40 points' && lacks 'contact'; then pass; else
         fail "the defaults' sweep should end within 120 s, 40 points, all steady, no contact; after $took s: $(brief "$scr" 'sweep|contact')"
     fi
     if [ -z "$back" ] && [ "$count" -ge 30 ]; then pass; else

@@ -1,8 +1,9 @@
 #!/bin/sh
 # tests/xterm-colours.sh: one colour a mass, measured in a real xterm (xterm -ti vt340,
 # sixel) on a virtual X screen (Xvfb): with TERM=xterm (8 colours) and TERM=xterm-256color,
-# in the time plots, the energy view and the response view, each legend mark's colour on
-# the screenshot is within delta E 10 of pixels of its chart's image (tests/lib/xcolours.py;
+# in the time plots (after 8 s, the masses moved apart from the drive's line), the energy
+# view and the response view, each legend mark's colour on the screenshot is within
+# delta E 10 of pixels of its chart's image (tests/lib/xcolours.py;
 # the program run through tests/lib/xfeed.py, which records what it wrote and the answers).
 # Ends with "xterm-colours: N passed, M failed".
 NAME=xterm-colours
@@ -48,7 +49,7 @@ shot() {
 }
 
 for term in xterm xterm-256color; do
-    for view in "plots: ~~~ ~!q" "energy:e ~~~ ~!q" "response:f~~~!q"; do
+    for view in "plots: ~~~~~~~~ ~!q" "energy:e ~~~ ~!q" "response:f~~~!q"; do
         name=${view%%:*} keys=${view#*:}
         shot "$term" "$keys" -n 3
         if [ ! -s "$tmp/x/shot.png" ]; then

@@ -178,12 +178,14 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
     canvas_clear(c->canvas);
     if (xq == 0)
         cursor_lines(c, app, &v);
-    if (gt)
-        traces(c, id, gt, grec, gk, true, hidden, top);
-    traces(c, id, tr, rec, k, false, hidden, top);
+    /* The drive's dashed line first: where a mass moves with it (the mass next to the
+     * motor, often), the mass's colour is the one seen. */
     if (motor)
         plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_U, k, w, 0.0, &c->xa, &c->ya, true,
                    PAIR_MOTOR);
+    if (gt)
+        traces(c, id, gt, grec, gk, true, hidden, top);
+    traces(c, id, tr, rec, k, false, hidden, top);
     /* Where each curve ends: the newest sample's cell. */
     int h = 4 * c->canvas->rows;
     const double *last = k > 0 ? rec + (size_t)(k - 1) * w : NULL;
