@@ -56,6 +56,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_matrix.h>
 
+#include "exact_general.h"
 #include "exact_modal.h"
 
 #define MAX_SLOTS 4                      /* cached steps, for small chains */
@@ -92,6 +93,7 @@ struct exact {
                            until a model needs the dense exponential */
     struct slot slot[MAX_SLOTS];
     struct modal *md;   /* the modes' propagator (exact_modal.c) */
+    struct general *gen; /* the general one (exact_general.c), made when first needed */
     int use_modal;      /* the saved model's dampers are proportional to its masses */
 };
 
@@ -173,6 +175,7 @@ void exact_free(struct exact *e)
     if (!e)
         return;
     modal_free(e->md);
+    general_free(e->gen);
     free(e->mem);
     free(e->z);
     free(e->sqm);
@@ -193,6 +196,10 @@ int exact_copy(struct exact *dst, const struct exact *src)
         memcpy(dst->mem, src->mem, (size_t)(3 + 2 * slots) * dd * sizeof(double));
     }
     modal_copy(dst->md, src->md);
+    if (src->gen && !dst->gen && !(dst->gen = general_new(n)))
+        return -1;
+    if (src->gen && general_copy(dst->gen, src->gen) != 0)
+        return -1;
     dst->use_modal = src->use_modal;
     dst->boundary = src->boundary;
     dst->valid = src->valid;
@@ -463,14 +470,37 @@ static struct slot *find_slot(struct exact *e, enum exact_kind kind, double omeg
     return old;
 }
 
+int exact_needs_general(const struct model *m)
+{
+    if (m->spring_damped || model_forced(m))
+        return 1;
+    for (int j = 0; j <= m->n; j++)
+        if (m->k[j] == 0.0 && (j < m->n || m->boundary != BOUNDARY_FREE))
+            return 1;
+    return 0;
+}
+
 int exact_advance(struct exact *e, const struct model *m, const struct exact_drive *d, double a,
                   double b, double *x, double *v, double *diss, double *work)
+{
+    double fwork = 0.0;
+    return exact_advance_all(e, m, d, a, b, x, v, diss, work, &fwork);
+}
+
+int exact_advance_all(struct exact *e, const struct model *m, const struct exact_drive *d,
+                      double a, double b, double *x, double *v, double *diss, double *work,
+                      double *fwork)
 {
     double h = b - a;
     if (h == 0.0)
         return 0;
     if (!(h > 0.0) || m->n != e->n)
         return -1;
+    if (exact_needs_general(m)) {
+        if (!e->gen && !(e->gen = general_new(e->n)))
+            return -1;
+        return general_advance(e->gen, m, d, a, b, x, v, diss, work, fwork);
+    }
     take_model(e, m);
     if (!e->valid)
         return -1;
