@@ -147,7 +147,17 @@ expect_usage_error --masses "'-1'" -- --headless -n -1
 expect_usage_error --mass "'0'" -- --headless --mass 0
 expect_usage_error --mass "'-1'" -- --headless --mass -1
 expect_usage_error --mass "'1,-1'" -- --headless --mass 1,-1
-expect_usage_error --spring "'0'" -- --headless --spring 0
+expect_usage_error --spring "'-1'" -- --headless --spring -1
+expect_usage_error --spring-damping "'-0.5'" -- --headless --spring-damping -0.5
+expect_usage_error --spring-damping "'nan'" -- --headless --spring-damping nan
+expect_usage_error --spring-damping "'inf'" -- --headless --spring-damping inf
+expect_usage_error --spring-damping "2 values for 3 springs" -- --headless --spring-damping 1,2
+expect_usage_error --spring-damping "square" -- --headless --spring-damping 0.5 --wave square
+expect_usage_error --force "'-1'" -- --headless --force -1
+expect_usage_error --force "'nan'" -- --headless --force nan
+expect_usage_error --force-on "'0'" -- --headless --force-on 0 --force 1
+expect_usage_error --force-on "'3'" "1 <= K <= 2" -- --headless --force-on 3 --force 1
+expect_usage_error --force-on "'1.5'" -- --headless --force-on 1.5
 expect_usage_error --damping "'-0.1'" -- --headless --damping -0.1
 expect_usage_error --amplitude "'-1'" -- --headless --amplitude -1
 expect_usage_error --frequency "'0'" -- --headless --frequency 0
@@ -212,10 +222,10 @@ if expect_ok --headless -n 3 --duration 0.1; then
 fi
 if expect_ok --headless --energy --duration 0.5; then
     expect_equal "$cmd: header" \
-        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact" \
+        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact,force_work" \
         "$(first_line "$out")"
-    # 2 x 3 + 2 columns of motion, 5 of energy, on every row (check_csv: each one finite)
-    expect_equal "$cmd: columns" 13 "$(awk -F, 'NR == 1 { print NF }' "$out")"
+    # 2 x 3 + 2 columns of motion, 6 of energy, on every row (check_csv: each one finite)
+    expect_equal "$cmd: columns" 14 "$(awk -F, 'NR == 1 { print NF }' "$out")"
     check_csv "$out" "$cmd"
 fi
 if expect_ok --headless --duration 1 --sample 0.1; then

@@ -78,7 +78,7 @@ struct slot {
 
 struct exact {
     int n, dmax, slots;
-    double *saved; /* m (n), k (n+1), c (n) as last seen */
+    double *saved; /* m (n), k (n+1), c (n), cs (n+1) as last seen */
     enum boundary boundary;
     int valid; /* the saved model factorised: 1, or 0 */
     unsigned long model, clock;
@@ -116,7 +116,7 @@ struct exact *exact_new(int n)
     e->n = n;
     e->dmax = d;
     e->slots = slots;
-    e->saved = malloc((size_t)(3 * n + 1) * sizeof(double));
+    e->saved = malloc((size_t)(4 * n + 2) * sizeof(double));
     e->sqm = malloc((size_t)(4 * n) * sizeof(double));
     e->md = modal_new(n);
     if (!e->saved || !e->sqm || !e->md) {
@@ -189,7 +189,7 @@ int exact_copy(struct exact *dst, const struct exact *src)
     size_t dd = (size_t)d * (size_t)d;
     if (src->mem && dense_alloc(dst))
         return -1;
-    memcpy(dst->saved, src->saved, (size_t)(3 * n + 1) * sizeof(double));
+    memcpy(dst->saved, src->saved, (size_t)(4 * n + 2) * sizeof(double));
     memcpy(dst->sqm, src->sqm, (size_t)(4 * n) * sizeof(double));
     if (src->mem) {
         memcpy(dst->z, src->z, (size_t)(4 * d + 2 * d * slots) * sizeof(double));
@@ -230,11 +230,13 @@ static void take_model(struct exact *e, const struct model *m)
     double *sv = e->saved;
     if (e->model && m->boundary == e->boundary && memcmp(sv, m->m, (size_t)n * sizeof *sv) == 0 &&
         memcmp(sv + n, m->k, (size_t)(n + 1) * sizeof *sv) == 0 &&
-        memcmp(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv) == 0)
+        memcmp(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv) == 0 &&
+        memcmp(sv + 3 * n + 1, m->cs, (size_t)(n + 1) * sizeof *sv) == 0)
         return;
     memcpy(sv, m->m, (size_t)n * sizeof *sv);
     memcpy(sv + n, m->k, (size_t)(n + 1) * sizeof *sv);
     memcpy(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv);
+    memcpy(sv + 3 * n + 1, m->cs, (size_t)(n + 1) * sizeof *sv);
     e->boundary = m->boundary;
     e->model++;
     e->valid = 0;
@@ -281,8 +283,17 @@ static void take_model(struct exact *e, const struct model *m)
     e->wscale = sqrt(wmax);
     /* Dampers proportional to the masses (to rounding) keep the modes apart: the modes'
      * propagator. Otherwise, or if LAPACK fails there, the dense exponential. */
-    e->use_modal = exact_proportional(m) && modal_take(e->md, m, e->gam[0], e->ld, e->ls) == 0;
-    e->valid = e->use_modal || dense_alloc(e) == 0;
+    double beta = 0.0;
+    for (int j = 0; j <= n && m->spring_damped; j++)
+        if (m->cs[j] != 0.0 && (j < n || m->boundary != BOUNDARY_FREE)) {
+            beta = m->cs[j] / m->k[j];
+            break;
+        }
+    e->use_modal = (m->spring_damped ? model_rayleigh(m) : exact_proportional(m)) &&
+                   modal_take(e->md, m, e->gam[0], beta, e->ld, e->ls) == 0;
+    /* The dense path here knows ground dampers only: spring dampers not in the modes are
+     * exact_general's (exact_advance_all goes there) */
+    e->valid = e->use_modal || (!m->spring_damped && dense_alloc(e) == 0);
 }
 
 /* tau A into s (d x d), A the generator for drive kind and angular frequency omega;
@@ -472,7 +483,12 @@ static struct slot *find_slot(struct exact *e, enum exact_kind kind, double omeg
 
 int exact_needs_general(const struct model *m)
 {
-    if (m->spring_damped || model_forced(m))
+    if (model_forced(m))
+        return 1;
+    /* Rayleigh's spring dampers stay in the modes, unless the motor moves the end of a
+     * damped spring (its rate u' is an input the modes' drive does not carry). */
+    if (m->spring_damped && (!model_rayleigh(m) || (m->boundary == BOUNDARY_MOTOR &&
+                                                   m->motor.amplitude != 0.0 && m->cs[m->n] != 0.0)))
         return 1;
     for (int j = 0; j <= m->n; j++)
         if (m->k[j] == 0.0 && (j < m->n || m->boundary != BOUNDARY_FREE))
@@ -496,12 +512,16 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
         return 0;
     if (!(h > 0.0) || m->n != e->n)
         return -1;
-    if (exact_needs_general(m)) {
+    int general = exact_needs_general(m);
+    if (!general) {
+        take_model(e, m);
+        general = !e->valid && m->spring_damped; /* the modes failed: the general path */
+    }
+    if (general) {
         if (!e->gen && !(e->gen = general_new(e->n)))
             return -1;
         return general_advance(e->gen, m, d, a, b, x, v, diss, work, fwork);
     }
-    take_model(e, m);
     if (!e->valid)
         return -1;
 

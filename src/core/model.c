@@ -7,6 +7,7 @@
  * d_N = u(t), v_N = u'(t) (right end); for a free end T_N = 0. */
 #include "model.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,6 +82,46 @@ void model_sync(struct model *m)
     m->spring_damped = false;
     for (int j = 0; j <= m->n; j++)
         m->spring_damped |= m->cs[j] != 0.0;
+}
+
+int model_rigid_modes(const struct model *m)
+{
+    int n = m->n, rigid = 0;
+    bool right_tied = m->boundary != BOUNDARY_FREE && m->k[n] > 0.0;
+    bool grounded = m->k[0] > 0.0; /* the group that holds mass 1 */
+    for (int i = 0; i < n; i++) {
+        bool joined = i + 1 < n && m->k[i + 1] > 0.0;
+        if (!joined) { /* the group ends at mass i */
+            if (i + 1 == n)
+                grounded |= right_tied;
+            rigid += !grounded;
+            grounded = false;
+        }
+    }
+    return rigid;
+}
+
+/* Whether a / b is r for every pair, to rounding; b = 0 needs a = 0. *r NAN: not set. */
+static bool same_ratio(double a, double b, double *r)
+{
+    if (b == 0.0)
+        return a == 0.0;
+    double q = a / b;
+    if (isnan(*r))
+        *r = q;
+    return fabs(q - *r) <= 8.0 * DBL_EPSILON * fabs(*r);
+}
+
+bool model_rayleigh(const struct model *m)
+{
+    double alpha = NAN, beta = NAN;
+    for (int i = 0; i < m->n; i++)
+        if (!same_ratio(m->c[i], m->m[i], &alpha))
+            return false;
+    for (int j = 0; j <= m->n; j++)
+        if ((j < m->n || m->boundary != BOUNDARY_FREE) && !same_ratio(m->cs[j], m->k[j], &beta))
+            return false;
+    return true;
 }
 
 bool model_forced(const struct model *m)

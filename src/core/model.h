@@ -51,6 +51,16 @@ void model_copy(struct model *dst, const struct model *src);
 /* Sets m->spring_damped from m->cs: call it after changing cs by hand. */
 void model_sync(struct model *m);
 
+/* How many rigid-body modes m has (0 Hz): the groups of masses joined by springs of
+ * k > 0 that no such spring ties to the wall or to the right end (a motor or a wall). */
+int model_rigid_modes(const struct model *m);
+
+/* Whether m's damping is Rayleigh's, C = alpha M + beta K (to rounding): c_i / m_i the
+ * same for every mass and cs_j / k_j the same for every spring there is (cs_j = 0 where
+ * k_j = 0). Undamped chains and ground dampers proportional to the masses are. Such a C
+ * is diagonal in the undamped modes: 2 zeta_j omega_j = alpha + beta omega_j^2. */
+bool model_rayleigh(const struct model *m);
+
 /* Whether m has a force input (F != 0). */
 bool model_forced(const struct model *m);
 
