@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/config.h"
 #include "core/modes.h"
@@ -15,17 +16,38 @@
 #include "run_files.h"
 
 #define SWEEP_MAX 1000000 /* rows a sweep may ask for */
+#define DAMPED_TELL 200   /* masses from which the damped modes' solve is announced */
+
+/* The damped modes; a dense eigen-solve of a long chain takes a while (dgeev on 2N: about
+ * 1 s at N = 300, 30 s at N = 1000), so a terminal is told while it runs. */
+static int damped_modes(const struct model *m, const double *shapes, double *ratio,
+                        double *damped_hz, double *eigen)
+{
+    bool tell = m->n >= DAMPED_TELL && !model_rayleigh(m) && isatty(STDERR_FILENO);
+    if (tell) {
+        double s = 30.0 * pow(m->n / 1000.0, 3.0);
+        fprintf(stderr, "springsim: the damped modes of %d masses: LAPACK's dense eigen-solve "
+                "of a %d x %d matrix, about %.0f s with the reference BLAS...", m->n, 2 * m->n,
+                2 * m->n, s < 1.0 ? 1.0 : s);
+        fflush(stderr);
+    }
+    int e = modes_damped_all(m, shapes, ratio, damped_hz, eigen);
+    if (tell)
+        fputs("\r\033[K", stderr);
+    return e;
+}
 
 int run_modes(const struct config *c, const struct model *m)
 {
     int n = m->n;
-    double *f = malloc((size_t)(3 * n) * sizeof *f);
+    double *f = malloc((size_t)(4 * n) * sizeof *f);
     double *shapes = malloc((size_t)n * (size_t)n * sizeof *shapes);
     struct output o;
     int status = EXIT_SUCCESS;
     double *ratio = f ? f + n : NULL, *damped_hz = f ? f + 2 * n : NULL;
+    double *eigen = f ? f + 3 * n : NULL;
     if (!f || !shapes || modes_compute(m, f, shapes) != 0 ||
-        modes_damped(m, shapes, ratio, damped_hz) != 0) {
+        damped_modes(m, shapes, ratio, damped_hz, eigen) != 0) {
         options_say(!f || !shapes ? "out of memory"
                                   : "the modes cannot be computed for these values "
                                     "(LAPACK failed, or the numbers overflow)");
@@ -42,13 +64,23 @@ int run_modes(const struct config *c, const struct model *m)
         fputs("mode,frequency_hz", o.fp);
         for (int i = 1; i <= n; i++)
             fprintf(o.fp, ",x%d", i);
-        fputs(",damping_ratio,damped_frequency_hz\n", o.fp);
+        fputs(",damping_ratio,damped_frequency_hz,eigen_frequency_hz\n", o.fp);
         for (int j = 0; j < n; j++) {
             fprintf(o.fp, "%d,%.12g", j + 1, f[j]);
             for (int i = 0; i < n; i++)
                 fprintf(o.fp, ",%.12g", shapes[(size_t)j * n + i]);
-            fprintf(o.fp, ",%.12g,%.12g\n", ratio[j], damped_hz[j]);
+            /* a rigid-body mode has no damping ratio: the field is left empty */
+            if (isnan(ratio[j]))
+                fputc(',', o.fp);
+            else
+                fprintf(o.fp, ",%.12g", ratio[j]);
+            fprintf(o.fp, ",%.12g,%.12g\n", damped_hz[j], eigen[j]);
         }
+        int rigid = model_rigid_modes(m);
+        if (rigid > 0)
+            options_say("note: %d rigid-body mode%s at 0 Hz (a group of masses no spring ties "
+                        "to a wall or the motor): no damping ratio, left empty", rigid,
+                        rigid > 1 ? "s" : "");
         status = run_close_output(&o, c, status);
         if (c->figure) {
             char settings[400];
@@ -118,9 +150,10 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
     long count;
     if (parse_sweep(spec, &fmin, &fmax, &count) != 0)
         return EXIT_USAGE;
-    if (m->boundary != BOUNDARY_MOTOR) {
-        options_say("--sweep: the right end is '%s', which does not drive the chain (expected "
-            "--boundary motor)", model_boundary_name(m->boundary));
+    if (m->boundary != BOUNDARY_MOTOR && !model_forced(m)) {
+        options_say("--sweep: the right end is '%s', which does not drive the chain, and there "
+            "is no force (expected --boundary motor, or --force F on a mass)",
+            model_boundary_name(m->boundary));
         return EXIT_USAGE;
     }
     int n = m->n, status = EXIT_SUCCESS;

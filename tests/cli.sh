@@ -147,7 +147,17 @@ expect_usage_error --masses "'-1'" -- --headless -n -1
 expect_usage_error --mass "'0'" -- --headless --mass 0
 expect_usage_error --mass "'-1'" -- --headless --mass -1
 expect_usage_error --mass "'1,-1'" -- --headless --mass 1,-1
-expect_usage_error --spring "'0'" -- --headless --spring 0
+expect_usage_error --spring "'-1'" -- --headless --spring -1
+expect_usage_error --spring-damping "'-0.5'" -- --headless --spring-damping -0.5
+expect_usage_error --spring-damping "'nan'" -- --headless --spring-damping nan
+expect_usage_error --spring-damping "'inf'" -- --headless --spring-damping inf
+expect_usage_error --spring-damping "2 values for 3 springs" -- --headless --spring-damping 1,2
+expect_usage_error --spring-damping "square" -- --headless --spring-damping 0.5 --wave square
+expect_usage_error --force "'-1'" -- --headless --force -1
+expect_usage_error --force "'nan'" -- --headless --force nan
+expect_usage_error --force-on "'0'" -- --headless --force-on 0 --force 1
+expect_usage_error --force-on "'3'" "1 <= K <= 2" -- --headless --force-on 3 --force 1
+expect_usage_error --force-on "'1.5'" -- --headless --force-on 1.5
 expect_usage_error --damping "'-0.1'" -- --headless --damping -0.1
 expect_usage_error --amplitude "'-1'" -- --headless --amplitude -1
 expect_usage_error --frequency "'0'" -- --headless --frequency 0
@@ -212,10 +222,10 @@ if expect_ok --headless -n 3 --duration 0.1; then
 fi
 if expect_ok --headless --energy --duration 0.5; then
     expect_equal "$cmd: header" \
-        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact" \
+        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact,force_work" \
         "$(first_line "$out")"
-    # 2 x 3 + 2 columns of motion, 5 of energy, on every row (check_csv: each one finite)
-    expect_equal "$cmd: columns" 13 "$(awk -F, 'NR == 1 { print NF }' "$out")"
+    # 2 x 3 + 2 columns of motion, 6 of energy, on every row (check_csv: each one finite)
+    expect_equal "$cmd: columns" 14 "$(awk -F, 'NR == 1 { print NF }' "$out")"
     check_csv "$out" "$cmd"
 fi
 if expect_ok --headless --duration 1 --sample 0.1; then
@@ -676,6 +686,28 @@ if expect_ok --keys; then
     want=$(sed 's/↑/\\(ua/g; s/↓/\\(da/g; s/←/\\(<-/g; s/→/\\(->/g' "$out")
     if [ "$keys_in_man" = "$want" ]; then pass; else
         fail "man page KEYS differ from --keys: $(printf '%s\n' "$keys_in_man" | head -c 200 | tr '\n' '|') vs $(printf '%s\n' "$want" | head -c 200 | tr '\n' '|')"
+    fi
+fi
+
+# The tuned-mass damper (Den Hartog's optimum, mu = 0.05): the primary's two peaks each
+# within 3 % of sqrt(1 + 2/mu) times the static deflection F/k1 = 0.05 m, and of each
+# other; with the absorber's damper at 0, the primary at its own frequency 0.5033 Hz
+# moves at least 100 times less than it would alone (undamped there: without bound, so
+# the alone figure is taken with a tiny damper, 1e-3 N s/m, which the absorber beats).
+if expect_ok -p tuned-mass-damper --sweep 0.3:0.7:4001; then
+    peaks=$(awk -F, 'NR > 1 { a = $2; if (NR > 3 && pa > ppa && pa > a) printf "%s ", pa; ppa = pa; pa = a }' "$out")
+    verdict=$(echo "$peaks" | awk '{ want = 0.05 * sqrt(41); ok = NF == 2;
+        for (i = 1; i <= NF; i++) if ($i < 0.97 * want || $i > 1.03 * want) ok = 0;
+        if (NF == 2 && ($1 > 1.03 * $2 || $2 > 1.03 * $1)) ok = 0; print ok ? "ok" : "bad" }')
+    expect_equal "tuned-mass-damper: two equal peaks near sqrt(41) x 0.05 m ($peaks)" ok "$verdict"
+fi
+if expect_ok -p tuned-mass-damper --spring-damping 0 --sweep 0.5032921210:0.6:2; then
+    with=$(awk -F, 'NR == 2 { print $2 }' "$out")
+    if expect_ok -p tuned-mass-damper -n 1 --mass 1 --spring 10,0 --spring-damping 0 \
+        --damping 0.001 --sweep 0.5032921210:0.6:2; then
+        alone=$(awk -F, 'NR == 2 { print $2 }' "$out")
+        expect_equal "undamped absorber: $with m against $alone m alone" ok \
+            "$(awk -v a="$with" -v b="$alone" 'BEGIN { print a * 100 <= b ? "ok" : "bad" }')"
     fi
 fi
 

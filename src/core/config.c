@@ -48,8 +48,8 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                   .help = "masses", .symbol = "masses", .lo = 0, .lo_open = true, .hi = INFINITY,
                   .def = MODEL_DEFAULT_MASS, .unit = "kg", .digits = 2, .offset = AT(mass)},
     [CFG_SPRING] = {.name = "spring", .section = "system", .saved = true, .kind = CONFIG_LIST, .arg = "LIST",
-                    .help = "springs, the walls' included", .symbol = "springs", .lo = 0,
-                    .lo_open = true, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
+                    .help = "springs, the walls' included (0: no spring there)",
+                    .symbol = "springs", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
                     .unit = "N/m",
                     .digits = 1, .offset = AT(spring)},
     [CFG_DAMPING] = {.name = "damping", .section = "system", .saved = true, .kind = CONFIG_LIST,
@@ -57,6 +57,13 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                      .symbol = "damping", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_DAMPING, .unit = "N·s/m",
                      .digits = 2,
                      .offset = AT(damping)},
+    [CFG_SPRING_DAMPING] = {.name = "spring-damping", .section = "system", .saved = true,
+                            .kind = CONFIG_LIST, .arg = "LIST",
+                            .help = "a damper beside each spring, on the rate of its stretch "
+                                    "(the walls' included)",
+                            .symbol = "spring dampers", .lo = 0, .hi = INFINITY, .def = 0,
+                            .per = CONFIG_PER_SPRING, .unit = "N·s/m", .digits = 2,
+                            .offset = AT(spring_damping)},
     [CFG_DT] = {.name = "dt", .section = "system", .saved = true, .kind = CONFIG_NUMBER, .arg = "SECONDS",
                 .help = "time step", .symbol = "dt", .lo = 0, .lo_open = true, .hi = 0.05,
                 .ilo = 0.001, .def = 0.01, .unit = "s", .digits = 3, .offset = AT(dt)},
@@ -83,6 +90,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                        .lo_open = true, .hi = 1e6, .def = MODEL_DEFAULT_FREQUENCY, .unit = "Hz",
                        .digits = 3,
                        .offset = AT(frequency)},
+    [CFG_FORCE] = {.name = "force", .section = "motor", .saved = true, .kind = CONFIG_NUMBER,
+                   .arg = "NEWTONS", .help = "a force F w(2 pi f t) on mass --force-on, the "
+                   "motor's waveform and frequency", .symbol = "force", .lo = 0, .hi = 1e9,
+                   .def = 0, .unit = "N", .digits = 2, .offset = AT(force)},
+    /* Checked against N in config_model. */
+    [CFG_FORCE_ON] = {.name = "force-on", .section = "motor", .saved = true, .kind = CONFIG_WHOLE,
+                      .arg = "K", .help = "the mass the force acts on", .symbol = "K",
+                      .lo = 1, .hi = MODEL_MAX_MASSES, .def = 1, .offset = AT(force_on)},
     /* Bounded by what the model can hold: the walls are MODEL_LENGTH apart, and no
      * velocity outlives the cap (a state past these only makes inf and nan). */
     [CFG_X0] = {.name = "x0", .section = "initial", .saved = true, .kind = CONFIG_LIST, .arg = "LIST",
@@ -119,7 +134,7 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .expect = "a file name", .offset = AT(output),
                     .help = "headless/modes/sweep output to FILE instead of standard output"},
     [CFG_ENERGY] = {.name = "energy", .section = "run", .kind = CONFIG_FLAG,
-                    .help = "headless CSV gains kinetic,potential,dissipated,motor_work,contact",
+                    .help = "headless CSV gains kinetic,potential,dissipated,motor_work,contact,force_work",
                     .offset = AT(energy)},
     [CFG_META] = {.name = "meta", .kind = CONFIG_FLAG, .offset = AT(meta),
                   .help = "headless/modes/sweep CSV begins with '#' lines: the version and the "

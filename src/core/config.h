@@ -20,12 +20,15 @@ enum config_key {
     CFG_MASS,
     CFG_SPRING,
     CFG_DAMPING,
+    CFG_SPRING_DAMPING,
     CFG_DT,
     CFG_INTEGRATOR,
     CFG_BOUNDARY,
     CFG_WAVE,
     CFG_AMPLITUDE,
     CFG_FREQUENCY,
+    CFG_FORCE,
+    CFG_FORCE_ON,
     CFG_X0,
     CFG_V0,
     CFG_RANDOM,
@@ -148,12 +151,15 @@ struct config {
     struct config_list mass;            /* kg */
     struct config_list spring;          /* N/m */
     struct config_list damping;         /* N s/m */
+    struct config_list spring_damping;  /* N s/m, beside each spring */
     double dt;                          /* s */
     enum integrator integrator;         /* the stepper (rk4 unless set) */
     enum boundary boundary;             /* right end */
     enum wave wave;                     /* drive waveform */
     double amplitude;                   /* m */
     double frequency;                   /* Hz */
+    double force;                       /* the force input's amplitude F (N) */
+    int force_on;                       /* the mass it acts on (1-based) */
     struct config_list x0;              /* initial displacements (m) */
     struct config_list v0;              /* initial velocities (m/s) */
     bool random;                        /* random initial positions */

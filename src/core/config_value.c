@@ -22,6 +22,15 @@ static bool from_model(int key, const struct model *m, struct config_value *out)
     case CFG_DAMPING:
         *out = (struct config_value){.count = m->n, .v = m->c};
         return true;
+    case CFG_SPRING_DAMPING:
+        *out = (struct config_value){.count = m->n + 1, .v = m->cs};
+        return true;
+    case CFG_FORCE:
+        out->one = m->force;
+        break;
+    case CFG_FORCE_ON:
+        snprintf(out->text, sizeof out->text, "%d", m->force_on + 1);
+        return true;
     case CFG_BOUNDARY:
         snprintf(out->text, sizeof out->text, "%s", model_boundary_name(m->boundary));
         return true;

@@ -383,7 +383,7 @@ void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
         out->worst_hz = sqrt(mode[out->worst].w2) / (2.0 * M_PI);
         out->worst_is_top = out->worst == top;
     }
-    if (m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0) {
+    if (model_driven(m)) {
         out->drive_hz = m->motor.frequency;
         out->drive_steps = 1.0 / (m->motor.frequency * dt);
         judge_drive(m, out);

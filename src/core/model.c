@@ -1,11 +1,13 @@
 /* model.c: parameters, equilibrium geometry and the equation of motion
  *
- *   m_i a_i = -k_i (d_i - d_{i-1}) - k_{i+1} (d_i - d_{i+1}) - c_i v_i,
+ *   m_i a_i = T_{i+1} - T_i - c_i v_i + [i = K] F w(2 pi f t),
+ *   T_j = k_j (d_j - d_{j-1}) + cs_j (v_j - v_{j-1}),
  *
- * with d_{-1} = 0 (left wall) and d_N = u(t) (right end); for a free end the
- * k_N term of the last mass is dropped. */
+ * T_j the tension of spring j and its damper, with d_{-1} = v_{-1} = 0 (left wall) and
+ * d_N = u(t), v_N = u'(t) (right end); for a free end T_N = 0. */
 #include "model.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,7 +32,7 @@ struct model *model_new(int n)
     if (n < 1 || n > MODEL_MAX_MASSES)
         return NULL;
     struct model *m = calloc(1, sizeof *m);
-    double *buf = malloc((size_t)(3 * n + 1) * sizeof *buf);
+    double *buf = calloc((size_t)(4 * n + 2), sizeof *buf);
     if (!m || !buf) {
         free(m);
         free(buf);
@@ -40,6 +42,7 @@ struct model *model_new(int n)
     m->m = buf;
     m->k = buf + n;
     m->c = buf + 2 * n + 1;
+    m->cs = buf + 3 * n + 1; /* zeros: no spring dampers */
     for (int i = 0; i < n; i++) {
         m->m[i] = MODEL_DEFAULT_MASS;
         m->c[i] = MODEL_DEFAULT_DAMPING;
@@ -65,9 +68,105 @@ void model_copy(struct model *dst, const struct model *src)
     memcpy(dst->m, src->m, (size_t)n * sizeof *dst->m);
     memcpy(dst->k, src->k, (size_t)(n + 1) * sizeof *dst->k);
     memcpy(dst->c, src->c, (size_t)n * sizeof *dst->c);
+    memcpy(dst->cs, src->cs, (size_t)(n + 1) * sizeof *dst->cs);
+    dst->force = src->force;
+    dst->force_on = src->force_on;
     dst->boundary = src->boundary;
     dst->motor = src->motor;
     dst->collisions = src->collisions;
+    model_sync(dst);
+}
+
+void model_sync(struct model *m)
+{
+    m->spring_damped = false;
+    for (int j = 0; j <= m->n; j++)
+        m->spring_damped |= m->cs[j] != 0.0;
+}
+
+int model_rigid_modes(const struct model *m)
+{
+    int n = m->n, rigid = 0;
+    bool right_tied = m->boundary != BOUNDARY_FREE && m->k[n] > 0.0;
+    bool grounded = m->k[0] > 0.0; /* the group that holds mass 1 */
+    for (int i = 0; i < n; i++) {
+        bool joined = i + 1 < n && m->k[i + 1] > 0.0;
+        if (!joined) { /* the group ends at mass i */
+            if (i + 1 == n)
+                grounded |= right_tied;
+            rigid += !grounded;
+            grounded = false;
+        }
+    }
+    return rigid;
+}
+
+/* Whether a / b is r for every pair, to rounding; b = 0 needs a = 0. *r NAN: not set. */
+static bool same_ratio(double a, double b, double *r)
+{
+    if (b == 0.0)
+        return a == 0.0;
+    double q = a / b;
+    if (isnan(*r))
+        *r = q;
+    return fabs(q - *r) <= 8.0 * DBL_EPSILON * fabs(*r);
+}
+
+bool model_rayleigh(const struct model *m)
+{
+    double alpha = NAN, beta = NAN;
+    for (int i = 0; i < m->n; i++)
+        if (!same_ratio(m->c[i], m->m[i], &alpha))
+            return false;
+    for (int j = 0; j <= m->n; j++)
+        if ((j < m->n || m->boundary != BOUNDARY_FREE) && !same_ratio(m->cs[j], m->k[j], &beta))
+            return false;
+    return true;
+}
+
+bool model_forced(const struct model *m)
+{
+    return m->force != 0.0;
+}
+
+bool model_driven(const struct model *m)
+{
+    return (m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0) || model_forced(m);
+}
+
+double model_force(const struct model *m, double t)
+{
+    if (m->force == 0.0)
+        return 0.0;
+    return m->force * motor_wave(m->motor.wave, m->motor.frequency * t + m->motor.phase);
+}
+
+void model_rates_damped_springs(const struct model *m, const double *inv_m, const double *x,
+                                const double *v, double u, double du, double *a, double *diss,
+                                double *work)
+{
+    int n = m->n;
+    const double *k = m->k, *c = m->c, *cs = m->cs;
+    /* T_j = k_j stretch_j + cs_j stretch_j'; the dampers' loss cs_j stretch_j'^2 */
+    double left = k[0] * x[0] + cs[0] * v[0], d = cs[0] * v[0] * v[0];
+    for (int i = 0; i < n; i++) {
+        double right = 0.0, rate = 0.0;
+        if (i < n - 1) {
+            rate = v[i + 1] - v[i];
+            right = k[i + 1] * (x[i + 1] - x[i]) + cs[i + 1] * rate;
+        } else if (m->boundary != BOUNDARY_FREE) {
+            rate = du - v[i];
+            right = k[n] * (u - x[i]) + cs[n] * rate;
+        }
+        double fd = c[i] * v[i];
+        a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+        d += fd * v[i] + (i < n - 1 || m->boundary != BOUNDARY_FREE ? cs[i + 1] * rate * rate : 0.0);
+        if (i == n - 1 && work)
+            *work = right * du;
+        left = right;
+    }
+    if (diss)
+        *diss = d;
 }
 
 double model_equilibrium(const struct model *m, int i)
