@@ -170,6 +170,7 @@ void record_mark(struct record *r, const struct app *app)
     k->mass = app->cfg.mass;
     k->damping = app->cfg.damping;
     k->spring = app->cfg.spring;
+    k->spring_cubic = app->cfg.spring_cubic;
     for (int i = 0; i < m->n && i < CONFIG_INTERACTIVE_MAX_MASSES; i++) {
         k->x[i] = sim_x(app->sim)[i];
         k->x0[i] = app->cfg.x0.count ? app->cfg.x0.v[app->cfg.x0.count == 1 ? 0 : i] : 0.0;
@@ -217,6 +218,22 @@ static void put_list(struct record *r, const struct config_list *was, const stru
     }
 }
 
+/* The springs' cubic constants, when they changed: the whole list, as set takes it. */
+static void put_cubic(struct record *r, const struct config_list *was,
+                      const struct config_list *now)
+{
+    if (was->count == now->count &&
+        memcmp(was->v, now->v, (size_t)now->count * sizeof *now->v) == 0)
+        return;
+    char line[4096], num[32];
+    size_t used = 0;
+    for (int i = 0; i < now->count && used < sizeof line; i++) {
+        config_format_exact(now->v[i], num, sizeof num);
+        used += (size_t)snprintf(line + used, sizeof line - used, "%s%s", i ? "," : "", num);
+    }
+    put(r, "set spring-cubic %s", now->count ? line : "0");
+}
+
 void record_changes(struct record *r, const struct app *app, const char *cmd)
 {
     const struct record_mark *k = &r->mark;
@@ -247,6 +264,7 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         put_list(r, &k->mass, &app->cfg.mass, m->n, "mass", 'm');
         put_list(r, &k->damping, &app->cfg.damping, m->n, "damping", 'c');
         put_list(r, &k->spring, &app->cfg.spring, m->n + 1, "spring", 'k');
+        put_cubic(r, &k->spring_cubic, &app->cfg.spring_cubic);
         if (m->motor.amplitude != k->amplitude) {
             config_format_exact(m->motor.amplitude, num, sizeof num);
             put(r, "set amplitude %s", num);

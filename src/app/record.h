@@ -29,7 +29,7 @@ struct record_mark {
     int integrator, boundary, wave;
     bool low_bandwidth, sweeping;
     int graphics; /* the Graphics control (enum config_graphics) */
-    struct config_list mass, damping, spring; /* as the settings hold them */
+    struct config_list mass, damping, spring, spring_cubic; /* as the settings hold them */
     double x[CONFIG_INTERACTIVE_MAX_MASSES];  /* the chain's displacements */
     double x0[CONFIG_INTERACTIVE_MAX_MASSES]; /* its initial ones */
     unsigned loads;                      /* presets loaded so far */

@@ -52,6 +52,13 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .lo_open = true, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
                     .unit = "N/m",
                     .digits = 1, .offset = AT(spring)},
+    [CFG_SPRING_CUBIC] = {.name = "spring-cubic", .section = "system", .saved = true,
+                          .kind = CONFIG_LIST, .arg = "LIST",
+                          .help = "cubic constants k3 of the springs, the walls' included: a "
+                                  "spring's force k s + k3 s^3",
+                          .symbol = "k3", .lo = -INFINITY, .hi = INFINITY, .def = 0,
+                          .per = CONFIG_PER_SPRING, .unit = "N/m³", .digits = 1,
+                          .offset = AT(spring_cubic)},
     [CFG_DAMPING] = {.name = "damping", .section = "system", .saved = true, .kind = CONFIG_LIST,
                      .arg = "LIST", .help = "damping of each mass",
                      .symbol = "damping", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_DAMPING, .unit = "N·s/m",

@@ -64,6 +64,8 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
     else if (expand(&c->spring, n + 1, config_options[CFG_SPRING].def, m->k, springs, err,
                     errlen))
         *bad_key = CFG_SPRING;
+    else if (expand(&c->spring_cubic, n + 1, 0.0, m->k3, springs, err, errlen))
+        *bad_key = CFG_SPRING_CUBIC;
     else if (expand(&c->damping, n, config_options[CFG_DAMPING].def, m->c, per_mass, err,
                     errlen))
         *bad_key = CFG_DAMPING;
@@ -89,6 +91,13 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
                  "against the wall (expected amplitude <= L - N w = %.6g m with collisions "
                  "on, the blocks %.6g m wide)", a, n, n == 1 ? "block" : "blocks", room,
                  model_block_width(m));
+    }
+    model_set_cubic(m);
+    if (*bad_key < 0 && m->cubic && c->integrator == INTEGRATOR_EXACT) {
+        *bad_key = CFG_INTEGRATOR;
+        snprintf(err, errlen, "'exact' steps a linear chain by its matrix exponential, and "
+                 "the cubic springs (--spring-cubic) make this one nonlinear (expected rk4, "
+                 "verlet, semi-implicit or euler, or --spring-cubic 0)");
     }
     if (*bad_key >= 0) {
         model_free(m);

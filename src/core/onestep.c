@@ -1,7 +1,7 @@
 /* onestep.c: the one-step matrix of each integrator on the chain, its spectral radius,
  * and the steady driven motion the integrator gives (onestep.h).
  *
- * Between contacts the chain is linear, and every stepper but the exact one maps
+ * Between contacts the chain is linear (cubic springs linearised at rest), and every stepper but the exact one maps
  * z = (x, v) by z_{n+1} = S z_n + (the drive's part). S is built here by the stepper
  * itself, one unit vector at a time, so it is the integrator's own matrix, whatever
  * the damping: for euler and rk4 it is R(hA) (R the stability polynomial), for
@@ -61,6 +61,7 @@ struct onestep *onestep_new(const struct model *m)
         return NULL;
     }
     model_copy(o->model, m);
+    o->model->cubic = false; /* a chain with cubic springs linearised at rest */
     o->model->motor.wave = WAVE_SINE;
     o->model->motor.amplitude = 1.0;
     o->model->motor.phase = 0.0;
