@@ -53,6 +53,7 @@ enum config_key {
     CFG_HEADLESS, /* the modes and the help-type options: command line only */
     CFG_MODES,
     CFG_SWEEP,
+    CFG_SWEEP_RUN,
     CFG_PLAIN,
     CFG_LIST_PRESETS,
     CFG_LIST_LESSONS,
