@@ -3,6 +3,8 @@
 #ifndef SPRINGSIM_RUN_H
 #define SPRINGSIM_RUN_H
 
+#include <stdbool.h>
+
 #include "core/config.h"
 #include "core/model.h"
 
@@ -14,5 +16,18 @@ int run_modes(const struct config *c, const struct model *m);
 
 /* --sweep FMIN:FMAX:COUNT, spec as given (run_tables.c). */
 int run_sweep(const struct config *c, const struct model *m, const char *spec);
+
+/* --sweep-run up|down FMIN:FMAX:COUNT, dir and spec as given (run_tables.c). */
+int run_sweep_run_cli(const struct config *c, const struct model *m, const char *dir,
+                      const char *spec);
+
+/* --sweep on a chain with cubic springs: harmonic balance (run_nonlinear.c). */
+int run_sweep_hb(const struct config *c, const struct model *m, double fmin, double fmax,
+                 long count, const char *arg);
+
+/* The simulated sweep up or down, each point from the last one's state (run_nonlinear.c);
+ * arg is what --meta says was asked. */
+int run_sweep_run(const struct config *c, const struct model *m, bool up, double fmin,
+                  double fmax, long count, const char *arg);
 
 #endif

@@ -101,20 +101,21 @@ int run_modes(const struct config *c, const struct model *m)
 
 /* Parses FMIN:FMAX:COUNT, each part a number as every option reads it (no blanks);
  * on error says why and returns -1. */
-static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count)
+static int parse_sweep(const char *opt, const char *spec, double *fmin, double *fmax,
+                       long *count)
 {
     const char *expect = "expected FMIN:FMAX:COUNT with 0 < FMIN < FMAX <= 1e6 and "
                          "2 <= COUNT <= 1000000";
     char buf[128], q[4 * CONFIG_QUOTE_MAX + 48];
     config_quote(spec, strlen(spec), q, sizeof q);
     if (strlen(spec) >= sizeof buf) {
-        options_say("--sweep: %s is too long (%s)", q, expect);
+        options_say("%s: %s is too long (%s)", opt, q, expect);
         return -1;
     }
     strcpy(buf, spec);
     char *a = buf, *b = strchr(a, ':'), *cnt = b ? strchr(b + 1, ':') : NULL;
     if (!b || !cnt || strchr(cnt + 1, ':')) {
-        options_say("--sweep: %s is not three values separated by ':' (%s)", q, expect);
+        options_say("%s: %s is not three values separated by ':' (%s)", opt, q, expect);
         return -1;
     }
     *b++ = '\0';
@@ -123,14 +124,14 @@ static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count
     const char *digits = cnt + (cnt[0] == '+');
     if (config_parse_number(a, fmin) || config_parse_number(b, fmax) ||
         config_parse_number(cnt, &c)) {
-        options_say("--sweep: %s has a value that is not a number (%s)", q, expect);
+        options_say("%s: %s has a value that is not a number (%s)", opt, q, expect);
         return -1;
     }
     /* A number, but not a count: say which is wrong (-5 is out of range, 1.5 not whole). */
     if (!*digits || strspn(digits, "0123456789") != strlen(digits)) {
         char qc[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(cnt, strlen(cnt), qc, sizeof qc);
-        options_say("--sweep: %s has COUNT %s, which %s (%s)", q, qc,
+        options_say("%s: %s has COUNT %s, which %s (%s)", opt, q, qc,
                     c != floor(c) ? "is not a whole number"
                     : c < 2.0     ? "is out of range"
                                   : "is not written in digits", expect);
@@ -138,7 +139,7 @@ static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count
     }
     *count = c > SWEEP_MAX ? SWEEP_MAX + 1 : (long)c;
     if (!(*fmin > 0.0 && *fmin < *fmax && *fmax <= 1e6 && *count >= 2 && *count <= SWEEP_MAX)) {
-        options_say("--sweep: %s is out of range (%s)", q, expect);
+        options_say("%s: %s is out of range (%s)", opt, q, expect);
         return -1;
     }
     return 0;
@@ -148,7 +149,7 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
 {
     double fmin, fmax;
     long count;
-    if (parse_sweep(spec, &fmin, &fmax, &count) != 0)
+    if (parse_sweep("--sweep", spec, &fmin, &fmax, &count) != 0)
         return EXIT_USAGE;
     if (m->boundary != BOUNDARY_MOTOR && !model_forced(m)) {
         options_say("--sweep: the right end is '%s', which does not drive the chain, and there "
@@ -156,6 +157,8 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
             model_boundary_name(m->boundary));
         return EXIT_USAGE;
     }
+    if (m->cubic)
+        return run_sweep_hb(c, m, fmin, fmax, count, spec);
     int n = m->n, status = EXIT_SUCCESS;
     double *amp = malloc((size_t)(2 * n) * sizeof *amp), *phase = amp ? amp + n : NULL;
     struct output o;
@@ -219,3 +222,28 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
     return status;
 }
 
+
+int run_sweep_run_cli(const struct config *c, const struct model *m, const char *dir,
+                      const char *spec)
+{
+    double fmin, fmax;
+    long count;
+    bool up = strcmp(dir, "up") == 0;
+    if (!up && strcmp(dir, "down") != 0) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(dir, strlen(dir), q, sizeof q);
+        options_say("--sweep-run: %s is not a direction (expected up or down)", q);
+        return EXIT_USAGE;
+    }
+    if (parse_sweep("--sweep-run", spec, &fmin, &fmax, &count) != 0)
+        return EXIT_USAGE;
+    if (m->boundary != BOUNDARY_MOTOR || m->motor.wave != WAVE_SINE) {
+        options_say("--sweep-run: the chain is driven by %s, not the motor's sine (expected "
+                    "--boundary motor --wave sine)", m->boundary != BOUNDARY_MOTOR
+                    ? "no motor" : motor_wave_name(m->motor.wave));
+        return EXIT_USAGE;
+    }
+    char arg[200];
+    snprintf(arg, sizeof arg, "%s %s", dir, spec);
+    return run_sweep_run(c, m, up, fmin, fmax, count, arg);
+}

@@ -264,7 +264,7 @@ fi
 # k = 10, m = 1 to 1e-9 relative, ascending, each shape's largest |component| is +1. The
 # dampers (0.1 on masses of 1 kg) are proportional to M, so the modes do not mix and each
 # is lambda^2 + 0.1 lambda + w^2 = 0: damping ratio 0.1 / (2 w), damped frequency
-# w sqrt(1 - ratio^2) / 2 pi.
+# w sqrt(1 - ratio^2) / 2 pi, eigen frequency |lambda| / 2 pi = w / 2 pi.
 check_modes() {
     nm=$1
     shift
@@ -272,7 +272,8 @@ check_modes() {
     hdr=mode,frequency_hz
     i=1
     while [ "$i" -le "$nm" ]; do hdr="$hdr,x$i"; i=$((i + 1)); done
-    expect_equal "$cmd: header" "$hdr,damping_ratio,damped_frequency_hz" "$(first_line "$out")"
+    expect_equal "$cmd: header" "$hdr,damping_ratio,damped_frequency_hz,eigen_frequency_hz" \
+        "$(first_line "$out")"
     expect_equal "$cmd: rows" "$nm" "$(data_rows "$out")"
     bad=$(awk -F, -v n="$nm" '
         function abs(x) { return x < 0 ? -x : x }
@@ -286,7 +287,7 @@ check_modes() {
             if (abs($2 - want) > 1e-9 * want) { print "mode " j " f = " $2 ", expected " want; exit }
             if (j > 1 && $2 <= last) { print "mode " j " not above mode " j - 1; exit }
             last = $2
-            if (NF != n + 4) { print "mode " j " has " NF - 4 " components"; exit }
+            if (NF != n + 5) { print "mode " j " has " NF - 5 " components"; exit }
             max = -2; min = 2
             for (i = 3; i <= n + 2; i++) { if ($i + 0 > max) max = $i + 0; if ($i + 0 < min) min = $i + 0 }
             if (max != 1 || min < -1) { print "mode " j " shape " $0 " is not scaled to +1"; exit }
@@ -294,6 +295,7 @@ check_modes() {
             if (abs($(n + 3) - z) > 1e-9 * z) { print "mode " j " ratio " $(n + 3) ", expected " z; exit }
             fd = w * sqrt(1 - z * z) / (2 * pi)
             if (abs($(n + 4) - fd) > 1e-9 * fd) { print "mode " j " damped " $(n + 4) ", expected " fd; exit }
+            if (abs($(n + 5) - want) > 1e-9 * want) { print "mode " j " eigen " $(n + 5) ", expected " want; exit }
         }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
 }
@@ -302,12 +304,16 @@ check_modes 5
 # the wall end has the same modes
 check_modes 3 --boundary wall
 # Overdamped: one mass, k = 20 (both springs), m = 1, c = 20 > 2 sqrt(k m): both
-# eigenvalues real, ratio c / (2 sqrt(k m)) = sqrt(5), damped frequency 0.
+# eigenvalues real, ratio c / (2 sqrt(k m)) = sqrt(5), damped frequency 0; |lambda| / 2 pi
+# the geometric mean of the two, sqrt(k / m) / 2 pi (their product is k / m).
 if expect_ok --modes -n 1 --damping 20; then
-    expect_equal "$cmd: header" "mode,frequency_hz,x1,damping_ratio,damped_frequency_hz" \
+    expect_equal "$cmd: header" \
+        "mode,frequency_hz,x1,damping_ratio,damped_frequency_hz,eigen_frequency_hz" \
         "$(first_line "$out")"
     bad=$(awk -F, 'NR == 2 { d = $4 - sqrt(5); if (d < 0) d = -d
-        if (d > 1e-9 || $5 != 0) print "ratio " $4 " (expected sqrt 5), damped " $5 " (expected 0)" }' "$out")
+        w = sqrt(20) / (2 * atan2(0, -1)); e = $6 - w; if (e < 0) e = -e
+        if (d > 1e-9 || $5 != 0) print "ratio " $4 " (expected sqrt 5), damped " $5 " (expected 0)"
+        else if (e > 1e-9 * w) print "eigen frequency " $6 " (expected " w ")" }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
 fi
 
@@ -386,7 +392,8 @@ case $(cat "$err") in
 esac
 # --modes and --sweep write FILE too
 if expect_ok --modes -o "$tmp/o/modes.csv"; then
-    expect_equal "$cmd: header in FILE" "mode,frequency_hz,x1,x2,damping_ratio,damped_frequency_hz" \
+    expect_equal "$cmd: header in FILE" \
+        "mode,frequency_hz,x1,x2,damping_ratio,damped_frequency_hz,eigen_frequency_hz" \
         "$(first_line "$tmp/o/modes.csv")"
     expect_equal "$cmd: stdout" "" "$(cat "$out")"
 fi

@@ -331,7 +331,7 @@ static void every_saved_row_round_trips(void **state)
         model_free(m);
         model_free(m2);
     }
-    assert_int_equal(rows, 20);
+    assert_int_equal(rows, 21);
 }
 
 /* A start along a mode is written back as start-mode = K:AMP and read back the same;

@@ -116,8 +116,8 @@ static void control_list(char *buf, size_t len)
     for (int c = 0; c < CTL_COUNT && used < len; c++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", c ? ", " : "",
                                  app_control_name((enum control)c));
-    if (used < len) /* a setting with keys (< and >) but no row of the panel */
-        snprintf(buf + used, len - used, ", window");
+    if (used < len) /* settings with keys (< and >; K on a spring) but no row of the panel */
+        snprintf(buf + used, len - used, ", window, spring-cubic");
 }
 
 void command_status(const struct app *app, char *buf, size_t len)
@@ -142,7 +142,8 @@ static enum command_reply say_modes(const struct app *app, char *answer, size_t 
         snprintf(answer, len, "modes: the modes of this chain are not known");
         return REPLY_ERROR;
     }
-    size_t used = (size_t)snprintf(answer, len, "modes:");
+    size_t used = (size_t)snprintf(answer, len, "modes%s:",
+                                   app->model->cubic ? " (linearised at rest)" : "");
     for (int j = 0; j < app->model->n && used < len; j++) {
         double z = app->damping_ratio[j];
         char damping[64] = "";
@@ -231,6 +232,9 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     bool window = c < 0 && strcmp(name, "window") == 0;
     if (window && *value)
         return verb(app, ACT_WINDOW, &(struct verb_arg){.text = value}, answer, len);
+    window |= c < 0 && strcmp(name, "spring-cubic") == 0; /* no panel row either */
+    if (window && *value)
+        return verb(app, ACT_CUBIC, &(struct verb_arg){.index = -1, .text = value}, answer, len);
     if ((c < 0 && !window) || !*value) {
         config_quote(name, strlen(name), q, sizeof q);
         if (!*name)

@@ -180,6 +180,7 @@ static int new_masses(struct app *app, int n, unsigned *what)
     struct config next = app->cfg;
     set_all(&next.mass, app->model->m[0]);
     set_all(&next.spring, app->model->k[0]);
+    set_all(&next.spring_cubic, app->model->k3[0]);
     set_all(&next.damping, app->model->c[0]);
     next.masses = n;
     next.x0.count = next.v0.count = 0;
@@ -247,6 +248,8 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         else
             memcpy(&i, at, sizeof i);
         i = (i + steps % count + count) % count;
+        if (ctl == CTL_INTEGRATOR && i == INTEGRATOR_EXACT && app->model->cubic)
+            i = (i + (steps < 0 ? -1 : 1) + count) % count; /* exact steps linear chains only */
         if (o->kind == CONFIG_FLAG)
             *(bool *)(void *)at = i;
         else
@@ -337,6 +340,42 @@ unsigned app_set_window(struct app *app, const char *text)
     unsigned what = next.window != app->cfg.window ? APP_CHANGED_WINDOW : 0;
     app->cfg.window = next.window;
     return what | app_say(app, SAID_NOTE, "window %g s", next.window);
+}
+
+unsigned app_set_cubic(struct app *app, int spring, const char *text)
+{
+    const struct model *m = app->model;
+    struct config next = app->cfg;
+    char err[300], noun[48] = "spring-cubic";
+    if (spring > m->n)
+        return 0;
+    if (spring >= 0)
+        app_spring_name(m, spring, noun, sizeof noun);
+    if (config_set(&next, CFG_SPRING_CUBIC, text, err, sizeof err) != 0 ||
+        (spring >= 0 && next.spring_cubic.count != 1)) {
+        if (spring >= 0 && next.spring_cubic.count > 1) {
+            char q[4 * CONFIG_QUOTE_MAX + 48];
+            config_quote(text, strlen(text), q, sizeof q);
+            snprintf(err, sizeof err, "%s is more than one value", q);
+        }
+        app_say(app, SAID_ERROR, "%s: %s", noun, err);
+        return 0;
+    }
+    if (spring >= 0) { /* every spring spelled out, one changed */
+        double v = next.spring_cubic.v[0];
+        next.spring_cubic.count = m->n + 1;
+        memcpy(next.spring_cubic.v, m->k3, (size_t)(m->n + 1) * sizeof *m->k3);
+        next.spring_cubic.v[spring] = v;
+    }
+    unsigned changed = 0;
+    if (app_change(app, &next, 0, "the change of cubic springs", &changed) != 0)
+        return 0;
+    if (changed & APP_CHANGED_MESSAGE)
+        return changed;
+    if (spring >= 0) /* the model rebuilt: read it afresh */
+        return changed | app_say(app, SAID_NOTE, "%s: k3 = %g N/m³", noun,
+                                 app->model->k3[spring]);
+    return changed | app_say(app, SAID_NOTE, "spring-cubic %s N/m³", text);
 }
 
 unsigned app_apply_masses(struct app *app)

@@ -200,6 +200,7 @@ void record_mark(struct record *r, const struct app *app)
     k->mass = app->cfg.mass;
     k->damping = app->cfg.damping;
     k->spring = app->cfg.spring;
+    k->spring_cubic = app->cfg.spring_cubic;
     for (int i = 0; i <= m->n && i <= CONFIG_INTERACTIVE_MAX_MASSES; i++)
         k->k[i] = m->k[i];
     for (int i = 0; i < m->n && i < CONFIG_INTERACTIVE_MAX_MASSES; i++) {
@@ -248,6 +249,22 @@ static void put_list(struct record *r, const struct config_list *before,
     }
 }
 
+/* The springs' cubic constants, when they changed: the whole list, as set takes it. */
+static void put_cubic(struct record *r, const struct config_list *was,
+                      const struct config_list *now)
+{
+    if (was->count == now->count &&
+        memcmp(was->v, now->v, (size_t)now->count * sizeof *now->v) == 0)
+        return;
+    char line[4096], num[32];
+    size_t used = 0;
+    for (int i = 0; i < now->count && used < sizeof line; i++) {
+        config_format_exact(now->v[i], num, sizeof num);
+        used += (size_t)snprintf(line + used, sizeof line - used, "%s%s", i ? "," : "", num);
+    }
+    put(r, "set spring-cubic %s", now->count ? line : "0");
+}
+
 void record_changes(struct record *r, const struct app *app, const char *cmd)
 {
     const struct record_mark *k = &r->mark;
@@ -278,6 +295,7 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         put_list(r, &k->mass, &app->cfg.mass, k->m, m->m, m->n, "mass", 'm');
         put_list(r, &k->damping, &app->cfg.damping, k->c, m->c, m->n, "damping", 'c');
         put_list(r, &k->spring, &app->cfg.spring, k->k, m->k, m->n + 1, "spring", 'k');
+        put_cubic(r, &k->spring_cubic, &app->cfg.spring_cubic);
         if (m->motor.amplitude != k->amplitude) {
             config_format_exact(m->motor.amplitude, num, sizeof num);
             put(r, "set amplitude %s", num);

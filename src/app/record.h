@@ -33,7 +33,7 @@ struct record_mark {
     int integrator, boundary, wave;
     bool low_bandwidth, sweeping;
     int graphics; /* the Graphics control (enum config_graphics) */
-    struct config_list mass, damping, spring; /* as the settings hold them */
+    struct config_list mass, damping, spring, spring_cubic; /* as the settings hold them */
     double m[CONFIG_INTERACTIVE_MAX_MASSES];  /* the values in force: the masses, */
     double c[CONFIG_INTERACTIVE_MAX_MASSES];  /* the dampers */
     double k[CONFIG_INTERACTIVE_MAX_MASSES + 1]; /* and the springs */

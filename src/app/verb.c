@@ -112,6 +112,11 @@ static unsigned element(struct app *app, const struct verb_arg *arg)
     return app_set_element(app, arg->what, arg->index, arg->text);
 }
 
+static unsigned cubic(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_cubic(app, arg->index, arg->text);
+}
+
 static unsigned place(struct app *app, const struct verb_arg *arg)
 {
     return app_place_start(app, arg->index, arg->value);
@@ -163,6 +168,7 @@ static const struct {
     [ACT_PLACE] = {.with = place},
     [ACT_PRESET] = {.with = preset},
     [ACT_WINDOW] = {.with = window},
+    [ACT_CUBIC] = {.with = cubic},
 };
 
 bool verb_bound(enum action a)

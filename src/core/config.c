@@ -52,6 +52,13 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .symbol = "springs", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
                     .unit = "N/m",
                     .digits = 1, .offset = AT(spring)},
+    [CFG_SPRING_CUBIC] = {.name = "spring-cubic", .section = "system", .saved = true,
+                          .kind = CONFIG_LIST, .arg = "LIST",
+                          .help = "cubic constants k3 of the springs, the walls' included: a "
+                                  "spring's force k s + k3 s^3",
+                          .symbol = "k3", .lo = -INFINITY, .hi = INFINITY, .def = 0,
+                          .per = CONFIG_PER_SPRING, .unit = "N/m³", .digits = 1,
+                          .offset = AT(spring_cubic)},
     [CFG_DAMPING] = {.name = "damping", .section = "system", .saved = true, .kind = CONFIG_LIST,
                      .arg = "LIST", .help = "damping of each mass",
                      .symbol = "damping", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_DAMPING, .unit = "N·s/m",
@@ -203,7 +210,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_MODES] = {.name = "modes", .kind = CONFIG_MODE,
                    .help = "natural frequencies, mode shapes and damping, CSV"},
     [CFG_SWEEP] = {.name = "sweep", .kind = CONFIG_MODE, .arg = "FMIN:FMAX:COUNT",
-                   .help = "steady-state amplitude and phase against motor frequency, CSV"},
+                   .help = "steady-state amplitude and phase against motor frequency, CSV; "
+                           "with cubic springs every branch by harmonic balance: "
+                           "frequency_hz,branch,stable,amp1..,phase1.."},
+    [CFG_SWEEP_RUN] = {.name = "sweep-run", .kind = CONFIG_MODE,
+                       .arg = "up|down FMIN:FMAX:COUNT",
+                       .help = "a simulated sweep up or down, each point from the last one's "
+                               "state, run until steady to 0.1 %; CSV frequency_hz,branch "
+                               "(empty),stable,amp1..,phase1.."},
     [CFG_PLAIN] = {.name = "plain", .kind = CONFIG_MODE,
                    .help = "the interactive program as lines of text, commands on standard "
                            "input: no escape sequences (also when TERM=dumb)"},

@@ -64,6 +64,8 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
     else if (expand(&c->spring, n + 1, config_options[CFG_SPRING].def, m->k, springs, err,
                     errlen))
         *bad_key = CFG_SPRING;
+    else if (expand(&c->spring_cubic, n + 1, 0.0, m->k3, springs, err, errlen))
+        *bad_key = CFG_SPRING_CUBIC;
     else if (expand(&c->damping, n, config_options[CFG_DAMPING].def, m->c, per_mass, err,
                     errlen))
         *bad_key = CFG_DAMPING;
@@ -104,6 +106,13 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
         *bad_key = CFG_FORCE_ON;
         snprintf(err, errlen, "'%d' is out of range for %d %s (expected a mass 1 <= K <= %d)",
                  c->force_on, n, per_mass, n);
+    }
+    model_set_cubic(m);
+    if (*bad_key < 0 && m->cubic && c->integrator == INTEGRATOR_EXACT) {
+        *bad_key = CFG_INTEGRATOR;
+        snprintf(err, errlen, "'exact' steps a linear chain by its matrix exponential, and "
+                 "the cubic springs (--spring-cubic) make this one nonlinear (expected rk4, "
+                 "verlet, semi-implicit or euler, or --spring-cubic 0)");
     }
     if (*bad_key >= 0) {
         model_free(m);

@@ -130,9 +130,12 @@ static void assign(int n, int units, const bool *pair, struct candidate *cand, i
  * NULL for a real one); scratch holds 4N doubles. model_rates, being linear, gives
  * acc = -M^-1 (K x + C v) for the real and the imaginary parts of (psi, lambda psi); the
  * residual is m_i (lambda^2 psi_i - acc_i). */
-static double backward_error(const struct model *m, double complex lambda, const double *re,
-                             const double *im, double *scratch)
+static double backward_error(const struct model *chain, double complex lambda,
+                             const double *re, const double *im, double *scratch)
 {
+    struct model linear = *chain; /* cubic springs linearised at rest */
+    linear.cubic = false;
+    const struct model *m = &linear;
     int n = m->n;
     double *x = scratch, *v = scratch + n, *acc_re = scratch + 2 * n, *acc_im = scratch + 3 * n;
     for (int pass = 0; pass < 2; pass++) {

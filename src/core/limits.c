@@ -410,7 +410,7 @@ void limits_runaway_start(struct limits_runaway *r, const struct model *m,
                           const struct energy *e0)
 {
     double amp = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
-    r->base = e0->kinetic + e0->potential + 0.5 * m->k[m->n] * amp * amp;
+    r->base = e0->kinetic + e0->potential + model_spring_energy(m, m->n, amp);
     r->work0 = e0->motor_work;
     r->most = 0.0;
 }

@@ -4,7 +4,8 @@
  *   T_j = k_j (d_j - d_{j-1}) + cs_j (v_j - v_{j-1}),
  *
  * T_j the tension of spring j and its damper, with d_{-1} = v_{-1} = 0 (left wall) and
- * d_N = u(t), v_N = u'(t) (right end); for a free end T_N = 0. */
+ * d_N = u(t), v_N = u'(t) (right end); for a free end T_N = 0. A cubic spring adds
+ * k3_j s^3 to its force k_j s (s its stretch) and k3_j s^4/4 to its energy. */
 #include "model.h"
 
 #include <float.h>
@@ -32,7 +33,7 @@ struct model *model_new(int n)
     if (n < 1 || n > MODEL_MAX_MASSES)
         return NULL;
     struct model *m = calloc(1, sizeof *m);
-    double *buf = calloc((size_t)(4 * n + 2), sizeof *buf);
+    double *buf = calloc((size_t)(5 * n + 3), sizeof *buf);
     if (!m || !buf) {
         free(m);
         free(buf);
@@ -43,6 +44,7 @@ struct model *model_new(int n)
     m->k = buf + n;
     m->c = buf + 2 * n + 1;
     m->cs = buf + 3 * n + 1; /* zeros: no spring dampers */
+    m->k3 = buf + 4 * n + 2; /* zeros: linear springs */
     for (int i = 0; i < n; i++) {
         m->m[i] = MODEL_DEFAULT_MASS;
         m->c[i] = MODEL_DEFAULT_DAMPING;
@@ -69,6 +71,7 @@ void model_copy(struct model *dst, const struct model *src)
     memcpy(dst->k, src->k, (size_t)(n + 1) * sizeof *dst->k);
     memcpy(dst->c, src->c, (size_t)n * sizeof *dst->c);
     memcpy(dst->cs, src->cs, (size_t)(n + 1) * sizeof *dst->cs);
+    memcpy(dst->k3, src->k3, (size_t)(n + 1) * sizeof *dst->k3);
     dst->force = src->force;
     dst->force_on = src->force_on;
     dst->boundary = src->boundary;
@@ -82,6 +85,7 @@ void model_sync(struct model *m)
     m->spring_damped = false;
     for (int j = 0; j <= m->n; j++)
         m->spring_damped |= m->cs[j] != 0.0;
+    model_set_cubic(m);
 }
 
 int model_rigid_modes(const struct model *m)
@@ -146,17 +150,18 @@ void model_rates_damped_springs(const struct model *m, const double *inv_m, cons
                                 double *work)
 {
     int n = m->n;
-    const double *k = m->k, *c = m->c, *cs = m->cs;
-    /* T_j = k_j stretch_j + cs_j stretch_j'; the dampers' loss cs_j stretch_j'^2 */
-    double left = k[0] * x[0] + cs[0] * v[0], d = cs[0] * v[0] * v[0];
+    const double *c = m->c, *cs = m->cs;
+    /* T_j = k_j s_j + k3_j s_j^3 + cs_j s_j' (s_j the stretch); the dampers' loss
+     * cs_j s_j'^2 */
+    double left = model_spring_force(m, 0, x[0]) + cs[0] * v[0], d = cs[0] * v[0] * v[0];
     for (int i = 0; i < n; i++) {
         double right = 0.0, rate = 0.0;
         if (i < n - 1) {
             rate = v[i + 1] - v[i];
-            right = k[i + 1] * (x[i + 1] - x[i]) + cs[i + 1] * rate;
+            right = model_spring_force(m, i + 1, x[i + 1] - x[i]) + cs[i + 1] * rate;
         } else if (m->boundary != BOUNDARY_FREE) {
             rate = du - v[i];
-            right = k[n] * (u - x[i]) + cs[n] * rate;
+            right = model_spring_force(m, n, u - x[i]) + cs[n] * rate;
         }
         double fd = c[i] * v[i];
         a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
@@ -185,6 +190,56 @@ double model_end_position(const struct model *m, double t)
     return m->boundary == BOUNDARY_MOTOR ? motor_position(&m->motor, t) : 0.0;
 }
 
+void model_set_cubic(struct model *m)
+{
+    m->cubic = false;
+    for (int j = 0; j <= m->n; j++)
+        m->cubic |= m->k3[j] != 0.0;
+}
+
+double model_turnover(const struct model *m, int *spring)
+{
+    double least = INFINITY;
+    for (int j = 0; j <= m->n; j++)
+        if (m->k3[j] < 0.0 && sqrt(m->k[j] / (-3.0 * m->k3[j])) < least) {
+            least = sqrt(m->k[j] / (-3.0 * m->k3[j]));
+            *spring = j;
+        }
+    return least;
+}
+
+bool model_hardening(const struct model *m)
+{
+    for (int j = 0; j <= m->n; j++)
+        if (m->k3[j] > 0.0)
+            return true;
+    return false;
+}
+
+void model_rates_cubic(const struct model *m, const double *inv_m, const double *x,
+                       const double *v, double u, double du, double *a, double *diss,
+                       double *work)
+{
+    int n = m->n;
+    const double *c = m->c;
+    double left = model_spring_force(m, 0, x[0]), d = 0.0;
+    for (int i = 0; i < n - 1; i++) {
+        double right = model_spring_force(m, i + 1, x[i + 1] - x[i]);
+        double fd = c[i] * v[i];
+        a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+        d += fd * v[i];
+        left = right;
+    }
+    int i = n - 1;
+    double right = m->boundary == BOUNDARY_FREE ? 0.0 : model_spring_force(m, n, u - x[i]);
+    double fd = c[i] * v[i];
+    a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+    if (diss)
+        *diss = d + fd * v[i];
+    if (work)
+        *work = right * du;
+}
+
 void model_accel(const struct model *m, const double *x, const double *v, double u, double *a)
 {
     model_rates(m, NULL, x, v, u, 0.0, a, NULL, NULL);
@@ -193,16 +248,12 @@ void model_accel(const struct model *m, const double *x, const double *v, double
 double model_potential(const struct model *m, const double *x, double u)
 {
     int n = m->n;
-    double e = m->k[0] * x[0] * x[0];
-    for (int j = 1; j < n; j++) {
-        double s = x[j] - x[j - 1];
-        e += m->k[j] * s * s;
-    }
-    if (m->boundary != BOUNDARY_FREE) {
-        double s = u - x[n - 1];
-        e += m->k[n] * s * s;
-    }
-    return 0.5 * e;
+    double e = model_spring_energy(m, 0, x[0]);
+    for (int j = 1; j < n; j++)
+        e += model_spring_energy(m, j, x[j] - x[j - 1]);
+    if (m->boundary != BOUNDARY_FREE)
+        e += model_spring_energy(m, n, u - x[n - 1]);
+    return e;
 }
 
 double model_kinetic(const struct model *m, const double *v)
@@ -215,9 +266,12 @@ double model_kinetic(const struct model *m, const double *v)
 
 /* Built column by column from the one equation of motion: column j of -M^-1 K is the
  * acceleration of a unit displacement of mass j (right end held at 0), column j of
- * -M^-1 C that of a unit velocity. */
-int model_first_order(const struct model *m, double *a, double *work)
+ * -M^-1 C that of a unit velocity; cubic springs left out (the chain linearised at rest). */
+int model_first_order(const struct model *lin, double *a, double *work)
 {
+    struct model linear = *lin;
+    linear.cubic = false;
+    const struct model *m = &linear;
     int n = m->n, n2 = 2 * n;
     double *x = work, *v = work + n, *acc = work + 2 * n;
     memset(a, 0, (size_t)n2 * (size_t)n2 * sizeof *a);

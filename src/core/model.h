@@ -28,11 +28,14 @@ struct model {
     double *c;               /* N damping coefficients (N s/m), each mass to the ground */
     double *cs;              /* N+1 spring dampers (N s/m): cs[j] beside spring j, on the
                                 rate of its stretch (the walls' and the motor's included) */
+    double *k3;              /* N+1 cubic spring constants (N/m^3): force k s + k3 s^3 */
     double force;            /* F (N): a force F w(2 pi f t) on mass force_on, the motor's
                                 waveform and frequency; 0: none */
     int force_on;            /* the mass the force acts on, 0-based (0 .. N-1) */
     bool spring_damped;      /* some cs[j] > 0: model_rates takes the general path
                                 (model_sync sets it) */
+    bool cubic;              /* some k3 is not 0 (model_sync or model_set_cubic): the
+                                chain is nonlinear */
     enum boundary boundary;  /* right end */
     struct motor motor;      /* drive, used when boundary is BOUNDARY_MOTOR */
     bool collisions;         /* walls, piston and mass-mass contacts on */
@@ -48,7 +51,8 @@ void model_free(struct model *m);
 /* Copies every parameter of src into dst; both must have the same n. */
 void model_copy(struct model *dst, const struct model *src);
 
-/* Sets m->spring_damped from m->cs: call it after changing cs by hand. */
+/* Sets m->spring_damped from m->cs and m->cubic from m->k3: call it after changing
+ * them by hand. */
 void model_sync(struct model *m);
 
 /* How many rigid-body modes m has (0 Hz): the groups of masses joined by springs of
@@ -67,7 +71,8 @@ bool model_forced(const struct model *m);
 /* Whether m's right end or its force moves anything: a motor end with A != 0, or F != 0. */
 bool model_driven(const struct model *m);
 
-/* model_rates' general path, for chains with spring dampers (model_rates calls it). */
+/* model_rates' general path, for chains with spring dampers (model_rates calls it); each
+ * spring's force model_spring_force, so cubic springs beside dampers are right too. */
 void model_rates_damped_springs(const struct model *m, const double *inv_m, const double *x,
                                 const double *v, double u, double du, double *a, double *diss,
                                 double *work);
@@ -80,6 +85,25 @@ double model_block_width(const struct model *m);
 
 /* Right-end position u(t): the motor's for BOUNDARY_MOTOR, 0 otherwise. */
 double model_end_position(const struct model *m, double t);
+
+/* The force of spring j stretched by s: k_j s + k3_j s^3. */
+static inline double model_spring_force(const struct model *m, int j, double s)
+{
+    return m->cubic ? (m->k[j] + m->k3[j] * s * s) * s : m->k[j] * s;
+}
+
+/* The energy of spring j stretched by s: k_j s^2/2 + k3_j s^4/4. */
+static inline double model_spring_energy(const struct model *m, int j, double s)
+{
+    double e = 0.5 * m->k[j] * s * s;
+    return m->cubic ? e + 0.25 * m->k3[j] * s * s * s * s : e;
+}
+
+/* model_rates for a chain with cubic springs (model.c): the same equation, each spring's
+ * force k s + k3 s^3. */
+void model_rates_cubic(const struct model *m, const double *inv_m, const double *x,
+                       const double *v, double u, double du, double *a, double *diss,
+                       double *work);
 
 /* The one equation of motion (SPEC section 1): accelerations a[i] at displacements x,
  * velocities v and right end u moving at du; with diss and work not NULL, also the power
@@ -94,6 +118,10 @@ model_rates(const struct model *m, const double *inv_m, const double *x, const d
 {
     if (m->spring_damped) {
         model_rates_damped_springs(m, inv_m, x, v, u, du, a, diss, work);
+        return;
+    }
+    if (m->cubic) {
+        model_rates_cubic(m, inv_m, x, v, u, du, a, diss, work);
         return;
     }
     int n = m->n;
@@ -124,14 +152,27 @@ void model_accel(const struct model *m, const double *x, const double *v, double
 /* The force input's value F w(2 pi (f t + phase)) at time t (0 without one). */
 double model_force(const struct model *m, double t);
 
-/* Spring potential energy sum 1/2 k_j stretch_j^2 at displacements x, end position u. */
+/* Spring potential energy sum k_j s_j^2/2 + k3_j s_j^4/4 (s_j spring j's stretch) at
+ * displacements x, end position u. */
 double model_potential(const struct model *m, const double *x, double u);
 
 /* Kinetic energy sum 1/2 m_i v_i^2. */
 double model_kinetic(const struct model *m, const double *v);
 
+/* The smallest stretch (m) at which a softening spring's force k s + k3 s^3 turns over
+ * (its stiffness k + 3 k3 s^2 reaches 0: s = sqrt(k / (3 |k3|))), its spring into *spring;
+ * INFINITY when no spring softens. */
+double model_turnover(const struct model *m, int *spring);
+
+/* Whether some spring hardens (k3 > 0). */
+bool model_hardening(const struct model *m);
+
+/* Sets m->cubic from m->k3 (after the k3 are written). */
+void model_set_cubic(struct model *m);
+
 /* The first-order matrix A = [[0, I], [-M^-1 K, -M^-1 C]] of z' = A z, z = (x, v), with
- * the right end held at 0: 2N x 2N, column-major, into a; work holds 3N doubles.
+ * the right end held at 0 (a chain with cubic springs linearised at rest): 2N x 2N,
+ * column-major, into a; work holds 3N doubles.
  * Returns 0, or -2 when an entry overflows. */
 int model_first_order(const struct model *m, double *a, double *work);
 

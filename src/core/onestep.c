@@ -1,7 +1,8 @@
 /* onestep.c: the one-step matrix of each integrator on the chain, its spectral radius,
  * and the steady driven motion the integrator gives (onestep.h).
  *
- * Between contacts the chain is linear, and every stepper but the exact one maps
+ * Between contacts the chain is linear (cubic springs linearised at rest), and every
+ * stepper but the exact one maps
  * z = (x, v) by z_{n+1} = S z_n + (the drive's part). S is built here by the stepper
  * itself, one unit vector at a time, so it is the integrator's own matrix, whatever
  * the damping: for euler and rk4 it is R(hA) (R the stability polynomial), for
@@ -62,6 +63,10 @@ struct onestep *onestep_new(const struct model *m)
         return NULL;
     }
     model_copy(o->model, m);
+    /* A chain with cubic springs linearised at rest: k3 cleared, not just the flag, so that
+     * the stepper's own copy (model_copy, model_sync) stays linear too. */
+    memset(o->model->k3, 0, (size_t)(m->n + 1) * sizeof *o->model->k3);
+    o->model->cubic = false;
     o->model->motor.wave = WAVE_SINE;
     o->model->motor.amplitude = 1.0;
     o->model->motor.phase = 0.0;

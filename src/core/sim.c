@@ -336,12 +336,15 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
 }
 
 /* Work done by the motor when the end jumps from u_from to u_to with the last mass at
- * displacement x: the change of spring N's energy, 1/2 k_N ((u_to-x)^2 - (u_from-x)^2). */
+ * displacement x: the change of spring N's energy, E(u_to - x) - E(u_from - x). */
 static double jump_work(const struct sim *s, double u_from, double u_to)
 {
     double x = s->y[s->n - 1];
+    const struct model *m = sim_model(s);
+    if (m->cubic)
+        return model_spring_energy(m, s->n, u_to - x) - model_spring_energy(m, s->n, u_from - x);
     double a = u_from - x, b = u_to - x;
-    return 0.5 * sim_model(s)->k[s->n] * (b * b - a * a);
+    return 0.5 * m->k[s->n] * (b * b - a * a);
 }
 
 /* The piston jumped to u, into the last mass: every mass in its way is pushed ahead of

@@ -55,6 +55,8 @@ const struct binding input_bindings[] = {
     {'\r', ACT_ENTER, "Enter", "Enter", NULL, false},
     {'\t', ACT_FOCUS, "Tab", "Tab", "move between controls, chain elements and (m view) modes", false},
     {'c', ACT_DAMPING, "c", "c", "chain: type the selected mass's own damping", false},
+    {'K', ACT_CUBIC_KEY, "K", "K", "chain: type the selected spring's cubic constant k3",
+     false},
     {'[', ACT_SLOWER, "[", "[", "playback slower", false},
     {']', ACT_FASTER, "]", "]", "playback faster", false},
     {27, ACT_ESCAPE, "Esc", "Esc", "close the overlay, cancel typing", false},

@@ -203,6 +203,12 @@ static void on_screen_action(struct tui *t, enum action a, int ch, unsigned *cha
         else
             app_say(app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
         break;
+    case ACT_CUBIC_KEY:
+        if (select_spring(&t->sel) >= 0)
+            overlay_edit(&t->overlay, EDIT_CUBIC);
+        else
+            app_say(app, SAID_NOTE, "select a spring in the chain first (Tab, then ↑↓)");
+        break;
     case ACT_FOCUS:
         select_toggle_focus(&t->sel, app->model, t->views.shown == VIEW_MODES);
         break;

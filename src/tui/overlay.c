@@ -272,6 +272,12 @@ static void edit_prompt(const struct overlay *o, const struct app *app,
         snprintf(buf, len, "%s: k (N/m) =", name);
         break;
     }
+    case EDIT_CUBIC: {
+        char name[48];
+        app_spring_name(app->model, i, name, sizeof name);
+        snprintf(buf, len, "%s: k3 (N/m³) =", name);
+        break;
+    }
     case EDIT_SAVE:
         snprintf(buf, len, "save preset as:");
         break;
@@ -383,6 +389,9 @@ static unsigned finish_edit(struct overlay *o, struct app *app, const struct sel
         return set_element(o, app, 'c', i);
     case EDIT_SPRING:
         return set_element(o, app, 'k', i);
+    case EDIT_CUBIC:
+        verb_do(app, ACT_CUBIC, &(struct verb_arg){.index = i, .text = o->edit}, &changed);
+        return changed;
     case EDIT_SAVE:
         if (app_save(app, o->edit, false) == SAVE_EXISTS) {
             snprintf(o->save_name, sizeof o->save_name, "%s", o->edit);

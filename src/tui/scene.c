@@ -260,8 +260,11 @@ void scene_draw(struct scene *s, const struct layout *l, const struct app *app,
     else {
         char name[48];
         app_spring_name(m, j, name, sizeof name);
-        snprintf(line, sizeof line, " %s: k %.3g N/m │ Enter k  ↑↓ next  Tab back ", name,
-                 m->k[j]);
+        char k3[40] = "";
+        if (m->k3[j] != 0.0)
+            snprintf(k3, sizeof k3, ", k3 %.3g N/m³", m->k3[j]);
+        snprintf(line, sizeof line, " %s: k %.3g N/m%s │ Enter k  K k3  ↑↓ next  Tab back ",
+                 name, m->k[j], k3);
     }
     draw_text_attr(r.y + r.h - 1, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), line);
 }
