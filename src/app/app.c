@@ -198,12 +198,14 @@ static unsigned compare(const struct app *app, const struct config *next, const 
     if (n != o->n)
         what |= APP_CHANGED_SIZE | APP_CHANGED_CHAIN;
     else if (differ(m->m, o->m, n) || differ(m->k, o->k, n + 1) || differ(m->c, o->c, n) ||
-             differ(m->k3, o->k3, n + 1) || m->collisions != o->collisions)
+             differ(m->k3, o->k3, n + 1) || differ(m->cs, o->cs, n + 1) ||
+             m->collisions != o->collisions)
         what |= APP_CHANGED_CHAIN;
     if (m->boundary != o->boundary)
         what |= APP_CHANGED_CHAIN | APP_CHANGED_DRIVE;
     if (m->motor.wave != o->motor.wave || m->motor.amplitude != o->motor.amplitude ||
-        m->motor.frequency != o->motor.frequency)
+        m->motor.frequency != o->motor.frequency || m->force != o->force ||
+        m->force_on != o->force_on)
         what |= APP_CHANGED_DRIVE;
     if (next->dt != app->cfg.dt)
         what |= APP_CHANGED_DT;

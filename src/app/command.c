@@ -33,9 +33,10 @@ const struct command commands[CMD_COUNT] = {
     [CMD_PLACE] = {"place", ACT_PLACE, "MASS X0",
                    "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
                    "where they stand, at rest, t = 0 (paused)"},
-    [CMD_ELEMENT] = {"element", ACT_ELEMENT, "m|c|k I VALUE",
+    [CMD_ELEMENT] = {"element", ACT_ELEMENT, "m|c|k|cs I VALUE",
                      "one element: mass I's mass (m) or damping (c), or spring I's constant "
-                     "(k; spring 0 is the wall's, spring N the motor's)"},
+                     "(k) or the damper beside it (cs; spring 0 is the wall's, spring N the "
+                     "motor's)"},
     [CMD_NEAREST] = {"nearest", ACT_NEAREST, "", "drive at the nearest natural frequency"},
     [CMD_SWEEP] = {"sweep", ACT_SWEEP, "", "start / stop a sine-sweep experiment"},
     [CMD_FASTER] = {"faster", ACT_FASTER, "", "playback faster"},
@@ -117,7 +118,7 @@ static void control_list(char *buf, size_t len)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", c ? ", " : "",
                                  app_control_name((enum control)c));
     if (used < len) /* settings with keys (< and >; K on a spring) but no row of the panel */
-        snprintf(buf + used, len - used, ", window, spring-cubic");
+        snprintf(buf + used, len - used, ", window, spring-cubic, spring-damping");
 }
 
 void command_status(const struct app *app, char *buf, size_t len)
@@ -232,9 +233,12 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     bool window = c < 0 && strcmp(name, "window") == 0;
     if (window && *value)
         return verb(app, ACT_WINDOW, &(struct verb_arg){.text = value}, answer, len);
-    window |= c < 0 && strcmp(name, "spring-cubic") == 0; /* no panel row either */
+    bool cubic = c < 0 && strcmp(name, "spring-cubic") == 0; /* no panel row either */
+    bool dampers = c < 0 && strcmp(name, "spring-damping") == 0;
+    window |= cubic || dampers;
     if (window && *value)
-        return verb(app, ACT_CUBIC, &(struct verb_arg){.index = -1, .text = value}, answer, len);
+        return verb(app, cubic ? ACT_CUBIC : ACT_SPRING_DAMPING,
+                    &(struct verb_arg){.index = -1, .text = value}, answer, len);
     if ((c < 0 && !window) || !*value) {
         config_quote(name, strlen(name), q, sizeof q);
         if (!*name)
@@ -397,15 +401,19 @@ static enum command_reply dispatch(struct app *app, const char *line, char *answ
             *v++ = '\0';
         v += strspn(v, " \t");
         int n = app->model->n;
-        char kind = strlen(rest) == 1 ? rest[0] : 0;
+        char kind = strlen(rest) == 1 ? rest[0] : strcmp(rest, "cs") == 0 ? 's' : 0;
         double idx;
-        bool spring = kind == 'k';
-        if ((kind != 'm' && kind != 'c' && kind != 'k') || config_parse_number(i, &idx) ||
+        bool spring = kind == 'k' || kind == 's';
+        if ((kind != 'm' && kind != 'c' && !spring) || config_parse_number(i, &idx) ||
             idx != floor(idx) || idx < (spring ? 0 : 1) || idx > n || !*v) {
-            snprintf(answer, len, "element: expected element m|c|k I VALUE (mass I from 1 to "
-                     "%d: m its mass, c its damping; k spring I from 0 to %d)", n, n);
+            snprintf(answer, len, "element: expected element m|c|k|cs I VALUE (mass I from 1 "
+                     "to %d: m its mass, c its damping; spring I from 0 to %d: k its "
+                     "constant, cs its damper)", n, n);
             return REPLY_ERROR;
         }
+        if (kind == 's')
+            return verb(app, ACT_SPRING_DAMPING, &(struct verb_arg){.index = (int)idx, .text = v},
+                        answer, len);
         return verb(app, ACT_ELEMENT, &(struct verb_arg){.what = kind, .index = (int)idx - !spring,
                     .text = v}, answer, len);
     }

@@ -70,6 +70,7 @@ enum action {
     ACT_PRESET,    /* load a preset file */
     ACT_WINDOW,    /* the time plots' window from typed text */
     ACT_CUBIC,     /* the springs' cubic constants (index < 0), or one spring's */
+    ACT_SPRING_DAMPING, /* the dampers beside the springs (index < 0), or one spring's */
     ACT_COUNT
 };
 

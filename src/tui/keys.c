@@ -200,8 +200,11 @@ static void on_screen_action(struct tui *t, enum action a, int ch, unsigned *cha
     case ACT_DAMPING:
         if (select_mass(&t->sel) >= 0)
             overlay_edit(&t->overlay, EDIT_DAMPING);
+        else if (select_spring(&t->sel) >= 0)
+            overlay_edit(&t->overlay, EDIT_SPRING_DAMPER);
         else
-            app_say(app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
+            app_say(app, SAID_NOTE, "select a mass or a spring in the chain first (Tab, then "
+                    "↑↓)");
         break;
     case ACT_CUBIC_KEY:
         if (select_spring(&t->sel) >= 0)
