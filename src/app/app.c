@@ -578,8 +578,9 @@ unsigned app_toggle_sweep(struct app *app)
 {
     if (app->sweep->active)
         return end_sweep(app, NULL);
-    if (app->model->boundary != BOUNDARY_MOTOR)
-        return app_say(app, SAID_ERROR, "a sweep needs the motor at the right end");
+    if (app->model->boundary != BOUNDARY_MOTOR && !model_forced(app->model))
+        return app_say(app, SAID_ERROR, "a sweep needs a drive: the motor at the right end, or "
+                       "a force on a mass");
     if (!app->modes_ok)
         return app_say(app, SAID_ERROR, "a sweep needs the modes, and those of this chain are not "
                                   "known");

@@ -246,7 +246,14 @@ double onestep_drive_error(struct onestep *o, enum integrator i, double h, doubl
     double w = 2.0 * M_PI * f;
     o->model->motor.frequency = f;
     stepper_set_model(o->stepper, o->model, h);
-    if (onestep_radius(o, i, h) > 1.0 + RHO_TOL || exact_steady(o, w) != 0)
+    /* On an undamped mode the steady motion has no size: one part in a million off the
+     * drive's frequency it changes by more than a tenth. Not known rough, then. */
+    if (onestep_radius(o, i, h) > 1.0 + RHO_TOL || exact_steady(o, w * (1.0 + 1e-6)) != 0)
+        return NAN;
+    double near = 0.0;
+    for (int k = 0; k < n; k++)
+        near = fmax(near, cabs(o->rhs[2 * n + k]));
+    if (exact_steady(o, w) != 0)
         return NAN;
     /* The exact solution waits in rhs's second column while the first is solved. */
     if (numerical_steady(o, i, h, w) != 0)
@@ -257,5 +264,7 @@ double onestep_drive_error(struct onestep *o, enum integrator i, double h, doubl
         diff = fmax(diff, cabs(num[k] - ex[k]));
         size = fmax(size, cabs(ex[k]));
     }
+    if (!(fabs(near - size) <= 0.1 * size))
+        return NAN;
     return size > 0.0 ? diff / size : NAN;
 }
