@@ -58,7 +58,9 @@ FIG_SRC = $(wildcard src/fig/*.c)
 FIG_OBJ = $(FIG_SRC:src/%.c=$(BUILD)/%.o)
 PLAIN_SRC = $(wildcard src/plain/*.c)
 PLAIN_OBJ = $(PLAIN_SRC:src/%.c=$(BUILD)/%.o)
-MAIN_OBJ = $(BUILD)/main.o $(BUILD)/run_headless.o $(BUILD)/run_tables.o $(BUILD)/run_batch.o $(BUILD)/run_files.o $(BUILD)/options.o $(BUILD)/lessons_cli.o $(BUILD)/progress.o
+MAIN_OBJ = $(BUILD)/main.o $(BUILD)/run_headless.o $(BUILD)/run_tables.o $(BUILD)/run_batch.o \
+    $(BUILD)/run_files.o $(BUILD)/run_nonlinear.o $(BUILD)/options.o $(BUILD)/lessons_cli.o \
+    $(BUILD)/progress.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TEST_BIN = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 

@@ -110,7 +110,8 @@ int main(int argc, char **argv)
             options_say("--random: seed %llu (--seed %llu repeats this run)",
                         (unsigned long long)c.seed, (unsigned long long)c.seed);
     }
-    if (cli.mode == MODE_HEADLESS || cli.mode == MODE_MODES || cli.mode == MODE_SWEEP)
+    if (cli.mode == MODE_HEADLESS || cli.mode == MODE_MODES || cli.mode == MODE_SWEEP ||
+        cli.mode == MODE_SWEEP_RUN)
         run_catch_terminate();
     switch (cli.mode) {
     case MODE_HEADLESS:
@@ -121,6 +122,9 @@ int main(int argc, char **argv)
         break;
     case MODE_SWEEP:
         status = run_sweep(&c, m, cli.sweep);
+        break;
+    case MODE_SWEEP_RUN:
+        status = run_sweep_run_cli(&c, m, cli.sweep_dir, cli.sweep);
         break;
     default:
         /* A terminal that cannot place the cursor gets the plain mode. */

@@ -237,10 +237,11 @@ static bool outputs_clash(const struct config *c)
 static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
 {
     bool csv = mode == MODE_HEADLESS || mode == MODE_MODES || mode == MODE_SWEEP ||
-               mode == MODE_BATCH;
+               mode == MODE_BATCH || mode == MODE_SWEEP_RUN;
     static const char *const names[] = {[MODE_INTERACTIVE] = "the interactive program",
                                         [MODE_HEADLESS] = "--headless", [MODE_MODES] = "--modes",
                                         [MODE_SWEEP] = "--sweep", [MODE_LIST] = "--list-presets",
+                                        [MODE_SWEEP_RUN] = "--sweep-run",
                                         [MODE_PLAIN] = "--plain",
                                         [MODE_LIST_LESSONS] = "--list-lessons",
                                         [MODE_BATCH] = "--batch"};
@@ -407,6 +408,10 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             m = MODE_BATCH;
             cli->batch = optarg;
             break;
+        case CFG_SWEEP_RUN:
+            m = MODE_SWEEP_RUN;
+            cli->sweep_dir = optarg;
+            break;
         case CFG_LIST_PRESETS:
             m = MODE_LIST;
             break;
@@ -421,8 +426,9 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         }
         if (m != MODE_INTERACTIVE) {
             if (modes++) {
-                options_say("%s: give only one of --headless, --modes, --sweep, --batch, "
-                            "--list-presets, --list-lessons and --plain, once%s", written(argv, before, q, sizeof q),
+                options_say("%s: give only one of --headless, --modes, --sweep, --sweep-run, "
+                            "--batch, --list-presets, --list-lessons and --plain, once%s",
+                            written(argv, before, q, sizeof q),
                             cli->mode == m ? " (it was given twice)" : "");
                 return EXIT_USAGE;
             }
@@ -464,6 +470,15 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         if (given[k] && config_options[k].section &&
             strcmp(config_options[k].section, "run") != 0)
             c->name[0] = '\0';
+    /* --sweep-run's second word, FMIN:FMAX:COUNT, is the one argument left. */
+    if (cli->mode == MODE_SWEEP_RUN && optind < argc && (optind == 1 ||
+                                                         strcmp(argv[optind - 1], "--") != 0))
+        cli->sweep = argv[optind++];
+    if (cli->mode == MODE_SWEEP_RUN && !cli->sweep) {
+        options_say("--sweep-run: needs up or down and then FMIN:FMAX:COUNT (expected e.g. "
+                    "--sweep-run up 0.5:2:61)");
+        return EXIT_USAGE;
+    }
     if (optind < argc) {
         written(argv, optind, q, sizeof q);
         if (optind > 1 && strcmp(argv[optind - 1], "--") == 0)

@@ -16,6 +16,7 @@ enum mode {
     MODE_HEADLESS,
     MODE_MODES,
     MODE_SWEEP,
+    MODE_SWEEP_RUN,
     MODE_LIST,
     MODE_PLAIN,
     MODE_LIST_LESSONS,
@@ -24,7 +25,8 @@ enum mode {
 
 struct cli {
     enum mode mode;             /* what to do */
-    const char *sweep;          /* --sweep FMIN:FMAX:COUNT */
+    const char *sweep;          /* --sweep or --sweep-run's FMIN:FMAX:COUNT */
+    const char *sweep_dir;      /* --sweep-run's up or down */
     const char *batch;          /* --batch FILE|- */
     char preset_path[PATH_MAX]; /* the preset file applied, if any */
 };

@@ -25,4 +25,17 @@ int run_modes(const struct config *c, const struct model *m);
 /* --sweep FMIN:FMAX:COUNT, spec as given (run_tables.c). */
 int run_sweep(const struct config *c, const struct model *m, const char *spec);
 
+/* --sweep-run up|down FMIN:FMAX:COUNT, dir and spec as given (run_tables.c). */
+int run_sweep_run_cli(const struct config *c, const struct model *m, const char *dir,
+                      const char *spec);
+
+/* --sweep on a chain with cubic springs: harmonic balance (run_nonlinear.c). */
+int run_sweep_hb(const struct config *c, const struct model *m, double fmin, double fmax,
+                 long count, const char *arg);
+
+/* The simulated sweep up or down, each point from the last one's state (run_nonlinear.c);
+ * arg is what --meta says was asked. */
+int run_sweep_run(const struct config *c, const struct model *m, bool up, double fmin,
+                  double fmax, long count, const char *arg);
+
 #endif

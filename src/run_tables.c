@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/config.h"
 #include "core/modes.h"
@@ -15,17 +16,38 @@
 #include "run_files.h"
 
 #define SWEEP_MAX 1000000 /* rows a sweep may ask for */
+#define DAMPED_TELL 200   /* masses from which the damped modes' solve is announced */
+
+/* The damped modes; a dense eigen-solve of a long chain takes a while (dgeev on 2N: about
+ * 1 s at N = 300, 30 s at N = 1000), so a terminal is told while it runs. */
+static int damped_modes(const struct model *m, const double *shapes, double *ratio,
+                        double *damped_hz, double *eigen)
+{
+    bool tell = m->n >= DAMPED_TELL && !model_rayleigh(m) && isatty(STDERR_FILENO);
+    if (tell) {
+        double s = 30.0 * pow(m->n / 1000.0, 3.0);
+        fprintf(stderr, "springsim: the damped modes of %d masses: LAPACK's dense eigen-solve "
+                "of a %d x %d matrix, about %.0f s with the reference BLAS...", m->n, 2 * m->n,
+                2 * m->n, s < 1.0 ? 1.0 : s);
+        fflush(stderr);
+    }
+    int e = modes_damped_all(m, shapes, ratio, damped_hz, eigen);
+    if (tell)
+        fputs("\r\033[K", stderr);
+    return e;
+}
 
 int run_modes(const struct config *c, const struct model *m)
 {
     int n = m->n;
-    double *f = malloc((size_t)(3 * n) * sizeof *f);
+    double *f = malloc((size_t)(4 * n) * sizeof *f);
     double *shapes = malloc((size_t)n * (size_t)n * sizeof *shapes);
     struct output o;
     int status = EXIT_SUCCESS;
     double *ratio = f ? f + n : NULL, *damped_hz = f ? f + 2 * n : NULL;
+    double *eigen = f ? f + 3 * n : NULL;
     if (!f || !shapes || modes_compute(m, f, shapes) != 0 ||
-        modes_damped(m, shapes, ratio, damped_hz) != 0) {
+        damped_modes(m, shapes, ratio, damped_hz, eigen) != 0) {
         options_say(!f || !shapes ? "out of memory"
                                   : "the modes cannot be computed for these values "
                                     "(LAPACK failed, or the numbers overflow)");
@@ -42,13 +64,23 @@ int run_modes(const struct config *c, const struct model *m)
         fputs("mode,frequency_hz", o.fp);
         for (int i = 1; i <= n; i++)
             fprintf(o.fp, ",x%d", i);
-        fputs(",damping_ratio,damped_frequency_hz\n", o.fp);
+        fputs(",damping_ratio,damped_frequency_hz,eigen_frequency_hz\n", o.fp);
         for (int j = 0; j < n; j++) {
             fprintf(o.fp, "%d,%.12g", j + 1, f[j]);
             for (int i = 0; i < n; i++)
                 fprintf(o.fp, ",%.12g", shapes[(size_t)j * n + i]);
-            fprintf(o.fp, ",%.12g,%.12g\n", ratio[j], damped_hz[j]);
+            /* a rigid-body mode has no damping ratio: the field is left empty */
+            if (isnan(ratio[j]))
+                fputc(',', o.fp);
+            else
+                fprintf(o.fp, ",%.12g", ratio[j]);
+            fprintf(o.fp, ",%.12g,%.12g\n", damped_hz[j], eigen[j]);
         }
+        int rigid = model_rigid_modes(m);
+        if (rigid > 0)
+            options_say("note: %d rigid-body mode%s at 0 Hz (a group of masses no spring ties "
+                        "to a wall or the motor): no damping ratio, left empty", rigid,
+                        rigid > 1 ? "s" : "");
         status = run_close_output(&o, c, status);
         if (c->figure) {
             char settings[400];
@@ -69,20 +101,21 @@ int run_modes(const struct config *c, const struct model *m)
 
 /* Parses FMIN:FMAX:COUNT, each part a number as every option reads it (no blanks);
  * on error says why and returns -1. */
-static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count)
+static int parse_sweep(const char *opt, const char *spec, double *fmin, double *fmax,
+                       long *count)
 {
     const char *expect = "expected FMIN:FMAX:COUNT with 0 < FMIN < FMAX <= 1e6 and "
                          "2 <= COUNT <= 1000000";
     char buf[128], q[4 * CONFIG_QUOTE_MAX + 48];
     config_quote(spec, strlen(spec), q, sizeof q);
     if (strlen(spec) >= sizeof buf) {
-        options_say("--sweep: %s is too long (%s)", q, expect);
+        options_say("%s: %s is too long (%s)", opt, q, expect);
         return -1;
     }
     strcpy(buf, spec);
     char *a = buf, *b = strchr(a, ':'), *cnt = b ? strchr(b + 1, ':') : NULL;
     if (!b || !cnt || strchr(cnt + 1, ':')) {
-        options_say("--sweep: %s is not three values separated by ':' (%s)", q, expect);
+        options_say("%s: %s is not three values separated by ':' (%s)", opt, q, expect);
         return -1;
     }
     *b++ = '\0';
@@ -91,14 +124,14 @@ static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count
     const char *digits = cnt + (cnt[0] == '+');
     if (config_parse_number(a, fmin) || config_parse_number(b, fmax) ||
         config_parse_number(cnt, &c)) {
-        options_say("--sweep: %s has a value that is not a number (%s)", q, expect);
+        options_say("%s: %s has a value that is not a number (%s)", opt, q, expect);
         return -1;
     }
     /* A number, but not a count: say which is wrong (-5 is out of range, 1.5 not whole). */
     if (!*digits || strspn(digits, "0123456789") != strlen(digits)) {
         char qc[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(cnt, strlen(cnt), qc, sizeof qc);
-        options_say("--sweep: %s has COUNT %s, which %s (%s)", q, qc,
+        options_say("%s: %s has COUNT %s, which %s (%s)", opt, q, qc,
                     c != floor(c) ? "is not a whole number"
                     : c < 2.0     ? "is out of range"
                                   : "is not written in digits", expect);
@@ -106,7 +139,7 @@ static int parse_sweep(const char *spec, double *fmin, double *fmax, long *count
     }
     *count = c > SWEEP_MAX ? SWEEP_MAX + 1 : (long)c;
     if (!(*fmin > 0.0 && *fmin < *fmax && *fmax <= 1e6 && *count >= 2 && *count <= SWEEP_MAX)) {
-        options_say("--sweep: %s is out of range (%s)", q, expect);
+        options_say("%s: %s is out of range (%s)", opt, q, expect);
         return -1;
     }
     return 0;
@@ -116,13 +149,16 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
 {
     double fmin, fmax;
     long count;
-    if (parse_sweep(spec, &fmin, &fmax, &count) != 0)
+    if (parse_sweep("--sweep", spec, &fmin, &fmax, &count) != 0)
         return EXIT_USAGE;
-    if (m->boundary != BOUNDARY_MOTOR) {
-        options_say("--sweep: the right end is '%s', which does not drive the chain (expected "
-            "--boundary motor)", model_boundary_name(m->boundary));
+    if (m->boundary != BOUNDARY_MOTOR && !model_forced(m)) {
+        options_say("--sweep: the right end is '%s', which does not drive the chain, and there "
+            "is no force (expected --boundary motor, or --force F on a mass)",
+            model_boundary_name(m->boundary));
         return EXIT_USAGE;
     }
+    if (m->cubic)
+        return run_sweep_hb(c, m, fmin, fmax, count, spec);
     int n = m->n, status = EXIT_SUCCESS;
     double *amp = malloc((size_t)(2 * n) * sizeof *amp), *phase = amp ? amp + n : NULL;
     struct output o;
@@ -186,3 +222,28 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
     return status;
 }
 
+
+int run_sweep_run_cli(const struct config *c, const struct model *m, const char *dir,
+                      const char *spec)
+{
+    double fmin, fmax;
+    long count;
+    bool up = strcmp(dir, "up") == 0;
+    if (!up && strcmp(dir, "down") != 0) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(dir, strlen(dir), q, sizeof q);
+        options_say("--sweep-run: %s is not a direction (expected up or down)", q);
+        return EXIT_USAGE;
+    }
+    if (parse_sweep("--sweep-run", spec, &fmin, &fmax, &count) != 0)
+        return EXIT_USAGE;
+    if (m->boundary != BOUNDARY_MOTOR || m->motor.wave != WAVE_SINE) {
+        options_say("--sweep-run: the chain is driven by %s, not the motor's sine (expected "
+                    "--boundary motor --wave sine)", m->boundary != BOUNDARY_MOTOR
+                    ? "no motor" : motor_wave_name(m->motor.wave));
+        return EXIT_USAGE;
+    }
+    char arg[200];
+    snprintf(arg, sizeof arg, "%s %s", dir, spec);
+    return run_sweep_run(c, m, up, fmin, fmax, count, arg);
+}

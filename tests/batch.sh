@@ -134,7 +134,7 @@ refused "empty (expected a header naming settings" --batch "$tmp/empty.csv"
 refused "--meta: a --batch study's rows share one header" --batch "$tmp/runs.csv" --meta
 refused "--energy: applies to --headless's rows" --batch "$tmp/runs.csv" --energy
 refused "--figure: a --summary run has one row" --batch "$tmp/runs.csv" --figure "$tmp/f.png"
-refused "give only one of --headless, --modes, --sweep, --batch" --batch "$tmp/runs.csv" --modes
+refused "give only one of --headless, --modes, --sweep, --sweep-run, --batch" --batch "$tmp/runs.csv" --modes
 # A file that cannot be read: exit 1, its reason.
 run --batch "$tmp/none.csv"
 [ "$rc" -eq 1 ] && grep -qF 'none.csv: No such file or directory' "$err" && pass ||

@@ -147,7 +147,17 @@ expect_usage_error --masses "'-1'" -- --headless -n -1
 expect_usage_error --mass "'0'" -- --headless --mass 0
 expect_usage_error --mass "'-1'" -- --headless --mass -1
 expect_usage_error --mass "'1,-1'" -- --headless --mass 1,-1
-expect_usage_error --spring "'0'" -- --headless --spring 0
+expect_usage_error --spring "'-1'" -- --headless --spring -1
+expect_usage_error --spring-damping "'-0.5'" -- --headless --spring-damping -0.5
+expect_usage_error --spring-damping "'nan'" -- --headless --spring-damping nan
+expect_usage_error --spring-damping "'inf'" -- --headless --spring-damping inf
+expect_usage_error --spring-damping "2 values for 3 springs" -- --headless --spring-damping 1,2
+expect_usage_error --spring-damping "square" -- --headless --spring-damping 0.5 --wave square
+expect_usage_error --force "'-1'" -- --headless --force -1
+expect_usage_error --force "'nan'" -- --headless --force nan
+expect_usage_error --force-on "'0'" -- --headless --force-on 0 --force 1
+expect_usage_error --force-on "'3'" "1 <= K <= 2" -- --headless --force-on 3 --force 1
+expect_usage_error --force-on "'1.5'" -- --headless --force-on 1.5
 expect_usage_error --damping "'-0.1'" -- --headless --damping -0.1
 expect_usage_error --amplitude "'-1'" -- --headless --amplitude -1
 expect_usage_error --frequency "'0'" -- --headless --frequency 0
@@ -212,10 +222,10 @@ if expect_ok --headless -n 3 --duration 0.1; then
 fi
 if expect_ok --headless --energy --duration 0.5; then
     expect_equal "$cmd: header" \
-        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact" \
+        "t,x1,x2,v1,v2,a1,a2,motor,kinetic,potential,dissipated,motor_work,contact,force_work" \
         "$(first_line "$out")"
-    # 2 x 3 + 2 columns of motion, 5 of energy, on every row (check_csv: each one finite)
-    expect_equal "$cmd: columns" 13 "$(awk -F, 'NR == 1 { print NF }' "$out")"
+    # 2 x 3 + 2 columns of motion, 6 of energy, on every row (check_csv: each one finite)
+    expect_equal "$cmd: columns" 14 "$(awk -F, 'NR == 1 { print NF }' "$out")"
     check_csv "$out" "$cmd"
 fi
 if expect_ok --headless --duration 1 --sample 0.1; then
@@ -254,7 +264,7 @@ fi
 # k = 10, m = 1 to 1e-9 relative, ascending, each shape's largest |component| is +1. The
 # dampers (0.1 on masses of 1 kg) are proportional to M, so the modes do not mix and each
 # is lambda^2 + 0.1 lambda + w^2 = 0: damping ratio 0.1 / (2 w), damped frequency
-# w sqrt(1 - ratio^2) / 2 pi.
+# w sqrt(1 - ratio^2) / 2 pi, eigen frequency |lambda| / 2 pi = w / 2 pi.
 check_modes() {
     nm=$1
     shift
@@ -262,7 +272,8 @@ check_modes() {
     hdr=mode,frequency_hz
     i=1
     while [ "$i" -le "$nm" ]; do hdr="$hdr,x$i"; i=$((i + 1)); done
-    expect_equal "$cmd: header" "$hdr,damping_ratio,damped_frequency_hz" "$(first_line "$out")"
+    expect_equal "$cmd: header" "$hdr,damping_ratio,damped_frequency_hz,eigen_frequency_hz" \
+        "$(first_line "$out")"
     expect_equal "$cmd: rows" "$nm" "$(data_rows "$out")"
     bad=$(awk -F, -v n="$nm" '
         function abs(x) { return x < 0 ? -x : x }
@@ -276,7 +287,7 @@ check_modes() {
             if (abs($2 - want) > 1e-9 * want) { print "mode " j " f = " $2 ", expected " want; exit }
             if (j > 1 && $2 <= last) { print "mode " j " not above mode " j - 1; exit }
             last = $2
-            if (NF != n + 4) { print "mode " j " has " NF - 4 " components"; exit }
+            if (NF != n + 5) { print "mode " j " has " NF - 5 " components"; exit }
             max = -2; min = 2
             for (i = 3; i <= n + 2; i++) { if ($i + 0 > max) max = $i + 0; if ($i + 0 < min) min = $i + 0 }
             if (max != 1 || min < -1) { print "mode " j " shape " $0 " is not scaled to +1"; exit }
@@ -284,6 +295,7 @@ check_modes() {
             if (abs($(n + 3) - z) > 1e-9 * z) { print "mode " j " ratio " $(n + 3) ", expected " z; exit }
             fd = w * sqrt(1 - z * z) / (2 * pi)
             if (abs($(n + 4) - fd) > 1e-9 * fd) { print "mode " j " damped " $(n + 4) ", expected " fd; exit }
+            if (abs($(n + 5) - want) > 1e-9 * want) { print "mode " j " eigen " $(n + 5) ", expected " want; exit }
         }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
 }
@@ -292,12 +304,16 @@ check_modes 5
 # the wall end has the same modes
 check_modes 3 --boundary wall
 # Overdamped: one mass, k = 20 (both springs), m = 1, c = 20 > 2 sqrt(k m): both
-# eigenvalues real, ratio c / (2 sqrt(k m)) = sqrt(5), damped frequency 0.
+# eigenvalues real, ratio c / (2 sqrt(k m)) = sqrt(5), damped frequency 0; |lambda| / 2 pi
+# the geometric mean of the two, sqrt(k / m) / 2 pi (their product is k / m).
 if expect_ok --modes -n 1 --damping 20; then
-    expect_equal "$cmd: header" "mode,frequency_hz,x1,damping_ratio,damped_frequency_hz" \
+    expect_equal "$cmd: header" \
+        "mode,frequency_hz,x1,damping_ratio,damped_frequency_hz,eigen_frequency_hz" \
         "$(first_line "$out")"
     bad=$(awk -F, 'NR == 2 { d = $4 - sqrt(5); if (d < 0) d = -d
-        if (d > 1e-9 || $5 != 0) print "ratio " $4 " (expected sqrt 5), damped " $5 " (expected 0)" }' "$out")
+        w = sqrt(20) / (2 * atan2(0, -1)); e = $6 - w; if (e < 0) e = -e
+        if (d > 1e-9 || $5 != 0) print "ratio " $4 " (expected sqrt 5), damped " $5 " (expected 0)"
+        else if (e > 1e-9 * w) print "eigen frequency " $6 " (expected " w ")" }' "$out")
     if [ -z "$bad" ]; then pass; else fail "$cmd: $bad"; fi
 fi
 
@@ -376,7 +392,8 @@ case $(cat "$err") in
 esac
 # --modes and --sweep write FILE too
 if expect_ok --modes -o "$tmp/o/modes.csv"; then
-    expect_equal "$cmd: header in FILE" "mode,frequency_hz,x1,x2,damping_ratio,damped_frequency_hz" \
+    expect_equal "$cmd: header in FILE" \
+        "mode,frequency_hz,x1,x2,damping_ratio,damped_frequency_hz,eigen_frequency_hz" \
         "$(first_line "$tmp/o/modes.csv")"
     expect_equal "$cmd: stdout" "" "$(cat "$out")"
 fi
@@ -677,6 +694,28 @@ if expect_ok --keys; then
     want=$(sed 's/↑/\\(ua/g; s/↓/\\(da/g; s/←/\\(<-/g; s/→/\\(->/g' "$out")
     if [ "$keys_in_man" = "$want" ]; then pass; else
         fail "man page KEYS differ from --keys: $(printf '%s\n' "$keys_in_man" | head -c 200 | tr '\n' '|') vs $(printf '%s\n' "$want" | head -c 200 | tr '\n' '|')"
+    fi
+fi
+
+# The tuned-mass damper (Den Hartog's optimum, mu = 0.05): the primary's two peaks each
+# within 3 % of sqrt(1 + 2/mu) times the static deflection F/k1 = 0.05 m, and of each
+# other; with the absorber's damper at 0, the primary at its own frequency 0.5033 Hz
+# moves at least 100 times less than it would alone (undamped there: without bound, so
+# the alone figure is taken with a tiny damper, 1e-3 N s/m, which the absorber beats).
+if expect_ok -p tuned-mass-damper --sweep 0.3:0.7:4001; then
+    peaks=$(awk -F, 'NR > 1 { a = $2; if (NR > 3 && pa > ppa && pa > a) printf "%s ", pa; ppa = pa; pa = a }' "$out")
+    verdict=$(echo "$peaks" | awk '{ want = 0.05 * sqrt(41); ok = NF == 2;
+        for (i = 1; i <= NF; i++) if ($i < 0.97 * want || $i > 1.03 * want) ok = 0;
+        if (NF == 2 && ($1 > 1.03 * $2 || $2 > 1.03 * $1)) ok = 0; print ok ? "ok" : "bad" }')
+    expect_equal "tuned-mass-damper: two equal peaks near sqrt(41) x 0.05 m ($peaks)" ok "$verdict"
+fi
+if expect_ok -p tuned-mass-damper --spring-damping 0 --sweep 0.5032921210:0.6:2; then
+    with=$(awk -F, 'NR == 2 { print $2 }' "$out")
+    if expect_ok -p tuned-mass-damper -n 1 --mass 1 --spring 10,0 --spring-damping 0 \
+        --damping 0.001 --sweep 0.5032921210:0.6:2; then
+        alone=$(awk -F, 'NR == 2 { print $2 }' "$out")
+        expect_equal "undamped absorber: $with m against $alone m alone" ok \
+            "$(awk -v a="$with" -v b="$alone" 'BEGIN { print a * 100 <= b ? "ok" : "bad" }')"
     fi
 fi
 

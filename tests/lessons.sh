@@ -197,6 +197,57 @@ if awk -v limit="$limit" 'BEGIN { w = sqrt(20); dt = 0.01; n = 1000; W = sqrt(40
     fail "numerics: expected rk4 = exact = 0.5 cos(wt) at t = 10, Euler's swing 0.5 (1 + (w dt)^2)^500, semi-implicit bounded, rk4's limit 2 sqrt(2)/w and one blow-up (dt = 0.05); limit $limit, status: $(tr '\n' ' ' <"$tmp/num")"
 fi
 
+# ---- absorber: the primary held still by a tuned mass, Den Hartog's equal peaks ----
+# Every swing measured (half the peak-to-peak of measure) against the complex solve of
+# (K - w^2 M + i w C) X = F e_1 for the primary m1 = 1, k1 = 10 and the absorber ma =
+# 0.05 on ka with a damper c beside it (free end), worked out here; the two fixed points'
+# swings against sqrt(1 + 2/mu) F/k1 (any damper); the modes against the roots of
+# m1 ma w^4 - (m1 ka + ma (k1 + ka)) w^2 + k1 ka = 0; the first 20 s against the undamped
+# resonance's growth F t / (2 m1 w1); and each number the lesson says against these.
+play absorber --plain-every 1000
+sed -n 's/^ok measure: mass \([0-9]\).* peak-to-peak \([0-9.e+-]*\) m.* frequency \([0-9.]*\) Hz.*/\1 \2/p' \
+    "$out" >"$tmp/abs"
+awk '/^ok measure/ { exit } /^event .* peak: mass 1 / { split($2, t, "="); v = $8 + 0; if (v > best) { best = v; tb = t[2] + 0 } }
+     END { print tb, best }' "$out" >"$tmp/abs.grow"
+modes=$(sed -n 's/^ok modes: 1: \([0-9.]*\) Hz.* 2: \([0-9.]*\) Hz.*/\1 \2/p' "$out" | head -n 1)
+said=$(grep '^say' "$out" | tr '\n' ' ')
+if awk -v modes="$modes" -v grow="$(cat "$tmp/abs.grow")" -v said="$said" '
+    function x1(ka, c, f,   w, zr, zi, ar, ai, br, bi, dr, di, nr, ni) {
+        w = 2 * pi * f; zr = ka; zi = w * c           # ka + i w c
+        ar = 10 + ka - w * w; ai = zi; br = ka - 0.05 * w * w; bi = zi
+        dr = ar * br - ai * bi - (zr * zr - zi * zi); di = ar * bi + ai * br - 2 * zr * zi
+        nr = br; ni = bi; X2 = 0.5 * sqrt(zr * zr + zi * zi) / sqrt(dr * dr + di * di)
+        return 0.5 * sqrt(nr * nr + ni * ni) / sqrt(dr * dr + di * di)
+    }
+    function near(got, want, rel) { return (got - want) ^ 2 <= (rel * want) ^ 2 }
+    function quotes(v, unit) { return index(said, sprintf("%.3f %s", v, unit)) > 0 }
+    BEGIN { pi = atan2(0, -1); f1 = sqrt(10) / (2 * pi); mu = 0.05 }
+    { n++; who[n] = $1; a[n] = $2 / 2 }
+    END {
+        split(grow, g, " "); split(modes, md, " ")
+        ok = n == 7 && who[3] == 2 && near(g[2], 0.5 * g[1] / (2 * sqrt(10)), 0.02) && g[1] > 19
+        # the modes of the tuned pair: w^2 = (b -+ sqrt(b^2 - 4 a c)) / 2a
+        A = 0.05; B = 0.5 + 0.05 * 10.5; C = 5; d = sqrt(B * B - 4 * A * C)
+        lo = sqrt((B - d) / (2 * A)) / (2 * pi); hi = sqrt((B + d) / (2 * A)) / (2 * pi)
+        ok = ok && (md[1] - lo) ^ 2 < 1e-8 && (md[2] - hi) ^ 2 < 1e-8
+        ok = ok && index(said, sprintf("%.3f and %.3f Hz", lo, hi)) > 0
+        tuned = x1(0.5, 0.01, f1); ok = ok && near(a[2], tuned, 0.01) && near(a[3], X2, 0.01)
+        ok = ok && quotes(tuned, "m,") && near(X2, 1, 1e-9)
+        kd = 0.4535147392; cd = 0.03832899114
+        opt = x1(kd, cd, f1); ok = ok && near(a[4], opt, 0.01) && quotes(opt, "m.")
+        fixed = sqrt(1 + 2 / mu) * 0.5 / 10
+        ok = ok && near(a[5], x1(kd, cd, 0.4512), 0.01) && near(a[6], x1(kd, cd, 0.5281), 0.01)
+        ok = ok && near(a[5], fixed, 0.01) && near(a[6], fixed, 0.01) && quotes(fixed, "m:")
+        off = x1(0.5, cd, 0.4512); ok = ok && near(a[7], off, 0.01) && off > 1.3 * fixed
+        ok = ok && quotes(off, "m at")
+        if (!ok) printf "growth %s, modes %s (want %.4f %.4f), swings", grow, modes, lo, hi
+        if (!ok) for (i = 1; i <= n; i++) printf " %s:%.4f", who[i], a[i]
+        if (!ok) printf "; want %.4f %.4f %.4f %.4f %.4f %.4f\n", tuned, X2, opt, fixed, fixed, off
+        exit !ok
+    }' "$tmp/abs" >"$tmp/abs.why"; then pass; else
+    fail "absorber: the swings against the complex solve, the modes, the growth, the numbers said: $(cat "$tmp/abs.why")"
+fi
+
 # ---- the words: previous rebuilds the step before, leave keeps the chain as it is ----
 printf '2\n\nprevious\n\nleave\nstatus\n' >"$tmp/in"
 timeout 60 "$SPRINGSIM" --plain --lesson resonance --plain-every 1000 <"$tmp/in" >"$out" 2>"$err"

@@ -48,7 +48,7 @@ static void expected_texts(void **state)
         {CFG_AMPLITUDE, "0 <= amplitude <= 10"},
         {CFG_SAMPLE, "sample > 0 s"},
         {CFG_MASS, "masses > 0 kg: one value, or one per mass"},
-        {CFG_SPRING, "springs > 0 N/m: one value, or N+1"},
+        {CFG_SPRING, "springs >= 0 N/m: one value, or N+1"},
         {CFG_X0, "-10 <= displacements <= 10 m: one value, or one per mass"},
         {CFG_V0, "-50 <= velocities <= 50 m/s: one value, or one per mass"},
         {CFG_WAVE, "sine, square, triangle or sawtooth"},

@@ -2,7 +2,10 @@
  * kitty, braille; a typed value is checked as --graphics checks it; the chain is never
  * touched; its value says what the front end draws with where that is not what it asks
  * ("auto (sixel)", "sixel: braille"); the plain mode's `set graphics` and `controls`
- * name it as the panel does. The app under test comes from tests/app_fixture.c. */
+ * name it as the panel does. The force input's two controls (its amplitude, its mass:
+ * the arrows stop at the chain's ends, a mass past N refused) and the dampers beside the
+ * springs, one spring's or all, typed in the program or in the plain mode. The app under
+ * test comes from tests/app_fixture.c. */
 #include "app_fixture.h"
 
 #include <math.h>
@@ -119,7 +122,8 @@ static void every_control_from_its_setting(void **state)
         } else if (o->kind == CONFIG_NUMBER || o->kind == CONFIG_LIST) {
             struct config_value now;
             config_get(key, &app.cfg, app.model, &now);
-            double unit = pow(10.0, -o->digits), v = round(1.25 * now.v[0] / unit) * unit;
+            double unit = pow(10.0, -o->digits);
+            double v = round((now.v[0] != 0.0 ? 1.25 * now.v[0] : 1.0) / unit) * unit;
             assert_true(v != now.v[0]);
             snprintf(text, sizeof text, "%g", v);
             assert_true(app_set_text(&app, (enum control)c, text));
@@ -132,12 +136,80 @@ static void every_control_from_its_setting(void **state)
     assert_int_equal(settings, CTL_COUNT - 2);
 }
 
+/* The Force and Force on controls set the model's force input, which moves the chain
+ * alone when the motor stands still. */
+static void force_controls(void **state)
+{
+    (void)state;
+    static struct command_result res;
+    char buf[96];
+    assert_string_equal(app_control_name(CTL_FORCE), "force");
+    assert_string_equal(app_control_name(CTL_FORCE_ON), "force-on");
+    assert_true(app_set_text(&app, CTL_AMPLITUDE, "0"));
+    assert_true(app_adjust(&app, CTL_FORCE, 1, false));
+    assert_close(app.model->force, 0.1, 1e-12);
+    assert_true(app_adjust(&app, CTL_FORCE, 1, true)); /* onto the coarse step's grid */
+    assert_close(app.model->force, 1.0, 1e-12);
+    assert_true(app_adjust(&app, CTL_FORCE_ON, 1, false));
+    assert_int_equal(app.model->force_on, 1);
+    app_control_value(&app, CTL_FORCE_ON, buf, sizeof buf);
+    assert_string_equal(buf, "mass 2");
+    assert_true(app_adjust(&app, CTL_FORCE_ON, 1, true)); /* stops at the last mass */
+    assert_int_equal(app.model->force_on, 2);
+    assert_int_equal(app_adjust(&app, CTL_FORCE_ON, 1, false), 0);
+    assert_int_equal(app.model->force_on, 2);
+    /* A mass past N: one line naming it and the range, nothing changed. */
+    assert_int_equal(app_set_text(&app, CTL_FORCE_ON, "4"), 0);
+    assert_int_equal(app.said, SAID_ERROR);
+    assert_non_null(strstr(app.message, "'4'"));
+    assert_non_null(strstr(app.message, "1 <= K <= 3"));
+    assert_int_equal(app.model->force_on, 2);
+    /* Alone it moves mass 3 first: after 0.3 s from rest it is ahead of mass 1. */
+    run(30);
+    const double *x = sim_x(app.sim);
+    assert_true(fabs(x[2]) > 10.0 * fabs(x[0]) && fabs(x[2]) > 0.0);
+    /* The plain mode's set takes both by their names. */
+    assert_int_equal(command_do(&app, "set force 2.5", &res), REPLY_OK);
+    assert_true(app.model->force == 2.5);
+    assert_int_equal(command_do(&app, "set force-on 1", &res), REPLY_OK);
+    assert_int_equal(app.model->force_on, 0);
+    assert_int_equal(command_do(&app, "set force -1", &res), REPLY_ERROR);
+    assert_true(app.model->force == 2.5);
+}
+
+/* A damper beside one spring (the c key on a selected spring, or element cs), or beside
+ * every spring (set spring-damping): one spring's changes that spring's alone. */
+static void spring_dampers(void **state)
+{
+    (void)state;
+    static struct command_result res;
+    assert_true(app_set_spring_damping(&app, 1, "0.3"));
+    assert_string_equal(app.message, "spring 2 (1–2): c = 0.3 N·s/m");
+    for (int j = 0; j <= 3; j++)
+        assert_true(app.model->cs[j] == (j == 1 ? 0.3 : 0.0));
+    assert_true(app.model->spring_damped);
+    assert_int_equal(app_set_spring_damping(&app, 1, "0.1,0.2"), 0);
+    assert_non_null(strstr(app.message, "more than one value"));
+    assert_int_equal(app_set_spring_damping(&app, 2, "-1"), 0);
+    assert_int_equal(app.said, SAID_ERROR);
+    assert_true(app.model->cs[2] == 0.0);
+    assert_int_equal(command_do(&app, "element cs 0 0.4", &res), REPLY_OK);
+    assert_true(app.model->cs[0] == 0.4 && app.model->cs[1] == 0.3);
+    assert_int_equal(command_do(&app, "element cs 4 1", &res), REPLY_ERROR);
+    assert_non_null(strstr(res.answer, "cs its damper"));
+    assert_int_equal(command_do(&app, "set spring-damping 0.2", &res), REPLY_OK);
+    for (int j = 0; j <= 3; j++)
+        assert_true(app.model->cs[j] == 0.2);
+    assert_int_equal(command_do(&app, "set spring-damping 0", &res), REPLY_OK);
+    assert_false(app.model->spring_damped);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
     const struct CMUnitTest tests[] = {
         T(arrows_go_round), T(typed_values), T(value_says_what_is_drawn), T(plain_mode_names_it),
-        T(every_control_from_its_setting),
+        T(every_control_from_its_setting), T(force_controls), T(spring_dampers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -190,25 +190,25 @@ static void scene_and_controls(void **state)
 }
 
 /* The controls' list at the sizes people use: 80x24 keeps the frequency bar and the
- * natural frequencies below 13 of 14 controls (the list scrolls by one); 60x20 gives every
+ * natural frequencies below 13 of 16 controls (the list scrolls by three); 60x20 gives every
  * row to the list; a large terminal shows them all with room to spare. The mouse finds a
  * control only on the rows the list takes. */
 static void control_rows(void **state)
 {
     (void)state;
     static const struct { int cols, rows, shown; } sizes[] = {
-        {80, 24, 13}, {60, 20, 11}, {120, 40, 14}, {100, 30, 14},
+        {80, 24, 13}, {60, 20, 11}, {120, 40, 16}, {100, 30, 16},
     };
     for (size_t k = 0; k < sizeof sizes / sizeof *sizes; k++) {
         struct layout l;
         layout_compute(&l, sizes[k].cols, sizes[k].rows, -1, false);
-        int inside = l.controls.h - 2, shown = layout_control_rows(&l, 14);
+        int inside = l.controls.h - 2, shown = layout_control_rows(&l, 16);
         assert_int_equal(shown, sizes[k].shown);
-        assert_true(shown == 14 ? inside >= 16 : shown == 13 ? inside == 15 : inside == shown);
+        assert_true(shown == 16 ? inside >= 18 : shown == 13 ? inside == 15 : inside == shown);
         struct rect r = l.controls;
-        int top = 14 - shown; /* scrolled to the last */
-        assert_int_equal(layout_control_at(&l, r.y + shown, r.x + 1, 14, top), 13);
-        assert_int_equal(layout_control_at(&l, r.y + shown + 1, r.x + 1, 14, top), -1);
+        int top = 16 - shown; /* scrolled to the last */
+        assert_int_equal(layout_control_at(&l, r.y + shown, r.x + 1, 16, top), 15);
+        assert_int_equal(layout_control_at(&l, r.y + shown + 1, r.x + 1, 16, top), -1);
     }
     /* Fewer controls than rows: all of them. */
     struct layout l;

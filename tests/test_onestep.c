@@ -14,7 +14,7 @@
  * the limit, with exact, or on a stable driven chain over 60 s); and the
  * long-chain routes above ONESTEP_MAX masses (eigenvalue -1 for semi-implicit and
  * verlet, the eigenvalues' region for euler and rk4) against the same matrices at
- * N = 150. */
+ * N = 150. A force on an undamped mode's frequency: its drive error not known, not 100 %. */
 #include "testutil.h"
 
 #include <stdlib.h>
@@ -387,12 +387,40 @@ static void long_chains(void **state)
     }
 }
 
+/* A force driving an undamped mass on its own natural frequency has no steady motion: the
+ * drive's error is not known (NAN), not a rough 100 %; with a damper it is small at rk4's
+ * 200 steps a period. The same drive one percent off resonance, undamped, is judged. */
+static void drive_on_an_undamped_mode(void **state)
+{
+    (void)state;
+    struct model *m = model_new(1);
+    m->k[0] = 10.0;
+    m->k[1] = 0.0;
+    m->c[0] = 0.0;
+    m->boundary = BOUNDARY_FREE;
+    m->force = 1.0;
+    model_sync(m);
+    double f = sqrt(10.0) / (2.0 * M_PI);
+    struct onestep *o = onestep_new(m);
+    assert_true(isnan(onestep_drive_error(o, INTEGRATOR_RK4, 0.005, f)));
+    double off = onestep_drive_error(o, INTEGRATOR_RK4, 0.005, 1.01 * f);
+    assert_true(off >= 0.0 && off < 0.01);
+    onestep_free(o);
+    m->c[0] = 0.2;
+    o = onestep_new(m);
+    double damped = onestep_drive_error(o, INTEGRATOR_RK4, 0.005, f);
+    assert_true(damped >= 0.0 && damped < 0.01);
+    onestep_free(o);
+    model_free(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(random_stiff_chains),
         cmocka_unit_test(issue_chains),
         cmocka_unit_test(long_chains),
+        cmocka_unit_test(drive_on_an_undamped_mode),
     };
     return cmocka_run_group_tests_name("onestep", tests, NULL, NULL);
 }

@@ -38,7 +38,8 @@ static void value_checks(void **state)
     assert_int_equal(c.mass.count, 3);
     assert_close(c.mass.v[1], 2.0, 0.0);
     assert_int_equal(config_set(&c, CFG_DAMPING, "0", err, sizeof err), 0);
-    assert_int_equal(config_set(&c, CFG_SPRING, "0", err, sizeof err), -1);
+    assert_int_equal(config_set(&c, CFG_SPRING, "-1", err, sizeof err), -1);
+    assert_int_equal(config_set(&c, CFG_SPRING, "0", err, sizeof err), 0); /* no spring */
     assert_int_equal(config_set(&c, CFG_X0, "-0.5", err, sizeof err), 0);
     assert_int_equal(config_set(&c, CFG_WAVE, "Square", err, sizeof err), -1);
     assert_string_equal(err, "'Square' is not a waveform (expected sine, square, triangle "
@@ -330,7 +331,7 @@ static void every_saved_row_round_trips(void **state)
         model_free(m);
         model_free(m2);
     }
-    assert_int_equal(rows, 17);
+    assert_int_equal(rows, 21);
 }
 
 /* A start along a mode is written back as start-mode = K:AMP and read back the same;

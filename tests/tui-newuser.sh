@@ -1,7 +1,7 @@
 #!/bin/sh
 # tests/tui-newuser.sh: what a new user met (issue 22), as a person sees it in tmux: at
 # 60x20 the controls scroll to the selection and the frame says how many are out of
-# sight (at 80x24 the list scrolls by one and the frequency bar and the natural frequencies
+# sight (at 80x24 the list scrolls by three and the frequency bar and the natural frequencies
 # stay); the Graphics control shows braille in tmux and says why sixel and kitty cannot be
 # (issue 18); with ten masses at 80x24 the legends and the natural frequencies end in "…"
 # and keep the motor; the energy view's drift is never cut; while dt is past a limit the
@@ -33,41 +33,41 @@ start top 100 30 -- -p 3-mass-chain
 row() { sed -n "${1}p" "$scr"; }
 controls() { LC_ALL=$U8 sed -n '/┌ Controls/,/^.*┘$/p' "$scr" | LC_ALL=$U8 sed 's/.*\(┌ Controls\)/\1/; s/.*││//; s/.*┘└/└/'; }
 
-# ---- 60x20: 14 controls in 11 rows ----
+# ---- 60x20: 16 controls in 11 rows ----
 if up small; then
-    if has_re '└─+ ↓ 3 more ─┘' && lacks '↑ 3 more' && has 'Frequency' && lacks 'Refresh'; then
+    if has_re '└─+ ↓ 5 more ─┘' && lacks '↑ 5 more' && has 'Frequency' && lacks 'Refresh'; then
         pass
     else
-        fail "60x20: the controls' frame should say '↓ 3 more' below Frequency; screen: $(brief "$scr" 'more|Frequency')"
+        fail "60x20: the controls' frame should say '↓ 5 more' below Frequency; screen: $(brief "$scr" 'more|Frequency')"
     fi
     keys Up # wraps to the last control, Graphics
-    if wait_re '▸Graphics +auto \(braille\)' 3 && has_re 'Controls ─+ ↑ 3 more ─┐' &&
-        has_re 'Refresh +normal' && has 'Speed' && lacks '↓ 3 more' && lacks 'Preset '; then
+    if wait_re '▸Graphics +auto \(braille\)' 3 && has_re 'Controls ─+ ↑ 5 more ─┐' &&
+        has_re 'Refresh +normal' && has 'Speed' && lacks '↓ 5 more' && lacks 'Preset '; then
         pass
     else
-        fail "60x20: ↑ from Preset should scroll to ▸Graphics 'auto (braille)' (tmux), Refresh and Speed above it, the frame saying '↑ 3 more'; screen: $(brief "$scr" 'more|Graphics|Refresh|Speed')"
+        fail "60x20: ↑ from Preset should scroll to ▸Graphics 'auto (braille)' (tmux), Refresh and Speed above it, the frame saying '↑ 5 more'; screen: $(brief "$scr" 'more|Graphics|Refresh|Speed')"
     fi
     keys Up # Refresh: the list stays where it is
-    if wait_re '▸Refresh +normal' 3 && has_re 'Controls ─+ ↑ 3 more ─┐' && has 'Graphics'; then pass; else
-        fail "60x20: ↑ from Graphics should select ▸Refresh, the list still scrolled ('↑ 3 more'); screen: $(brief "$scr" 'more|Graphics|Refresh')"
+    if wait_re '▸Refresh +normal' 3 && has_re 'Controls ─+ ↑ 5 more ─┐' && has 'Graphics'; then pass; else
+        fail "60x20: ↑ from Graphics should select ▸Refresh, the list still scrolled ('↑ 5 more'); screen: $(brief "$scr" 'more|Graphics|Refresh')"
     fi
     keys Down Down # wraps to Preset: the list scrolls back
-    if settle_all 3 "has_re '▸Preset' && has '↓ 3 more' && lacks '↑ 3 more'"; then pass; else
+    if settle_all 3 "has_re '▸Preset' && has '↓ 5 more' && lacks '↑ 5 more'"; then pass; else
         fail "60x20: ↓ from Graphics should scroll back to ▸Preset; screen: $(brief "$scr" 'more|Preset')"
     fi
 fi
 
-# ---- 80x24: 13 of 14 controls, the bar and the natural frequencies; Graphics ----
+# ---- 80x24: 13 of 16 controls, the bar and the natural frequencies; Graphics ----
 # the bottom line of the controls' frame, and the row of its natural frequencies
-bottom_more() { has_re '└─+ ↓ 1 more ─┘$' && has_re '│ [0-9.]+ [0-9.]+ [0-9.]+ Hz +│$' && has '5Hz'; }
+bottom_more() { has_re '└─+ ↓ 3 more ─┘$' && has_re '│ [0-9.]+ [0-9.]+ [0-9.]+ Hz +│$' && has '5Hz'; }
 if up gfx; then
-    if bottom_more && has_re 'Refresh +normal' && lacks 'Graphics'; then pass; else
-        fail "80x24: the controls should end at Refresh with '↓ 1 more', the frequency bar and the natural frequencies kept; screen: $(brief "$scr" 'more|Refresh|Hz')"
+    if bottom_more && has_re 'Force on +mass 1' && lacks 'Speed'; then pass; else
+        fail "80x24: the controls should end at Force on with '↓ 3 more', the frequency bar and the natural frequencies kept; screen: $(brief "$scr" 'more|Force|Hz')"
     fi
-    keys Up # wraps to Graphics: one row up, the bar and the frequencies stay
-    if wait_re '▸Graphics +auto \(braille\)' 3 && has_re 'Controls ─+ ↑ 1 more ─┐' &&
+    keys Up # wraps to Graphics: three rows up, the bar and the frequencies stay
+    if wait_re '▸Graphics +auto \(braille\)' 3 && has_re 'Controls ─+ ↑ 3 more ─┐' &&
         lacks 'Preset ' && has_re '│ [0-9.]+ [0-9.]+ [0-9.]+ Hz +│$'; then pass; else
-        fail "80x24: ↑ from Preset should show ▸Graphics 'auto (braille)' (tmux), '↑ 1 more', the natural frequencies kept; screen: $(brief "$scr" 'more|Graphics|Hz')"
+        fail "80x24: ↑ from Preset should show ▸Graphics 'auto (braille)' (tmux), '↑ 3 more', the natural frequencies kept; screen: $(brief "$scr" 'more|Graphics|Hz')"
     fi
     # sixel and kitty cannot be inside tmux: the control and the status line say so
     keys Right

@@ -125,8 +125,8 @@ if up wall; then
         fail "response with --boundary wall: expected 'does not drive the chain'; screen: $(brief "$scr" 'drive|response')"
     fi
     keys w
-    if settle_for 'a sweep needs the motor' 3 && has Paused && lacks 'sweep 1/'; then pass; else
-        fail "w with --boundary wall: no sweep should start, a message should say it needs the motor; screen: $(brief)"
+    if settle_for 'a sweep needs a drive' 3 && has Paused && lacks 'sweep 1/'; then pass; else
+        fail "w with --boundary wall: no sweep should start, a message should say it needs a drive; screen: $(brief)"
     fi
 fi
 # amp_frame: the response view's upper frame, from its title to the phase frame

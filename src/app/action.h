@@ -49,6 +49,7 @@ enum action {
     ACT_CURSOR_OFF,   /* no cursors */
     ACT_LESSONS,   /* lesson menu */
     ACT_HIDE,      /* show / hide the selected mass's curves in the plots */
+    ACT_CUBIC_KEY, /* chain: the selected spring's own cubic constant k3 */
     /* Verbs with no key of their own: the screen reaches them from a menu, a typed value
      * or the selection (Enter), the plain mode by their commands. */
     ACT_MODE,      /* start the chain in a mode */
@@ -58,6 +59,8 @@ enum action {
     ACT_PLACE,     /* one mass's start displaced */
     ACT_PRESET,    /* load a preset file */
     ACT_WINDOW,    /* the time plots' window from typed text */
+    ACT_CUBIC,     /* the springs' cubic constants (index < 0), or one spring's */
+    ACT_SPRING_DAMPING, /* the dampers beside the springs (index < 0), or one spring's */
     ACT_COUNT
 };
 

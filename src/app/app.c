@@ -91,6 +91,25 @@ static void judge(struct app *app)
     app->runaway_base_ok = false;
 }
 
+/* What a chain with cubic springs adds to the warning in line: a stability warning holds
+ * for the chain linearised at rest, and swings stiffen hardening springs, lowering the
+ * limit; a softening spring's force turns over past some stretch. */
+static void say_nonlinear(const struct model *m, char *line, size_t len)
+{
+    int j = 0;
+    size_t used = strlen(line);
+    double s = m->cubic ? model_turnover(m, &j) : INFINITY;
+    if (used && m->cubic && model_hardening(m))
+        snprintf(line + used, len - used, " (linearised at rest: large swings stiffen the "
+                 "hardening springs and lower this limit)");
+    else if (!used && isfinite(s)) {
+        char name[48];
+        app_spring_name(m, j, name, sizeof name);
+        snprintf(line, len, "%s softens: its force turns over at a stretch of %.3g m, and "
+                 "past it the chain runs away", name, s);
+    }
+}
+
 /* Says what is wrong with dt after a change, if anything. A change of the chain, dt or
  * the integrator says the first of: unstable, a mode inaccurate, the drive short of
  * steps; one of the drive alone says only that the drive has just become short of them
@@ -109,6 +128,8 @@ static unsigned say_limits(struct app *app, unsigned what, bool drive_was_rough)
     } else if ((what & APP_CHANGED_DRIVE) && !drive_was_rough && !limits_unstable(l)) {
         limits_say_drive(l, true, line, sizeof line);
     }
+    if (what & APP_CHANGED_CHAIN)
+        say_nonlinear(app->model, line, sizeof line);
     return line[0] ? app_say(app, SAID_WARNING, "%s", line) : 0;
 }
 
@@ -178,12 +199,14 @@ static unsigned compare(const struct app *app, const struct config *next, const 
     if (n != o->n)
         what |= APP_CHANGED_SIZE | APP_CHANGED_CHAIN;
     else if (differ(m->m, o->m, n) || differ(m->k, o->k, n + 1) || differ(m->c, o->c, n) ||
+             differ(m->k3, o->k3, n + 1) || differ(m->cs, o->cs, n + 1) ||
              m->collisions != o->collisions)
         what |= APP_CHANGED_CHAIN;
     if (m->boundary != o->boundary)
         what |= APP_CHANGED_CHAIN | APP_CHANGED_DRIVE;
     if (m->motor.wave != o->motor.wave || m->motor.amplitude != o->motor.amplitude ||
-        m->motor.frequency != o->motor.frequency)
+        m->motor.frequency != o->motor.frequency || m->force != o->force ||
+        m->force_on != o->force_on)
         what |= APP_CHANGED_DRIVE;
     if (next->dt != app->cfg.dt)
         what |= APP_CHANGED_DT;

@@ -97,6 +97,8 @@ enum control {
     CTL_WAVE,
     CTL_AMPLITUDE,
     CTL_FREQUENCY,
+    CTL_FORCE,
+    CTL_FORCE_ON,
     CTL_SPEED,
     CTL_BANDWIDTH,
     CTL_GRAPHICS,
@@ -209,6 +211,16 @@ unsigned app_set_text(struct app *app, enum control ctl, const char *text);
 /* Sets the time plots' window from typed text (seconds, --window's range); 0 with the
  * reason in the message if it is bad. */
 unsigned app_set_window(struct app *app, const char *text);
+
+/* Sets the springs' cubic constants k3 from typed text (--spring-cubic's list) when spring
+ * is negative, else spring's own (0 the wall's); 0 with the reason in the message if it is
+ * bad or refused (the exact integrator steps linear chains only). */
+unsigned app_set_cubic(struct app *app, int spring, const char *text);
+
+/* Sets the dampers beside the springs from typed text (--spring-damping's list) when spring
+ * is negative, else spring's own (0 the wall's); 0 with the reason in the message if it is
+ * bad or refused. */
+unsigned app_set_spring_damping(struct app *app, int spring, const char *text);
 
 /* Applies a pending change of the number of masses (a reset). */
 unsigned app_apply_masses(struct app *app);

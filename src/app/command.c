@@ -74,8 +74,8 @@ static void control_list(char *buf, size_t len)
     for (int c = 0; c < CTL_COUNT && used < len; c++)
         used += (size_t)snprintf(buf + used, len - used, "%s%s", c ? ", " : "",
                                  app_control_name((enum control)c));
-    if (used < len) /* a setting with keys (< and >) but no row of the panel */
-        snprintf(buf + used, len - used, ", window");
+    if (used < len) /* settings with keys (< and >; K on a spring) but no row of the panel */
+        snprintf(buf + used, len - used, ", window, spring-cubic, spring-damping");
 }
 
 /* What a verb's result is as a reply. */
@@ -119,6 +119,12 @@ static enum command_reply set_control(struct app *app, const char *name, const c
     bool window = c < 0 && strcmp(name, "window") == 0;
     if (window && *value)
         return verb(app, ACT_WINDOW, &(struct verb_arg){.text = value}, answer, len);
+    bool cubic = c < 0 && strcmp(name, "spring-cubic") == 0; /* no panel row either */
+    bool dampers = c < 0 && strcmp(name, "spring-damping") == 0;
+    window |= cubic || dampers;
+    if (window && *value)
+        return verb(app, cubic ? ACT_CUBIC : ACT_SPRING_DAMPING,
+                    &(struct verb_arg){.index = -1, .text = value}, answer, len);
     if ((c < 0 && !window) || !*value) {
         config_quote(name, strlen(name), q, sizeof q);
         if (!*name)
@@ -274,15 +280,19 @@ static enum command_reply do_element(struct command_call *c)
 {
     char *v = c->rest, *what = next_word(&v), *i = next_word(&v);
     int n = c->app->model->n;
-    char kind = strlen(what) == 1 ? what[0] : 0;
+    char kind = strlen(what) == 1 ? what[0] : strcmp(what, "cs") == 0 ? 's' : 0;
     double idx;
-    bool spring = kind == 'k';
-    if ((kind != 'm' && kind != 'c' && kind != 'k') || config_parse_number(i, &idx) ||
+    bool spring = kind == 'k' || kind == 's';
+    if ((kind != 'm' && kind != 'c' && !spring) || config_parse_number(i, &idx) ||
         idx != floor(idx) || idx < (spring ? 0 : 1) || idx > n || !*v) {
-        snprintf(c->answer, c->len, "element: expected element m|c|k I VALUE (mass I from 1 to "
-                 "%d: m its mass, c its damping; k spring I from 0 to %d)", n, n);
+        snprintf(c->answer, c->len, "element: expected element m|c|k|cs I VALUE (mass I from 1 "
+                 "to %d: m its mass, c its damping; spring I from 0 to %d: k its constant, cs "
+                 "its damper)", n, n);
         return REPLY_ERROR;
     }
+    if (kind == 's')
+        return verb(c->app, ACT_SPRING_DAMPING, &(struct verb_arg){.index = (int)idx, .text = v},
+                    c->answer, c->len);
     return verb(c->app, ACT_ELEMENT, &(struct verb_arg){.what = kind,
                 .index = (int)idx - !spring, .text = v}, c->answer, c->len);
 }
@@ -458,9 +468,10 @@ const struct command commands[CMD_COUNT] = {
     [CMD_PLACE] = {"place", "MASS X0",
                    "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
                    "where they stand, at rest, t = 0 (paused)", do_place, R},
-    [CMD_ELEMENT] = {"element", "m|c|k I VALUE",
+    [CMD_ELEMENT] = {"element", "m|c|k|cs I VALUE",
                      "one element: mass I's mass (m) or damping (c), or spring I's constant "
-                     "(k; spring 0 is the wall's, spring N the motor's)", do_element, R},
+                     "(k) or the damper beside it (cs; spring 0 is the wall's, spring N the "
+                     "motor's)", do_element, R},
     [CMD_NEAREST] = {"nearest", "", "drive at the nearest natural frequency", do_nearest, R},
     [CMD_SWEEP] = {"sweep", "", "start / stop a sine-sweep experiment", do_sweep, R},
     [CMD_FASTER] = {"faster", "", "playback faster", do_speed, R},

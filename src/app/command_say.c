@@ -30,7 +30,8 @@ enum command_reply say_modes(const struct app *app, char *answer, size_t len)
         snprintf(answer, len, "modes: the modes of this chain are not known");
         return REPLY_ERROR;
     }
-    size_t used = (size_t)snprintf(answer, len, "modes:");
+    size_t used = (size_t)snprintf(answer, len, "modes%s:",
+                                   app->model->cubic ? " (linearised at rest)" : "");
     for (int j = 0; j < app->model->n && used < len; j++) {
         double z = app->damping_ratio[j];
         char damping[64] = "";

@@ -41,6 +41,10 @@ static const struct control_row {
                        3.0, 0.05, 0.5},
     [CTL_FREQUENCY] = {"Frequency", NULL, CFG_FREQUENCY, "the change of frequency", false,
                        APP_FMIN, APP_FMAX, 0.01, 0.1},
+    [CTL_FORCE] = {"Force", NULL, CFG_FORCE, "the change of force", false, 0.0, 100.0, 0.1,
+                   1.0},
+    [CTL_FORCE_ON] = {"Force on", NULL, CFG_FORCE_ON, "the change of the forced mass", false,
+                      0, 0, 0, 0},
     [CTL_SPEED] = {"Speed", "speed", NONE, NULL, true, 0, 0, 0, 0},
     [CTL_BANDWIDTH] = {"Refresh", "bandwidth", CFG_LOW_BANDWIDTH, NULL, true, 0, 0, 0, 0},
     [CTL_GRAPHICS] = {"Graphics", NULL, CFG_GRAPHICS, NULL, true, 0, 0, 0, 0},
@@ -180,6 +184,7 @@ static int new_masses(struct app *app, int n, unsigned *what)
     struct config next = app->cfg;
     set_all(&next.mass, app->model->m[0]);
     set_all(&next.spring, app->model->k[0]);
+    set_all(&next.spring_cubic, app->model->k3[0]);
     set_all(&next.damping, app->model->c[0]);
     next.masses = n;
     next.x0.count = next.v0.count = 0;
@@ -221,6 +226,14 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         return APP_CHANGED_PENDING |
                app_say(app, SAID_NOTE, "Enter applies %d masses (a reset)", app->masses_pending);
     }
+    case CTL_FORCE_ON: { /* a mass: 1 .. N, the arrows stop at the ends */
+        int k = next.force_on + steps * (coarse ? 5 : 1);
+        k = k < 1 ? 1 : k > app->model->n ? app->model->n : k;
+        if (k == next.force_on)
+            return 0;
+        next.force_on = k;
+        return change_control(app, &next, ctl);
+    }
     case CTL_SPEED: {
         int i = 0;
         while (i < NSPEEDS - 1 && speeds[i] < app->speed - 1e-9)
@@ -247,6 +260,8 @@ unsigned app_adjust(struct app *app, enum control ctl, int steps, bool coarse)
         else
             memcpy(&i, at, sizeof i);
         i = (i + steps % count + count) % count;
+        if (ctl == CTL_INTEGRATOR && i == INTEGRATOR_EXACT && app->model->cubic)
+            i = (i + (steps < 0 ? -1 : 1) + count) % count; /* exact steps linear chains only */
         if (o->kind == CONFIG_FLAG)
             *(bool *)(void *)at = i;
         else
@@ -337,6 +352,61 @@ unsigned app_set_window(struct app *app, const char *text)
     unsigned what = next.window != app->cfg.window ? APP_CHANGED_WINDOW : 0;
     app->cfg.window = next.window;
     return what | app_say(app, SAID_NOTE, "window %g s", next.window);
+}
+
+/* A per-spring list with no panel row (the cubic constants, the spring dampers) from typed
+ * text: the whole list (spring < 0), or spring's own value, every spring spelled out. */
+static unsigned set_spring_list(struct app *app, enum config_key key, int spring,
+                                const char *text, const char *symbol, const char *why)
+{
+    const struct model *m = app->model;
+    const struct config_option *o = &config_options[key];
+    const double *now = key == CFG_SPRING_CUBIC ? m->k3 : m->cs;
+    struct config next = app->cfg;
+    struct config_list *l = (struct config_list *)(void *)((char *)&next + o->offset);
+    char err[300], noun[48];
+    if (spring > m->n)
+        return 0;
+    snprintf(noun, sizeof noun, "%s", o->name);
+    if (spring >= 0)
+        app_spring_name(m, spring, noun, sizeof noun);
+    if (config_set(&next, key, text, err, sizeof err) != 0 || (spring >= 0 && l->count != 1)) {
+        if (spring >= 0 && l->count > 1) {
+            char q[4 * CONFIG_QUOTE_MAX + 48];
+            config_quote(text, strlen(text), q, sizeof q);
+            snprintf(err, sizeof err, "%s is more than one value", q);
+        }
+        app_say(app, SAID_ERROR, "%s: %s", noun, err);
+        return 0;
+    }
+    if (spring >= 0) { /* every spring spelled out, one changed */
+        double v = l->v[0];
+        l->count = m->n + 1;
+        memcpy(l->v, now, (size_t)(m->n + 1) * sizeof *now);
+        l->v[spring] = v;
+    }
+    unsigned changed = 0;
+    if (app_change(app, &next, 0, why, &changed) != 0)
+        return 0;
+    if (changed & APP_CHANGED_MESSAGE)
+        return changed;
+    now = key == CFG_SPRING_CUBIC ? app->model->k3 : app->model->cs; /* the model rebuilt */
+    if (spring >= 0)
+        return changed | app_say(app, SAID_NOTE, "%s: %s = %g %s", noun, symbol, now[spring],
+                                 o->unit);
+    return changed | app_say(app, SAID_NOTE, "%s %s %s", o->name, text, o->unit);
+}
+
+unsigned app_set_cubic(struct app *app, int spring, const char *text)
+{
+    return set_spring_list(app, CFG_SPRING_CUBIC, spring, text, "k3",
+                           "the change of cubic springs");
+}
+
+unsigned app_set_spring_damping(struct app *app, int spring, const char *text)
+{
+    return set_spring_list(app, CFG_SPRING_DAMPING, spring, text, "c",
+                           "the change of spring dampers");
 }
 
 unsigned app_apply_masses(struct app *app)
@@ -492,6 +562,9 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
         return;
     case CTL_BANDWIDTH:
         snprintf(buf, len, "%s", app->cfg.low_bandwidth ? "low (slow link)" : "normal");
+        return;
+    case CTL_FORCE_ON:
+        snprintf(buf, len, "mass %d", m->force_on + 1);
         return;
     case CTL_GRAPHICS: {
         /* What it asks for, and what the charts are drawn with where that is not it:

@@ -13,8 +13,9 @@ int sweeping_plan(const struct app *app, struct sweep_plan *plan, char *why, siz
     const struct model *m = app->model;
     int n = m->n;
     *plan = (struct sweep_plan){.contact = INFINITY};
-    if (m->boundary != BOUNDARY_MOTOR) {
-        snprintf(why, len, "a sweep needs the motor at the right end");
+    if (m->boundary != BOUNDARY_MOTOR && !model_forced(m)) {
+        snprintf(why, len, "a sweep needs a drive: the motor at the right end, or a force on "
+                 "a mass");
         return -1;
     }
     if (!app->modes_ok) {

@@ -112,6 +112,16 @@ static unsigned element(struct app *app, const struct verb_arg *arg)
     return app_set_element(app, arg->what, arg->index, arg->text);
 }
 
+static unsigned cubic(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_cubic(app, arg->index, arg->text);
+}
+
+static unsigned spring_damping(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_spring_damping(app, arg->index, arg->text);
+}
+
 static unsigned place(struct app *app, const struct verb_arg *arg)
 {
     return app_place_start(app, arg->index, arg->value);
@@ -163,6 +173,8 @@ static const struct {
     [ACT_PLACE] = {.with = place},
     [ACT_PRESET] = {.with = preset},
     [ACT_WINDOW] = {.with = window},
+    [ACT_CUBIC] = {.with = cubic},
+    [ACT_SPRING_DAMPING] = {.with = spring_damping},
 };
 
 bool verb_bound(enum action a)

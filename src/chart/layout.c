@@ -145,7 +145,7 @@ int layout_control_rows(const struct layout *l, int ncontrols)
     int rows = l->controls.h - 2;
     if (rows >= ncontrols + 2)
         return ncontrols;
-    if (rows - 2 >= ncontrols - 1)
+    if (rows - 2 >= ncontrols - 3)
         return rows - 2;
     return rows >= ncontrols ? ncontrols : rows > 0 ? rows : 0;
 }

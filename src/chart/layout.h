@@ -63,8 +63,8 @@ double layout_scene_metres(const struct layout *l, int col);
 
 /* The rows of the controls' frame the list of ncontrols takes: the whole list where it
  * fits with two rows to spare (the frequency bar, the natural frequencies), else all but
- * those two rows where that hides one control at most (80x24: the list scrolls, the bar
- * and the frequencies stay), else as many as there are rows (60x20). */
+ * those two rows where that hides three controls at most (80x24: the list scrolls, the
+ * bar and the frequencies stay), else as many as there are rows (60x20). */
 int layout_control_rows(const struct layout *l, int ncontrols);
 
 /* The control drawn at screen cell (y, x), the list shown from control top, or -1. */

@@ -88,7 +88,7 @@ static double last_energy(const struct model *m, const double *x, const double *
     int i = m->n - 1;
     double e = 0.5 * m->m[i] * v[i] * v[i];
     double left = i > 0 ? x[i] - x[i - 1] : x[i], right = u - x[i];
-    return e + 0.5 * m->k[i] * left * left + 0.5 * m->k[i + 1] * right * right;
+    return e + model_spring_energy(m, i, left) + model_spring_energy(m, i + 1, right);
 }
 
 /* Puts constraint k back on its limit (moving the masses, half each for a pair) and

@@ -48,15 +48,29 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                   .help = "masses", .symbol = "masses", .lo = 0, .lo_open = true, .hi = INFINITY,
                   .def = MODEL_DEFAULT_MASS, .unit = "kg", .digits = 2, .offset = AT(mass)},
     [CFG_SPRING] = {.name = "spring", .section = "system", .saved = true, .kind = CONFIG_LIST, .arg = "LIST",
-                    .help = "springs, the walls' included", .symbol = "springs", .lo = 0,
-                    .lo_open = true, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
+                    .help = "springs, the walls' included (0: no spring there)",
+                    .symbol = "springs", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_SPRING, .per = CONFIG_PER_SPRING,
                     .unit = "N/m",
                     .digits = 1, .offset = AT(spring)},
+    [CFG_SPRING_CUBIC] = {.name = "spring-cubic", .section = "system", .saved = true,
+                          .kind = CONFIG_LIST, .arg = "LIST",
+                          .help = "cubic constants k3 of the springs, the walls' included: a "
+                                  "spring's force k s + k3 s^3",
+                          .symbol = "k3", .lo = -INFINITY, .hi = INFINITY, .def = 0,
+                          .per = CONFIG_PER_SPRING, .unit = "N/m³", .digits = 1,
+                          .offset = AT(spring_cubic)},
     [CFG_DAMPING] = {.name = "damping", .section = "system", .saved = true, .kind = CONFIG_LIST,
                      .arg = "LIST", .help = "damping of each mass",
                      .symbol = "damping", .lo = 0, .hi = INFINITY, .def = MODEL_DEFAULT_DAMPING, .unit = "N·s/m",
                      .digits = 2,
                      .offset = AT(damping)},
+    [CFG_SPRING_DAMPING] = {.name = "spring-damping", .section = "system", .saved = true,
+                            .kind = CONFIG_LIST, .arg = "LIST",
+                            .help = "a damper beside each spring, on the rate of its stretch "
+                                    "(the walls' included)",
+                            .symbol = "spring dampers", .lo = 0, .hi = INFINITY, .def = 0,
+                            .per = CONFIG_PER_SPRING, .unit = "N·s/m", .digits = 2,
+                            .offset = AT(spring_damping)},
     [CFG_DT] = {.name = "dt", .section = "system", .saved = true, .kind = CONFIG_NUMBER, .arg = "SECONDS",
                 .help = "time step", .symbol = "dt", .lo = 0, .lo_open = true, .hi = 0.05,
                 .ilo = 0.001, .def = 0.01, .unit = "s", .digits = 3, .offset = AT(dt)},
@@ -83,6 +97,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                        .lo_open = true, .hi = 1e6, .def = MODEL_DEFAULT_FREQUENCY, .unit = "Hz",
                        .digits = 3,
                        .offset = AT(frequency)},
+    [CFG_FORCE] = {.name = "force", .section = "motor", .saved = true, .kind = CONFIG_NUMBER,
+                   .arg = "NEWTONS", .help = "a force F w(2 pi f t) on mass --force-on, the "
+                   "motor's waveform and frequency", .symbol = "force", .lo = 0, .hi = 1e9,
+                   .def = 0, .unit = "N", .digits = 2, .offset = AT(force)},
+    /* Checked against N in config_model. */
+    [CFG_FORCE_ON] = {.name = "force-on", .section = "motor", .saved = true, .kind = CONFIG_WHOLE,
+                      .arg = "K", .help = "the mass the force acts on", .symbol = "K",
+                      .lo = 1, .hi = MODEL_MAX_MASSES, .def = 1, .offset = AT(force_on)},
     /* Bounded by what the model can hold: the walls are MODEL_LENGTH apart, and no
      * velocity outlives the cap (a state past these only makes inf and nan). */
     [CFG_X0] = {.name = "x0", .section = "initial", .saved = true, .kind = CONFIG_LIST, .arg = "LIST",
@@ -119,7 +141,7 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
                     .expect = "a file name", .offset = AT(output),
                     .help = "headless/modes/sweep output to FILE instead of standard output"},
     [CFG_ENERGY] = {.name = "energy", .section = "run", .kind = CONFIG_FLAG,
-                    .help = "headless CSV gains kinetic,potential,dissipated,motor_work,contact",
+                    .help = "headless CSV gains kinetic,potential,dissipated,motor_work,contact,force_work",
                     .offset = AT(energy)},
     [CFG_META] = {.name = "meta", .kind = CONFIG_FLAG, .offset = AT(meta),
                   .help = "headless/modes/sweep CSV begins with '#' lines: the version and the "
@@ -188,7 +210,14 @@ const struct config_option config_options[CFG_KEY_COUNT] = {
     [CFG_MODES] = {.name = "modes", .kind = CONFIG_MODE,
                    .help = "natural frequencies, mode shapes and damping, CSV"},
     [CFG_SWEEP] = {.name = "sweep", .kind = CONFIG_MODE, .arg = "FMIN:FMAX:COUNT",
-                   .help = "steady-state amplitude and phase against motor frequency, CSV"},
+                   .help = "steady-state amplitude and phase against motor frequency, CSV; "
+                           "with cubic springs every branch by harmonic balance: "
+                           "frequency_hz,branch,stable,amp1..,phase1.."},
+    [CFG_SWEEP_RUN] = {.name = "sweep-run", .kind = CONFIG_MODE,
+                       .arg = "up|down FMIN:FMAX:COUNT",
+                       .help = "a simulated sweep up or down, each point from the last one's "
+                               "state, run until steady to 0.1 %; CSV frequency_hz,branch "
+                               "(empty),stable,amp1..,phase1.."},
     [CFG_BATCH] = {.name = "batch", .kind = CONFIG_MODE, .arg = "FILE|-",
                    .help = "a parameter study: a CSV whose header names settings "
                            "(masses,damping,frequency,...) and whose rows are runs; one "

@@ -19,13 +19,17 @@ enum config_key {
     CFG_MASSES,
     CFG_MASS,
     CFG_SPRING,
+    CFG_SPRING_CUBIC,
     CFG_DAMPING,
+    CFG_SPRING_DAMPING,
     CFG_DT,
     CFG_INTEGRATOR,
     CFG_BOUNDARY,
     CFG_WAVE,
     CFG_AMPLITUDE,
     CFG_FREQUENCY,
+    CFG_FORCE,
+    CFG_FORCE_ON,
     CFG_X0,
     CFG_V0,
     CFG_RANDOM,
@@ -55,6 +59,7 @@ enum config_key {
     CFG_MODES,
     CFG_SWEEP,
     CFG_BATCH,
+    CFG_SWEEP_RUN,
     CFG_PLAIN,
     CFG_LIST_PRESETS,
     CFG_LIST_LESSONS,
@@ -148,13 +153,17 @@ struct config {
     int masses;                         /* N */
     struct config_list mass;            /* kg */
     struct config_list spring;          /* N/m */
+    struct config_list spring_cubic;    /* N/m^3: each spring's k3 (force k s + k3 s^3) */
     struct config_list damping;         /* N s/m */
+    struct config_list spring_damping;  /* N s/m, beside each spring */
     double dt;                          /* s */
     enum integrator integrator;         /* the stepper (rk4 unless set) */
     enum boundary boundary;             /* right end */
     enum wave wave;                     /* drive waveform */
     double amplitude;                   /* m */
     double frequency;                   /* Hz */
+    double force;                       /* the force input's amplitude F (N) */
+    int force_on;                       /* the mass it acts on (1-based) */
     struct config_list x0;              /* initial displacements (m) */
     struct config_list v0;              /* initial velocities (m/s) */
     bool random;                        /* random initial positions */
@@ -274,8 +283,8 @@ void config_get(int key, const struct config *c, const struct model *m,
                 struct config_value *out);
 
 /* Whether key is in force in c: of the initial conditions, start-mode when c starts
- * along a mode, else random and seed when positions are random, else x0 and v0; every
- * other key always. */
+ * along a mode, else random and seed when positions are random, else x0 and v0;
+ * spring-cubic when some k3 is not 0; every other key always. */
 bool config_in_force(int key, const struct config *c);
 
 /* Writes c's settings (every row with a preset section, in the table's order) as command

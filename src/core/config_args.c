@@ -35,7 +35,8 @@ static void write_number(FILE *out, double v)
 /* Whether the command line says key of c: a flag when on, the seed when positions are
  * random or it was given, a number whose default is words ("every step") when it is not
  * that default, x0 unless random positions stand for it, start-mode when c starts along a
- * mode (written after x0 and v0, so it wins over them as it did), every other key always. */
+ * mode (written after x0 and v0, so it wins over them as it did), spring-cubic when some k3
+ * is not 0, every other key always. */
 static bool said(int key, const struct config *c)
 {
     const struct config_option *o = &config_options[key];
@@ -47,6 +48,8 @@ static bool said(int key, const struct config *c)
         return c->x0.count > 0 || !c->random;
     case CFG_START_MODE:
         return c->start_mode > 0;
+    case CFG_SPRING_CUBIC:
+        return config_in_force(key, c);
     default:
         break;
     }

@@ -64,9 +64,13 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
     else if (expand(&c->spring, n + 1, config_options[CFG_SPRING].def, m->k, springs, err,
                     errlen))
         *bad_key = CFG_SPRING;
+    else if (expand(&c->spring_cubic, n + 1, 0.0, m->k3, springs, err, errlen))
+        *bad_key = CFG_SPRING_CUBIC;
     else if (expand(&c->damping, n, config_options[CFG_DAMPING].def, m->c, per_mass, err,
                     errlen))
         *bad_key = CFG_DAMPING;
+    else if (expand(&c->spring_damping, n + 1, 0.0, m->cs, springs, err, errlen))
+        *bad_key = CFG_SPRING_DAMPING;
     else if (c->x0.count > 1 && c->x0.count != n)
         *bad_key = CFG_X0;
     else if (c->v0.count > 1 && c->v0.count != n)
@@ -90,6 +94,26 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
                  "on, the blocks %.6g m wide)", a, n, n == 1 ? "block" : "blocks", room,
                  model_block_width(m));
     }
+    if (*bad_key < 0 && c->boundary == BOUNDARY_MOTOR && motor_has_jumps(c->wave) &&
+        m->cs[n] != 0.0) {
+        /* u jumps, so the damper's rate cs_N (u' - v_N) is a Dirac pulse: no finite force */
+        *bad_key = CFG_SPRING_DAMPING;
+        snprintf(err, errlen, "'%g' on the motor's spring with a %s wave makes an infinite "
+                 "force at each jump (expected 0 for spring %d, a sine or triangle wave, or "
+                 "another right end)", m->cs[n], motor_wave_name(c->wave), n);
+    }
+    if (*bad_key < 0 && c->force_on > n) {
+        *bad_key = CFG_FORCE_ON;
+        snprintf(err, errlen, "'%d' is out of range for %d %s (expected a mass 1 <= K <= %d)",
+                 c->force_on, n, per_mass, n);
+    }
+    model_set_cubic(m);
+    if (*bad_key < 0 && m->cubic && c->integrator == INTEGRATOR_EXACT) {
+        *bad_key = CFG_INTEGRATOR;
+        snprintf(err, errlen, "'exact' steps a linear chain by its matrix exponential, and "
+                 "the cubic springs (--spring-cubic) make this one nonlinear (expected rk4, "
+                 "verlet, semi-implicit or euler, or --spring-cubic 0)");
+    }
     if (*bad_key >= 0) {
         model_free(m);
         return NULL;
@@ -97,6 +121,9 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
     m->boundary = c->boundary;
     m->motor = (struct motor){c->wave, c->amplitude, c->frequency, 0.0};
     m->collisions = !c->no_collisions;
+    m->force = c->force;
+    m->force_on = c->force_on - 1;
+    model_sync(m);
     return m;
 }
 

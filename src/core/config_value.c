@@ -19,8 +19,20 @@ static bool from_model(int key, const struct model *m, struct config_value *out)
     case CFG_SPRING:
         *out = (struct config_value){.count = m->n + 1, .v = m->k};
         return true;
+    case CFG_SPRING_CUBIC:
+        *out = (struct config_value){.count = m->n + 1, .v = m->k3};
+        return true;
     case CFG_DAMPING:
         *out = (struct config_value){.count = m->n, .v = m->c};
+        return true;
+    case CFG_SPRING_DAMPING:
+        *out = (struct config_value){.count = m->n + 1, .v = m->cs};
+        return true;
+    case CFG_FORCE:
+        out->one = m->force;
+        break;
+    case CFG_FORCE_ON:
+        snprintf(out->text, sizeof out->text, "%d", m->force_on + 1);
         return true;
     case CFG_BOUNDARY:
         snprintf(out->text, sizeof out->text, "%s", model_boundary_name(m->boundary));
@@ -111,6 +123,11 @@ bool config_in_force(int key, const struct config *c)
     case CFG_X0:
     case CFG_V0:
         return c->start_mode == 0 && !c->random;
+    case CFG_SPRING_CUBIC: /* a linear chain's settings are written as they were before */
+        for (int i = 0; i < c->spring_cubic.count; i++)
+            if (c->spring_cubic.v[i] != 0.0)
+                return true;
+        return false;
     default:
         return true;
     }

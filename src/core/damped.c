@@ -7,16 +7,22 @@
  * the undamped shape phi_j with the largest |phi_j^T M psi| relative to the lengths of
  * both in the M inner product. Candidates are taken best first; a complex pair takes a
  * mode of its own, two real eigenvalues share one, and a real one never takes the last
- * mode a pair still needs. Above LIMITS_DGEEV_MAX masses the modes' damping is the
- * modal one (modes_modal), exact when C is diagonal in the undamped modes. So is that of
- * a mode whose eigenvalues dgeev cannot resolve: an eigenvalue counts only when its
+ * mode a pair still needs. This is done for every N up to 1000 (dgeev on 2N: 1 s at
+ * N = 300, about 30 s at 1000 with the reference BLAS) unless C is diagonal in the
+ * undamped modes, Rayleigh's C = alpha M + beta K (model_rayleigh: undamped chains, ground
+ * dampers proportional to the masses, spring dampers proportional to the springs), whose
+ * modal damping (modes_modal, O(N^2)) is then exact. So is that of a mode whose
+ * eigenvalues dgeev cannot resolve: an eigenvalue counts only when its
  * backward error in the chain's own equation,
  *   |(lambda^2 M + lambda C + K) psi| / ((|lambda|^2 |M| + |lambda| |C| + |K|) |psi|)
  * (infinity norms, |K| bounded by twice its largest diagonal entry), is below
  * TRUST_ERROR. Masses 1e70 apart make |A| so large that the slow modes' eigenvalues
  * drown in its rounding. A chain without dampers takes the modal route too: C = 0 is
  * diagonal in the modes, so its ratios are exactly 0 (Q infinite), where dgeev's real
- * parts would be rounding (~1e-17, Q ~1e16). */
+ * parts would be rounding (~1e-17, Q ~1e16).
+ * Each mode's eigen frequency is |lambda| / 2 pi of its pair (the textbooks' natural
+ * frequency of a non-proportionally damped mode), sqrt(l1 l2) / 2 pi of its two real
+ * eigenvalues. A rigid-body mode (0 Hz: model_rigid_modes) has no damping ratio: NAN. */
 #include "modes.h"
 
 #include <complex.h>
@@ -45,21 +51,23 @@ static int compare_candidate(const void *a, const void *b)
     return x->mode - y->mode;
 }
 
-/* The ratio and damped frequency of a mode oscillating as x'' = -w2 x - 2 s x'. */
-static void from_modal(double w2, double s, double *ratio, double *hz)
+/* The ratio, damped frequency and eigen frequency of a mode oscillating as
+ * x'' = -w2 x - 2 s x' (|lambda| = w: l1 l2 = w^2 either way). */
+static void from_modal(double w2, double s, double *ratio, double *hz, double *eigen)
 {
     double w = sqrt(w2 > 0.0 ? w2 : 0.0);
     *ratio = s / w;
     *hz = s < w ? sqrt((w - s) * (w + s)) / (2.0 * M_PI) : 0.0;
+    *eigen = w / (2.0 * M_PI);
 }
 
-static int modal_damping(const struct model *m, double *ratio, double *hz)
+static int modal_damping(const struct model *m, double *ratio, double *hz, double *eigen)
 {
-    int n = m->n;
+    int n = m->n, rigid = model_rigid_modes(m);
     double *w2 = malloc((size_t)(2 * n) * sizeof *w2);
     int e = w2 ? modes_modal(m, w2, w2 + n) : -1;
-    for (int j = 0; e == 0 && j < n; j++) {
-        from_modal(w2[j], w2[n + j], &ratio[j], &hz[j]);
+    for (int j = rigid; e == 0 && j < n; j++) {
+        from_modal(w2[j], w2[n + j], &ratio[j], &hz[j], &eigen[j]);
         if (!isfinite(ratio[j]))
             e = -2;
     }
@@ -122,9 +130,12 @@ static void assign(int n, int units, const bool *pair, struct candidate *cand, i
  * NULL for a real one); scratch holds 4N doubles. model_rates, being linear, gives
  * acc = -M^-1 (K x + C v) for the real and the imaginary parts of (psi, lambda psi); the
  * residual is m_i (lambda^2 psi_i - acc_i). */
-static double backward_error(const struct model *m, double complex lambda, const double *re,
-                             const double *im, double *scratch)
+static double backward_error(const struct model *chain, double complex lambda,
+                             const double *re, const double *im, double *scratch)
 {
+    struct model linear = *chain; /* cubic springs linearised at rest */
+    linear.cubic = false;
+    const struct model *m = &linear;
     int n = m->n;
     double *x = scratch, *v = scratch + n, *acc_re = scratch + 2 * n, *acc_im = scratch + 3 * n;
     for (int pass = 0; pass < 2; pass++) {
@@ -139,7 +150,7 @@ static double backward_error(const struct model *m, double complex lambda, const
     for (int i = 0; i < n; i++) {
         double complex z = re[i] + I * (im ? im[i] : 0.0);
         top_m = fmax(top_m, m->m[i]);
-        top_c = fmax(top_c, m->c[i]);
+        top_c = fmax(top_c, m->c[i] + 2.0 * (m->cs[i] + m->cs[i + 1]));
         top_k = fmax(top_k, 2.0 * (m->k[i] + m->k[i + 1]));
         top_psi = fmax(top_psi, cabs(z));
         top_r = fmax(top_r, cabs(m->m[i] * (lambda * lambda * z - (acc_re[i] + I * acc_im[i]))));
@@ -151,10 +162,11 @@ static double backward_error(const struct model *m, double complex lambda, const
 /* Ratio and damped frequency of every mode given a pair or two real eigenvalues; NAN for
  * the others. A passive chain has Re lambda <= 0: a positive real part is rounding. */
 static void conclude(int n, int units, const bool *pair, const int *owner, const double *re,
-                     const double *im, const int *first, double *ratio, double *hz)
+                     const double *im, const int *first, double *ratio, double *hz,
+                     double *eigen)
 {
     for (int j = 0; j < n; j++)
-        ratio[j] = hz[j] = NAN;
+        ratio[j] = hz[j] = eigen[j] = NAN;
     /* A mode's first real eigenvalue waits in hz[j] (as -l1, > 0), tagged by ratio NAN. */
     for (int u = 0; u < units; u++) {
         int j = owner[u], k = first[u];
@@ -163,24 +175,51 @@ static void conclude(int n, int units, const bool *pair, const int *owner, const
         if (pair[u]) {
             ratio[j] = fmax(-re[k], 0.0) / hypot(re[k], im[k]);
             hz[j] = fabs(im[k]) / (2.0 * M_PI);
+            eigen[j] = hypot(re[k], im[k]) / (2.0 * M_PI);
         } else if (isnan(hz[j])) {
             hz[j] = fmax(-re[k], 0.0);
         } else {
             double l1 = hz[j], l2 = fmax(-re[k], 0.0);
             ratio[j] = (l1 + l2) / (2.0 * sqrt(l1 * l2));
             hz[j] = 0.0;
+            eigen[j] = sqrt(l1 * l2) / (2.0 * M_PI);
         }
     }
 }
 
 int modes_damped(const struct model *m, const double *shapes, double *ratio, double *damped_hz)
 {
-    int n = m->n, n2 = 2 * n;
-    bool undamped = true;
-    for (int i = 0; i < n; i++)
-        undamped &= m->c[i] == 0.0;
-    if (n > LIMITS_DGEEV_MAX || undamped)
-        return modal_damping(m, ratio, damped_hz);
+    double *eigen = malloc((size_t)m->n * sizeof *eigen);
+    int e = eigen ? modes_damped_all(m, shapes, ratio, damped_hz, eigen) : -1;
+    free(eigen);
+    return e;
+}
+
+/* A rigid-body mode: 0 Hz, no ratio. */
+static void rigid_modes(const struct model *m, double *ratio, double *hz, double *eigen)
+{
+    for (int j = 0; j < model_rigid_modes(m); j++) {
+        ratio[j] = NAN;
+        hz[j] = eigen[j] = 0.0;
+    }
+}
+
+static int dense_damping(const struct model *m, const double *shapes, double *ratio,
+                         double *damped_hz, double *eigen);
+
+int modes_damped_all(const struct model *m, const double *shapes, double *ratio,
+                     double *damped_hz, double *eigen)
+{
+    int e = model_rayleigh(m) ? modal_damping(m, ratio, damped_hz, eigen)
+                              : dense_damping(m, shapes, ratio, damped_hz, eigen);
+    rigid_modes(m, ratio, damped_hz, eigen);
+    return e;
+}
+
+static int dense_damping(const struct model *m, const double *shapes, double *ratio,
+                         double *damped_hz, double *eigen)
+{
+    int n = m->n, n2 = 2 * n, rigid = model_rigid_modes(m);
     size_t nn = (size_t)n2 * (size_t)n2;
     double *a = malloc(2 * nn * sizeof *a);
     double *work = malloc((size_t)(4 * n2) * sizeof *work);
@@ -212,18 +251,19 @@ int modes_damped(const struct model *m, const double *shapes, double *ratio, dou
     bool missing = false;
     if (e == 0) {
         assign(n, units, pair, cand, owner, taken);
-        conclude(n, units, pair, owner, re, im, first, ratio, damped_hz);
-        for (int j = 0; j < n; j++)
+        conclude(n, units, pair, owner, re, im, first, ratio, damped_hz, eigen);
+        for (int j = rigid; j < n; j++)
             missing |= !isfinite(ratio[j]) || !isfinite(damped_hz[j]);
     }
     if (missing) {
-        /* Reuses re, im as the modal route's answer for the modes dgeev could not give. */
-        e = modal_damping(m, re, im);
-        for (int j = 0; e == 0 && j < n; j++)
+        /* Reuses re, im and scratch as the modal route's answer for the modes dgeev could
+         * not give. */
+        e = modal_damping(m, re, im, scratch);
+        for (int j = rigid; e == 0 && j < n; j++)
             if (!isfinite(ratio[j]) || !isfinite(damped_hz[j]))
-                ratio[j] = re[j], damped_hz[j] = im[j];
+                ratio[j] = re[j], damped_hz[j] = im[j], eigen[j] = scratch[j];
     }
-    for (int j = 0; e == 0 && j < n; j++)
+    for (int j = rigid; e == 0 && j < n; j++)
         if (!isfinite(ratio[j]) || !isfinite(damped_hz[j]))
             e = -2; /* w^2 underflowed to 0: no answer, not an infinite one */
     free(a);

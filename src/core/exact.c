@@ -56,6 +56,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_matrix.h>
 
+#include "exact_general.h"
 #include "exact_modal.h"
 
 #define MAX_SLOTS 4                      /* cached steps, for small chains */
@@ -77,7 +78,7 @@ struct slot {
 
 struct exact {
     int n, dmax, slots;
-    double *saved; /* m (n), k (n+1), c (n) as last seen */
+    double *saved; /* m (n), k (n+1), c (n), cs (n+1) as last seen */
     enum boundary boundary;
     int valid; /* the saved model factorised: 1, or 0 */
     unsigned long model, clock;
@@ -92,6 +93,7 @@ struct exact {
                            until a model needs the dense exponential */
     struct slot slot[MAX_SLOTS];
     struct modal *md;   /* the modes' propagator (exact_modal.c) */
+    struct general *gen; /* the general one (exact_general.c), made when first needed */
     int use_modal;      /* the saved model's dampers are proportional to its masses */
 };
 
@@ -114,7 +116,7 @@ struct exact *exact_new(int n)
     e->n = n;
     e->dmax = d;
     e->slots = slots;
-    e->saved = malloc((size_t)(3 * n + 1) * sizeof(double));
+    e->saved = malloc((size_t)(4 * n + 2) * sizeof(double));
     e->sqm = malloc((size_t)(4 * n) * sizeof(double));
     e->md = modal_new(n);
     if (!e->saved || !e->sqm || !e->md) {
@@ -173,6 +175,7 @@ void exact_free(struct exact *e)
     if (!e)
         return;
     modal_free(e->md);
+    general_free(e->gen);
     free(e->mem);
     free(e->z);
     free(e->sqm);
@@ -186,13 +189,17 @@ int exact_copy(struct exact *dst, const struct exact *src)
     size_t dd = (size_t)d * (size_t)d;
     if (src->mem && dense_alloc(dst))
         return -1;
-    memcpy(dst->saved, src->saved, (size_t)(3 * n + 1) * sizeof(double));
+    memcpy(dst->saved, src->saved, (size_t)(4 * n + 2) * sizeof(double));
     memcpy(dst->sqm, src->sqm, (size_t)(4 * n) * sizeof(double));
     if (src->mem) {
         memcpy(dst->z, src->z, (size_t)(4 * d + 2 * d * slots) * sizeof(double));
         memcpy(dst->mem, src->mem, (size_t)(3 + 2 * slots) * dd * sizeof(double));
     }
     modal_copy(dst->md, src->md);
+    if (src->gen && !dst->gen && !(dst->gen = general_new(n)))
+        return -1;
+    if (src->gen && general_copy(dst->gen, src->gen) != 0)
+        return -1;
     dst->use_modal = src->use_modal;
     dst->boundary = src->boundary;
     dst->valid = src->valid;
@@ -223,11 +230,13 @@ static void take_model(struct exact *e, const struct model *m)
     double *sv = e->saved;
     if (e->model && m->boundary == e->boundary && memcmp(sv, m->m, (size_t)n * sizeof *sv) == 0 &&
         memcmp(sv + n, m->k, (size_t)(n + 1) * sizeof *sv) == 0 &&
-        memcmp(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv) == 0)
+        memcmp(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv) == 0 &&
+        memcmp(sv + 3 * n + 1, m->cs, (size_t)(n + 1) * sizeof *sv) == 0)
         return;
     memcpy(sv, m->m, (size_t)n * sizeof *sv);
     memcpy(sv + n, m->k, (size_t)(n + 1) * sizeof *sv);
     memcpy(sv + 2 * n + 1, m->c, (size_t)n * sizeof *sv);
+    memcpy(sv + 3 * n + 1, m->cs, (size_t)(n + 1) * sizeof *sv);
     e->boundary = m->boundary;
     e->model++;
     e->valid = 0;
@@ -278,8 +287,17 @@ static void take_model(struct exact *e, const struct model *m)
     e->wscale = wmax;
     /* Dampers proportional to the masses (to rounding) keep the modes apart: the modes'
      * propagator. Otherwise, or if LAPACK fails there, the dense exponential. */
-    e->use_modal = exact_proportional(m) && modal_take(e->md, m, e->gam[0], e->ld, e->ls) == 0;
-    e->valid = e->use_modal || dense_alloc(e) == 0;
+    double beta = 0.0;
+    for (int j = 0; j <= n && m->spring_damped; j++)
+        if (m->cs[j] != 0.0 && (j < n || m->boundary != BOUNDARY_FREE)) {
+            beta = m->cs[j] / m->k[j];
+            break;
+        }
+    e->use_modal = (m->spring_damped ? model_rayleigh(m) : exact_proportional(m)) &&
+                   modal_take(e->md, m, e->gam[0], beta, e->ld, e->ls) == 0;
+    /* The dense path here knows ground dampers only: spring dampers not in the modes are
+     * exact_general's (exact_advance_all goes there) */
+    e->valid = e->use_modal || (!m->spring_damped && dense_alloc(e) == 0);
 }
 
 /* tau A into s (d x d), A the generator for drive kind and angular frequency omega;
@@ -467,15 +485,47 @@ static struct slot *find_slot(struct exact *e, enum exact_kind kind, double omeg
     return old;
 }
 
+int exact_needs_general(const struct model *m)
+{
+    if (model_forced(m))
+        return 1;
+    /* Rayleigh's spring dampers stay in the modes, unless the motor moves the end of a
+     * damped spring (its rate u' is an input the modes' drive does not carry). */
+    if (m->spring_damped && (!model_rayleigh(m) || (m->boundary == BOUNDARY_MOTOR &&
+                                                   m->motor.amplitude != 0.0 && m->cs[m->n] != 0.0)))
+        return 1;
+    for (int j = 0; j <= m->n; j++)
+        if (m->k[j] == 0.0 && (j < m->n || m->boundary != BOUNDARY_FREE))
+            return 1;
+    return 0;
+}
+
 int exact_advance(struct exact *e, const struct model *m, const struct exact_drive *d, double a,
                   double b, double *x, double *v, double *diss, double *work)
+{
+    double fwork = 0.0;
+    return exact_advance_all(e, m, d, a, b, x, v, diss, work, &fwork);
+}
+
+int exact_advance_all(struct exact *e, const struct model *m, const struct exact_drive *d,
+                      double a, double b, double *x, double *v, double *diss, double *work,
+                      double *fwork)
 {
     double h = b - a;
     if (h == 0.0)
         return 0;
     if (!(h > 0.0) || m->n != e->n)
         return -1;
-    take_model(e, m);
+    int general = exact_needs_general(m);
+    if (!general) {
+        take_model(e, m);
+        general = !e->valid && m->spring_damped; /* the modes failed: the general path */
+    }
+    if (general) {
+        if (!e->gen && !(e->gen = general_new(e->n)))
+            return -1;
+        return general_advance(e->gen, m, d, a, b, x, v, diss, work, fwork);
+    }
     if (!e->valid)
         return -1;
 

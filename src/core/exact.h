@@ -35,6 +35,8 @@ struct exact_drive {
     int sine;                /* 1: the sine form */
     double amp, omega, phi;  /* the sine's amplitude (m), angular frequency, phase (rad) */
     double t0, u0, du;       /* the line's reference time, value and slope */
+    double force;            /* F (N): the force input F w on mass m->force_on, 0: none */
+    double w0, dw;           /* the line's waveform w and w' at t0 (amplitude 1) */
 };
 
 /* Advances displacements x and velocities v (n each) of model m from time a to b with
@@ -60,5 +62,17 @@ struct exact_drive {
  * doubling of ||A|| (b - a) past 1/2 adds one exponential and two products. */
 int exact_advance(struct exact *e, const struct model *m, const struct exact_drive *d,
                   double a, double b, double *x, double *v, double *diss, double *work);
+
+/* Whether m needs exact_general.c's dense exponential in the chain's own coordinates:
+ * spring dampers, a force input or a spring of k = 0 (a rigid-body mode). */
+int exact_needs_general(const struct model *m);
+
+/* exact_advance with the force input's work, integral of F w v_K, added to *fwork too.
+ * A chain with spring dampers, a force or a spring of k = 0 is stepped by exact_general.c
+ * (the dense exponential of the chain's first-order system with the drive's, books as
+ * quadratic forms), for which d must give the force and, for a line, w0 and dw. */
+int exact_advance_all(struct exact *e, const struct model *m, const struct exact_drive *d,
+                      double a, double b, double *x, double *v, double *diss, double *work,
+                      double *fwork);
 
 #endif

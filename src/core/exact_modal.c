@@ -1,5 +1,7 @@
-/* exact_modal.c: the exact step of a chain whose dampers are proportional to its masses,
- * mode by mode.
+/* exact_modal.c: the exact step of a chain whose damping is Rayleigh's, C = alpha M +
+ * beta K (ground dampers proportional to the masses, spring dampers to the springs), mode
+ * by mode; gamma below is mode j's own gamma_j = alpha + beta w_j^2 (exact.c passes no
+ * spring dampers where the motor's spring has one and the motor moves).
  *
  * With y = M^(1/2) x and T = M^(-1/2) K M^(-1/2) = Phi diag(w_j^2) Phi^T (T symmetric
  * tridiagonal: Phi by LAPACK's dstevr, w_j as the singular values of T's bidiagonal
@@ -52,7 +54,8 @@ struct mslot {
 struct modal {
     int n, damped;
     unsigned long model, clock;
-    double gamma, sk, kn, wscale; /* c_i / m_i; sqrt(k_N), k_N (0 for a free end); w_s */
+    double alpha, beta, sk, kn, wscale; /* gamma_j = alpha + beta w_j^2; sqrt(k_N), k_N (0
+                                           for a free end); w_s */
     double *w, *f, *ax, *sqm;     /* w_j, f_j, ax_j, sqrt(m_i) */
     double *diag, *off;           /* T for dstevr (overwritten) */
     double *phi;                  /* Phi, column-major: as a row-major n x n matrix, Phi^T */
@@ -130,8 +133,14 @@ void modal_copy(struct modal *dst, const struct modal *src)
         dst->slot[i].data = slot[i].data;
 }
 
-int modal_take(struct modal *md, const struct model *m, double gamma, const double *ld,
-               const double *ls)
+/* Mode j's damping rate gamma_j = alpha + beta w_j^2. */
+static double mode_gamma(const struct modal *md, int j)
+{
+    return md->alpha + md->beta * md->w[j] * md->w[j];
+}
+
+int modal_take(struct modal *md, const struct model *m, double alpha, double beta,
+               const double *ld, const double *ls)
 {
     int n = md->n, free_end = m->boundary == BOUNDARY_FREE;
     md->model++; /* every cached step is stale */
@@ -171,8 +180,9 @@ int modal_take(struct modal *md, const struct model *m, double gamma, const doub
         md->ax[j] = -md->kn * last / (md->w[j] * md->sqm[n - 1]);
     }
     md->wscale = md->w[n - 1]; /* the largest: sorted up above */
-    md->gamma = gamma;
-    md->damped = gamma > 0.0;
+    md->alpha = alpha;
+    md->beta = beta;
+    md->damped = alpha > 0.0 || beta > 0.0;
     return 0;
 }
 
@@ -184,7 +194,7 @@ static double mode_generator(const struct modal *md, int j, enum exact_kind kind
     memset(s, 0, 16 * sizeof *s);
     s[1] = tau * md->w[j];
     s[4] = -tau * md->w[j];
-    s[5] = -tau * md->gamma;
+    s[5] = -tau * mode_gamma(md, j);
     if (kind != EXACT_NONE) {
         s[6] = tau * md->f[j];
         s[11] = tau * (kind == EXACT_SINE ? omega : md->wscale);
@@ -235,7 +245,7 @@ static int fill_mode(const struct modal *md, int j, enum exact_kind kind, double
                 return -1;
             for (int a = 0; a < 4; a++)
                 for (int b = 0; b < 4; b++)
-                    g[4 * a + b] += w * md->gamma * x[4 + a] * x[4 + b];
+                    g[4 * a + b] += w * mode_gamma(md, j) * x[4 + a] * x[4 + b];
             for (int c = 0; driven && c < 2; c++) {
                 double fc = w * br * x[12 + 2 + c] * md->ax[j];
                 for (int b = 0; b < 4; b++)
@@ -356,10 +366,10 @@ int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_dri
     if (delta != 0.0) {
         for (int j = 0; j < n; j++) {
             double q = md->w[j] * md->hm[2 * j], p = md->hm[2 * j + 1];
-            dd += delta * md->gamma * p * p;
+            dd += delta * mode_gamma(md, j) * p * p;
             ww += delta * md->ax[j] * q * br * r;
             md->hm[2 * j] = (q + delta * md->w[j] * p) / md->w[j];
-            md->hm[2 * j + 1] = p + delta * (-md->w[j] * q - md->gamma * p + md->f[j] * s);
+            md->hm[2 * j + 1] = p + delta * (-md->w[j] * q - mode_gamma(md, j) * p + md->f[j] * s);
         }
         if (kind != EXACT_NONE) {
             double s1 = s + delta * (kind == EXACT_SINE ? omega : md->wscale) * r;

@@ -28,14 +28,14 @@ void modal_free(struct modal *md);
 void modal_copy(struct modal *dst, const struct modal *src);
 
 /* Takes in model m (its values checked by the caller: m, k > 0, c >= 0, finite) whose
- * c_i / m_i all equal gamma, and C, the lower bidiagonal factor of M^(-1/2) K M^(-1/2) =
+ * damping is alpha M + beta K (c_i / m_i all alpha, cs_j / k_j all beta), and C, the lower bidiagonal factor of M^(-1/2) K M^(-1/2) =
  * C C^T (diagonal ld, n; subdiagonal ls, n - 1; exact.c's, accurate entry by entry): its
  * modes, and a new generation (cached steps are stale). The frequencies are C's singular
  * values (dqds, to a few ulp each however small: a soft-mounted chain's slowest mode
  * keeps its phase), the shapes dstevr's eigenvectors. 0, or -1 when LAPACK fails or a
  * mode's frequency is not positive (the caller then uses the dense exponential). */
-int modal_take(struct modal *md, const struct model *m, double gamma, const double *ld,
-               const double *ls);
+int modal_take(struct modal *md, const struct model *m, double alpha, double beta,
+               const double *ld, const double *ls);
 
 /* Advances x, v (n each) from a to b > a on the drive's form kind (d read for EXACT_SINE
  * and EXACT_LINE) and adds the piece's dissipation and motor work to *diss and *work, as

@@ -437,7 +437,7 @@ void limits_judge(const struct limits_mode *mode, int n, const struct model *m,
         out->worst_hz = sqrt(mode[out->worst].w2) / (2.0 * M_PI);
         out->worst_is_top = out->worst == top;
     }
-    if (m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0) {
+    if (model_driven(m)) {
         out->drive_hz = m->motor.frequency;
         out->drive_steps = 1.0 / (m->motor.frequency * dt);
         judge_drive(m, out);
@@ -464,7 +464,7 @@ void limits_runaway_start(struct limits_runaway *r, const struct model *m,
                           const struct energy *e0)
 {
     double amp = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
-    r->base = e0->kinetic + e0->potential + 0.5 * m->k[m->n] * amp * amp;
+    r->base = e0->kinetic + e0->potential + model_spring_energy(m, m->n, amp);
     r->work0 = e0->motor_work;
     r->most = 0.0;
 }

@@ -1,11 +1,14 @@
 /* model.c: parameters, equilibrium geometry and the equation of motion
  *
- *   m_i a_i = -k_i (d_i - d_{i-1}) - k_{i+1} (d_i - d_{i+1}) - c_i v_i,
+ *   m_i a_i = T_{i+1} - T_i - c_i v_i + [i = K] F w(2 pi f t),
+ *   T_j = k_j (d_j - d_{j-1}) + cs_j (v_j - v_{j-1}),
  *
- * with d_{-1} = 0 (left wall) and d_N = u(t) (right end); for a free end the
- * k_N term of the last mass is dropped. */
+ * T_j the tension of spring j and its damper, with d_{-1} = v_{-1} = 0 (left wall) and
+ * d_N = u(t), v_N = u'(t) (right end); for a free end T_N = 0. A cubic spring adds
+ * k3_j s^3 to its force k_j s (s its stretch) and k3_j s^4/4 to its energy. */
 #include "model.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,7 +33,7 @@ struct model *model_new(int n)
     if (n < 1 || n > MODEL_MAX_MASSES)
         return NULL;
     struct model *m = calloc(1, sizeof *m);
-    double *buf = malloc((size_t)(3 * n + 1) * sizeof *buf);
+    double *buf = calloc((size_t)(5 * n + 3), sizeof *buf);
     if (!m || !buf) {
         free(m);
         free(buf);
@@ -40,6 +43,8 @@ struct model *model_new(int n)
     m->m = buf;
     m->k = buf + n;
     m->c = buf + 2 * n + 1;
+    m->cs = buf + 3 * n + 1; /* zeros: no spring dampers */
+    m->k3 = buf + 4 * n + 2; /* zeros: linear springs */
     for (int i = 0; i < n; i++) {
         m->m[i] = MODEL_DEFAULT_MASS;
         m->c[i] = MODEL_DEFAULT_DAMPING;
@@ -65,9 +70,108 @@ void model_copy(struct model *dst, const struct model *src)
     memcpy(dst->m, src->m, (size_t)n * sizeof *dst->m);
     memcpy(dst->k, src->k, (size_t)(n + 1) * sizeof *dst->k);
     memcpy(dst->c, src->c, (size_t)n * sizeof *dst->c);
+    memcpy(dst->cs, src->cs, (size_t)(n + 1) * sizeof *dst->cs);
+    memcpy(dst->k3, src->k3, (size_t)(n + 1) * sizeof *dst->k3);
+    dst->force = src->force;
+    dst->force_on = src->force_on;
     dst->boundary = src->boundary;
     dst->motor = src->motor;
     dst->collisions = src->collisions;
+    model_sync(dst);
+}
+
+void model_sync(struct model *m)
+{
+    m->spring_damped = false;
+    for (int j = 0; j <= m->n; j++)
+        m->spring_damped |= m->cs[j] != 0.0;
+    model_set_cubic(m);
+}
+
+int model_rigid_modes(const struct model *m)
+{
+    int n = m->n, rigid = 0;
+    bool right_tied = m->boundary != BOUNDARY_FREE && m->k[n] > 0.0;
+    bool grounded = m->k[0] > 0.0; /* the group that holds mass 1 */
+    for (int i = 0; i < n; i++) {
+        bool joined = i + 1 < n && m->k[i + 1] > 0.0;
+        if (!joined) { /* the group ends at mass i */
+            if (i + 1 == n)
+                grounded |= right_tied;
+            rigid += !grounded;
+            grounded = false;
+        }
+    }
+    return rigid;
+}
+
+/* Whether a / b is r for every pair, to rounding; b = 0 needs a = 0. *r NAN: not set. */
+static bool same_ratio(double a, double b, double *r)
+{
+    if (b == 0.0)
+        return a == 0.0;
+    double q = a / b;
+    if (isnan(*r))
+        *r = q;
+    return fabs(q - *r) <= 8.0 * DBL_EPSILON * fabs(*r);
+}
+
+bool model_rayleigh(const struct model *m)
+{
+    double alpha = NAN, beta = NAN;
+    for (int i = 0; i < m->n; i++)
+        if (!same_ratio(m->c[i], m->m[i], &alpha))
+            return false;
+    for (int j = 0; j <= m->n; j++)
+        if ((j < m->n || m->boundary != BOUNDARY_FREE) && !same_ratio(m->cs[j], m->k[j], &beta))
+            return false;
+    return true;
+}
+
+bool model_forced(const struct model *m)
+{
+    return m->force != 0.0;
+}
+
+bool model_driven(const struct model *m)
+{
+    return (m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0) || model_forced(m);
+}
+
+double model_force(const struct model *m, double t)
+{
+    if (m->force == 0.0)
+        return 0.0;
+    return m->force * motor_wave(m->motor.wave, m->motor.frequency * t + m->motor.phase);
+}
+
+void model_rates_damped_springs(const struct model *m, const double *inv_m, const double *x,
+                                const double *v, double u, double du, double *a, double *diss,
+                                double *work)
+{
+    int n = m->n;
+    const double *c = m->c, *cs = m->cs;
+    /* T_j = k_j s_j + k3_j s_j^3 + cs_j s_j' (s_j the stretch); the dampers' loss
+     * cs_j s_j'^2 */
+    double left = model_spring_force(m, 0, x[0]) + cs[0] * v[0], d = cs[0] * v[0] * v[0];
+    for (int i = 0; i < n; i++) {
+        double right = 0.0, rate = 0.0;
+        if (i < n - 1) {
+            rate = v[i + 1] - v[i];
+            right = model_spring_force(m, i + 1, x[i + 1] - x[i]) + cs[i + 1] * rate;
+        } else if (m->boundary != BOUNDARY_FREE) {
+            rate = du - v[i];
+            right = model_spring_force(m, n, u - x[i]) + cs[n] * rate;
+        }
+        double fd = c[i] * v[i];
+        a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+        d += fd * v[i] + (i < n - 1 || m->boundary != BOUNDARY_FREE ? cs[i + 1] * rate * rate : 0.0);
+        if (i == n - 1 && work)
+            *work = right * du;
+        left = right;
+    }
+    if (diss)
+        *diss = d;
 }
 
 double model_equilibrium(const struct model *m, int i)
@@ -86,6 +190,56 @@ double model_end_position(const struct model *m, double t)
     return m->boundary == BOUNDARY_MOTOR ? motor_position(&m->motor, t) : 0.0;
 }
 
+void model_set_cubic(struct model *m)
+{
+    m->cubic = false;
+    for (int j = 0; j <= m->n; j++)
+        m->cubic |= m->k3[j] != 0.0;
+}
+
+double model_turnover(const struct model *m, int *spring)
+{
+    double least = INFINITY;
+    for (int j = 0; j <= m->n; j++)
+        if (m->k3[j] < 0.0 && sqrt(m->k[j] / (-3.0 * m->k3[j])) < least) {
+            least = sqrt(m->k[j] / (-3.0 * m->k3[j]));
+            *spring = j;
+        }
+    return least;
+}
+
+bool model_hardening(const struct model *m)
+{
+    for (int j = 0; j <= m->n; j++)
+        if (m->k3[j] > 0.0)
+            return true;
+    return false;
+}
+
+void model_rates_cubic(const struct model *m, const double *inv_m, const double *x,
+                       const double *v, double u, double du, double *a, double *diss,
+                       double *work)
+{
+    int n = m->n;
+    const double *c = m->c;
+    double left = model_spring_force(m, 0, x[0]), d = 0.0;
+    for (int i = 0; i < n - 1; i++) {
+        double right = model_spring_force(m, i + 1, x[i + 1] - x[i]);
+        double fd = c[i] * v[i];
+        a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+        d += fd * v[i];
+        left = right;
+    }
+    int i = n - 1;
+    double right = m->boundary == BOUNDARY_FREE ? 0.0 : model_spring_force(m, n, u - x[i]);
+    double fd = c[i] * v[i];
+    a[i] = inv_m ? (right - left - fd) * inv_m[i] : (right - left - fd) / m->m[i];
+    if (diss)
+        *diss = d + fd * v[i];
+    if (work)
+        *work = right * du;
+}
+
 void model_accel(const struct model *m, const double *x, const double *v, double u, double *a)
 {
     model_rates(m, NULL, x, v, u, 0.0, a, NULL, NULL);
@@ -94,16 +248,12 @@ void model_accel(const struct model *m, const double *x, const double *v, double
 double model_potential(const struct model *m, const double *x, double u)
 {
     int n = m->n;
-    double e = m->k[0] * x[0] * x[0];
-    for (int j = 1; j < n; j++) {
-        double s = x[j] - x[j - 1];
-        e += m->k[j] * s * s;
-    }
-    if (m->boundary != BOUNDARY_FREE) {
-        double s = u - x[n - 1];
-        e += m->k[n] * s * s;
-    }
-    return 0.5 * e;
+    double e = model_spring_energy(m, 0, x[0]);
+    for (int j = 1; j < n; j++)
+        e += model_spring_energy(m, j, x[j] - x[j - 1]);
+    if (m->boundary != BOUNDARY_FREE)
+        e += model_spring_energy(m, n, u - x[n - 1]);
+    return e;
 }
 
 double model_kinetic(const struct model *m, const double *v)
@@ -116,9 +266,12 @@ double model_kinetic(const struct model *m, const double *v)
 
 /* Built column by column from the one equation of motion: column j of -M^-1 K is the
  * acceleration of a unit displacement of mass j (right end held at 0), column j of
- * -M^-1 C that of a unit velocity. */
-int model_first_order(const struct model *m, double *a, double *work)
+ * -M^-1 C that of a unit velocity; cubic springs left out (the chain linearised at rest). */
+int model_first_order(const struct model *lin, double *a, double *work)
 {
+    struct model linear = *lin;
+    linear.cubic = false;
+    const struct model *m = &linear;
     int n = m->n, n2 = 2 * n;
     double *x = work, *v = work + n, *acc = work + 2 * n;
     memset(a, 0, (size_t)n2 * (size_t)n2 * sizeof *a);

@@ -3,9 +3,12 @@
  * K phi = w^2 M phi with K tridiagonal (K_ii = k_i + k_{i+1}, K_{i,i+1} = -k_{i+1}; a free
  * end drops k_N from the last diagonal entry) becomes, with z = M^(1/2) phi, the
  * symmetric tridiagonal problem M^(-1/2) K M^(-1/2) z = w^2 z: LAPACK dstev (dstevr,
- * O(N^2), where the modal damping needs every vector of a long chain). The
- * steady state under u = A sin(w t) solves the complex tridiagonal system
- * (K - w^2 M + i w C) X = k_N A e_N: LAPACK zgtsv. The damped modes are in damped.c. */
+ * O(N^2), where the modal damping needs every vector of a long chain). Springs of k = 0
+ * leave K singular: each group of masses nothing ties to a wall or the end has a
+ * rigid-body mode, 0 Hz exactly (model_rigid_modes). The steady state under the drive
+ * w = sin(w t) solves the complex tridiagonal system (K - w^2 M + i w C) X = G,
+ * C tridiagonal with spring dampers, G = (k_N + i w cs_N) A e_N + F e_K (the motor end's
+ * spring and damper, the force): LAPACK zgtsv. The damped modes are in damped.c. */
 #include "modes.h"
 
 #include <complex.h>
@@ -51,12 +54,14 @@ int modes_compute(const struct model *m, double *freq, double *shapes)
         free(z);
         return (int)info;
     }
+    int rigid = model_rigid_modes(m);
     for (int j = 0; j < n; j++) {
         if (!isfinite(freq[j])) { /* the values overflowed: no answer, not a wrong one */
             free(z);
             return -2;
         }
-        freq[j] = sqrt(freq[j] > 0.0 ? freq[j] : 0.0) / (2.0 * M_PI);
+        /* a rigid-body mode is 0 Hz exactly, not dstev's rounding about 0 */
+        freq[j] = j < rigid ? 0.0 : sqrt(freq[j] > 0.0 ? freq[j] : 0.0) / (2.0 * M_PI);
     }
     if (shapes) {
         /* Column j of z is eigenvector j; phi = M^(-1/2) z. */
@@ -130,12 +135,22 @@ int modes_modal(const struct model *m, double *w2, double *s)
         if (info == 0 && found != n)
             info = -2;
     }
-    /* z_j = M^(1/2) phi_j with |z_j| = 1: phi^T M phi = 1, phi^T C phi = sum c_i z_i^2 / m_i. */
+    /* z_j = M^(1/2) phi_j with |z_j| = 1: phi^T M phi = 1, and phi^T C phi the ground
+     * dampers' sum c_i phi_i^2 and each spring damper's cs_j (phi_j - phi_(j-1))^2. */
+    int rigid = info == 0 ? model_rigid_modes(m) : 0;
     for (int j = 0; info == 0 && j < n; j++) {
-        double cc = 0.0;
-        for (int i = 0; i < n; i++)
-            cc += m->c[i] / m->m[i] * z[(size_t)j * n + i] * z[(size_t)j * n + i];
+        const double *zj = z + (size_t)j * n;
+        double cc = 0.0, prev = 0.0;
+        for (int i = 0; i < n; i++) {
+            double phi = zj[i] / sqrt(m->m[i]), rate = phi - prev;
+            cc += m->c[i] * phi * phi + m->cs[i] * rate * rate;
+            prev = phi;
+        }
+        if (m->boundary != BOUNDARY_FREE)
+            cc += m->cs[n] * prev * prev;
         s[j] = 0.5 * cc;
+        if (j < rigid)
+            w2[j] = 0.0;
         if (!isfinite(w2[j]) || !isfinite(s[j]))
             info = -2;
     }
@@ -148,7 +163,8 @@ int modes_modal(const struct model *m, double *w2, double *s)
 int modes_response_phase(const struct model *m, double freq_hz, double *amp, double *phase_deg)
 {
     int n = m->n;
-    if (m->boundary != BOUNDARY_MOTOR) {
+    bool forced = model_forced(m);
+    if (m->boundary != BOUNDARY_MOTOR && !forced) {
         for (int i = 0; i < n; i++) {
             amp[i] = 0.0;
             if (phase_deg)
@@ -162,16 +178,25 @@ int modes_response_phase(const struct model *m, double freq_hz, double *amp, dou
     lapack_complex_double *dl = buf, *d = buf + n, *du = buf + 2 * n, *b = buf + 3 * n;
     double w = 2.0 * M_PI * freq_hz;
     for (int i = 0; i < n; i++) {
-        d[i] = k_diag(m, i) - w * w * m->m[i] + I * w * m->c[i];
+        bool right = i < n - 1 || m->boundary != BOUNDARY_FREE;
+        double cd = m->c[i] + m->cs[i] + (right ? m->cs[i + 1] : 0.0);
+        d[i] = k_diag(m, i) - w * w * m->m[i] + I * w * cd;
         b[i] = 0.0;
         if (i + 1 < n)
-            dl[i] = du[i] = -m->k[i + 1];
+            dl[i] = du[i] = -m->k[i + 1] - I * w * m->cs[i + 1];
     }
-    /* A unit drive: the phase is there even at amplitude 0. */
-    b[n - 1] = m->k[n];
+    /* The end's spring and damper, k_N u + cs_N u' = (k_N + i w cs_N) u, and the force. A
+     * motor alone is a unit drive, scaled after: the phase is there even at amplitude 0. */
+    double scale = m->motor.amplitude;
+    if (m->boundary == BOUNDARY_MOTOR)
+        b[n - 1] = (m->k[n] + I * w * m->cs[n]) * (forced ? m->motor.amplitude : 1.0);
+    if (forced) {
+        b[m->force_on] += m->force;
+        scale = 1.0;
+    }
     lapack_int info = LAPACKE_zgtsv(LAPACK_COL_MAJOR, n, 1, dl, d, du, b, n);
     for (int i = 0; info == 0 && i < n; i++) {
-        amp[i] = cabs(b[i]) * m->motor.amplitude;
+        amp[i] = cabs(b[i]) * scale;
         if (phase_deg) {
             /* carg is in [-pi, pi]: -180 (a real negative X with Im -0) is 180. */
             double p = carg(b[i]) * (180.0 / M_PI);

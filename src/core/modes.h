@@ -21,25 +21,34 @@ int modes_modal(const struct model *m, double *w2, double *s);
 /* Index of the frequency in f[0..n-1] closest to freq. */
 int modes_nearest(const double *f, int n, double freq);
 
-/* Steady-state amplitudes |X_i| (m) of every mass under the sine drive of amplitude
- * m->motor.amplitude at freq_hz: X = (K - w^2 M + i w C)^-1 k_N A e_N. Zero for a wall
- * or free end, which do not drive. Returns 0, -1 on no memory, or LAPACK's info. */
+/* Steady-state amplitudes |X_i| (m) of every mass under the sine drive at freq_hz, the
+ * motor's amplitude A and the force's F together: X = (K - w^2 M + i w C)^-1 G,
+ * G = (k_N + i w cs_N) A e_N (a motor end) + F e_K. Zero for a wall or free end without a
+ * force, which nothing drives. Returns 0, -1 on no memory, or LAPACK's info. */
 int modes_response(const struct model *m, double freq_hz, double *amp);
 
-/* As modes_response, with the phase of each mass's displacement relative to the motor's
- * displacement in degrees, in (-180, 180] (a lag is negative), into phase_deg unless it is
- * NULL. For a wall or free end, amplitude 0 and phase 0. */
+/* As modes_response, with the phase of each mass's displacement relative to the drive's
+ * sine (the motor's displacement and the force share it) in degrees, in (-180, 180] (a
+ * lag is negative), into phase_deg unless it is NULL. Undriven, amplitude 0 and phase 0. */
 int modes_response_phase(const struct model *m, double freq_hz, double *amp, double *phase_deg);
 
 /* Damping of each undamped mode j (ascending frequency, as modes_compute, whose shapes
  * these are): the damped first-order system's eigenvalues (LAPACK dgeev with right
- * eigenvectors, up to LIMITS_DGEEV_MAX masses; above it the modal damping of modes_modal),
+ * eigenvectors, for every N; the modal damping of modes_modal where it is exact),
  * paired with the undamped modes by the largest overlap |phi_j^T M psi| of shapes, each
  * eigen pair used once. ratio[j] = zeta_j = -Re(lambda) / |lambda| for a complex pair,
  * damped_hz[j] = |Im lambda| / 2 pi; for two real eigenvalues (overdamped)
  * zeta = -(l1 + l2) / (2 sqrt(l1 l2)) >= 1 and damped_hz[j] = 0. Returns 0, -1 on no
  * memory, -2 when the numbers overflow (or do not pair), or LAPACK's info. */
 int modes_damped(const struct model *m, const double *shapes, double *ratio, double *damped_hz);
+
+/* As modes_damped, with each mode's eigen frequency (Hz) into eigen: |lambda| / 2 pi of
+ * its pair, sqrt(l1 l2) / 2 pi of its two real eigenvalues (the undamped frequency where
+ * C is Rayleigh's). The dense eigen-solve is taken for every N unless C = alpha M +
+ * beta K (model_rayleigh), whose modal answer is exact; a rigid-body mode (0 Hz) has
+ * ratio NAN and frequencies 0. */
+int modes_damped_all(const struct model *m, const double *shapes, double *ratio,
+                     double *damped_hz, double *eigen);
 
 /* Energy of each mode in the state (x, v) (displacements from equilibrium, right end at
  * rest): with mass-normalised shapes phi^_j = phi_j / sqrt(phi_j^T M phi_j),

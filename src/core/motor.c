@@ -107,6 +107,23 @@ void motor_piece_at(const struct motor *m, double t, struct motor_piece *p)
     }
 }
 
+void motor_piece_unit(const struct motor_piece *p, double t, double *w, double *dw)
+{
+    const struct motor *m = p->motor;
+    double f = m->frequency;
+
+    if (m->wave == WAVE_SINE) {
+        double om = 2.0 * M_PI * f;
+        double s, c;
+        sincos(om * t + 2.0 * M_PI * m->phase, &s, &c);
+        *w = s;
+        *dw = om * c;
+        return;
+    }
+    *w = p->w0 + p->slope * (f * t + m->phase - p->cref);
+    *dw = p->slope * f;
+}
+
 void motor_piece_eval(const struct motor_piece *p, double t, double *u, double *du)
 {
     const struct motor *m = p->motor;

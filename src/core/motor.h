@@ -38,6 +38,10 @@ void motor_piece_at(const struct motor *m, double t, struct motor_piece *p);
 /* u(t) and u'(t) from a piece, valid on the whole interval the piece covers. */
 void motor_piece_eval(const struct motor_piece *p, double t, double *u, double *du);
 
+/* The waveform w(t) and w'(t) from a piece, amplitude 1: what the force input and a
+ * stepper's unit drive read. */
+void motor_piece_unit(const struct motor_piece *p, double t, double *w, double *dw);
+
 /* Breakpoints strictly inside (t0, t1), ascending, at most max of them written to
  * out; returns how many there are in all. Points within a tiny tolerance of t0 or
  * t1 count as on the ends and are not returned. */

@@ -260,7 +260,7 @@ void output_csv_header(FILE *fp, int n, bool energy)
             fprintf(fp, ",%s%d", groups[g], i);
     fputs(",motor", fp);
     if (energy)
-        fputs(",kinetic,potential,dissipated,motor_work,contact", fp);
+        fputs(",kinetic,potential,dissipated,motor_work,contact,force_work", fp);
     fputc('\n', fp);
 }
 
@@ -276,8 +276,8 @@ void output_csv_values(FILE *fp, int n, double t, const double *x, const double 
         fprintf(fp, ",%.12g", a[i]);
     fprintf(fp, ",%.12g", u);
     if (energy)
-        fprintf(fp, ",%.12g,%.12g,%.12g,%.12g,%.12g", energy[0], energy[1], energy[2], energy[3],
-                energy[4]);
+        fprintf(fp, ",%.12g,%.12g,%.12g,%.12g,%.12g,%.12g", energy[0], energy[1], energy[2],
+                energy[3], energy[4], energy[5]);
     fputc('\n', fp);
 }
 
@@ -300,21 +300,21 @@ static bool row_values(const struct sim *s, bool energy, double *scratch, double
     if (energy) {
         sim_energy(s, &e);
         books[0] = e.kinetic, books[1] = e.potential, books[2] = e.dissipated;
-        books[3] = e.motor_work, books[4] = e.contact;
+        books[3] = e.motor_work, books[4] = e.contact, books[5] = e.force_work;
     }
     return all_finite(sim_x(s), n) && all_finite(sim_v(s), n) && all_finite(scratch, n) &&
-           (!energy || all_finite(books, 5)) && isfinite(sim_end_position(s));
+           (!energy || all_finite(books, 6)) && isfinite(sim_end_position(s));
 }
 
 bool output_state_finite(const struct sim *s, double *scratch)
 {
-    double books[5];
+    double books[6];
     return row_values(s, true, scratch, books);
 }
 
 int output_csv_row(FILE *fp, const struct sim *s, bool energy, double *scratch)
 {
-    double books[5];
+    double books[6];
     if (!row_values(s, energy, scratch, books))
         return -1;
     output_csv_values(fp, sim_model(s)->n, sim_time(s), sim_x(s), sim_v(s), scratch,

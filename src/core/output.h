@@ -44,7 +44,7 @@ void output_discard_pending(void);
 void output_csv_header(FILE *fp, int n, bool energy);
 
 /* One --headless CSV row from values: t, x[n], v[n], a[n], u and, if energy is not
- * NULL, its five values (kinetic, potential, dissipated, motor work, contact). */
+ * NULL, its six values (kinetic, potential, dissipated, motor work, contact, force work). */
 void output_csv_values(FILE *fp, int n, double t, const double *x, const double *v,
                        const double *a, double u, const double *energy);
 

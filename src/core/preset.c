@@ -216,6 +216,18 @@ static int check_pending(struct parse *p)
     return handler_fail(p, line, msg);
 }
 
+/* The setting a preset key names: its option's name, or the same with '_' for each '-'
+ * (spring_cubic is spring-cubic). */
+static int find_key(const char *name)
+{
+    char dashed[64];
+    snprintf(dashed, sizeof dashed, "%s", name);
+    for (char *q = dashed; *q; q++)
+        if (*q == '_')
+            *q = '-';
+    return config_find(dashed);
+}
+
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
     struct parse *p = user;
@@ -257,7 +269,7 @@ static int handler(void *user, const char *section, const char *name, const char
         }
         return 1;
     }
-    int key = config_find(name);
+    int key = find_key(name);
     if (key < 0 || !config_options[key].section) {
         snprintf(msg, sizeof msg, "unknown key '%.64s' in [%s]", name, section);
         return handler_fail(p, line, msg);

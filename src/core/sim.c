@@ -46,7 +46,7 @@ struct sim {
     double contact;      /* energy removed by contacts and the cap */
     int last_contacts;   /* contacts and caps in the last step */
     int last_capped;     /* caps in the last step */
-    double *y;           /* 2N+2: x, v, D (dissipated), W (motor work) */
+    double *y;           /* STEPPER_LEN(N): x, v, D (dissipated), W (motor work), P (force) */
     double *y0;          /* the state at the start of the step, for restoring */
     const double *ya;    /* the state at the start of the piece being stepped: y0 or ya_buf */
     double *ya_buf;      /* room for it when the piece starts inside the step */
@@ -59,7 +59,7 @@ struct sim {
 struct sim *sim_new(const struct model *model, double dt)
 {
     int n = model->n;
-    size_t len = (size_t)(2 * n + 2);
+    size_t len = (size_t)STEPPER_LEN(n);
     struct sim *s = calloc(1, sizeof *s);
     if (!s)
         return NULL;
@@ -98,7 +98,7 @@ int sim_copy(struct sim *dst, const struct sim *src)
     dst->sine_err = src->sine_err;
     dst->last_capped = src->last_capped;
     rest_copy(dst->rest, src->rest);
-    memcpy(dst->y, src->y, (size_t)(2 * src->n + 2) * sizeof *src->y);
+    memcpy(dst->y, src->y, (size_t)STEPPER_LEN(src->n) * sizeof *src->y);
     return 0;
 }
 
@@ -168,7 +168,7 @@ double sim_dt(const struct sim *s)
 void sim_reset(struct sim *s, const double *x, const double *v)
 {
     int n = s->n;
-    memset(s->y, 0, (size_t)(2 * n + 2) * sizeof *s->y);
+    memset(s->y, 0, (size_t)STEPPER_LEN(n) * sizeof *s->y);
     if (x)
         memcpy(s->y, x, (size_t)n * sizeof *x);
     if (v)
@@ -235,7 +235,7 @@ static void shift(struct sim *s, double delta, double u, double du, double ddu)
  * the step (the state is still y0). 0, or -1 on a stepper failure. */
 static int piece(struct sim *s, const struct drive *d, double a, double b, bool at_start)
 {
-    int n = s->n, len = 2 * n + 2;
+    int n = s->n, len = STEPPER_LEN(n);
     enum integrator integ = s->integrator;
     const struct model *m = sim_model(s);
     struct events_piece p = {&s->lim, m, s->rest, d, NULL, s->y, a, b - a, 0, 0, 0, 0, 0, 0};
@@ -336,12 +336,15 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
 }
 
 /* Work done by the motor when the end jumps from u_from to u_to with the last mass at
- * displacement x: the change of spring N's energy, 1/2 k_N ((u_to-x)^2 - (u_from-x)^2). */
+ * displacement x: the change of spring N's energy, E(u_to - x) - E(u_from - x). */
 static double jump_work(const struct sim *s, double u_from, double u_to)
 {
     double x = s->y[s->n - 1];
+    const struct model *m = sim_model(s);
+    if (m->cubic)
+        return model_spring_energy(m, s->n, u_to - x) - model_spring_energy(m, s->n, u_from - x);
     double a = u_from - x, b = u_to - x;
-    return 0.5 * sim_model(s)->k[s->n] * (b * b - a * a);
+    return 0.5 * m->k[s->n] * (b * b - a * a);
 }
 
 /* The piston jumped to u, into the last mass: every mass in its way is pushed ahead of
@@ -425,12 +428,12 @@ static int advance(struct sim *s, double t0, double t1)
     const struct motor *mot = &m->motor;
     struct drive d;
     double cuts[MAX_SPLIT];
-    if (m->boundary != BOUNDARY_MOTOR || mot->wave == WAVE_SINE || mot->amplitude == 0.0) {
+    if (mot->wave == WAVE_SINE || !model_driven(m)) {
         drive_at(&d, m, 0.5 * (t0 + t1));
         return piece(s, &d, t0, t1, true);
     }
     bool jumps = motor_has_jumps(mot->wave);
-    double u_now = motor_position(mot, t0); /* the end's position now */
+    double u_now = model_end_position(m, t0); /* the end's position now */
     double a = t0;
     bool fresh = true; /* the state is still y0: nothing has been stepped or jumped yet */
     while (a < t1) {
@@ -460,7 +463,7 @@ static int advance(struct sim *s, double t0, double t1)
             a = b;
         }
     }
-    double u1 = motor_position(mot, t1);
+    double u1 = model_end_position(m, t1);
     if (jumps && u1 != u_now) {
         struct motor_piece p;
         double u, du;
@@ -481,7 +484,7 @@ static bool all_finite(const double *y, int len)
 
 enum sim_status sim_step(struct sim *s)
 {
-    int n = s->n, len = 2 * n + 2;
+    int n = s->n, len = STEPPER_LEN(n);
     double t0 = sim_time(s);
     double t1 = s->t_base + (s->steps + 1.0) * s->dt;
     double contact0 = s->contact;
@@ -530,6 +533,8 @@ void sim_accel(const struct sim *s, double *a)
     const struct model *m = sim_model(s);
     double u = sim_end_position(s);
     model_accel(m, s->y, s->y + s->n, u, a);
+    if (model_forced(m))
+        a[m->force_on] += model_force(m, sim_time(s)) / m->m[m->force_on];
     if (s->rest->active) {
         /* What rests moves with what holds it: the end's acceleration for the piston's. */
         double w = 2.0 * M_PI * m->motor.frequency;
@@ -545,8 +550,10 @@ void sim_energy(const struct sim *s, struct energy *e)
     e->potential = model_potential(sim_model(s), s->y, u);
     e->dissipated = s->y[2 * s->n];
     e->motor_work = s->y[2 * s->n + 1];
+    e->force_work = s->y[2 * s->n + 2];
     e->contact = s->contact;
-    e->balance = e->kinetic + e->potential + e->dissipated + e->contact - e->motor_work;
+    e->balance = e->kinetic + e->potential + e->dissipated + e->contact - e->motor_work -
+                 e->force_work;
 }
 
 int sim_last_contacts(const struct sim *s)
@@ -578,7 +585,7 @@ struct snapshot_head {
 
 int sim_snapshot_size(const struct sim *s)
 {
-    return 2 * s->n + 2 + HEAD_DOUBLES + REST_DOUBLES(s->n);
+    return STEPPER_LEN(s->n) + HEAD_DOUBLES + REST_DOUBLES(s->n);
 }
 
 /* The drive's angle (cycles, in [0, 1)) at time t. */
@@ -593,8 +600,8 @@ void sim_save(const struct sim *s, double *buf)
     struct snapshot_head h = {s->t_base, s->steps, s->dt, s->contact, s->last_contacts,
                               drive_cycles(&sim_model(s)->motor, sim_time(s))};
     memcpy(buf, &h, sizeof h);
-    memcpy(buf + HEAD_DOUBLES, s->y, (size_t)(2 * s->n + 2) * sizeof *buf);
-    double *flags = buf + HEAD_DOUBLES + 2 * s->n + 2;
+    memcpy(buf + HEAD_DOUBLES, s->y, (size_t)STEPPER_LEN(s->n) * sizeof *buf);
+    double *flags = buf + HEAD_DOUBLES + STEPPER_LEN(s->n);
     for (int j = 0; j < REST_DOUBLES(s->n); j++) {
         double word = 0.0;
         for (int b = REST_BITS - 1; b >= 0; b--) {
@@ -614,8 +621,8 @@ void sim_restore(struct sim *s, const double *buf)
     s->dt = h.dt;
     s->contact = h.contact;
     s->last_contacts = (int)h.last_contacts;
-    memcpy(s->y, buf + HEAD_DOUBLES, (size_t)(2 * s->n + 2) * sizeof *buf);
-    const double *flags = buf + HEAD_DOUBLES + 2 * s->n + 2;
+    memcpy(s->y, buf + HEAD_DOUBLES, (size_t)STEPPER_LEN(s->n) * sizeof *buf);
+    const double *flags = buf + HEAD_DOUBLES + STEPPER_LEN(s->n);
     rest_clear(s->rest, &s->lim);
     for (int j = 0; j < REST_DOUBLES(s->n); j++) {
         double word = flags[j];

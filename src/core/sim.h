@@ -12,14 +12,15 @@ enum sim_status {
 };
 
 /* Energy accounting, joules. Without collisions or the velocity cap,
- * kinetic + potential + dissipated - motor_work is constant. */
+ * kinetic + potential + dissipated - motor_work - force_work is constant. */
 struct energy {
     double kinetic;    /* sum 1/2 m v^2 */
     double potential;  /* sum 1/2 k stretch^2 */
-    double dissipated; /* integral of sum c v^2 dt */
-    double motor_work; /* integral of k_N (u - d_N) u' dt, jumps included */
+    double dissipated; /* integral of sum c v^2 + sum cs stretch'^2 dt (every damper) */
+    double motor_work; /* integral of T_N u' dt, T_N = k_N (u - d_N) + cs_N (u' - v_N) */
+    double force_work; /* integral of F w(2 pi f t) v_K dt: the force input's work */
     double contact;    /* energy removed by collisions and the velocity cap */
-    double balance;    /* kinetic + potential + dissipated + contact - motor_work */
+    double balance;    /* kinetic + potential + dissipated + contact - motor_work - force_work */
 };
 
 struct sim;

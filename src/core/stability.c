@@ -26,13 +26,16 @@ static bool negative_definite(const struct model *m, double h)
     int n = m->n;
     double prev = 0.0, off = 0.0; /* the last pivot and the entry left of the diagonal */
     for (int i = 0; i < n; i++) {
-        double right = i + 1 < n ? m->k[i + 1] : m->boundary == BOUNDARY_FREE ? 0.0 : m->k[n];
-        double diag = h * h * (m->k[i] + right) + 2.0 * h * m->c[i] - 4.0 * m->m[i];
+        bool end = i + 1 == n && m->boundary == BOUNDARY_FREE;
+        double right = end ? 0.0 : m->k[i + 1], cright = end ? 0.0 : m->cs[i + 1];
+        double diag = h * h * (m->k[i] + right) + 2.0 * h * (m->c[i] + m->cs[i] + cright) -
+                      4.0 * m->m[i];
         double d = i == 0 ? diag : diag - off * off / prev;
         if (!(d < 0.0))
             return false;
         prev = d;
-        off = -h * h * right; /* T[i][i+1] = -h^2 k_{i+1} */
+        /* T[i][i+1] = -h^2 k_{i+1} - 2 h cs_{i+1}: C is tridiagonal with spring dampers */
+        off = -h * h * right - 2.0 * h * cright;
     }
     return true;
 }

@@ -1,13 +1,17 @@
 /* stepper.c: explicit Euler, symplectic (semi-implicit) Euler, velocity Verlet, classic
  * RK4 (Kutta 1901; Hairer, Norsett and Wanner, Solving ODEs I, II.1) and the exact
- * stepper (exact.c), on y = (x, v, D, W) with D' = sum c_i v_i^2, W' = k_N (u - x_N) u'.
- * The equation of motion is model_rates, the one in model.c. */
+ * stepper (exact.c), on y = (x, v, D, W, P) with D' = sum c_i v_i^2 + sum cs_j s_j'^2
+ * (s_j spring j's stretch), W' = (k_N (u - x_N) + cs_N (u' - v_N)) u', P' = F w v_K.
+ * The equation of motion is model_rates, the one in model.c, plus the force F w(t) / m_K
+ * on mass K. */
 #include "stepper.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include <lapacke.h>
 
 #include "exact.h"
 #include "rest.h"
@@ -17,7 +21,8 @@ struct stepper {
     int n;
     double dt;             /* the grid step, for the sine's rotations */
     double *inv_m;         /* 1/m_i */
-    double *k1, *k2, *tmp; /* stage scratch, 2N + 2 each */
+    double *k1, *k2, *tmp; /* stage scratch, STEPPER_LEN(N) each */
+    double *tri;           /* 3N: Verlet's tridiagonal solve with spring dampers */
     struct exact *exact;   /* the exact stepper's workspace, made when first needed */
     double rot_w, rot_h;   /* w and h the rotations below were made for */
     double rot_s1, rot_c1, rot_s2, rot_c2; /* sin, cos of w h/2 and of w h */
@@ -35,7 +40,10 @@ struct stepper {
 void drive_at(struct drive *d, const struct model *m, double t)
 {
     d->motor = &m->motor;
-    if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude == 0.0) {
+    d->amp = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
+    d->force = m->force;
+    d->force_on = m->force_on;
+    if (d->amp == 0.0 && d->force == 0.0) {
         d->kind = DRIVE_NONE;
     } else if (m->motor.wave == WAVE_SINE) {
         d->kind = DRIVE_SINE;
@@ -59,28 +67,52 @@ void drive_eval(const struct drive *d, double t, double *u, double *du)
     case DRIVE_SINE: {
         double w = 2.0 * M_PI * d->motor->frequency, s, c;
         sincos(w * t + 2.0 * M_PI * d->motor->phase, &s, &c);
-        *u = d->motor->amplitude * s;
-        *du = d->motor->amplitude * w * c;
+        *u = d->amp * s;
+        *du = d->amp * w * c;
         return;
     }
     case DRIVE_PIECE:
-        motor_piece_eval(&d->piece, t, u, du);
-        return;
+        if (d->amp != 0.0) {
+            motor_piece_eval(&d->piece, t, u, du);
+            return;
+        }
+        break;
     case DRIVE_NONE:
         break;
     }
     *u = *du = 0.0;
 }
 
+void drive_unit(const struct drive *d, double t, double *w, double *dw)
+{
+    *w = *dw = 0.0;
+    if (d->kind == DRIVE_SINE) {
+        double om = 2.0 * M_PI * d->motor->frequency, s, c;
+        sincos(om * t + 2.0 * M_PI * d->motor->phase, &s, &c);
+        *w = s, *dw = om * c;
+    } else if (d->kind == DRIVE_PIECE) {
+        motor_piece_unit(&d->piece, t, w, dw);
+    }
+}
+
+double drive_force(const struct drive *d, double t)
+{
+    if (d->force == 0.0)
+        return 0.0;
+    double w, dw;
+    drive_unit(d, t, &w, &dw);
+    return d->force * w;
+}
+
 struct stepper *stepper_new(const struct model *m)
 {
     int n = m->n;
-    size_t len = (size_t)(2 * n + 2);
+    size_t len = (size_t)STEPPER_LEN(n);
     struct stepper *st = calloc(1, sizeof *st);
     if (!st)
         return NULL;
     st->model = model_new(n);
-    st->inv_m = calloc(3 * len + (size_t)n, sizeof *st->inv_m);
+    st->inv_m = calloc(3 * len + (size_t)(4 * n), sizeof *st->inv_m);
     if (!st->model || !st->inv_m) {
         stepper_free(st);
         return NULL;
@@ -89,6 +121,7 @@ struct stepper *stepper_new(const struct model *m)
     st->k1 = st->inv_m + n;
     st->k2 = st->k1 + len;
     st->tmp = st->k2 + len;
+    st->tri = st->tmp + len;
     st->rot_next_t = NAN;
     stepper_set_model(st, m, 0.01);
     return st;
@@ -172,13 +205,20 @@ static void constrain(const struct stepper *st, double u, double du, double *dy)
     dy[2 * n + 1] -= push * du;
 }
 
-/* dy/dt at state y with the right end at u moving at du. */
-static void deriv(const struct stepper *st, const double *y, double u, double du, double *dy)
+/* dy/dt at state y with the right end at u moving at du and the force input at f. */
+static void deriv(const struct stepper *st, const double *y, double u, double du, double f,
+                  double *dy)
 {
     int n = st->n;
     for (int i = 0; i < n; i++) /* a loop: for a short chain memcpy's call costs more */
         dy[i] = y[n + i];
     model_rates(st->model, st->inv_m, y, y + n, u, du, dy + n, &dy[2 * n], &dy[2 * n + 1]);
+    dy[2 * n + 2] = 0.0;
+    if (f != 0.0) {
+        int k = st->model->force_on;
+        dy[n + k] += f * st->inv_m[k];
+        dy[2 * n + 2] = f * y[n + k];
+    }
     if (st->constrained)
         constrain(st, u, du, dy);
 }
@@ -186,11 +226,12 @@ static void deriv(const struct stepper *st, const double *y, double u, double du
 /* The sine drive u = A sin(th), du = A w cos(th) at a, a + h/2 and a + h, with one
  * sincos: sin and cos at the later times follow from the angle-addition formulas with
  * sin, cos of w h/2 and w h, kept while w and h stay the same. Exact to a few ulp. */
-static void sine_drive(struct stepper *st, double a, double b, double u[3], double du[3])
+static void sine_drive(struct stepper *st, const struct drive *d, double a, double b,
+                       double u[3], double du[3], double f[3])
 {
     double h = b - a;
     const struct motor *mot = &st->model->motor;
-    double w = 2.0 * M_PI * mot->frequency, amp = mot->amplitude;
+    double w = 2.0 * M_PI * mot->frequency, amp = d->amp;
     /* b - a of a grid step differs from dt by the rounding of t (a few ulp of b, which
      * grow with t): such a step keeps the rotation made for dt, an angle error no larger
      * than that rounding makes anyway. */
@@ -221,46 +262,49 @@ static void sine_drive(struct stepper *st, double a, double b, double u[3], doub
     u[0] = amp * sn, du[0] = amp * w * cs;
     u[1] = amp * sm, du[1] = amp * w * cm;
     u[2] = amp * se, du[2] = amp * w * ce;
+    f[0] = d->force * sn, f[1] = d->force * sm, f[2] = d->force * se;
 }
 
-/* The drive at a, the middle and b. */
+/* The drive at a, the middle and b: the end (u, du) and the force f. */
 static void drive3(struct stepper *st, const struct drive *d, double a, double b, double u[3],
-                   double du[3])
+                   double du[3], double f[3])
 {
     if (d->kind == DRIVE_SINE) {
-        sine_drive(st, a, b, u, du);
+        sine_drive(st, d, a, b, u, du, f);
         return;
     }
-    drive_eval(d, a, &u[0], &du[0]);
-    drive_eval(d, a + 0.5 * (b - a), &u[1], &du[1]);
-    drive_eval(d, b, &u[2], &du[2]);
+    double t[3] = {a, a + 0.5 * (b - a), b};
+    for (int i = 0; i < 3; i++) {
+        drive_eval(d, t[i], &u[i], &du[i]);
+        f[i] = drive_force(d, t[i]);
+    }
 }
 
 /* y += h/6 (k1 + 2 k2 + 2 k3 + k4). */
 static void rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
-    int len = 2 * st->n + 2;
-    double h = b - a, h2 = 0.5 * h, u[3], du[3];
+    int len = STEPPER_LEN(st->n);
+    double h = b - a, h2 = 0.5 * h, u[3], du[3], f[3];
     double *tmp = st->tmp, *acc = st->k1, *k = st->k2;
-    drive3(st, d, a, b, u, du);
+    drive3(st, d, a, b, u, du, f);
     st->start_u = u[0], st->start_du = du[0];
     st->end_u = u[2], st->end_du = du[2];
     /* The sum k1 + 2 k2 + 2 k3 + k4 builds up in acc as the stages come, each loop also
      * making the next stage's argument: four passes over the state instead of seven. */
-    deriv(st, y, u[0], du[0], acc);
+    deriv(st, y, u[0], du[0], f[0], acc);
     for (int i = 0; i < len; i++)
         tmp[i] = y[i] + h2 * acc[i];
-    deriv(st, tmp, u[1], du[1], k);
+    deriv(st, tmp, u[1], du[1], f[1], k);
     for (int i = 0; i < len; i++) {
         acc[i] += 2.0 * k[i];
         tmp[i] = y[i] + h2 * k[i];
     }
-    deriv(st, tmp, u[1], du[1], k);
+    deriv(st, tmp, u[1], du[1], f[1], k);
     for (int i = 0; i < len; i++) {
         acc[i] += 2.0 * k[i];
         tmp[i] = y[i] + h * k[i];
     }
-    deriv(st, tmp, u[2], du[2], k);
+    deriv(st, tmp, u[2], du[2], f[2], k);
     double h6 = h / 6.0;
     for (int i = 0; i < len; i++)
         y[i] += h6 * (acc[i] + k[i]);
@@ -269,10 +313,10 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
 /* Explicit Euler: y += h f(a, y). */
 static void euler(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
-    int len = 2 * st->n + 2;
+    int len = STEPPER_LEN(st->n);
     double u, du;
     drive_eval(d, a, &u, &du);
-    deriv(st, y, u, du, st->k1);
+    deriv(st, y, u, du, drive_force(d, a), st->k1);
     for (int i = 0; i < len; i++)
         y[i] += (b - a) * st->k1[i];
 }
@@ -286,13 +330,40 @@ static void semi_implicit(struct stepper *st, const struct drive *d, double a, d
     double h = b - a, u, du;
     double *dy = st->k1;
     drive_eval(d, a, &u, &du);
-    deriv(st, y, u, du, dy);
+    deriv(st, y, u, du, drive_force(d, a), dy);
     for (int i = 0; i < n; i++) {
         y[n + i] += h * dy[n + i];
         y[i] += h * y[n + i];
     }
     y[2 * n] += h * dy[2 * n];
     y[2 * n + 1] += h * dy[2 * n + 1];
+    y[2 * n + 2] += h * dy[2 * n + 2];
+}
+
+/* Verlet's last half kick with spring dampers: the damping matrix C (ground dampers on
+ * the diagonal, each spring damper coupling its two ends) is tridiagonal, so the new
+ * velocity solves (M + h/2 C) v = M (vh + h/2 a0), a0 the accelerations at v = 0 (the
+ * springs, the motor end's damper on u', the force): LAPACK's dptsv, M + h/2 C being
+ * symmetric positive definite. */
+static void verlet_kick_coupled(struct stepper *st, double h, const double *vh,
+                                const double *a0, double *v)
+{
+    const struct model *m = st->model;
+    int n = st->n;
+    double *dg = st->tri, *off = st->tri + n, *rhs = st->tri + 2 * n;
+    for (int i = 0; i < n; i++) {
+        bool right = i < n - 1 || m->boundary != BOUNDARY_FREE;
+        dg[i] = m->m[i] + 0.5 * h * (m->c[i] + m->cs[i] + (right ? m->cs[i + 1] : 0.0));
+        if (i < n - 1)
+            off[i] = -0.5 * h * m->cs[i + 1];
+        rhs[i] = m->m[i] * (vh[i] + 0.5 * h * a0[i]);
+    }
+    if (LAPACKE_dptsv(LAPACK_COL_MAJOR, n, 1, dg, off, rhs, n) == 0) {
+        memcpy(v, rhs, (size_t)n * sizeof *v);
+        return;
+    }
+    for (int i = 0; i < n; i++) /* not positive definite: cannot be, but stay finite */
+        v[i] = vh[i] + 0.5 * h * a0[i];
 }
 
 /* Velocity Verlet: half kick, drift, half kick. The damping force in the last half kick
@@ -301,11 +372,11 @@ static void semi_implicit(struct stepper *st, const struct drive *d, double a, d
 static void verlet(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
     int n = st->n;
-    double h = b - a, u0, du0, u1, du1;
+    double h = b - a, u0, du0, u1, du1, f1 = drive_force(d, b);
     double *d0 = st->k1, *d1 = st->k2, *vh = st->tmp, *zero = st->tmp + n;
     drive_eval(d, a, &u0, &du0);
     drive_eval(d, b, &u1, &du1);
-    deriv(st, y, u0, du0, d0);
+    deriv(st, y, u0, du0, drive_force(d, a), d0);
     for (int i = 0; i < n; i++) {
         vh[i] = y[n + i] + 0.5 * h * d0[n + i];
         y[i] += h * vh[i];
@@ -313,14 +384,18 @@ static void verlet(struct stepper *st, const struct drive *d, double a, double b
     }
     /* The springs' accelerations at the new positions (no damping: v = 0). */
     model_rates(st->model, st->inv_m, y, zero, u1, du1, d1 + n, NULL, NULL);
-    for (int i = 0; i < n; i++)
-        y[n + i] = (vh[i] + 0.5 * h * d1[n + i]) /
-                   (1.0 + 0.5 * h * st->model->c[i] * st->inv_m[i]);
-    model_rates(st->model, st->inv_m, y, y + n, u1, du1, d1 + n, &d1[2 * n], &d1[2 * n + 1]);
-    if (st->constrained)
-        constrain(st, u1, du1, d1);
+    if (f1 != 0.0)
+        d1[n + st->model->force_on] += f1 * st->inv_m[st->model->force_on];
+    if (st->model->spring_damped)
+        verlet_kick_coupled(st, h, vh, d1 + n, y + n);
+    else
+        for (int i = 0; i < n; i++)
+            y[n + i] = (vh[i] + 0.5 * h * d1[n + i]) /
+                       (1.0 + 0.5 * h * st->model->c[i] * st->inv_m[i]);
+    deriv(st, y, u1, du1, f1, d1);
     y[2 * n] += 0.5 * h * (d0[2 * n] + d1[2 * n]);
     y[2 * n + 1] += 0.5 * h * (d0[2 * n + 1] + d1[2 * n + 1]);
+    y[2 * n + 2] += 0.5 * h * (d0[2 * n + 2] + d1[2 * n + 2]);
 }
 
 /* The exact stepper: the piece's drive in exact.c's terms. */
@@ -330,16 +405,19 @@ static int exact_step(struct stepper *st, const struct drive *d, double a, doubl
     if (!st->exact && !(st->exact = exact_new(n)))
         return -1;
     struct exact_drive ed = {0};
+    ed.force = d->force;
     if (d->kind == DRIVE_SINE) {
         ed.sine = 1;
-        ed.amp = d->motor->amplitude;
+        ed.amp = d->amp;
         ed.omega = 2.0 * M_PI * d->motor->frequency;
         ed.phi = 2.0 * M_PI * d->motor->phase;
     } else if (d->kind == DRIVE_PIECE) {
         ed.t0 = a;
         drive_eval(d, a, &ed.u0, &ed.du);
+        drive_unit(d, a, &ed.w0, &ed.dw);
     }
-    return exact_advance(st->exact, st->model, &ed, a, b, y, y + n, &y[2 * n], &y[2 * n + 1]);
+    return exact_advance_all(st->exact, st->model, &ed, a, b, y, y + n, &y[2 * n],
+                             &y[2 * n + 1], &y[2 * n + 2]);
 }
 
 /* The exact stepper while contacts rest: the constrained chain is another linear system,
@@ -354,7 +432,8 @@ static void exact_resting(struct stepper *st, const struct drive *d, double a, d
     for (int i = 0; i < st->n; i++) {
         /* Gershgorin: w^2 <= 2 max (k_i + k_i+1) / m_i; the damper's rate c / m. */
         double k = m->k[i] + (i + 1 < st->n || m->boundary != BOUNDARY_FREE ? m->k[i + 1] : 0);
-        rate = fmax(rate, sqrt(2.0 * k / m->m[i]) + m->c[i] / m->m[i]);
+        double c = m->c[i] + 2.0 * (m->cs[i] + m->cs[i + 1]);
+        rate = fmax(rate, sqrt(2.0 * k / m->m[i]) + c / m->m[i]);
     }
     int subs = (int)fmin(1e5, ceil((b - a) * rate / EXACT_REST_STEP));
     subs = subs < 1 ? 1 : subs;

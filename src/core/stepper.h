@@ -1,6 +1,6 @@
 /* stepper.h: the steppers behind one interface (GSL odeiv2's "step" layer): each advances
- * the state y = (x, v, D, W) of a chain, D the energy the dampers took and W the work
- * the motor did, over one smooth piece of the drive. The driver (sim.c) owns the time
+ * the state y = (x, v, D, W, P) of a chain, D the energy the dampers took, W the work
+ * the motor did and P the force input's, over one smooth piece of the drive. The driver (sim.c) owns the time
  * grid, breakpoints, contacts and energy books. */
 #ifndef SPRINGSIM_STEPPER_H
 #define SPRINGSIM_STEPPER_H
@@ -8,12 +8,19 @@
 #include "integrator.h"
 #include "model.h"
 
-/* The right end over one smooth piece of the drive. */
+/* The drive over one smooth piece: the right end u = amp w and the force F w, w the
+ * motor's waveform (DRIVE_NONE when neither moves anything). */
 struct drive {
     enum { DRIVE_NONE, DRIVE_SINE, DRIVE_PIECE } kind;
-    const struct motor *motor; /* DRIVE_SINE: the motor */
+    const struct motor *motor; /* the waveform, frequency and phase */
     struct motor_piece piece;  /* DRIVE_PIECE: a constant or a ramp */
+    double amp;                /* the right end's amplitude: A for a motor end, else 0 */
+    double force;              /* F (N) on mass force_on, 0: none */
+    int force_on;              /* 0-based */
 };
+
+/* The length of a stepper's state y for n masses: x, v, D, W, P. */
+#define STEPPER_LEN(n) (2 * (n) + 3)
 
 /* The drive for the piece of model m's right end that contains time t (pass a time
  * inside the piece, not on a breakpoint). */
@@ -24,6 +31,12 @@ double drive_ddu_factor(const struct drive *d);
 
 /* u(t) and u'(t) on the piece. */
 void drive_eval(const struct drive *d, double t, double *u, double *du);
+
+/* The waveform w(t) and w'(t) on the piece, amplitude 1 (0 for DRIVE_NONE). */
+void drive_unit(const struct drive *d, double t, double *w, double *dw);
+
+/* The force F w(t) on the piece (0 without a force). */
+double drive_force(const struct drive *d, double t);
 
 struct stepper;
 
@@ -37,7 +50,7 @@ void stepper_free(struct stepper *st);
  * which a sine drive's rotations are made for. */
 void stepper_set_model(struct stepper *st, const struct model *m, double dt);
 
-/* Advances y (2N + 2 values) from time a to b on drive d with integrator i: 0, or -1 when
+/* Advances y (STEPPER_LEN(N) values) from time a to b on drive d with integrator i: 0, or -1 when
  * the exact stepper's exponential fails. */
 int stepper_apply(struct stepper *st, enum integrator i, const struct drive *d, double a,
                   double b, double *y);

@@ -173,6 +173,8 @@ void record_mark(struct record *r, const struct app *app)
     k->frequency = m->motor.frequency;
     k->speed = app->speed;
     k->pace = app_clock_pace(app);
+    k->force = app->cfg.force;
+    k->force_on = app->cfg.force_on;
     k->integrator = (int)app->cfg.integrator;
     k->boundary = (int)m->boundary;
     k->wave = (int)m->motor.wave;
@@ -182,6 +184,8 @@ void record_mark(struct record *r, const struct app *app)
     k->mass = app->cfg.mass;
     k->damping = app->cfg.damping;
     k->spring = app->cfg.spring;
+    k->spring_cubic = app->cfg.spring_cubic;
+    k->spring_damping = app->cfg.spring_damping;
     for (int i = 0; i <= m->n && i <= CONFIG_INTERACTIVE_MAX_MASSES; i++)
         k->k[i] = m->k[i];
     for (int i = 0; i < m->n && i < CONFIG_INTERACTIVE_MAX_MASSES; i++) {
@@ -230,6 +234,23 @@ static void put_list(struct record *r, const struct config_list *before,
     }
 }
 
+/* A per-spring list with no panel row (spring-cubic, spring-damping), when it changed: the
+ * whole list, as set takes it. */
+static void put_springs(struct record *r, const struct config_list *was,
+                        const struct config_list *now, const char *name)
+{
+    if (was->count == now->count &&
+        memcmp(was->v, now->v, (size_t)now->count * sizeof *now->v) == 0)
+        return;
+    char line[4096], num[32];
+    size_t used = 0;
+    for (int i = 0; i < now->count && used < sizeof line; i++) {
+        config_format_exact(now->v[i], num, sizeof num);
+        used += (size_t)snprintf(line + used, sizeof line - used, "%s%s", i ? "," : "", num);
+    }
+    put(r, "set %s %s", name, now->count ? line : "0");
+}
+
 void record_changes(struct record *r, const struct app *app, const char *cmd)
 {
     const struct record_mark *k = &r->mark;
@@ -260,6 +281,14 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         put_list(r, &k->mass, &app->cfg.mass, k->m, m->m, m->n, "mass", 'm');
         put_list(r, &k->damping, &app->cfg.damping, k->c, m->c, m->n, "damping", 'c');
         put_list(r, &k->spring, &app->cfg.spring, k->k, m->k, m->n + 1, "spring", 'k');
+        put_springs(r, &k->spring_cubic, &app->cfg.spring_cubic, "spring-cubic");
+        put_springs(r, &k->spring_damping, &app->cfg.spring_damping, "spring-damping");
+        if (app->cfg.force != k->force) {
+            config_format_exact(app->cfg.force, num, sizeof num);
+            put(r, "set force %s", num);
+        }
+        if (app->cfg.force_on != k->force_on)
+            put(r, "set force-on %d", app->cfg.force_on);
         if (m->motor.amplitude != k->amplitude) {
             config_format_exact(m->motor.amplitude, num, sizeof num);
             put(r, "set amplitude %s", num);

@@ -31,10 +31,13 @@ struct record_mark {
     int n;                               /* masses */
     double dt, amplitude, frequency, speed;
     double pace;                         /* simulated seconds per wall second then */
+    double force;                        /* the force input's amplitude (N) */
+    int force_on;                        /* and its mass, 1-based as the settings hold it */
     int integrator, boundary, wave;
     bool low_bandwidth, sweeping;
     int graphics; /* the Graphics control (enum config_graphics) */
-    struct config_list mass, damping, spring; /* as the settings hold them */
+    struct config_list mass, damping, spring, spring_cubic, spring_damping; /* as the
+                                           settings hold them */
     double m[CONFIG_INTERACTIVE_MAX_MASSES];  /* the values in force: the masses, */
     double c[CONFIG_INTERACTIVE_MAX_MASSES];  /* the dampers */
     double k[CONFIG_INTERACTIVE_MAX_MASSES + 1]; /* and the springs */

@@ -228,8 +228,20 @@ static void scr_damping(struct tui *t, enum action a, int ch, unsigned *changed)
     (void)a, (void)ch, (void)changed;
     if (select_mass(&t->sel) >= 0)
         overlay_edit(&t->overlay, EDIT_DAMPING);
+    else if (select_spring(&t->sel) >= 0)
+        overlay_edit(&t->overlay, EDIT_SPRING_DAMPER);
     else
-        app_say(&t->app, SAID_NOTE, "select a mass in the chain first (Tab, then ↑↓)");
+        app_say(&t->app, SAID_NOTE, "select a mass or a spring in the chain first (Tab, then "
+                "↑↓)");
+}
+
+static void scr_cubic(struct tui *t, enum action a, int ch, unsigned *changed)
+{
+    (void)a, (void)ch, (void)changed;
+    if (select_spring(&t->sel) >= 0)
+        overlay_edit(&t->overlay, EDIT_CUBIC);
+    else
+        app_say(&t->app, SAID_NOTE, "select a spring in the chain first (Tab, then ↑↓)");
 }
 
 static void scr_focus(struct tui *t, enum action a, int ch, unsigned *changed)
@@ -296,6 +308,7 @@ static screen_fn *const screen_actions[ACT_COUNT] = {
     [ACT_UP] = scr_move,           [ACT_DOWN] = scr_move,       [ACT_LEFT] = scr_adjust,
     [ACT_RIGHT] = scr_adjust,      [ACT_LEFT_BIG] = scr_adjust, [ACT_RIGHT_BIG] = scr_adjust,
     [ACT_ENTER] = scr_enter,       [ACT_DAMPING] = scr_damping, [ACT_FOCUS] = scr_focus,
+    [ACT_CUBIC_KEY] = scr_cubic,
     [ACT_MODES] = scr_view,        [ACT_RESPONSE] = scr_view,   [ACT_ENERGY] = scr_view,
     [ACT_SPECTRUM] = scr_view,     [ACT_HIDE] = scr_hide,       [ACT_SAVE] = scr_save,
     [ACT_FIGURE] = scr_figure,     [ACT_ENLARGE] = scr_enlarge, [ACT_GRID] = scr_enlarge,

@@ -272,6 +272,14 @@ static void edit_prompt(const struct overlay *o, const struct app *app,
         snprintf(buf, len, "%s: k (N/m) =", name);
         break;
     }
+    case EDIT_CUBIC:
+    case EDIT_SPRING_DAMPER: {
+        char name[48];
+        app_spring_name(app->model, i, name, sizeof name);
+        snprintf(buf, len, o->target == EDIT_CUBIC ? "%s: k3 (N/m³) =" : "%s: c (N·s/m) =",
+                 name);
+        break;
+    }
     case EDIT_SAVE:
         snprintf(buf, len, "save preset as:");
         break;
@@ -394,6 +402,11 @@ static unsigned finish_edit(struct overlay *o, struct app *app, const struct sel
         return set_element(o, app, 'c', i);
     case EDIT_SPRING:
         return set_element(o, app, 'k', i);
+    case EDIT_CUBIC:
+    case EDIT_SPRING_DAMPER:
+        verb_do(app, o->target == EDIT_CUBIC ? ACT_CUBIC : ACT_SPRING_DAMPING,
+                &(struct verb_arg){.index = i, .text = o->edit}, &changed);
+        return changed;
     case EDIT_SAVE:
         if (app_save(app, o->edit, false) == SAVE_EXISTS) {
             snprintf(o->save_name, sizeof o->save_name, "%s", o->edit);

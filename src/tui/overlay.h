@@ -22,7 +22,8 @@ enum overlay_kind {
 };
 
 /* What the text being typed is for. */
-enum edit_target { EDIT_CONTROL, EDIT_MASS, EDIT_DAMPING, EDIT_SPRING, EDIT_SAVE, EDIT_FIGURE };
+enum edit_target { EDIT_CONTROL, EDIT_MASS, EDIT_DAMPING, EDIT_SPRING, EDIT_CUBIC,
+                   EDIT_SPRING_DAMPER, EDIT_SAVE, EDIT_FIGURE };
 
 struct overlay {
     enum overlay_kind kind;

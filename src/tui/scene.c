@@ -1,6 +1,8 @@
 /* scene.c: the chain drawn to scale. Springs are braille zig-zags (a row of / and \
- * without UTF-8); blocks have sub-cell edges (eighth blocks), heavier ones stand
- * taller, and every block is centred on the springs' line. */
+ * without UTF-8), a spring with a damper beside it has a dashpot drawn below it; blocks
+ * have sub-cell edges (eighth blocks), heavier ones stand taller, and every block is
+ * centred on the springs' line; the mass the force input acts on carries an arrow the
+ * way the force pushes now. */
 #include "scene.h"
 
 #include <math.h>
@@ -45,6 +47,26 @@ static void draw_spring(const struct scene *s, const struct layout *l, double a,
         px = x, py = y;
     }
     canvas_line(s->canvas, px, py, x1, mid, color);
+}
+
+/* A dashpot below the spring between physical positions a and b: a rod from each end, one
+ * into a cup (dot rows 9 to 11, under the zig-zag's 2 to 8). */
+static void draw_dashpot(const struct scene *s, const struct layout *l, double a, double b,
+                         uint8_t color)
+{
+    int x0 = (int)lround(2.0 * (layout_scene_col(l, a) - l->scene.x - 1));
+    int x1 = (int)lround(2.0 * (layout_scene_col(l, b) - l->scene.x - 1));
+    int mid = (x0 + x1) / 2;
+    if (x1 - x0 < 8) {
+        canvas_line(s->canvas, x0, 10, x1, 10, color);
+        return;
+    }
+    canvas_line(s->canvas, x0, 10, mid, 10, color);      /* the piston's rod */
+    canvas_line(s->canvas, mid, 9, mid, 11, color);      /* the piston */
+    canvas_line(s->canvas, mid - 2, 9, mid + 3, 9, color); /* the cup, open to the left */
+    canvas_line(s->canvas, mid - 2, 11, mid + 3, 11, color);
+    canvas_line(s->canvas, mid + 3, 9, mid + 3, 11, color);
+    canvas_line(s->canvas, mid + 3, 10, x1, 10, color);  /* the cup's rod */
 }
 
 /* One cell of a block covering [lo, hi) of cell x across, in a row filled `fill` (0..1)
@@ -176,6 +198,8 @@ static void draw_springs(struct scene *s, const struct layout *l, const struct a
         bool hot = select_spring(sel) == j;
         if (term_utf8()) {
             draw_spring(s, l, a, b, hot ? PAIR_TITLE : PAIR_SPRING);
+            if (m->cs[j] > 0.0)
+                draw_dashpot(s, l, a, b, hot ? PAIR_TITLE : PAIR_SPRING);
             continue;
         }
         int c0 = (int)lround(layout_scene_col(l, a)), c1 = (int)lround(layout_scene_col(l, b));
@@ -183,6 +207,10 @@ static void draw_springs(struct scene *s, const struct layout *l, const struct a
         for (int c = c0; c < c1; c++)
             if (c > r.x && c < r.x + r.w - 1)
                 mvaddch(r.y + CHAIN_ROW, c, ((c - c0) % 2) ? '\\' : '/');
+        int cm = (c0 + c1) / 2;
+        for (int c = c0; m->cs[j] > 0.0 && c < c1; c++) /* the dashpot: --=[-- */
+            if (c > r.x && c < r.x + r.w - 1)
+                mvaddch(r.y + CHAIN_ROW + 1, c, c == cm ? '[' : c == cm - 1 ? '=' : '-');
         attroff(term_attr(hot ? PAIR_TITLE : PAIR_SPRING));
     }
     if (term_utf8()) {
@@ -250,6 +278,17 @@ void scene_draw(struct scene *s, const struct layout *l, const struct app *app,
         draw_block(l, X - 0.5 * w, X + 0.5 * w, height, term_mass_attr(i), label,
                    select_mass(sel) == i);
     }
+    if (model_forced(m) && m->force_on < m->n) {
+        /* The force's arrow on the top row over its mass, the way it pushes now. */
+        double f = model_force(m, sim_time(app->sim));
+        double X = model_equilibrium(m, m->force_on) + x[m->force_on];
+        int c = (int)lround(layout_scene_col(l, X)) - 1;
+        const char *arrow = f > 0.0   ? (term_utf8() ? "F→" : "F>")
+                            : f < 0.0 ? (term_utf8() ? "←F" : "<F")
+                                      : "F ";
+        if (c > r.x && c + 1 < r.x + r.w - 1)
+            draw_text_attr(r.y + 1, c, 2, term_attr(PAIR_MOTOR) | A_BOLD, arrow);
+    }
     if (sel->focus != FOCUS_CHAIN)
         return;
     char line[200];
@@ -260,8 +299,13 @@ void scene_draw(struct scene *s, const struct layout *l, const struct app *app,
     else {
         char name[48];
         app_spring_name(m, j, name, sizeof name);
-        snprintf(line, sizeof line, " %s: k %.3g N/m │ Enter k  ↑↓ next  Tab back ", name,
-                 m->k[j]);
+        char k3[40] = "", cs[40] = "";
+        if (m->k3[j] != 0.0)
+            snprintf(k3, sizeof k3, ", k3 %.3g N/m³", m->k3[j]);
+        if (m->cs[j] != 0.0)
+            snprintf(cs, sizeof cs, ", c %.3g N·s/m", m->cs[j]);
+        snprintf(line, sizeof line, " %s: k %.3g N/m%s%s │ Enter k  c damper  K k3  ↑↓ next  "
+                 "Tab back ", name, m->k[j], cs, k3);
     }
     draw_text_attr(r.y + r.h - 1, r.x + 2, r.w - 4, term_attr(PAIR_TITLE), line);
 }

@@ -260,7 +260,10 @@ void modes_view_draw(struct modes_view *v, const struct app *app, int selected, 
     int n = m->n;
     char title[120];
     double slow = app->modes_ok ? slowing(app) : 1.0;
-    if (slow < 1.0)
+    if (m->cubic)
+        snprintf(title, sizeof title, "Modes of the chain linearised at rest: shapes swinging, "
+                 "damping, energy share (Enter starts one)");
+    else if (slow < 1.0)
         snprintf(title, sizeof title, "Modes: shapes swinging at 1/%.3g speed, damping, energy "
                  "share (Enter starts one)", 1.0 / slow);
     else

@@ -358,7 +358,10 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     const struct model *m = app->model;
     struct chart *c = &rv->chart;
     int n = m->n;
-    const char *title = "Frequency response: steady-state amplitude (m) against frequency, log-log";
+    const char *title = m->cubic ? "Frequency response of the chain linearised at rest: "
+                                   "amplitude (m) against frequency, log-log"
+                                 : "Frequency response: steady-state amplitude (m) against "
+                                   "frequency, log-log";
     if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude <= 0.0 || !c->canvas) {
         /* The frame and the reason alone: no axis, curve or tick of a chain driven before
          * is left standing, and the canvas is clean for the next drive. */

@@ -268,7 +268,7 @@ sel_not() { [ "$(selected)" != "$1" ]; }
 select_control() {
     sc_n=0
     cap
-    while [ $sc_n -lt 14 ]; do
+    while [ $sc_n -lt 20 ]; do
         sc_cur=$(selected)
         [ "$sc_cur" = "$1" ] && return 0
         keys Down

@@ -1,0 +1,79 @@
+/* sweeprun.c: one point of a simulated sweep (sweeprun.h).
+ *
+ * Each drive period (the number of whole steps nearest to 1/f) the first harmonic of
+ * every mass is taken by a lock-in, in = 2/T sum x sin(theta) dt and quad = 2/T sum x
+ * cos(theta) dt (theta the drive's angle: the motor is A sin theta), so x ~ X sin(theta +
+ * phi) gives X = hypot(in, quad) and phi = atan2(quad, in). The point is steady when, for
+ * every mass, the amplitude changed by at most SWEEPRUN_STEADY of itself over the last
+ * period and the change still to come (the geometric tail d r / (1 - r), r the ratio of
+ * the last two changes) is as small, two periods running. */
+#include "sweeprun.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sweep.h"
+
+struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, double *phase)
+{
+    struct sweeprun_point r = {false, 0, false};
+    const struct model *m0 = sim_model(s);
+    int n = m0->n;
+    struct model *m = model_new(n);
+    double *in = calloc((size_t)(4 * n), sizeof *in), *quad = in ? in + n : NULL;
+    double *last = in ? quad + n : NULL, *change = in ? last + n : NULL;
+    if (!m || !in) {
+        model_free(m);
+        free(in);
+        r.diverged = true;
+        return r;
+    }
+    model_copy(m, m0);
+    motor_retune(&m->motor, f, sim_time(s));
+    sim_set_model(s, m);
+    double dt = sim_dt(s), w = 2.0 * M_PI * f;
+    long steps = lround(1.0 / (f * dt));
+    steps = steps < 1 ? 1 : steps;
+    int calm = 0;
+    for (int i = 0; i < n; i++)
+        last[i] = change[i] = NAN;
+    while (r.periods < SWEEPRUN_MAX_PERIODS && r.periods * steps * dt < SWEEPRUN_MAX_SECONDS) {
+        memset(in, 0, (size_t)(2 * n) * sizeof *in);
+        for (long k = 0; k < steps; k++) {
+            sim_step(s);
+            double th = w * sim_time(s) + 2.0 * M_PI * m->motor.phase, sn = sin(th),
+                   cs = cos(th);
+            const double *x = sim_x(s);
+            for (int i = 0; i < n; i++)
+                in[i] += x[i] * sn, quad[i] += x[i] * cs;
+        }
+        r.periods++;
+        bool steady = true;
+        for (int i = 0; i < n; i++) {
+            double a = 2.0 * hypot(in[i], quad[i]) / (double)steps;
+            if (!isfinite(a)) {
+                r.diverged = true;
+                break;
+            }
+            double d = fabs(a - last[i]), ratio = d / change[i];
+            double tail = d == 0.0 ? 0.0 : ratio < 1.0 ? d * ratio / (1.0 - ratio) : INFINITY;
+            double scale = fmax(a, 1e-9);
+            steady &= d <= SWEEPRUN_STEADY * scale && tail <= SWEEPRUN_STEADY * scale;
+            change[i] = d;
+            last[i] = a;
+            amp[i] = a;
+            phase[i] = sweep_phase_deg(in[i], quad[i]);
+        }
+        if (r.diverged)
+            break;
+        calm = steady ? calm + 1 : 0;
+        if (calm >= 2) {
+            r.settled = true;
+            break;
+        }
+    }
+    model_free(m);
+    free(in);
+    return r;
+}

@@ -1,0 +1,103 @@
+#!/bin/sh
+# tests/nonlinear.sh: the command line of chains with cubic springs: exact refused, the
+# sweep by harmonic balance (its columns, branches, stability and folds), the simulated
+# sweep up and down, the linear sweep's output unchanged, the preset key written either
+# way. Run from the repository root; SPRINGSIM names the binary (default ./springsim).
+NAME=nonlinear
+. "$(dirname "$0")/lib/check.sh"
+plain_env
+
+# one_error STATUS NEEDLE ARGS...: exit STATUS, one line on stderr naming NEEDLE, no stdout.
+one_error() {
+    want=$1 needle=$2
+    shift 2
+    run "$@"
+    if [ "$rc" -eq "$want" ] && [ ! -s "$out" ] && [ "$(wc -l <"$err")" -eq 1 ] &&
+        grep -q "^springsim: .*$needle" "$err"; then pass; else
+        fail "$cmd: exit $rc, stderr: $(head -c 300 "$err")"
+    fi
+}
+
+one_error 2 "exact.*nonlinear.*rk4" --integrator exact --spring-cubic 0,5,0 --headless
+one_error 2 "exact.*nonlinear" -n 1 --integrator exact --spring-cubic 3 --sweep 0.5:1:3
+one_error 2 "spring-cubic.*2 values for 3 springs" --spring-cubic 1,2 --headless
+one_error 2 "sweep-run.*'sideways' is not a direction" --sweep-run sideways 0.5:1:3
+one_error 2 "sweep-run.*needs up or down" --sweep-run up
+one_error 2 "sweep-run.*out of range" --sweep-run up 1:0.5:3
+one_error 2 "figure.*cubic" --spring-cubic 1 --sweep 0.5:1:3 --figure "$tmp/f.png"
+
+# The linear sweep keeps its columns; a cubic one gains branch and stable.
+run -n 2 --sweep 0.5:1:3
+[ "$(sed -n 1p "$out")" = "frequency_hz,amp1,amp2,phase1,phase2" ] && pass ||
+    fail "linear --sweep header: $(sed -n 1p "$out")"
+run -p duffing --sweep 0.8:0.9:2 --meta
+if [ "$rc" -eq 0 ] && grep -qx "frequency_hz,branch,stable,amp1,phase1" "$out" &&
+    [ "$(grep -c '^0.8,' "$out")" -eq 3 ] && grep -q '^0.8,2,0,' "$out" &&
+    grep -q '^0.8,1,1,' "$out" && grep -q '^0.8,3,1,' "$out" && [ "$(grep -c '^0.9,' "$out")" -eq 1 ] &&
+    [ "$(grep -c '^# fold [12]: 0\.[78][0-9]* Hz' "$out")" -eq 2 ]; then pass; else
+    fail "duffing --sweep: three branches at 0.8 Hz, the middle unstable, two folds: $(head -c 600 "$out" | tr '\n' '|')"
+fi
+# The folds from --meta, each between two neighbouring frequencies of the sweep.
+up=$(sed -n 's/^# fold 1: \([0-9.]*\) Hz.*/\1/p' "$out")
+low=$(sed -n 's/^# fold 2: \([0-9.]*\) Hz.*/\1/p' "$out")
+
+# The same oscillator driven by the force input (a wall at the right, F = k_N A = 2.5 N on
+# the mass) with 0.2 of its 0.3 N s/m beside the wall's spring: the same equation, so the
+# same folds (1e-6), the middle branch unstable.
+run -n 1 --boundary wall --force 2.5 --spring-cubic 4,0 --damping 0.1 --spring-damping 0.2,0 \
+    --sweep 0.8:0.9:2 --meta
+fup=$(sed -n 's/^# fold 1: \([0-9.]*\) Hz.*/\1/p' "$out")
+flow=$(sed -n 's/^# fold 2: \([0-9.]*\) Hz.*/\1/p' "$out")
+if [ "$rc" -eq 0 ] && grep -q '^0.8,2,0,' "$out" && awk -v a="$up" -v b="$fup" -v c="$low" \
+    -v d="$flow" 'BEGIN { exit !(b > 0 && d > 0 && (a - b) ^ 2 < 1e-12 * a * a &&
+                                  (c - d) ^ 2 < 1e-12 * c * c) }'; then pass; else
+    fail "forced --sweep: folds $fup, $flow (the motor's $up, $low): $(head -c 400 "$err")"
+fi
+one_error 2 "does not drive the chain.*no force" -n 1 --boundary wall --spring-cubic 4 \
+    --sweep 0.5:1:3
+
+# A simulated sweep up drops just above the upper fold; down it jumps just below the lower.
+run -p duffing --sweep-run up 0.78:0.85:71
+if [ "$rc" -eq 0 ] && awk -F, -v fold="$up" 'NR > 1 && $2 == "" {
+        if (!drop && prev && $4 < 0.5 * prev) { drop = $1 }
+        prev = $4
+    } END { exit !(drop > fold && drop <= 1.005 * fold) }' "$out"; then pass; else
+    fail "sweep-run up: no drop within 0.5 % above $up Hz: $(tr '\n' '|' <"$out" | head -c 400)"
+fi
+run -p duffing --sweep-run down 0.78:0.85:71
+if [ "$rc" -eq 0 ] && awk -F, -v fold="$low" 'NR > 1 {
+        if (prev && $4 > 1.5 * prev && !rise) { rise = $1 }
+        prev = $4
+    } END { exit !(rise < fold && rise >= 0.995 * fold) }' "$out"; then pass; else
+    fail "sweep-run down: no rise within 0.5 % below $low Hz: $(tr '\n' '|' <"$out" | head -c 400)"
+fi
+
+# A square drive: harmonic balance says it is for a sine, and sweeps by simulation.
+run -p duffing --wave square --sweep 0.5:0.6:2
+if [ "$rc" -eq 0 ] && grep -q "harmonic balance is for a sine drive" "$err" &&
+    [ "$(grep -c '^0\.[56],,1,' "$out")" -eq 2 ]; then pass; else
+    fail "square --sweep: $(head -c 300 "$err") $(tr '\n' '|' <"$out")"
+fi
+
+# The preset key reads as spring_cubic or spring-cubic; --meta writes it only when used.
+printf '[system]\nmasses = 1\nspring_cubic = 5, 0\n' >"$tmp/a.ini"
+printf '[system]\nmasses = 1\nspring-cubic = 5, 0\n' >"$tmp/b.ini"
+run -p "$tmp/a.ini" --headless --duration 0.01 --meta
+a=$(sed -n 2p "$out")
+run -p "$tmp/b.ini" --headless --duration 0.01 --meta
+b=$(sed -n 2p "$out")
+case $a in *"--spring-cubic 5,0 "*) [ "$a" = "$b" ] && pass || fail "presets differ: $a / $b" ;;
+*) fail "spring_cubic not read: $a" ;; esac
+run --headless --duration 0.01 --meta
+case $(sed -n 2p "$out") in *spring-cubic*) fail "a linear chain's --meta names spring-cubic" ;; *) pass ;; esac
+
+# The plain mode: set spring-cubic changes the chain (its modes say linearised), and the
+# exact integrator is then refused with the reason.
+printf 'set spring-cubic 0,5\nmodes\nset integrator exact\nquit\n' >"$tmp/in"
+timeout 30 "$SPRINGSIM" --plain -n 1 <"$tmp/in" >"$out" 2>&1
+if grep -q '^ok modes (linearised at rest):' "$out" &&
+    grep -q "^error integrator: 'exact' steps a linear chain.*nonlinear" "$out"; then pass; else
+    fail "plain set spring-cubic: $(tr '\n' '|' <"$out" | head -c 500)"
+fi
+
+summary

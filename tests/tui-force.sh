@@ -1,0 +1,78 @@
+#!/bin/sh
+# tests/tui-force.sh: the force input and the dampers beside the springs in a real terminal
+# (tmux, 80x24, -p tuned-mass-damper). The Force and Force on controls show the preset's
+# force and its mass; the forced mass carries an arrow on the scene's top row the way the
+# force pushes (F→ or ←F), and the damped spring a dashpot on its bottom row (=[ without
+# UTF-8). A spring selected in the chain (Tab, ↑↓) names its damper; c types it; the
+# arrows change the force and move it to the next mass. A recording of all that holds
+# set spring-damping, set force and set force-on and replays bit for bit.
+# Run from the repository root as `sh tests/tui-force.sh`, SPRINGSIM naming the binary.
+# Ends with "tui-force: N passed, M failed".
+NAME=tui-force
+. "$(dirname "$0")/lib/check.sh"
+. "$(dirname "$0")/lib/tmux.sh"
+
+start tmd 80 24 -- -p tuned-mass-damper --record "$tmp/rec.lesson"
+start ascii 80 24 LANG=C LC_ALL=C NO_COLOR=1 -- -p tuned-mass-damper
+
+# chain_rows: the scene's three rows inside its frame (alternatives, not a bracket: mawk
+# reads one byte of └ there)
+chain_rows() { awk '/Chain/ { on = 1; next } on && /^(└|\+)/ { exit } on' "$scr"; }
+
+S=ascii
+if up ascii; then
+    keys Space
+    sleep 1.2
+    keys Space
+    if wait_for Paused 3 && chain_rows | sed -n 1p | grep -qE '<F|F>' &&
+        chain_rows | sed -n 3p | grep -q -- '-=\[-'; then pass; else
+        fail "ascii: the forced mass should carry <F or F> and the damped spring a dashpot -=[-; screen: $(brief)"
+    fi
+fi
+
+S=tmd
+if up tmd; then
+    if has_re 'Force +0\.50 N' && has_re 'Force on +mass 1'; then pass; else
+        fail "tmd: the controls should show Force 0.50 N and Force on mass 1; screen: $(brief "$scr" 'Force')"
+    fi
+    keys Space
+    sleep 1
+    keys Space
+    if wait_for Paused 3 && chain_rows | sed -n 1p | grep -qE 'F→|←F'; then pass; else
+        fail "tmd: the forced mass should carry F→ or ←F on the scene's top row; screen: $(brief)"
+    fi
+    # the absorber's spring: Tab selects mass 1, ↓ the spring to its right, 2 (1–2)
+    keys Tab Down
+    if wait_for 'spring 2 (1–2): k 0.454 N/m, c 0.0383 N·s/m' 3 && has 'c damper'; then pass; else
+        fail "tmd: the selected spring should name its damper and the c key; screen: $(brief)"
+    fi
+    keys c
+    if wait_for 'spring 2 (1–2): c (N·s/m) =' 3; then pass; else
+        fail "tmd: c on a spring should ask for its damper; screen: $(brief)"
+    fi
+    text 0.05
+    keys Enter
+    if wait_for 'spring 2 (1–2): c = 0.05 N·s/m' 3; then pass; else
+        fail "tmd: the damper typed should be said; screen: $(brief)"
+    fi
+    keys Tab
+    if select_control Force && keys Right && wait_re 'Force +0\.60 N' 3 &&
+        select_control 'Force on' && keys Right && wait_re 'Force on +mass 2' 3; then pass; else
+        fail "tmd: → should raise the force to 0.60 N and move it to mass 2; screen: $(brief "$scr" 'Force')"
+    fi
+    keys Space
+    sleep 1
+    keys q
+    poll 5 ended
+    f=$tmp/rec.lesson
+    if grep -qx 'set spring-damping 0,0.05,0' "$f" && grep -qx 'set force 0.6' "$f" &&
+        grep -qx 'set force-on 2' "$f"; then pass; else
+        fail "tmd: the recording should hold the damper, the force and its mass: $(sed -n '/^end/,$p' "$f" | tr '\n' '|')"
+    fi
+    "$SPRINGSIM" --plain --replay "$f" </dev/null >"$tmp/replay.out" 2>&1
+    if grep -q 'is the one recorded, bit for bit' "$tmp/replay.out"; then pass; else
+        fail "tmd: the recording should replay bit for bit: $(tail -n 3 "$tmp/replay.out" | tr '\n' '|')"
+    fi
+fi
+
+summary
