@@ -291,11 +291,11 @@ static void sweep_warns_of_contacts(void **state)
     snprintf(want, sizeof want, "contacts expected above %.2g m: lower the amplitude",
              plan.contact);
     assert_non_null(strstr(app.message, want));
-    /* A chain no motor drives has no plan. */
+    /* A chain neither the motor nor a force drives has no plan. */
     app_toggle_sweep(&app);
     assert_true(app_set_text(&app, CTL_BOUNDARY, "wall"));
     assert_int_equal(sweeping_plan(&app, &plan, why, sizeof why), -1);
-    assert_non_null(strstr(why, "needs the motor"));
+    assert_non_null(strstr(why, "needs a drive: the motor at the right end, or a force"));
 }
 
 /* ---- once per change ---- */

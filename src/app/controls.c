@@ -465,21 +465,6 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
     return changed | app_say(app, SAID_NOTE, "%s: %s = %g %s", noun, symbol, v, unit);
 }
 
-void app_spring_name(const struct model *m, int j, char *buf, size_t len)
-{
-    /* Numbered from 1 as in the --spring list; what it joins says which one it is. */
-    char left[16], right[16];
-    if (j == 0)
-        snprintf(left, sizeof left, "wall");
-    else
-        snprintf(left, sizeof left, "%d", j);
-    if (j == m->n)
-        snprintf(right, sizeof right, "%s", m->boundary == BOUNDARY_MOTOR ? "motor" : "wall");
-    else
-        snprintf(right, sizeof right, "%d", j + 1);
-    snprintf(buf, len, "spring %d (%s–%s)", j + 1, left, right);
-}
-
 unsigned app_nearest_mode(struct app *app)
 {
     if (!app->modes_ok)

@@ -1,5 +1,5 @@
 /* say.c: the status message, the one line every part of the app says what happened on,
- * the digits its times are given with, and numbers kept to a width. */
+ * the digits its times are given with, numbers kept to a width, and a spring's name. */
 #include "app.h"
 
 #include <math.h>
@@ -61,4 +61,19 @@ const char *app_fixed(double v, int decimals, char *buf, size_t len)
     else
         snprintf(buf, len, "%.*e", decimals > 3 ? 3 : decimals, v);
     return buf;
+}
+
+void app_spring_name(const struct model *m, int j, char *buf, size_t len)
+{
+    /* Numbered from 1 as in the --spring list; what it joins says which one it is. */
+    char left[16], right[16];
+    if (j == 0)
+        snprintf(left, sizeof left, "wall");
+    else
+        snprintf(left, sizeof left, "%d", j);
+    if (j == m->n)
+        snprintf(right, sizeof right, "%s", m->boundary == BOUNDARY_MOTOR ? "motor" : "wall");
+    else
+        snprintf(right, sizeof right, "%d", j + 1);
+    snprintf(buf, len, "spring %d (%s–%s)", j + 1, left, right);
 }

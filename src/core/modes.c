@@ -115,10 +115,12 @@ static int modal_uniform(const struct model *m, double *w2, double *s)
 int modes_modal(const struct model *m, double *w2, double *s)
 {
     int n = m->n;
-    /* Equal damping per unit mass, c_i / m_i = r: C = r M is diagonal in every basis of
+    /* Equal damping per unit mass, c_i / m_i = r, and no spring dampers: C = r M is diagonal in every basis of
      * modes, phi^T C phi = r phi^T M phi, so s_j = r / 2 and the shapes are not needed
      * (dstevr without vectors: 0.16e9 instructions fewer at N = 1000). */
     bool uniform = true;
+    for (int j = 0; j <= n; j++)
+        uniform &= m->cs[j] == 0.0; /* a damper beside a spring is not r M */
     for (int i = 1; i < n; i++)
         uniform &= m->c[i] / m->m[i] == m->c[0] / m->m[0];
     if (uniform)
