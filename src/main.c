@@ -1,6 +1,6 @@
 /* main.c: reads the command line (options.c) and runs one of the modes: the
  * interactive program (or its plain mode), --headless (run_headless.c), --modes and
- * --sweep (run_tables.c), --list-presets, --list-lessons (SPEC section 2).
+ * --sweep (run_tables.c), --list-presets, --list-lessons (springsim(1), MODES).
  * This is the only file that knows both the core and the terminal front end. */
 #include <limits.h>
 #include <locale.h>

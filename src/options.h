@@ -1,4 +1,4 @@
-/* options.h: reading the command line (SPEC section 2). */
+/* options.h: reading the command line (springsim(1), OPTIONS). */
 #ifndef SPRINGSIM_OPTIONS_H
 #define SPRINGSIM_OPTIONS_H
 

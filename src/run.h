@@ -1,4 +1,4 @@
-/* run.h: the modes that write a file instead of drawing (SPEC section 2). Each returns
+/* run.h: the modes that write a file instead of drawing (springsim(1), MODES). Each returns
  * the exit status, having said on standard error what went wrong. */
 #ifndef SPRINGSIM_RUN_H
 #define SPRINGSIM_RUN_H

@@ -1,5 +1,5 @@
 /* run_headless.c: --headless, the chain stepped for --duration and written as CSV rows
- * (or one --summary row), with --figure's plot of the same rows (SPEC section 2). */
+ * (or one --summary row), with --figure's plot of the same rows. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 /* run_nonlinear.c: the sweeps of a chain with cubic springs: --sweep by harmonic balance
  * (every branch at each frequency, its stability, the folds), and --sweep-run, the
- * simulated sweep up or down, each point from the last one's state (SPEC section 8). Both
+ * simulated sweep up or down, each point from the last one's state. Both
  * write frequency_hz,branch,stable,amp1..ampN,phase1..phaseN. */
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* run_tables.c: the modes that write a table computed, not stepped: --modes (the natural
  * frequencies and shapes) and --sweep (the steady response over a range of frequencies),
- * each with --figure's plot of it (SPEC section 2). */
+ * each with --figure's plot of it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

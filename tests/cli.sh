@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/cli.sh: end-to-end tests of the real binary's command line (SPEC sections 2 and 3).
+# tests/cli.sh: end-to-end tests of the real binary's command line (springsim(1), OPTIONS and PRESETS).
 # Run from the repository root as `sh tests/cli.sh`, with SPRINGSIM naming the binary
 # (default ./springsim). Prints one line per failing case, then exactly one summary line
 # "cli: N passed, M failed"; exits non-zero if anything failed.
@@ -30,7 +30,7 @@ expect_ok() {
     return 0
 }
 
-# expect_usage_error NEEDLE... -- ARGS...: a bad option or value. SPEC 2: exit 2,
+# expect_usage_error NEEDLE... -- ARGS...: a bad option or value. Exit 2,
 # exactly one line on stderr starting "springsim: " and naming the option and value
 # (each NEEDLE must appear in it), nothing on stdout.
 expect_usage_error() {
@@ -571,7 +571,7 @@ if expect_ok --headless --duration 0.1 -o "$tmp/link.csv"; then
     fi
 fi
 
-# 13. Integrators and the limits of dt (SPEC 1, "Integration"): --integrator, its preset
+# 13. Integrators and the limits of dt : --integrator, its preset
 # key, and the warnings said once on standard error before a run, exit status unchanged.
 run --headless --integrator x
 expect_equal "$cmd: the message" \

@@ -1,7 +1,7 @@
 #!/bin/sh
 # tests/completions.sh: the shell completions in build/completions ($COMPLETIONS), made
 # from the option table. bash: the file is sourced and _springsim driven with COMP_WORDS
-# and COMP_CWORD, its answers checked against the SPEC's names, --help's options and the
+# and COMP_CWORD, its answers checked against the documented names, --help's options and the
 # preset files; fish: its own `complete -C`; zsh: loaded in a plain zsh, then a real zsh in
 # tmux completes with Tab. Prints "completions: N passed, M failed".
 NAME=completions
@@ -54,7 +54,7 @@ for f in springsim.bash _springsim springsim.fish; do
     [ -s "$COMPLETIONS/$f" ] && pass || fail "$COMPLETIONS/$f was not written (make completions)"
 done
 
-# The waveforms, integrators and right ends as SPEC section 2 names them.
+# The waveforms, integrators and right ends as the man page names them.
 expect_bash "sawtooth sine square" --wave s
 expect_bash "euler exact rk4 semi-implicit verlet" --integrator ""
 expect_bash "free motor wall" --boundary ""

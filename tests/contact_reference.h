@@ -1,5 +1,5 @@
 /* contact_reference.h: an event-driven reference solution of the chain with contacts,
- * written from SPEC section 1 alone (no code shared with src/core), for test_contact.c
+ * written from the model's definition alone (no code shared with src/core), for test_contact.c
  * and test_campaign.c.
  *
  * Between contacts the chain is the linear ODE
@@ -12,7 +12,7 @@
  * polynomial on the sub-step. A contact is the first instant a gap goes from positive to
  * negative: the sub-step is sampled, split at the gap's extrema, and the root bracketed
  * and bisected down to adjacent doubles. The state is taken there from the series, the
- * SPEC's rule (e = 0.8, velocity relative to the wall or piston reversed and scaled;
+ * restitution rule (e = 0.8, velocity relative to the wall or piston reversed and scaled;
  * neighbours by 1-D restitution, momentum kept) applied, and the run goes on.
  *
  * Resting contacts: a contact closing slower than REF_V_REST is perfectly inelastic; if
@@ -21,14 +21,14 @@
  * the series is that of the constrained chain: a free cluster accelerates by its net
  * force over its mass, the piston's by u''. The force across each held contact is a
  * series too (Newton on the part left of it); the contact parts where it turns to a pull,
- * found like a closing gap. An impact is the SPEC's rule between the two masses it joins
+ * found like a closing gap. An impact is the restitution rule between the two masses it joins
  * (or a mass and the wall or piston), then on every touching gap of the row around it that
  * still closes, pair by pair, in sweeps alternating left to right and back until none
  * does: held contacts take part like merely touching ones (the impulse is infinite beside
  * their force), part if they then move apart, and inelastic ones pressed shut are held
  * (an impact still closing after 16 sweeps, which the program settles by moving the row
  * as one, is not this reference's business).
- * The square, triangle and sawtooth drives are pieces of constants and ramps (SPEC's
+ * The square, triangle and sawtooth drives are pieces of constants and ramps (the definition's
  * formulas), sub-steps ending at their breakpoints; a jump of the end books the change of
  * the end spring's energy as the motor's work, and a jump into the last mass pushes every
  * mass in the way ahead of the face, each against the next, the springs' change paid by
@@ -53,10 +53,10 @@
 #define REF_HMAX 1e-3     /* longest sub-step (s) by default */
 #define REF_SAMPLES 8     /* samples of each gap per sub-step, to find its extrema */
 #define REF_MAXEVENTS 256 /* contacts logged (all are counted) */
-#define REF_V_REST 1e-3   /* below this approach speed a contact is inelastic (SPEC: rests) */
+#define REF_V_REST 1e-3   /* below this approach speed a contact is inelastic (the model: rests) */
 #define REF_RATE 1e-9     /* relative speeds below this are none */
 #define REF_PULL 1e-9     /* a held contact parts when its force falls below -this (N) */
-#define REF_E 0.8         /* restitution, SPEC section 1 */
+#define REF_E 0.8         /* restitution */
 #define REF_L 10.0        /* right end's base (m) */
 
 enum ref_kind { REF_LEFT, REF_PAIR, REF_RIGHT };
@@ -134,7 +134,7 @@ static double ref_piece_off(const struct ref *r)
 }
 
 /* u and u' at time t on the piece that starts at or before t (after = 1) or the one that
- * ends at or after it (after = 0), by the SPEC's formulas. */
+ * ends at or after it (after = 0), by the definition's formulas. */
 static void ref_drive_side(const struct ref *r, double t, int after, double *u, double *du)
 {
     if (!r->motor) {
@@ -455,7 +455,7 @@ static double ref_gap_now(const struct ref *r, int g, double *rate, double du)
     return REF_L + u - 0.5 * r->w - r->xeq[n - 1] - r->x[n - 1];
 }
 
-/* The SPEC's rule on gap g between the two masses it joins (or a mass and the wall, or
+/* The restitution rule on gap g between the two masses it joins (or a mass and the wall, or
  * the piston moving at du), with the books and the log: 1 if they were closing. One
  * closing slower than REF_V_REST is inelastic, and marked in soft (so is one touching and
  * moving as one: it may be held). */
@@ -496,7 +496,7 @@ static int ref_pair(struct ref *r, int g, double du, bool *soft)
     return 1;
 }
 
-/* An impact on gap g: the SPEC's rule there, then on every touching gap of the row around
+/* An impact on gap g: the restitution rule there, then on every touching gap of the row around
  * it (held or closed to 1e-12 m) still closing, sweeps alternating left to right and
  * back until none closes; held contacts take part like any other (the impulse is infinite
  * beside their force). Then held contacts moving apart part, inelastic ones pressed shut

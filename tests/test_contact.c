@@ -1,6 +1,6 @@
 /* test_contact.c: the simulator with collisions against an event-driven reference of its
  * own (contact_reference.h: Taylor series between contacts, exact contact instants, the
- * SPEC's e = 0.8 rule), on four scenarios: one mass and the left wall, two masses, a mass
+ * e = 0.8 restitution rule), on four scenarios: one mass and the left wall, two masses, a mass
  * hit by the moving piston, three masses with six contacts. The goals are issue 10's:
  * max position error at dt = 0.01 <= 1e-5 m and order >= 3 from dt = 0.01 to 0.0025; the
  * energy balance with the contact column within 1e-4 of the peak energy on the piston
@@ -383,7 +383,7 @@ static void scenarios_are_clean(void **state)
         struct track a, b;
         track_run(sc, REF_HMAX, &a);
         track_run(sc, REF_HMAX / 4, &b);
-        /* The reference reads the SPEC's numbers itself; they must be the model's. */
+        /* The reference holds the rule's numbers itself; they must be the model's. */
         struct model *md = scenario_model(sc);
         assert_true(a.r.w == model_block_width(md) && REF_E == MODEL_RESTITUTION);
         assert_true(REF_L == MODEL_LENGTH &&

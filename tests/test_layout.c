@@ -1,6 +1,6 @@
 /* test_layout.c: the screen's rectangles at every size from the minimum to 250x70, with
  * the grid, each plot enlarged and an analysis view: inside the screen, not overlapping,
- * the enlarged plot as large as the SPEC asks, the grid's plots readable, and the scene's
+ * the enlarged plot as large as it must be, the grid's plots readable, and the scene's
  * metres-to-columns mapping and the controls' hit-test consistent with what is drawn; a
  * lesson's caption panel below everything but the hints. */
 #include "testutil.h"
@@ -115,7 +115,7 @@ static void every_size(void **state)
         }
 }
 
-/* The SPEC's figures: an enlarged plot draws on at least 40x12 at 80x24, 70x24 at 120x40. */
+/* The goals: an enlarged plot draws on at least 40x12 at 80x24, 70x24 at 120x40. */
 static void enlarged_sizes(void **state)
 {
     (void)state;

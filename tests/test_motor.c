@@ -1,10 +1,10 @@
-/* test_motor.c: the four waveforms against the SPEC's own formulas, their values at
+/* test_motor.c: the four waveforms against their defining formulas, their values at
  * the jumps, their breakpoints, and pieces that extend each smooth part exactly. */
 #include "testutil.h"
 
 #include "core/motor.h"
 
-/* SPEC section 1, written out independently of motor.c. */
+/* The definitions, written out independently of motor.c. */
 static double spec_wave(enum wave w, double th)
 {
     switch (w) {

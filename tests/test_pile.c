@@ -4,8 +4,8 @@
  * (CAMPAIGN_CASES sets how many; the memcheck run takes fewer). An impact on a row of
  * masses follows the pairwise rule whether or not a force presses the row together.
  *
- * The balance is kinetic + potential + dissipated + contact - motor_work, which SPEC
- * section 1 keeps constant to the method's accuracy, contacts included; it is judged
+ * The balance is kinetic + potential + dissipated + contact - motor_work, which the model
+ * keeps constant to the method's accuracy, contacts included; it is judged
  * against the peak of kinetic + potential. */
 #include "testutil.h"
 
@@ -195,7 +195,7 @@ static void jump_campaign(void **state)
     assert_true(jumped >= cases * 3 / 4);
 }
 
-/* The SPEC's rule between two masses: velocities after a contact closing at vl - vr. */
+/* The restitution rule between two masses: velocities after a contact closing at vl - vr. */
 static void two_body(double ml, double *vl, double mr, double *vr)
 {
     double c = *vl - *vr, mt = ml + mr, p = ml * *vl + mr * *vr;

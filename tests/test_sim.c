@@ -12,7 +12,7 @@
 
 #define N3 3
 
-/* The non-uniform 3-mass chain of SPEC section 6. */
+/* The non-uniform 3-mass chain of the accuracy goals. */
 static struct model *chain3(enum wave wave)
 {
     static const double m[N3] = {1.0, 1.5, 0.8}, k[N3 + 1] = {10, 14, 8, 12};
@@ -26,7 +26,7 @@ static struct model *chain3(enum wave wave)
     return md;
 }
 
-/* ---- the reference: Taylor series of y' = A y + b(t), written from the SPEC alone ---- */
+/* ---- the reference: Taylor series of y' = A y + b(t), written from the model's definition alone ---- */
 
 #define ORDER 24
 
@@ -36,7 +36,7 @@ struct drive {          /* u(t) on one smooth piece */
     double u0, slope, t0; /* otherwise u = u0 + slope (t - t0) */
 };
 
-/* The waveform formulas of SPEC section 1, evaluated inside a piece around tm. */
+/* The waveform formulas of the definition, evaluated inside a piece around tm. */
 static struct drive drive_at(enum wave wave, double a, double f, double tm)
 {
     double th = 2.0 * M_PI * f * tm;
@@ -101,7 +101,7 @@ static void taylor_step(const struct model *md, const struct drive *d, double t,
     memcpy(y, sum, sizeof sum);
 }
 
-/* Breakpoints of the waveform in cycles: first and period (SPEC section 1). */
+/* Breakpoints of the waveform in cycles: first and period. */
 static void breaks_of(enum wave wave, double *first, double *period)
 {
     *first = wave == WAVE_TRIANGLE ? 0.25 : wave == WAVE_SAWTOOTH ? 0.5 : 0.0;

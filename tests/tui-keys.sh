@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/tui-keys.sh: the interactive program's keys (SPEC section 4) in a real terminal
+# tests/tui-keys.sh: the interactive program's keys (springsim(1), KEYS) in a real terminal
 # (tmux): space runs and pauses, . and , step, r resets, the help (and its scrolling at
 # 80x24: every key of --keys in it, whole), the preset menu and every preset for a
 # second, a control adjusted and typed into, the footer's hints as the state changes,

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/tui-plots.sh: the plots and the scene as a person reads them (SPEC section 4,
+# tests/tui-plots.sh: the plots and the scene as a person reads them (springsim(1), INTERACTIVE PROGRAM,
 # issue 9), in a real terminal (tmux): 1..6 enlarge one plot (big enough to read, the
 # resonance's oscillations distinct), the same digit or 0 give the grid back, < and >
 # change the time window (the beating preset and --window choose the one at start), the

@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/tui-signals.sh: every way out of the interactive program gives the terminal back
-# (SPEC section 4): q (at 120x40 and 80x24), Ctrl-C (running, and with the help open),
+# (springsim(1), INTERACTIVE PROGRAM): q (at 120x40 and 80x24), Ctrl-C (running, and with the help open),
 # SIGTERM, SIGHUP and a crash (SIGSEGV), each with the status it should give; the
 # terminal modes (stty -g) afterwards are those before, the program's screen gone.
 # Run from the repository root as `sh tests/tui-signals.sh`, SPRINGSIM naming the

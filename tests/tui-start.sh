@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/tui-start.sh: the interactive program's first screen (SPEC section 4) in a real
+# tests/tui-start.sh: the interactive program's first screen (springsim(1), INTERACTIVE PROGRAM) in a real
 # terminal (tmux): at 120x40 and the sizes where the plot grid changes, resizing (to the
 # too-small message and back, a storm of sizes), tiny sizes, LANG=C (ASCII only),
 # NO_COLOR and TERM. Run from the repository root as `sh tests/tui-start.sh`, SPRINGSIM

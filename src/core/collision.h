@@ -1,5 +1,5 @@
 /* collision.h: contacts with the left wall, the piston or right wall, and between
- * neighbouring masses, plus the velocity cap (SPEC section 1). The limits are computed
+ * neighbouring masses, plus the velocity cap. The limits are computed
  * once per model and shared by the checks, the event location in sim.c and the
  * resolution; every change of energy a contact makes is booked. */
 #ifndef SPRINGSIM_COLLISION_H
@@ -42,7 +42,7 @@ double collision_gap(const struct collision_limits *l, int k, const double *x, d
  * negative when closing. */
 double collision_rate(const struct collision_limits *l, int k, const double *v, double du);
 
-/* A contact on constraint k at this instant: if it is closing, the SPEC's rule (e = 0.8,
+/* A contact on constraint k at this instant: if it is closing, the restitution rule (e = 0.8,
  * momentum kept between masses, relative to the piston for the piston), or no bounce at
  * all below COLLISION_V_REST. Positions are not moved. Returns 1 if velocities changed. */
 int collision_hit(const struct collision_limits *l, const struct model *m, int k, double *v,

@@ -1,6 +1,6 @@
 /* config.h: every setting of a run, the one table of options, preset keys and modes
  * (name, short option, section, kind, range, default, unit, digits, help), and the checks
- * of their values made from it (SPEC 2-3). */
+ * of their values made from it (springsim(1), OPTIONS and PRESETS). */
 #ifndef SPRINGSIM_CONFIG_H
 #define SPRINGSIM_CONFIG_H
 

@@ -1,4 +1,4 @@
-/* events.h: contacts as events inside a step (SPEC section 1, "Integration"): where
+/* events.h: contacts as events inside a step: where
  * along a piece a gap closes (grazes included) or a resting contact would start to pull,
  * and what happens at that instant (the contact rule on whole clusters, resting contacts
  * made and parted). sim.c steps to the instants these find. */

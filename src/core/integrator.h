@@ -1,4 +1,4 @@
-/* integrator.h: the integrators a run can use (SPEC section 1, --integrator): their
+/* integrator.h: the integrators a run can use (--integrator): their
  * names, orders, and how one step of each acts on a single damped mode, which is what
  * their stability and accuracy limits are measured with. */
 #ifndef SPRINGSIM_INTEGRATOR_H

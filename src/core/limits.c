@@ -1,5 +1,4 @@
-/* limits.c: the stability and accuracy limits of dt (SPEC section 1, "Limits", and
- * section 7).
+/* limits.c: the stability and accuracy limits of dt (docs/accuracy.md).
  *
  * The chain M x'' + C x' + K x = 0 is the first-order system z' = A z with
  * A = [[0, I], [-M^-1 K, -M^-1 C]]; its 2N eigenvalues (LAPACK dgeev) pair into N

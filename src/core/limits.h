@@ -1,4 +1,4 @@
-/* limits.h: how large dt may be for a chain and an integrator (SPEC section 1, "Limits"):
+/* limits.h: how large dt may be for a chain and an integrator (docs/accuracy.md):
  * the stability limit from each integrator's own one-step matrix, the accuracy (amplitude
  * and phase) of the modes and of the motion at the drive's frequency, and the warnings
  * that say so. */

@@ -1,4 +1,4 @@
-/* model.h: the chain's parameters and its equations of motion (SPEC section 1). */
+/* model.h: the chain's parameters and its equations of motion. */
 #ifndef SPRINGSIM_MODEL_H
 #define SPRINGSIM_MODEL_H
 
@@ -105,7 +105,7 @@ void model_rates_cubic(const struct model *m, const double *inv_m, const double 
                        const double *v, double u, double du, double *a, double *diss,
                        double *work);
 
-/* The one equation of motion (SPEC section 1): accelerations a[i] at displacements x,
+/* The one equation of motion: accelerations a[i] at displacements x,
  * velocities v and right end u moving at du; with diss and work not NULL, also the power
  * the dampers take (sum c_i v_i^2 + sum cs_j (stretch rate_j)^2) and the power the motor
  * gives (k_N (u - x_N) + cs_N (du - v_N)) du. The force input is not in it: its value

@@ -5,7 +5,7 @@
  *   square:   w = +1 on (k, k+1/2), -1 on (k+1/2, k+1)          breakpoints c = k/2
  *   triangle: w = 4(c-k) on (k-1/4, k+1/4), -4(c-k-1/2) next     breakpoints c = 1/4 + k/2
  *   sawtooth: w = 2(c-k) on (k-1/2, k+1/2)                        breakpoints c = 1/2 + k
- * These are the SPEC's sign(sin), (2/pi)asin(sin) and 2 frac(c + 1/2) - 1. */
+ * These are the definitions sign(sin), (2/pi)asin(sin) and 2 frac(c + 1/2) - 1. */
 #include "motor.h"
 
 #include <limits.h>

@@ -24,7 +24,7 @@ struct motor_piece {
     double w0;    /* w at cref */
 };
 
-/* The waveform w at a phase given in cycles (theta / 2pi), with the SPEC's values at
+/* The waveform w at a phase given in cycles (theta / 2pi), with the defined values at
  * the jumps themselves (square 0, sawtooth -1). */
 double motor_wave(enum wave wave, double cycles);
 

@@ -1,7 +1,7 @@
 /* onestep.h: an integrator's own one-step matrix on the chain (the stepper's step on the
  * linear homogeneous system, right end held still), its spectral radius (LAPACK dgeev),
  * the largest stable step found along h, and the error of the steady motion at the
- * drive's frequency (SPEC section 7, "Every integrator's stability limit comes from its
+ * drive's frequency ("Every integrator's stability limit comes from its
  * own one-step matrix"). */
 #ifndef SPRINGSIM_ONESTEP_H
 #define SPRINGSIM_ONESTEP_H

@@ -1,5 +1,5 @@
 /* preset.h: presets as INI files (read with libinih): loading into a config, the
- * search path, listing, and writing a config back in the same format (SPEC 3). */
+ * search path, listing, and writing a config back in the same format (springsim(1), PRESETS). */
 #ifndef SPRINGSIM_PRESET_H
 #define SPRINGSIM_PRESET_H
 

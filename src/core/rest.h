@@ -1,4 +1,4 @@
-/* rest.h: resting contacts (SPEC section 1, "Contacts"). A constraint that closed slower
+/* rest.h: resting contacts. A constraint that closed slower
  * than COLLISION_V_REST while the forces press it shut holds as a constraint: the two
  * masses move as one, a mass on the wall stays there, a mass on the piston moves with
  * it, for as long as the constraint force pushes (it never pulls). The masses joined by

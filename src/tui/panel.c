@@ -40,7 +40,7 @@ void panel_status(const struct layout *l, const struct app *app, bool behind)
         ghost_describe(app, what, sizeof what);
         snprintf(ghost, sizeof ghost, " %s %s", bar, what);
     }
-    /* The full line where it fits; the SPEC's essentials where it does not. */
+    /* The full line where it fits; the essentials (state, t, drive) where it does not. */
     snprintf(line, sizeof line, " springsim ▸ %-7s t = %.*f s %s %s %s N %d %s dt %.*f s%s %s "
              "history %d%s%s", app->running ? "Running" : "Paused", d, sim_time(app->sim), bar,
              motor, bar, m->n, bar, d > 3 ? d : 3, app->cfg.dt, past, bar,
