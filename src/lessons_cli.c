@@ -15,18 +15,9 @@
 /* --list-lessons: "NAME  TITLE", one line each, escaped as --list-presets is. */
 int lessons_list(const char *exe_dir)
 {
-    struct lesson_entry *all = NULL;
-    int have = lesson_scan(exe_dir, &all), width = 0;
-    for (int i = 0; i < have; i++)
-        if ((int)strlen(all[i].name) > width)
-            width = (int)strlen(all[i].name);
-    for (int i = 0; i < have; i++) {
-        char line[1024], safe[4 * 1024 + 8];
-        snprintf(line, sizeof line, "%-*s  %s", width, all[i].name,
-                 all[i].title[0] ? all[i].title : "(no title)");
-        config_escape(line, strlen(line), 1024, safe, sizeof safe);
-        printf("%s\n", safe);
-    }
+    struct search_entry *all = NULL;
+    int have = lesson_scan(exe_dir, &all);
+    search_list(stdout, all, have, "(no title)");
     free(all);
     if (have == 0)
         options_say("no lessons found (searched the user's directory, $SPRINGSIM_LESSONS, %s "

@@ -500,14 +500,14 @@ static void only_regular_files(void **state)
 
     setenv("SPRINGSIM_PRESETS", dir, 1);
     setenv("XDG_CONFIG_HOME", dir, 1); /* no springsim/presets under it */
-    struct preset_entry *all;
+    struct search_entry *all;
     int have = preset_scan(NULL, &all), good = 0;
     for (int i = 0; i < have; i++) {
         if (strcmp(all[i].name, "fifo") == 0 || strcmp(all[i].name, "zero") == 0 ||
             strcmp(all[i].name, "huge") == 0)
             fail_msg("preset_scan listed %s", all[i].path);
         if (strcmp(all[i].name, "good") == 0)
-            good = strcmp(all[i].description, "A good one") == 0;
+            good = strcmp(all[i].about, "A good one") == 0;
     }
     free(all);
     assert_true(good);

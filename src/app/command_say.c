@@ -68,7 +68,7 @@ enum command_reply say_controls(const struct app *app, char *answer, size_t len)
 /* The presets' names in one line. */
 enum command_reply say_presets(const struct app *app, char *answer, size_t len)
 {
-    struct preset_entry *list = NULL;
+    struct search_entry *list = NULL;
     int n = preset_scan(app->exe_dir, &list);
     size_t used = (size_t)snprintf(answer, len, "presets:");
     for (int i = 0; i < n && used < len; i++)

@@ -5,7 +5,6 @@
  * how long lists are written back. */
 #include "preset.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -413,91 +412,37 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
     return PRESET_NONE;
 }
 
+/* What preset_scan's about function gives the parser: where the description goes. */
+struct about {
+    char *text;
+    size_t len;
+};
+
 static int describe(void *user, const char *section, const char *name, const char *value)
 {
-    struct preset_entry *e = user;
+    struct about *ab = user;
     /* Escaped here, for every list that shows it (the menu, --list-presets, presets):
      * no control byte, no Unicode format character reaches a screen raw. */
     if (strcmp(section, "preset") == 0 && strcmp(name, "description") == 0)
-        config_escape(value, strlen(value), strlen(value), e->description,
-                      sizeof e->description);
+        config_escape(value, strlen(value), strlen(value), ab->text, ab->len);
     return 1;
 }
 
-static int compare_entries(const void *a, const void *b)
+static void preset_about(const char *text, char *about, size_t len)
 {
-    return strcmp(((const struct preset_entry *)a)->name,
-                  ((const struct preset_entry *)b)->name);
+    ini_parse_string(text, describe, &(struct about){about, len});
 }
 
-int preset_scan(const char *exe_dir, struct preset_entry **out)
+int preset_scan(const char *exe_dir, struct search_entry **out)
 {
-    char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
-    int count = search_dirs(SEARCH_PRESETS, exe_dir, dirs), have = 0, cap = 0;
-    struct preset_entry *all = NULL;
-
-    for (int d = 0; d < count; d++) {
-        DIR *dir = opendir(dirs[d]);
-        if (!dir)
-            continue;
-        struct dirent *ent;
-        while ((ent = readdir(dir))) {
-            size_t n = strlen(ent->d_name);
-            if (n <= 4 || n - 4 >= sizeof all->name || strcmp(ent->d_name + n - 4, ".ini"))
-                continue;
-            int dup = 0;
-            for (int i = 0; i < have && !dup; i++)
-                dup = strncmp(all[i].name, ent->d_name, n - 4) == 0 && !all[i].name[n - 4];
-            if (dup)
-                continue;
-            if (have == cap) {
-                cap = cap ? 2 * cap : 16;
-                struct preset_entry *more = realloc(all, (size_t)cap * sizeof *all);
-                if (!more)
-                    break;
-                all = more;
-            }
-            struct preset_entry *e = &all[have];
-            int w = snprintf(e->path, sizeof e->path, "%s/%s", dirs[d], ent->d_name);
-            if (w < 0 || (size_t)w >= sizeof e->path)
-                continue;
-            /* Only what preset_load would read: a FIFO, a device or a huge file is not
-             * a preset, and reading it could hang the listing. */
-            char *text, why[64];
-            size_t size;
-            if (slurp(e->path, &text, &size, why, sizeof why) != PRESET_OK)
-                continue;
-            memcpy(e->name, ent->d_name, n - 4);
-            e->name[n - 4] = '\0';
-            e->description[0] = '\0';
-            ini_parse_string(text, describe, e);
-            free(text);
-            have++;
-        }
-        closedir(dir);
-    }
-    if (have)
-        qsort(all, (size_t)have, sizeof *all, compare_entries);
-    *out = all;
-    return have;
+    return search_scan(SEARCH_PRESETS, exe_dir, PRESET_MAX_BYTES, preset_about, out);
 }
 
 int preset_list(FILE *out, const char *exe_dir)
 {
-    struct preset_entry *all;
-    int have = preset_scan(exe_dir, &all), width = 0;
-    for (int i = 0; i < have; i++)
-        if ((int)strlen(all[i].name) > width)
-            width = (int)strlen(all[i].name);
-    for (int i = 0; i < have; i++) {
-        /* Escaped whole: a control byte in a file's name or a description (a newline
-         * too) cannot reach the terminal nor split the line. */
-        char line[1024], safe[4 * 1024 + 8];
-        snprintf(line, sizeof line, "%-*s  %s", width, all[i].name,
-                 all[i].description[0] ? all[i].description : "(no description)");
-        config_escape(line, strlen(line), 1024, safe, sizeof safe);
-        fprintf(out, "%s\n", safe);
-    }
+    struct search_entry *all;
+    int have = preset_scan(exe_dir, &all);
+    search_list(out, all, have, "(no description)");
     free(all);
     return have;
 }

@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "config.h"
+#include "search.h"
 
 #define PRESET_MAX_BYTES (256 * 1024) /* larger files are refused */
 #define PRESET_MAX_LINE 198           /* longest line libinih reads whole */
@@ -39,17 +40,11 @@ enum preset_status preset_find(const char *name, const char *exe_dir, char *out,
  * $HOME/.config/springsim/presets; 0, or -1 when neither variable is set. */
 int preset_user_dir(char *out, size_t len);
 
-/* A preset found on the search path. */
-struct preset_entry {
-    char name[256];        /* the word --preset takes: the file name without .ini */
-    char path[4400];       /* its file */
-    char description[256]; /* [preset] description, or "" */
-};
-
-/* Every preset on the search path (regular files of at most PRESET_MAX_BYTES: a FIFO,
- * a device or a huge file is skipped, never read), sorted by name, each name once (the first found
- * shadows later ones), into a malloc'ed array *out (free it); returns the count. */
-int preset_scan(const char *exe_dir, struct preset_entry **out);
+/* Every preset on the search path (search_scan: regular files of at most
+ * PRESET_MAX_BYTES, sorted by name, each name once, the first found shadowing later
+ * ones), each one's about its [preset] description, escaped; *out is malloc'ed (free
+ * it); returns the count. */
+int preset_scan(const char *exe_dir, struct search_entry **out);
 
 /* One line per preset found on the search path, as preset_scan orders them:
  * "NAME  DESCRIPTION", control bytes (a newline in a file's name too) escaped as every

@@ -1,6 +1,7 @@
 /* search.c: the search path of presets and lessons, and reading one of their files. */
 #include "search.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -8,6 +9,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "config.h"
 
 #ifndef PRESETDIR
 #define PRESETDIR "/usr/local/share/springsim/presets"
@@ -111,4 +114,89 @@ int search_read(const char *path, size_t max, const char *what, char **text, siz
     *text = buf;
     *size = n;
     return 0;
+}
+
+static const char *const exts[] = {[SEARCH_PRESETS] = ".ini", [SEARCH_LESSONS] = ".lesson"};
+static const char *const whats[] = {[SEARCH_PRESETS] = "a preset", [SEARCH_LESSONS] = "a lesson"};
+
+static int compare_entries(const void *a, const void *b)
+{
+    return strcmp(((const struct search_entry *)a)->name, ((const struct search_entry *)b)->name);
+}
+
+/* Whether a file of this name is in all[0..have) already (an earlier directory's). */
+static int known(const struct search_entry *all, int have, const char *name, size_t n)
+{
+    for (int i = 0; i < have; i++)
+        if (strncmp(all[i].name, name, n) == 0 && !all[i].name[n])
+            return 1;
+    return 0;
+}
+
+/* Adds dir's files of the kind to *all; the new count. */
+static int scan_dir(enum search_kind kind, const char *dir_name, size_t max,
+                    search_about_fn *about, struct search_entry **all, int have, int *cap)
+{
+    DIR *dir = opendir(dir_name);
+    if (!dir)
+        return have;
+    size_t e = strlen(exts[kind]);
+    struct dirent *ent;
+    while ((ent = readdir(dir))) {
+        size_t n = strlen(ent->d_name);
+        if (n <= e || n - e >= sizeof (*all)->name || strcmp(ent->d_name + n - e, exts[kind]) ||
+            known(*all, have, ent->d_name, n - e))
+            continue;
+        if (have == *cap) {
+            int more_cap = *cap ? 2 * *cap : 16;
+            struct search_entry *more = realloc(*all, (size_t)more_cap * sizeof *more);
+            if (!more)
+                break;
+            *all = more, *cap = more_cap;
+        }
+        struct search_entry *en = &(*all)[have];
+        int w = snprintf(en->path, sizeof en->path, "%s/%s", dir_name, ent->d_name);
+        char *text, why[64];
+        size_t size;
+        if (w < 0 || (size_t)w >= sizeof en->path ||
+            search_read(en->path, max, whats[kind], &text, &size, why, sizeof why) != 0)
+            continue;
+        memcpy(en->name, ent->d_name, n - e);
+        en->name[n - e] = '\0';
+        en->about[0] = '\0';
+        about(text, en->about, sizeof en->about);
+        free(text);
+        have++;
+    }
+    closedir(dir);
+    return have;
+}
+
+int search_scan(enum search_kind kind, const char *exe_dir, size_t max, search_about_fn *about,
+                struct search_entry **out)
+{
+    char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
+    int count = search_dirs(kind, exe_dir, dirs), have = 0, cap = 0;
+    struct search_entry *all = NULL;
+    for (int d = 0; d < count; d++)
+        have = scan_dir(kind, dirs[d], max, about, &all, have, &cap);
+    if (have)
+        qsort(all, (size_t)have, sizeof *all, compare_entries);
+    *out = all;
+    return have;
+}
+
+void search_list(FILE *out, const struct search_entry *all, int count, const char *none)
+{
+    int width = 0;
+    for (int i = 0; i < count; i++)
+        if ((int)strlen(all[i].name) > width)
+            width = (int)strlen(all[i].name);
+    for (int i = 0; i < count; i++) {
+        char line[1024], safe[4 * 1024 + 8];
+        snprintf(line, sizeof line, "%-*s  %s", width, all[i].name,
+                 all[i].about[0] ? all[i].about : none);
+        config_escape(line, strlen(line), 1024, safe, sizeof safe);
+        fprintf(out, "%s\n", safe);
+    }
 }

@@ -5,6 +5,7 @@
 #define SPRINGSIM_SEARCH_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #define SEARCH_DIRS 4     /* directories on a search path, at most */
 #define SEARCH_DIR_MAX 4096 /* bytes of one directory's name */
@@ -28,5 +29,27 @@ const char *search_installed_dir(enum search_kind kind);
  * names the kind of file in messages ("a preset"). */
 int search_read(const char *path, size_t max, const char *what, char **text, size_t *size,
                 char *err, size_t errlen);
+
+/* One data file found on the search path: a preset or a lesson. */
+struct search_entry {
+    char name[256];  /* the word that names it: the file name without .ini or .lesson */
+    char path[4400]; /* its file */
+    char about[256]; /* what its about function found in it (a preset's description, a
+                      * lesson's title), control bytes made harmless, or "" */
+};
+
+/* Finds in a file's text (NUL-terminated) what a list says about it, into about. */
+typedef void search_about_fn(const char *text, char *about, size_t len);
+
+/* Every file of the kind on the search path (regular files of at most max bytes: a FIFO,
+ * a device or a huge file is not one, and reading it could hang the listing), the first
+ * of each name only, sorted by name, into a malloc'ed *out (free it); how many. */
+int search_scan(enum search_kind kind, const char *exe_dir, size_t max, search_about_fn *about,
+                struct search_entry **out);
+
+/* "NAME  ABOUT" a line each (none where about is ""), names in one column, each line
+ * escaped whole: a control byte in a file's name or its about cannot reach the terminal
+ * nor split the line. */
+void search_list(FILE *out, const struct search_entry *all, int count, const char *none);
 
 #endif

@@ -5,7 +5,6 @@
 #include "lesson.h"
 
 #include <ctype.h>
-#include <dirent.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -430,12 +429,6 @@ int lesson_find(const char *name, const char *exe_dir, char *out, size_t len)
     return -1;
 }
 
-static int compare_entries(const void *a, const void *b)
-{
-    return strcmp(((const struct lesson_entry *)a)->name, ((const struct lesson_entry *)b)->name);
-}
-
-/* The title line of a lesson's text, into title ("" if none). */
 static void find_title(const char *text, char *title, size_t len)
 {
     title[0] = '\0';
@@ -457,51 +450,7 @@ static void find_title(const char *text, char *title, size_t len)
     }
 }
 
-int lesson_scan(const char *exe_dir, struct lesson_entry **out)
+int lesson_scan(const char *exe_dir, struct search_entry **out)
 {
-    char dirs[SEARCH_DIRS][SEARCH_DIR_MAX];
-    int count = search_dirs(SEARCH_LESSONS, exe_dir, dirs), have = 0, cap = 0;
-    struct lesson_entry *all = NULL;
-    size_t e = strlen(LESSON_EXT);
-    for (int d = 0; d < count; d++) {
-        DIR *dir = opendir(dirs[d]);
-        if (!dir)
-            continue;
-        struct dirent *ent;
-        while ((ent = readdir(dir))) {
-            size_t n = strlen(ent->d_name);
-            if (n <= e || n - e >= sizeof all->name || strcmp(ent->d_name + n - e, LESSON_EXT))
-                continue;
-            int dup = 0;
-            for (int i = 0; i < have && !dup; i++)
-                dup = strncmp(all[i].name, ent->d_name, n - e) == 0 && !all[i].name[n - e];
-            if (dup)
-                continue;
-            if (have == cap) {
-                cap = cap ? 2 * cap : 16;
-                struct lesson_entry *more = realloc(all, (size_t)cap * sizeof *all);
-                if (!more)
-                    break;
-                all = more;
-            }
-            struct lesson_entry *le = &all[have];
-            int w = snprintf(le->path, sizeof le->path, "%s/%s", dirs[d], ent->d_name);
-            char *text, why[64];
-            size_t size;
-            if (w < 0 || (size_t)w >= sizeof le->path ||
-                search_read(le->path, LESSON_MAX_BYTES, "a lesson", &text, &size, why,
-                            sizeof why) != 0)
-                continue;
-            memcpy(le->name, ent->d_name, n - e);
-            le->name[n - e] = '\0';
-            find_title(text, le->title, sizeof le->title);
-            free(text);
-            have++;
-        }
-        closedir(dir);
-    }
-    if (have)
-        qsort(all, (size_t)have, sizeof *all, compare_entries);
-    *out = all;
-    return have;
+    return search_scan(SEARCH_LESSONS, exe_dir, LESSON_MAX_BYTES, find_title, out);
 }

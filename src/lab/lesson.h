@@ -12,6 +12,7 @@
 #include <stddef.h>
 
 #include "../core/config.h"
+#include "../core/search.h"
 
 #define LESSON_EXT ".lesson"          /* a lesson file's name ends so */
 #define LESSON_MAX_BYTES (256 * 1024) /* larger files are refused */
@@ -57,13 +58,6 @@ struct lesson {
     double seconds;            /* simulated seconds of all its runs */
 };
 
-/* A lesson found on the search path. */
-struct lesson_entry {
-    char name[256];  /* the file name without .lesson */
-    char path[4400]; /* its file */
-    char title[200]; /* its title, or "" */
-};
-
 /* Reads and checks the lesson at path (its lines' form, every command's name): 0, 1 when
  * it cannot be read ("PATH: reason" in err), 2 when it is not a valid lesson
  * ("PATH:LINE: what is wrong"). l is then empty (lesson_free is still safe). */
@@ -77,9 +71,10 @@ void lesson_free(struct lesson *l);
  * a message in out. */
 int lesson_find(const char *name, const char *exe_dir, char *out, size_t len);
 
-/* Every lesson on the search path, sorted by name, each name once (the first found
- * shadows later ones), into a malloc'ed *out (free it); returns the count. */
-int lesson_scan(const char *exe_dir, struct lesson_entry **out);
+/* Every lesson on the search path (search_scan: sorted by name, each name once, the first
+ * found shadowing later ones), each one's about its title with control bytes made
+ * spaces; *out is malloc'ed (free it); returns the count. */
+int lesson_scan(const char *exe_dir, struct search_entry **out);
 
 /* A way to leave a long computation: fn(ctx) is asked every LESSON_POLL wall seconds
  * and true stops it (a key, a signal). A NULL one never stops. */

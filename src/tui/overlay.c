@@ -211,7 +211,7 @@ static void draw_menu(const struct overlay *o, struct rect r, int n, int sel, in
 static void preset_row(const struct overlay *o, int i, const char **name, const char **text)
 {
     *name = o->presets[i].name;
-    *text = o->presets[i].description;
+    *text = o->presets[i].about;
 }
 
 /* A lesson's name and title as shown: escaped (a U+202E in a file would turn the line
@@ -220,7 +220,7 @@ static void lesson_row(const struct overlay *o, int i, const char **name, const 
 {
     static char safe_name[4 * 256 + 8], safe_title[4 * 200 + 8];
     caption_text(o->lessons[i].name, term_utf8(), safe_name, sizeof safe_name);
-    caption_text(o->lessons[i].title, term_utf8(), safe_title, sizeof safe_title);
+    caption_text(o->lessons[i].about, term_utf8(), safe_title, sizeof safe_title);
     *name = safe_name;
     *text = safe_title;
 }
@@ -230,7 +230,7 @@ static void draw_presets(const struct overlay *o, const struct layout *l)
     int n = o->npresets, longest = 0;
     /* As wide as the longest description needs, where the screen has room. */
     for (int i = 0; i < n; i++) {
-        int d = draw_width(o->presets[i].description);
+        int d = draw_width(o->presets[i].about);
         longest = d > longest ? d : longest;
     }
     int w = 2 + 15 + 1 + longest + 2;
@@ -456,7 +456,7 @@ static unsigned preset_key(struct overlay *o, struct app *app, enum action a)
         o->kind = OVERLAY_NONE;
         if (o->npresets) {
             unsigned changed;
-            const struct preset_entry *e = &o->presets[o->preset_sel];
+            const struct search_entry *e = &o->presets[o->preset_sel];
             verb_do(app, ACT_PRESET, &(struct verb_arg){.text = e->path, .name = e->name},
                     &changed);
             return changed;

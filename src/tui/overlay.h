@@ -28,9 +28,9 @@ enum edit_target { EDIT_CONTROL, EDIT_MASS, EDIT_DAMPING, EDIT_SPRING, EDIT_CUBI
 struct overlay {
     enum overlay_kind kind;
     int help_top;                  /* first help line shown */
-    struct preset_entry *presets;  /* the menu's entries */
+    struct search_entry *presets;  /* the menu's entries */
     int npresets, preset_sel;
-    struct lesson_entry *lessons;  /* the lesson menu's entries */
+    struct search_entry *lessons;  /* the lesson menu's entries */
     int nlessons, lesson_sel;
     char chosen[4400];             /* the lesson chosen (Enter), for the caller to open; "" */
     enum edit_target target;
