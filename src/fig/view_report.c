@@ -232,6 +232,16 @@ int fig_view_report(FILE *fp, enum fig_format f, const struct fig_chart *charts,
         used += ns;
         at += (size_t)c[i]->strokes->n;
     }
+    /* The time plots on one span: each chart's axis reaches as far as its width on the
+     * screen lets it, a little more or less than its neighbours'; on the page they show
+     * the span all of them hold, one above the other. */
+    double tlo = -INFINITY, thi = INFINITY;
+    for (int i = 0; i < np; i++)
+        if (c[i]->report->time)
+            tlo = fmax(tlo, p[i].xlo), thi = fmin(thi, p[i].xhi);
+    for (int i = 0; i < np && tlo < thi; i++)
+        if (c[i]->report->time)
+            p[i].xlo = tlo, p[i].xhi = thi;
     char title[200];
     page_title(c, np, title, sizeof title);
     double w = look->w_mm > 0.0 ? look->w_mm : 160.0;
