@@ -441,61 +441,37 @@ static unsigned edit_key(struct overlay *o, struct app *app, const struct select
     return 0;
 }
 
+/* A menu's keys: up and down move the choice *sel among n, Enter picks it, Esc, q and
+ * the key that opened the menu close it. True when Enter picked a choice (the menu is
+ * closed then too). */
+static bool menu_key(struct overlay *o, int *sel, int n, enum action a, enum action opener)
+{
+    if (a == ACT_UP || a == ACT_DOWN) {
+        *sel += a == ACT_UP ? -1 : 1;
+        *sel = *sel > n - 1 ? n - 1 : *sel;
+        *sel = *sel < 0 ? 0 : *sel;
+        return false;
+    }
+    if (a == ACT_ENTER || a == ACT_ESCAPE || a == ACT_QUIT || a == opener)
+        o->kind = OVERLAY_NONE;
+    return a == ACT_ENTER && n > 0;
+}
+
 static unsigned preset_key(struct overlay *o, struct app *app, enum action a)
 {
-    switch (a) {
-    case ACT_UP:
-        if (o->preset_sel > 0)
-            o->preset_sel--;
-        return 0;
-    case ACT_DOWN:
-        if (o->preset_sel < o->npresets - 1)
-            o->preset_sel++;
-        return 0;
-    case ACT_ENTER:
-        o->kind = OVERLAY_NONE;
-        if (o->npresets) {
-            unsigned changed;
-            const struct search_entry *e = &o->presets[o->preset_sel];
-            verb_do(app, ACT_PRESET, &(struct verb_arg){.text = e->path, .name = e->name},
-                    &changed);
-            return changed;
-        }
-        return 0;
-    case ACT_ESCAPE:
-    case ACT_PRESETS:
-    case ACT_QUIT:
-        o->kind = OVERLAY_NONE;
-        return 0;
-    default:
-        return 0;
+    unsigned changed = 0;
+    if (menu_key(o, &o->preset_sel, o->npresets, a, ACT_PRESETS)) {
+        const struct search_entry *e = &o->presets[o->preset_sel];
+        verb_do(app, ACT_PRESET, &(struct verb_arg){.text = e->path, .name = e->name},
+                &changed);
     }
+    return changed;
 }
 
 static void lesson_key(struct overlay *o, enum action a)
 {
-    switch (a) {
-    case ACT_UP:
-        if (o->lesson_sel > 0)
-            o->lesson_sel--;
-        return;
-    case ACT_DOWN:
-        if (o->lesson_sel < o->nlessons - 1)
-            o->lesson_sel++;
-        return;
-    case ACT_ENTER:
-        o->kind = OVERLAY_NONE;
-        if (o->nlessons)
-            snprintf(o->chosen, sizeof o->chosen, "%s", o->lessons[o->lesson_sel].path);
-        return;
-    case ACT_ESCAPE:
-    case ACT_LESSONS:
-    case ACT_QUIT:
-        o->kind = OVERLAY_NONE;
-        return;
-    default:
-        return;
-    }
+    if (menu_key(o, &o->lesson_sel, o->nlessons, a, ACT_LESSONS))
+        snprintf(o->chosen, sizeof o->chosen, "%s", o->lessons[o->lesson_sel].path);
 }
 
 /* Scrolls the help; the screen's size bounds it when drawn. */
