@@ -3,7 +3,8 @@
 # plain mode, each one's claim measured on the run's own lines against physics worked out
 # here (resonance at sqrt(2k/m)/2pi, the beat envelope, the logarithmic decrement, the
 # modal energy, the square wave's 3rd harmonic, the integrators against the exact
-# solution and rk4's stability limit); the lesson's words (pause, ask, previous, leave);
+# solution and rk4's stability limit, the absorber's swings against the complex solve,
+# base excitation's transmissibility); the lesson's words (pause, ask, previous, leave);
 # --list-lessons; bad lesson files refused with FILE:LINE before anything runs.
 # Run from the repository root as `sh tests/lessons.sh`, SPRINGSIM naming the binary.
 # Ends with "lessons: N passed, M failed".
@@ -246,6 +247,52 @@ if awk -v modes="$modes" -v grow="$(cat "$tmp/abs.grow")" -v said="$said" '
         exit !ok
     }' "$tmp/abs" >"$tmp/abs.why"; then pass; else
     fail "absorber: the swings against the complex solve, the modes, the growth, the numbers said: $(cat "$tmp/abs.why")"
+fi
+
+# ---- transmissibility: base excitation, T = 1 at sqrt(2) f_n for every damper ----
+# Each swing ratio measure gives (the fundamental of x1 over the motor's) against the
+# closed form T = sqrt((1 + (2 z r)^2) / ((1 - r^2)^2 + (2 z r)^2)), r = f / f_n,
+# f_n = sqrt(k/m) / 2pi (k = 10, m = 1: the motor's spring, none to the wall) and
+# z = c / (2 sqrt(k m)), c the damper beside the motor's spring as the lesson sets it;
+# and each number the lesson says against T and f_n.
+play transmissibility --plain-every 1000
+c0=$(sed -n 's/^spring_damping = 0, *\([0-9.]*\)$/\1/p' "$root/lessons/transmissibility.lesson")
+said=$(grep '^say' "$out" | tr '\n' ' ')
+if awk -v c="$c0" -v said="$said" '
+    function T(r, z) { return sqrt((1 + (2 * z * r) ^ 2) / ((1 - r * r) ^ 2 + (2 * z * r) ^ 2)) }
+    function quotes(fmt, v) { return index(said, sprintf(fmt, v)) > 0 }
+    BEGIN { pi = atan2(0, -1); k = 10; m = 1; fn = sqrt(k / m) / (2 * pi) }
+    /^ok spring 2 \(1-motor\): c = / { c = $7 + 0 }
+    /^ok measure: mass 1/ && /driven steady state/ {
+        for (i = 1; i <= NF; i++) {
+            if ($i == "ratio" && !got) { got = $(i + 1) + 0 }
+            if ($i == "at" && $(i - 1) == "(theory") f = $(i + 1) + 0
+        }
+        n++; r[n] = f / fn; z[n] = c / (2 * sqrt(k * m)); ratio[n] = got; got = 0
+    }
+    END {
+        ok = n == 6
+        for (i = 1; i <= n; i++) {
+            want[i] = T(r[i], z[i])
+            ok = ok && (ratio[i] - want[i]) ^ 2 < (0.01 * want[i]) ^ 2
+        }
+        # the drives: f_n, sqrt(2) f_n, 2 f_n; the dampers: 0.05 and 0.5 at each
+        for (i = 1; i <= 6; i += 2)
+            ok = ok && (r[i] - r[i + 1]) ^ 2 < 1e-12 && (z[i] - 0.05) ^ 2 < 1e-10 &&
+                 (z[i + 1] - 0.5) ^ 2 < 1e-10
+        ok = ok && (r[1] - 1) ^ 2 < 1e-10 && (r[3] - sqrt(2)) ^ 2 < 1e-10 &&
+             (r[5] - 2) ^ 2 < 1e-10
+        # T = 1 at sqrt(2) f_n for both; above it the heavier damper passes on more
+        ok = ok && (ratio[3] - 1) ^ 2 < 0.01 ^ 2 && (ratio[4] - 1) ^ 2 < 0.01 ^ 2 &&
+             ratio[6] > 1.5 * ratio[5]
+        ok = ok && quotes("%.3f Hz", fn) && quotes("%.3f Hz", sqrt(2) * fn) &&
+             quotes("%.3f Hz", 2 * fn) && quotes("%.2f times", want[1]) &&
+             quotes("%.3f times", want[2]) && quotes("%.3f times", want[3]) &&
+             quotes("passes on %.3f", want[5]) && quotes("the heavy one %.3f.", want[6])
+        if (!ok) for (i = 1; i <= n; i++) printf " r %.4f z %.3f: %.5f (T %.5f)", r[i], z[i], ratio[i], want[i]
+        exit !ok
+    }' "$out" >"$tmp/trans.why"; then pass; else
+    fail "transmissibility: the measured ratios against T(r, zeta) within 1 %, 1 at sqrt(2) f_n, the numbers said: $(cat "$tmp/trans.why")"
 fi
 
 # ---- the words: previous rebuilds the step before, leave keeps the chain as it is ----
