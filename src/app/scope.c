@@ -237,6 +237,7 @@ void scope_motion(const struct app *app, const struct scope_view *v, int i,
     bool motor = model->boundary == BOUNDARY_MOTOR && model->motor.amplitude != 0.0;
     out->driven = model_driven(model);
     out->by_force = out->driven && !motor;
+    out->linearised = model->cubic;
     if (out->driven) {
         out->hz = model->motor.frequency;
         const double *t = v->rec + TRAIL_T, *x = v->rec + TRAIL_X(tr, i);

@@ -73,6 +73,7 @@ struct scope_motion {
     struct measure_drive d;  /* against the drive: the motor's, else the force (driven) */
     bool driven;             /* the motor (a motor end, amplitude != 0) or a force drives */
     bool by_force;           /* driven by the force alone: d, ratio and phase are to it */
+    bool linearised;         /* the theory is the chain's linearised at rest (cubic springs) */
     double hz;               /* the drive's frequency (Hz; driven only) */
     enum motion kind;        /* measure_motion's */
     int mode;                /* the mode nearest to the measured frequency (0-based), or -1 */

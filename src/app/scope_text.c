@@ -98,10 +98,10 @@ static void say_kind(const struct scope_motion *sm, char *buf, size_t len)
         }
         snprintf(buf, len, "; driven steady state (swings level within %d %% over %d drive "
                  "periods): amplitude %.6g m, phase %.4g deg to the %s, ratio %.6g%s to the "
-                 "%s's (theory at %.6g Hz: amplitude %.6g m, phase %.4g deg, ratio %.6g%s)",
+                 "%s's (%stheory at %.6g Hz: amplitude %.6g m, phase %.4g deg, ratio %.6g%s)",
                  pct, d->periods, d->amplitude, d->phase, sm->by_force ? "force" : "motor",
                  d->ratio, sm->by_force ? " m/N" : "", sm->by_force ? "force" : "motor",
-                 sm->hz, sm->theory_ratio * d->drive, sm->theory_phase, sm->theory_ratio,
+                 sm->linearised ? "linearised " : "", sm->hz, sm->theory_ratio * d->drive, sm->theory_phase, sm->theory_ratio,
                  sm->by_force ? " m/N" : "");
         return;
     case MOTION_TRANSIENT:

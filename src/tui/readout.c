@@ -51,7 +51,7 @@ static int steady_lines(const struct scope_motion *sm, char lines[][LINE])
     const struct measure_drive *d = &sm->d;
     char a[32], b[32];
     int n = 0;
-    snprintf(lines[n++], LINE, "%-8s%10s%10s", "", "measured", "theory");
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", "", "measured", sm->linearised ? "linear" : "theory");
     scope_number(a, sizeof a, d->amplitude, 9);
     scope_number(b, sizeof b, sm->theory_ratio * d->drive, 9);
     snprintf(lines[n++], LINE, "%-8s%10s%10s", "amp m", a, b);
