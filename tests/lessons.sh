@@ -295,6 +295,72 @@ if awk -v c="$c0" -v said="$said" '
     fail "transmissibility: the measured ratios against T(r, zeta) within 1 %, 1 at sqrt(2) f_n, the numbers said: $(cat "$tmp/trans.why")"
 fi
 
+# ---- jump: the duffing chain swept up and down by the lesson, against one harmonic ----
+# The amplitude equation a^2 [(k - m W^2 + 3 k3 a^2 / 4)^2 + (c W)^2] = F^2 of the preset
+# (k = 10 + 10, k3 = 4, m = 1, c = 0.3, F = 10 x 0.25 m), a cubic in A = a^2 solved here in
+# closed form; its folds where the cubic's discriminant changes sign (bisection). Every
+# swing measure gives (the fundamental of x1) within 1 % of a stable root: the high one on
+# the way up until the upper fold, the low one after it; the low one down until the lower
+# fold, the high one after; at 0.81 Hz from rest the low one, from -1 m the high one. And
+# every swing and fold the lesson says is a root or fold to its three decimals.
+play jump --plain-every 1000
+said=$(grep '^say' "$out" | tr '\n' ' ')
+if awk -v said="$said" '
+    function coef(f,   W, s) { W = 2 * pi * f; s = 20 - W * W; g = 0.75 * 4
+        a3 = g * g; a2 = 2 * s * g; a1 = s * s + (0.3 * W) ^ 2; a0 = -2.5 ^ 2 }
+    function disc(f) { coef(f)
+        d = 18 * a3 * a2 * a1 * a0 - 4 * a2 ^ 3 * a0 + a2 ^ 2 * a1 ^ 2
+        return d - 4 * a3 * a1 ^ 3 - 27 * a3 ^ 2 * a0 ^ 2 }
+    # the swings a = sqrt(A) of the real positive roots, ascending, into r; how many
+    function roots(f, r,   p, q, b, D, t, u, k, n, x) { coef(f); b = a2 / a3
+        p = (3 * a3 * a1 - a2 * a2) / (3 * a3 * a3)
+        q = (2 * a2 ^ 3 - 9 * a3 * a2 * a1 + 27 * a3 * a3 * a0) / (27 * a3 ^ 3)
+        D = (q / 2) ^ 2 + (p / 3) ^ 3; n = 0
+        if (D > 0) { u = -q / 2 + sqrt(D); t = -q / 2 - sqrt(D)
+            x = (u < 0 ? -(-u) ^ (1 / 3) : u ^ (1 / 3)) + (t < 0 ? -(-t) ^ (1 / 3) : t ^ (1 / 3)) - b / 3
+            if (x > 0) r[++n] = sqrt(x)
+        } else for (k = 2; k >= 0; k--) {
+            x = 2 * sqrt(-p / 3) * cos((atan2(sqrt(-D), -q / 2)) / 3 - 2 * pi * k / 3) - b / 3
+            if (x > 0) r[++n] = sqrt(x) }
+        return n }
+    function fold(lo, hi,   k, mid) { for (k = 0; k < 60; k++) { mid = (lo + hi) / 2
+            if ((disc(lo) > 0) == (disc(mid) > 0)) lo = mid; else hi = mid }
+        return (lo + hi) / 2 }
+    function near(got, want) { return (got - want) ^ 2 <= (0.01 * want) ^ 2 }
+    function quotes(fmt, v) { return index(said, sprintf(fmt, v)) > 0 }
+    BEGIN { pi = atan2(0, -1) }
+    /^ok measure: mass 1/ { steady += /driven steady state/
+        for (i = 3; i <= NF; i++)
+            if ($i == "amplitude" && !a) a = $(i + 1) + 0
+            else if ($i == "at" && $(i - 2) == "(linearised") f = $(i + 1) + 0
+        n++; fq[n] = f; amp[n] = a; a = 0 }
+    END {
+        low = fold(0.75, 0.81); up = fold(0.81, 0.9)
+        ok = n == 13 && steady == 13 && low < 0.81 && up > 0.81 && up - low > 0.05 * low
+        # up 1-6, down 7-11, the two starts at 0.81 Hz 12-13
+        for (i = 1; i <= n; i++) { k = roots(fq[i], r)
+            down = i >= 7 && i <= 11
+            if (i == 12) want = r[1]; else if (i == 13) want = r[k]
+            else if (!down) want = fq[i] < up ? r[k] : r[1]
+            else want = fq[i] > low ? r[1] : r[k]
+            th[i] = want; ok = ok && near(amp[i], want)
+            if (i <= 11) ok = ok && (down ? fq[i] < fq[i - 1] || i == 7 : i == 1 || fq[i] > fq[i - 1]) }
+        # the jumps happen between the measured frequencies either side of each fold
+        ok = ok && fq[4] < up && fq[5] > up && fq[9] > low && fq[10] < low
+        ok = ok && quotes("above %.3f Hz", up) &&
+             quotes("lower fold, %.3f Hz", low) && quotes("upper fold, %.3f Hz", up)
+        ok = ok && quotes("%.3f m at 0.70 Hz", th[1]) && quotes("%.3f m at 0.80 Hz", th[2]) &&
+             quotes("%.3f m at 0.83 Hz", th[4]) && quotes("from %.3f m", th[4]) &&
+             quotes("to %.3f m", th[5]) && quotes("%.3f m at 0.82 Hz", th[8]) &&
+             quotes("%.3f m at 0.80 Hz", th[9]) && quotes("%.3f m at 0.79 Hz", th[10]) &&
+             quotes("From rest %.3f m", th[12]) && quotes("from -1 m %.3f m", th[13])
+        if (!ok) { printf "folds %.5f %.5f;", low, up
+            for (i = 1; i <= n; i++) printf " %.2f: %.4f (%.4f)", fq[i], amp[i], th[i] }
+        exit !ok
+    }' "$out" >"$tmp/jump.why" 2>&1; then pass; else
+    fail "jump: every swing within 1 % of the amplitude equation's stable root on its branch, jumps at the folds, the numbers said: $(cat "$tmp/jump.why")"
+fi
+
 # ---- the words: previous rebuilds the step before, leave keeps the chain as it is ----
 printf '2\n\nprevious\n\nleave\nstatus\n' >"$tmp/in"
 timeout 60 "$SPRINGSIM" --plain --lesson resonance --plain-every 1000 <"$tmp/in" >"$out" 2>"$err"
