@@ -269,6 +269,7 @@ valgrind: $(BIN) $(TEST_BIN)
 check-long: $(BIN) | $(BUILD)/.deps-test
 	@SPRINGSIM=./$(BIN) sh tests/long/soak.sh
 	@SPRINGSIM=./$(BIN) sh tests/long/storm.sh
+	@SPRINGSIM=./$(BIN) sh tests/long/modes.sh
 
 # Speed and cost, side by side in one run: the core against GSL's rk4, cost per mass, CSV
 # rate, and the interactive program in a pseudo-terminal.

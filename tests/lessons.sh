@@ -3,7 +3,8 @@
 # plain mode, each one's claim measured on the run's own lines against physics worked out
 # here (resonance at sqrt(2k/m)/2pi, the beat envelope, the logarithmic decrement, the
 # modal energy, the square wave's 3rd harmonic, the integrators against the exact
-# solution and rk4's stability limit); the lesson's words (pause, ask, previous, leave);
+# solution and rk4's stability limit, the absorber's swings against the complex solve,
+# base excitation's transmissibility); the lesson's words (pause, ask, previous, leave);
 # --list-lessons; bad lesson files refused with FILE:LINE before anything runs.
 # Run from the repository root as `sh tests/lessons.sh`, SPRINGSIM naming the binary.
 # Ends with "lessons: N passed, M failed".
@@ -246,6 +247,118 @@ if awk -v modes="$modes" -v grow="$(cat "$tmp/abs.grow")" -v said="$said" '
         exit !ok
     }' "$tmp/abs" >"$tmp/abs.why"; then pass; else
     fail "absorber: the swings against the complex solve, the modes, the growth, the numbers said: $(cat "$tmp/abs.why")"
+fi
+
+# ---- transmissibility: base excitation, T = 1 at sqrt(2) f_n for every damper ----
+# Each swing ratio measure gives (the fundamental of x1 over the motor's) against the
+# closed form T = sqrt((1 + (2 z r)^2) / ((1 - r^2)^2 + (2 z r)^2)), r = f / f_n,
+# f_n = sqrt(k/m) / 2pi (k = 10, m = 1: the motor's spring, none to the wall) and
+# z = c / (2 sqrt(k m)), c the damper beside the motor's spring as the lesson sets it;
+# and each number the lesson says against T and f_n.
+play transmissibility --plain-every 1000
+c0=$(sed -n 's/^spring_damping = 0, *\([0-9.]*\)$/\1/p' "$root/lessons/transmissibility.lesson")
+said=$(grep '^say' "$out" | tr '\n' ' ')
+if awk -v c="$c0" -v said="$said" '
+    function T(r, z) { return sqrt((1 + (2 * z * r) ^ 2) / ((1 - r * r) ^ 2 + (2 * z * r) ^ 2)) }
+    function quotes(fmt, v) { return index(said, sprintf(fmt, v)) > 0 }
+    BEGIN { pi = atan2(0, -1); k = 10; m = 1; fn = sqrt(k / m) / (2 * pi) }
+    /^ok spring 2 \(1-motor\): c = / { c = $7 + 0 }
+    /^ok measure: mass 1/ && /driven steady state/ {
+        for (i = 1; i <= NF; i++) {
+            if ($i == "ratio" && !got) { got = $(i + 1) + 0 }
+            if ($i == "at" && $(i - 1) == "(theory") f = $(i + 1) + 0
+        }
+        n++; r[n] = f / fn; z[n] = c / (2 * sqrt(k * m)); ratio[n] = got; got = 0
+    }
+    END {
+        ok = n == 6
+        for (i = 1; i <= n; i++) {
+            want[i] = T(r[i], z[i])
+            ok = ok && (ratio[i] - want[i]) ^ 2 < (0.01 * want[i]) ^ 2
+        }
+        # the drives: f_n, sqrt(2) f_n, 2 f_n; the dampers: 0.05 and 0.5 at each
+        for (i = 1; i <= 6; i += 2)
+            ok = ok && (r[i] - r[i + 1]) ^ 2 < 1e-12 && (z[i] - 0.05) ^ 2 < 1e-10 &&
+                 (z[i + 1] - 0.5) ^ 2 < 1e-10
+        ok = ok && (r[1] - 1) ^ 2 < 1e-10 && (r[3] - sqrt(2)) ^ 2 < 1e-10 &&
+             (r[5] - 2) ^ 2 < 1e-10
+        # T = 1 at sqrt(2) f_n for both; above it the heavier damper passes on more
+        ok = ok && (ratio[3] - 1) ^ 2 < 0.01 ^ 2 && (ratio[4] - 1) ^ 2 < 0.01 ^ 2 &&
+             ratio[6] > 1.5 * ratio[5]
+        ok = ok && quotes("%.3f Hz", fn) && quotes("%.3f Hz", sqrt(2) * fn) &&
+             quotes("%.3f Hz", 2 * fn) && quotes("%.2f times", want[1]) &&
+             quotes("%.3f times", want[2]) && quotes("%.3f times", want[3]) &&
+             quotes("passes on %.3f", want[5]) && quotes("the heavy one %.3f.", want[6])
+        if (!ok) for (i = 1; i <= n; i++) printf " r %.4f z %.3f: %.5f (T %.5f)", r[i], z[i], ratio[i], want[i]
+        exit !ok
+    }' "$out" >"$tmp/trans.why"; then pass; else
+    fail "transmissibility: the measured ratios against T(r, zeta) within 1 %, 1 at sqrt(2) f_n, the numbers said: $(cat "$tmp/trans.why")"
+fi
+
+# ---- jump: the duffing chain swept up and down by the lesson, against one harmonic ----
+# The amplitude equation a^2 [(k - m W^2 + 3 k3 a^2 / 4)^2 + (c W)^2] = F^2 of the preset
+# (k = 10 + 10, k3 = 4, m = 1, c = 0.3, F = 10 x 0.25 m), a cubic in A = a^2 solved here in
+# closed form; its folds where the cubic's discriminant changes sign (bisection). Every
+# swing measure gives (the fundamental of x1) within 1 % of a stable root: the high one on
+# the way up until the upper fold, the low one after it; the low one down until the lower
+# fold, the high one after; at 0.81 Hz from rest the low one, from -1 m the high one. And
+# every swing and fold the lesson says is a root or fold to its three decimals.
+play jump --plain-every 1000
+said=$(grep '^say' "$out" | tr '\n' ' ')
+if awk -v said="$said" '
+    function coef(f,   W, s) { W = 2 * pi * f; s = 20 - W * W; g = 0.75 * 4
+        a3 = g * g; a2 = 2 * s * g; a1 = s * s + (0.3 * W) ^ 2; a0 = -2.5 ^ 2 }
+    function disc(f) { coef(f)
+        d = 18 * a3 * a2 * a1 * a0 - 4 * a2 ^ 3 * a0 + a2 ^ 2 * a1 ^ 2
+        return d - 4 * a3 * a1 ^ 3 - 27 * a3 ^ 2 * a0 ^ 2 }
+    # the swings a = sqrt(A) of the real positive roots, ascending, into r; how many
+    function roots(f, r,   p, q, b, D, t, u, k, n, x) { coef(f); b = a2 / a3
+        p = (3 * a3 * a1 - a2 * a2) / (3 * a3 * a3)
+        q = (2 * a2 ^ 3 - 9 * a3 * a2 * a1 + 27 * a3 * a3 * a0) / (27 * a3 ^ 3)
+        D = (q / 2) ^ 2 + (p / 3) ^ 3; n = 0
+        if (D > 0) { u = -q / 2 + sqrt(D); t = -q / 2 - sqrt(D)
+            x = (u < 0 ? -(-u) ^ (1 / 3) : u ^ (1 / 3)) + (t < 0 ? -(-t) ^ (1 / 3) : t ^ (1 / 3)) - b / 3
+            if (x > 0) r[++n] = sqrt(x)
+        } else for (k = 2; k >= 0; k--) {
+            x = 2 * sqrt(-p / 3) * cos((atan2(sqrt(-D), -q / 2)) / 3 - 2 * pi * k / 3) - b / 3
+            if (x > 0) r[++n] = sqrt(x) }
+        return n }
+    function fold(lo, hi,   k, mid) { for (k = 0; k < 60; k++) { mid = (lo + hi) / 2
+            if ((disc(lo) > 0) == (disc(mid) > 0)) lo = mid; else hi = mid }
+        return (lo + hi) / 2 }
+    function near(got, want) { return (got - want) ^ 2 <= (0.01 * want) ^ 2 }
+    function quotes(fmt, v) { return index(said, sprintf(fmt, v)) > 0 }
+    BEGIN { pi = atan2(0, -1) }
+    /^ok measure: mass 1/ { steady += /driven steady state/
+        for (i = 3; i <= NF; i++)
+            if ($i == "amplitude" && !a) a = $(i + 1) + 0
+            else if ($i == "at" && $(i - 2) == "(linearised") f = $(i + 1) + 0
+        n++; fq[n] = f; amp[n] = a; a = 0 }
+    END {
+        low = fold(0.75, 0.81); up = fold(0.81, 0.9)
+        ok = n == 13 && steady == 13 && low < 0.81 && up > 0.81 && up - low > 0.05 * low
+        # up 1-6, down 7-11, the two starts at 0.81 Hz 12-13
+        for (i = 1; i <= n; i++) { k = roots(fq[i], r)
+            down = i >= 7 && i <= 11
+            if (i == 12) want = r[1]; else if (i == 13) want = r[k]
+            else if (!down) want = fq[i] < up ? r[k] : r[1]
+            else want = fq[i] > low ? r[1] : r[k]
+            th[i] = want; ok = ok && near(amp[i], want)
+            if (i <= 11) ok = ok && (down ? fq[i] < fq[i - 1] || i == 7 : i == 1 || fq[i] > fq[i - 1]) }
+        # the jumps happen between the measured frequencies either side of each fold
+        ok = ok && fq[4] < up && fq[5] > up && fq[9] > low && fq[10] < low
+        ok = ok && quotes("above %.3f Hz", up) &&
+             quotes("lower fold, %.3f Hz", low) && quotes("upper fold, %.3f Hz", up)
+        ok = ok && quotes("%.3f m at 0.70 Hz", th[1]) && quotes("%.3f m at 0.80 Hz", th[2]) &&
+             quotes("%.3f m at 0.83 Hz", th[4]) && quotes("from %.3f m", th[4]) &&
+             quotes("to %.3f m", th[5]) && quotes("%.3f m at 0.82 Hz", th[8]) &&
+             quotes("%.3f m at 0.80 Hz", th[9]) && quotes("%.3f m at 0.79 Hz", th[10]) &&
+             quotes("From rest %.3f m", th[12]) && quotes("from -1 m %.3f m", th[13])
+        if (!ok) { printf "folds %.5f %.5f;", low, up
+            for (i = 1; i <= n; i++) printf " %.2f: %.4f (%.4f)", fq[i], amp[i], th[i] }
+        exit !ok
+    }' "$out" >"$tmp/jump.why" 2>&1; then pass; else
+    fail "jump: every swing within 1 % of the amplitude equation's stable root on its branch, jumps at the folds, the numbers said: $(cat "$tmp/jump.why")"
 fi
 
 # ---- the words: previous rebuilds the step before, leave keeps the chain as it is ----

@@ -22,7 +22,6 @@ mkdir -p "$tmp/xdg-bad/springsim/lessons"
 printf 'title Broken\npreset resonance\nset frequency 0.5\nwobble 3\n' \
     >"$tmp/xdg-bad/springsim/lessons/broken.lesson"
 start bad 80 24 "XDG_CONFIG_HOME=$tmp/xdg-bad"
-start rec 80 24 -- -p 3-mass-chain --record "$tmp/rec.lesson"
 for f in "$root"/lessons/*.lesson; do
     n=$(basename "$f" .lesson)
     start "ask-$n" 80 24 -- --lesson "$n"
@@ -164,6 +163,9 @@ if up bad; then
 fi
 
 # ---- --record in the program: keys become commands; --replay ends in that state ----
+# (started here, not with the others: a recording keeps its idle time as waits, which the
+# replay below sits through)
+start rec 80 24 -- -p 3-mass-chain --record "$tmp/rec.lesson"
 S=rec
 if up rec; then
     keys Space ]

@@ -117,8 +117,11 @@ static double extreme(const double *y, int count, size_t stride, int from, int t
     return v;
 }
 
-void measure_drive(struct measure_drive *d, const double *t, const double *y, const double *u,
-                   int count, size_t stride, double hz)
+/* measure_drive and measure_drive_at: the drive sampled in u, or computed by drive(ctx, t)
+ * where u is NULL. */
+static void drive_measure(struct measure_drive *d, const double *t, const double *y,
+                          const double *u, double (*drive)(const void *ctx, double t),
+                          const void *ctx, int count, size_t stride, double hz)
 {
     *d = (struct measure_drive){.level = NAN, .amplitude = NAN, .drive = NAN, .ratio = NAN,
                                 .phase = NAN};
@@ -155,7 +158,7 @@ void measure_drive(struct measure_drive *d, const double *t, const double *y, co
     for (int k = count - n; k < count; k++) {
         double complex e = cexp(-2.0 * M_PI * I * hz * t[(size_t)k * stride]);
         ys += y[(size_t)k * stride] * e;
-        us += u[(size_t)k * stride] * e;
+        us += (u ? u[(size_t)k * stride] : drive(ctx, t[(size_t)k * stride])) * e;
     }
     d->amplitude = 2.0 * cabs(ys) / n;
     d->drive = 2.0 * cabs(us) / n;
@@ -165,6 +168,19 @@ void measure_drive(struct measure_drive *d, const double *t, const double *y, co
         if (d->phase <= -180.0)
             d->phase += 360.0;
     }
+}
+
+void measure_drive(struct measure_drive *d, const double *t, const double *y, const double *u,
+                   int count, size_t stride, double hz)
+{
+    drive_measure(d, t, y, u, NULL, NULL, count, stride, hz);
+}
+
+void measure_drive_at(struct measure_drive *d, const double *t, const double *y,
+                      double (*drive)(const void *ctx, double t), const void *ctx, int count,
+                      size_t stride, double hz)
+{
+    drive_measure(d, t, y, NULL, drive, ctx, count, stride, hz);
 }
 
 enum motion measure_motion(const struct measure *m, const struct measure_drive *d)

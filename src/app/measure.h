@@ -37,8 +37,8 @@ struct measure_drive {
     double level;     /* how far the periods' highs (or lows, the larger) spread, relative
                        * to the amplitude: 0 for a steady state */
     double amplitude; /* the series's fundamental at f: its amplitude (m) */
-    double drive;     /* the drive's fundamental amplitude (m) */
-    double ratio;     /* amplitude / drive */
+    double drive;     /* the drive's fundamental amplitude (m, or N for a force) */
+    double ratio;     /* amplitude / drive (m/m, or m/N for a force) */
     double phase;     /* the series's fundamental relative to the drive's, degrees in
                        * (-180, 180]: a lag is negative */
 };
@@ -64,6 +64,12 @@ void measure_series(struct measure *m, const double *t, const double *y, int cou
  * y e^(-i 2 pi hz t) over the samples spanning those periods). */
 void measure_drive(struct measure_drive *d, const double *t, const double *y, const double *u,
                    int count, size_t stride, double hz);
+
+/* As measure_drive, the drive's value at each sample's time computed by drive(ctx, t)
+ * rather than sampled: a force input, which the records do not hold. */
+void measure_drive_at(struct measure_drive *d, const double *t, const double *y,
+                      double (*drive)(const void *ctx, double t), const void *ctx, int count,
+                      size_t stride, double hz);
 
 /* The kind of motion m (and, driven, d; NULL for free motion) is: free, steady if its
  * peaks are level within MEASURE_LEVEL of the highest, else a decay if they fall one

@@ -220,6 +220,12 @@ void scope_measure(const struct scope_view *v, int i, struct measure *m)
     measure_series(m, v->rec + TRAIL_T, v->rec + TRAIL_X(tr, i), v->count, (size_t)tr->width);
 }
 
+/* The force input's value at time t: measure_drive_at's drive. */
+static double force_at(const void *model, double t)
+{
+    return model_force(model, t);
+}
+
 void scope_motion(const struct app *app, const struct scope_view *v, int i,
                   struct scope_motion *out)
 {
@@ -228,14 +234,22 @@ void scope_motion(const struct app *app, const struct scope_view *v, int i,
     *out = (struct scope_motion){.mode = -1, .theory_zeta = NAN, .theory_ratio = NAN,
                                  .theory_phase = NAN};
     scope_measure(v, i, &out->m);
-    out->driven = model->boundary == BOUNDARY_MOTOR && model->motor.amplitude > 0.0;
+    bool motor = model->boundary == BOUNDARY_MOTOR && model->motor.amplitude != 0.0;
+    out->driven = model_driven(model);
+    out->by_force = out->driven && !motor;
+    out->linearised = model->cubic;
     if (out->driven) {
         out->hz = model->motor.frequency;
-        measure_drive(&out->d, v->rec + TRAIL_T, v->rec + TRAIL_X(tr, i), v->rec + TRAIL_U,
-                      v->count, (size_t)tr->width, out->hz);
+        const double *t = v->rec + TRAIL_T, *x = v->rec + TRAIL_X(tr, i);
+        if (motor)
+            measure_drive(&out->d, t, x, v->rec + TRAIL_U, v->count, (size_t)tr->width,
+                          out->hz);
+        else
+            measure_drive_at(&out->d, t, x, force_at, model, v->count, (size_t)tr->width,
+                             out->hz);
         double amp[APP_MAX_MASSES], phase[APP_MAX_MASSES];
         if (model->n <= APP_MAX_MASSES && modes_response_phase(model, out->hz, amp, phase) == 0) {
-            out->theory_ratio = amp[i] / model->motor.amplitude;
+            out->theory_ratio = amp[i] / fabs(motor ? model->motor.amplitude : model->force);
             out->theory_phase = phase[i];
         }
     }

@@ -70,14 +70,17 @@ void scope_measure(const struct scope_view *v, int i, struct measure *m);
 /* What the measurements of one mass over a view say, beside the theory's. */
 struct scope_motion {
     struct measure m;        /* its peaks, period, decrement */
-    struct measure_drive d;  /* against the motor (driven only) */
-    bool driven;             /* a motor drives the chain: a motor end, amplitude > 0 */
+    struct measure_drive d;  /* against the drive: the motor's, else the force (driven) */
+    bool driven;             /* the motor (a motor end, amplitude != 0) or a force drives */
+    bool by_force;           /* driven by the force alone: d, ratio and phase are to it */
+    bool linearised;         /* the theory is the chain's linearised at rest (cubic springs) */
     double hz;               /* the drive's frequency (Hz; driven only) */
     enum motion kind;        /* measure_motion's */
     int mode;                /* the mode nearest to the measured frequency (0-based), or -1 */
     double theory_zeta;      /* that mode's damping ratio (NAN unknown) */
-    double theory_ratio;     /* the steady state's amplitude ratio to the motor's at hz */
-    double theory_phase;     /* and its phase to the motor (degrees; NAN unknown) */
+    double theory_ratio;     /* the steady state's amplitude over the motor's amplitude
+                              * (m/m), or over the force's (m/N) by_force, at hz */
+    double theory_phase;     /* and its phase to the drive (degrees; NAN unknown) */
 };
 
 /* Measures mass i's displacement over view v and says what kind of motion it is, with

@@ -97,10 +97,12 @@ static void say_kind(const struct scope_motion *sm, char *buf, size_t len)
             return;
         }
         snprintf(buf, len, "; driven steady state (swings level within %d %% over %d drive "
-                 "periods): amplitude %.6g m, phase %.4g deg to the motor, ratio %.6g to the "
-                 "motor's (theory at %.6g Hz: amplitude %.6g m, phase %.4g deg, ratio %.6g)",
-                 pct, d->periods, d->amplitude, d->phase, d->ratio, sm->hz,
-                 sm->theory_ratio * d->drive, sm->theory_phase, sm->theory_ratio);
+                 "periods): amplitude %.6g m, phase %.4g deg to the %s, ratio %.6g%s to the "
+                 "%s's (%stheory at %.6g Hz: amplitude %.6g m, phase %.4g deg, ratio %.6g%s)",
+                 pct, d->periods, d->amplitude, d->phase, sm->by_force ? "force" : "motor",
+                 d->ratio, sm->by_force ? " m/N" : "", sm->by_force ? "force" : "motor",
+                 sm->linearised ? "linearised " : "", sm->hz, sm->theory_ratio * d->drive, sm->theory_phase, sm->theory_ratio,
+                 sm->by_force ? " m/N" : "");
         return;
     case MOTION_TRANSIENT:
         snprintf(buf, len, "; transient: not a free decay, not steady (%s%s)",

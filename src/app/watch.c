@@ -118,7 +118,7 @@ static void look_contacts(struct watch *w, const struct app *app, watch_say *say
 static void look_peaks(struct watch *w, const struct app *app, watch_say *say, void *ctx)
 {
     const struct model *m = app->model;
-    bool free = !(m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0);
+    bool free = !model_driven(m);
     const double *x = sim_x(app->sim), *v = sim_v(app->sim);
     for (int i = 0; i < w->n; i++) {
         bool turned = (w->v[i] > 0.0 && v[i] <= 0.0) || (w->v[i] < 0.0 && v[i] >= 0.0);

@@ -95,6 +95,7 @@ struct exact {
     struct modal *md;   /* the modes' propagator (exact_modal.c) */
     struct general *gen; /* the general one (exact_general.c), made when first needed */
     int use_modal;      /* the saved model's dampers are proportional to its masses */
+    int stepped_modal;  /* the last step went through the modes */
 };
 
 /* 6-point Gauss-Legendre on [-1, 1]: nodes +-gl_x[i], weights gl_w[i]. */
@@ -201,6 +202,7 @@ int exact_copy(struct exact *dst, const struct exact *src)
     if (src->gen && general_copy(dst->gen, src->gen) != 0)
         return -1;
     dst->use_modal = src->use_modal;
+    dst->stepped_modal = src->stepped_modal;
     dst->boundary = src->boundary;
     dst->valid = src->valid;
     dst->model = src->model;
@@ -500,6 +502,11 @@ int exact_needs_general(const struct model *m)
     return 0;
 }
 
+int exact_stepped_in_modes(const struct exact *e)
+{
+    return e->stepped_modal;
+}
+
 int exact_advance(struct exact *e, const struct model *m, const struct exact_drive *d, double a,
                   double b, double *x, double *v, double *diss, double *work)
 {
@@ -522,6 +529,7 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
         general = !e->valid && m->spring_damped; /* the modes failed: the general path */
     }
     if (general) {
+        e->stepped_modal = 0;
         if (!e->gen && !(e->gen = general_new(e->n)))
             return -1;
         return general_advance(e->gen, m, d, a, b, x, v, diss, work, fwork);
@@ -541,6 +549,7 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
     double omega = kind == EXACT_SINE ? d->omega : 0.0;
     if (!isfinite(omega))
         return -1;
+    e->stepped_modal = e->use_modal;
     if (e->use_modal)
         return modal_advance(e->md, kind, d, a, b, x, v, diss, work);
     struct slot *sl = find_slot(e, kind, omega, h, dim);

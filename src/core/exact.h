@@ -25,6 +25,11 @@ int exact_proportional(const struct model *m);
 /* Frees it. */
 void exact_free(struct exact *e);
 
+/* 1 when the last step taken went through the modes (exact_modal.c, O(n^2) a step: ground
+ * dampers proportional to the masses, or Rayleigh's C = alpha M + beta K), 0 when it took
+ * a dense exponential. */
+int exact_stepped_in_modes(const struct exact *e);
+
 /* Makes dst (made for the same n) hold what src holds, its cached steps included, so the
  * two step alike. 0, or -1 on no memory (dst then steps afresh). */
 int exact_copy(struct exact *dst, const struct exact *src);

@@ -243,12 +243,18 @@ static void draw_presets(const struct overlay *o, const struct layout *l)
 
 static void draw_lessons(const struct overlay *o, const struct layout *l)
 {
-    int n = o->nlessons;
+    int n = o->nlessons, name_w = 10;
+    /* The names' column as wide as the longest name (transmissibility: 16). */
+    for (int i = 0; i < n; i++) {
+        int d = draw_width(o->lessons[i].name);
+        name_w = d > name_w && d <= 24 ? d : name_w;
+    }
     struct rect r = overlay_box(l, (n ? n : 1) + 4, 96, "Lessons");
     if (n == 0)
         draw_text(r.y + 1, r.x + 2, r.w - 4, "No lessons found on the search path.");
     else
-        draw_menu(o, r, n, o->lesson_sel, 10, lesson_row, "↑↓ choose   Enter start   Esc close");
+        draw_menu(o, r, n, o->lesson_sel, name_w, lesson_row,
+                  "↑↓ choose   Enter start   Esc close");
 }
 
 /* What the prompt says for the text being typed. */

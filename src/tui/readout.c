@@ -51,7 +51,7 @@ static int steady_lines(const struct scope_motion *sm, char lines[][LINE])
     const struct measure_drive *d = &sm->d;
     char a[32], b[32];
     int n = 0;
-    snprintf(lines[n++], LINE, "%-8s%10s%10s", "", "measured", "theory");
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", "", "measured", sm->linearised ? "linear" : "theory");
     scope_number(a, sizeof a, d->amplitude, 9);
     scope_number(b, sizeof b, sm->theory_ratio * d->drive, 9);
     snprintf(lines[n++], LINE, "%-8s%10s%10s", "amp m", a, b);
@@ -59,7 +59,7 @@ static int steady_lines(const struct scope_motion *sm, char lines[][LINE])
     snprintf(b, sizeof b, "%.1f", sm->theory_phase);
     snprintf(lines[n++], LINE, "%-8s%10s%10s", term_utf8() ? "phase °" : "phase deg", a, b);
     scope_number(a, sizeof a, d->ratio, 9), scope_number(b, sizeof b, sm->theory_ratio, 9);
-    snprintf(lines[n++], LINE, "%-8s%10s%10s", "ratio", a, b);
+    snprintf(lines[n++], LINE, "%-8s%10s%10s", sm->by_force ? "m/N" : "ratio", a, b);
     return n;
 }
 

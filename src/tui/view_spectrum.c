@@ -48,10 +48,10 @@ void spectrum_view_free(struct spectrum_view *sv)
     sv->size = sv->ghost_size = 0;
 }
 
-/* True when the motor drives the chain. */
+/* True when the motor or a force drives the chain. */
 static bool driven(const struct model *m)
 {
-    return m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+    return model_driven(m);
 }
 
 /* The harmonic after the n-th that the drive's waveform has, 0 after the last: a sine
