@@ -24,7 +24,7 @@ struct rest *rest_new(int n)
     if (!r)
         return NULL;
     r->on = calloc(2 * ((size_t)n + 1), sizeof *r->on);
-    r->acc = calloc((size_t)n, sizeof *r->acc);
+    r->acc = calloc((size_t)n + 3 * ((size_t)n + 2), sizeof *r->acc);
     r->first = calloc(2 * (size_t)n, sizeof *r->first);
     r->held = calloc((size_t)n, sizeof *r->held);
     if (!r->on || !r->acc || !r->first || !r->held) {
@@ -32,6 +32,7 @@ struct rest *rest_new(int n)
         return NULL;
     }
     r->soft = r->on + n + 1;
+    r->pool = r->acc + n;
     r->last = r->first + n;
     r->n = n;
     r->count = n + 1;
