@@ -141,8 +141,11 @@ static double piston_close(const struct events_piece *p, int k, const double c[4
 /* Where constraint k, given its cubic c, first closes: theta, or -1. */
 static double first_close(const struct events_piece *p, int k, const double c[4])
 {
-    if (c[0] <= EVENTS_TOUCH && c[1] < 0.0)
-        return 0.0; /* touching and closing already */
+    /* Touching and closing already; a rate of rounding's size (two masses a release has
+     * just put in different clusters differ by 1e-17 m/s) is no motion: the cubic below
+     * tells whether the gap closes. */
+    if (c[0] <= EVENTS_TOUCH && c[1] < -REST_RATE * p->h)
+        return 0.0;
     /* The turning points: roots of c1 + 2 c2 theta + 3 c3 theta^2 inside (0, 1). */
     double pts[4] = {0.0}, qa = 3.0 * c[3], qb = 2.0 * c[2], qc = c[1];
     int np = 1;
