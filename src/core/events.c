@@ -428,17 +428,28 @@ int events_hit(const struct collision_limits *l, const struct model *m, struct r
         hi++;
     int hits = pair_hit(l, m, r, k, v, du, b), found = 1;
     double fastest = INFINITY; /* the fastest contact of the last sweep (m/s) */
+    /* A contact whose two masses have not changed since it was last visited does nothing
+     * (it was left open or parting), so each sweep visits only [from, to]: the contacts
+     * beside a change of the sweep before, stretched as a change reaches an end. */
+    int from = lo, to = hi;
     for (int sweep = 0; found && sweep < EVENTS_SWEEPS_MAX; sweep++) {
         if (sweep >= EVENTS_SWEEPS && fastest < r->v_rest)
             return hits + pool(l, m, r, lo, hi, v, du, b);
         found = 0, fastest = 0.0;
-        for (int j = 0; j <= hi - lo; j++) {
-            int kk = sweep % 2 ? hi - j : lo + j;
+        int step = sweep % 2 ? -1 : 1, hit_lo = hi + 1, hit_hi = lo - 1;
+        for (int kk = step > 0 ? from : to; kk >= from && kk <= to; kk += step) {
             double closing = -collision_rate(l, kk, v, du);
-            if (pair_hit(l, m, r, kk, v, du, b))
-                found++, fastest = closing > fastest ? closing : fastest;
+            if (!pair_hit(l, m, r, kk, v, du, b))
+                continue;
+            found++, fastest = closing > fastest ? closing : fastest;
+            hit_lo = kk < hit_lo ? kk : hit_lo, hit_hi = kk > hit_hi ? kk : hit_hi;
+            if (step > 0 && kk == to && to < hi)
+                to++;
+            else if (step < 0 && kk == from && from > lo)
+                from--;
         }
         hits += found;
+        from = hit_lo - 1 > lo ? hit_lo - 1 : lo, to = hit_hi + 1 < hi ? hit_hi + 1 : hi;
     }
     if (found) /* still closing at the rest speed after the sweeps: what touches moves as one */
         hits += collision_merge(l, m, x, v, u, du, b);

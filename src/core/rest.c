@@ -91,10 +91,15 @@ void rest_set(struct rest *r, int k, bool on)
     r->on[k] = on;
     r->active += on ? 1 : -1;
     /* The clusters anew: every run of masses joined by resting contacts, and single
-     * masses the wall or the piston holds. */
+     * masses the wall or the piston holds. A run of free single masses is passed over by
+     * its flags alone (in a long chain nearly every mass). */
+    int n = r->n;
     r->clusters = 0;
-    for (int f = 0, l; f < r->n && r->active; f = l + 1) {
-        int held = rest_cluster(r, r->n, f, &f, &l);
+    for (int f = 0, l; f < n && r->active; f = l + 1) {
+        if (f > 0)
+            while (f + 1 < n && !r->on[f + 1])
+                f++;
+        int held = rest_cluster(r, n, f, &f, &l);
         if (f == l && !held)
             continue;
         r->first[r->clusters] = f, r->last[r->clusters] = l;
