@@ -26,9 +26,9 @@
  * still closes, pair by pair, in sweeps alternating left to right and back until none
  * does: held contacts take part like merely touching ones (the impulse is infinite beside
  * their force), part if they then move apart, and inelastic ones pressed shut are held
- * (after 16 sweeps, once a sweep makes only contacts slower than REF_V_REST, what still
+ * (if after 16 sweeps the last made only contacts slower than REF_V_REST, what still
  * closes is carried on as perfectly inelastic sweeps until nothing closes: one contact;
- * an impact still closing faster after 1024 sweeps is not this reference's business).
+ * one whose last sweep made a faster contact is not this reference's business).
  * The square, triangle and sawtooth drives are pieces of constants and ramps (the definition's
  * formulas), sub-steps ending at their breakpoints; a jump of the end books the change of
  * the end spring's energy as the motor's work, and a jump into the last mass pushes every
@@ -497,7 +497,7 @@ static int ref_pair(struct ref *r, int g, double du, bool *soft)
     return 1;
 }
 
-/* After 16 sweeps of an impact, once a sweep makes only contacts slower than REF_V_REST,
+/* After 16 sweeps of an impact, the last of which made only contacts slower than REF_V_REST,
  * what still closes along the row [lo, hi] is resolved as perfectly inelastic sweeps
  * carried on until no gap closes faster than 1e-13 m/s (they converge geometrically), the
  * books kept, the pairs marked in soft; one contact. */
@@ -576,7 +576,7 @@ static int ref_impact(struct ref *r, int g)
     hits = ref_pair(r, g, du, soft);
     double fastest = INFINITY; /* the fastest contact of the last sweep */
     int sweep = 0;
-    for (; found && sweep < 1024 && (sweep < 16 || fastest >= REF_V_REST); sweep++) {
+    for (; found && sweep < 16; sweep++) {
         found = 0, fastest = 0.0;
         for (int j = 0; j <= hi - lo; j++) {
             int k = sweep % 2 ? hi - j : lo + j;
@@ -587,7 +587,7 @@ static int ref_impact(struct ref *r, int g)
         hits += found;
     }
     if (found && fastest >= REF_V_REST) /* the program then moves the row as one */
-        r->error = "an impact still closing at the rest speed after 1024 sweeps (a collapse)";
+        r->error = "an impact still closing at the rest speed after 16 sweeps (a collapse)";
     else if (found)
         hits += ref_stick_sweeps(r, lo, hi, du, soft);
     for (int j = lo; j <= hi; j++) {

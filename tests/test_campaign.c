@@ -16,8 +16,8 @@
  * perturbation 1e3 times, so no fixed-step run can show its order (a grazing contact that
  * comes or goes with the perturbation is one such). Piston jumps into the last mass and
  * into piles are judged like any case. Cases the reference cannot judge (two contacts at
- * one instant, an impact still closing at the rest speed after 1024 sweeps) are counted
- * and left out. A case whose reference makes a call within the method's own error (a
+ * one instant, an impact whose 16th sweep still made a contact at the rest speed or
+ * faster) are counted and left out. A case whose reference makes a call within the method's own error (a
  * contact within 1e-4 m/s of the rest speed, a graze within 1e-5 m of touching) may count
  * one contact more or less: its count is not compared, its motion is. CAMPAIGN_CASES sets
  * the number of cases (default 240; the memcheck run takes fewer). */

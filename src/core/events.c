@@ -24,12 +24,10 @@
 /* A gap this small (m) may start to rest: the located instant's gap is the interpolant's
  * error, which resting then removes. */
 #define REST_GAP 1e-6
-/* Sweeps of the contact rule at one instant before what still closes, all of it slower
- * than the rest speed, is resolved at once as the limit of further sweeps. */
+/* Sweeps of the contact rule at one instant; then what still closes takes the limit of
+ * further sweeps if the last made only contacts slower than the rest speed, or else moves
+ * as one with what touches it (an inelastic collapse). */
 #define EVENTS_SWEEPS 16
-/* Sweeps at most while a contact closing at the rest speed or faster is still made: after
- * these, what touches and still closes moves as one (an inelastic collapse). */
-#define EVENTS_SWEEPS_MAX 1024
 
 /* x_i at theta of the piece, and its velocity. */
 static double hermite(const struct events_piece *p, int i, double th)
@@ -432,9 +430,7 @@ int events_hit(const struct collision_limits *l, const struct model *m, struct r
      * (it was left open or parting), so each sweep visits only [from, to]: the contacts
      * beside a change of the sweep before, stretched as a change reaches an end. */
     int from = lo, to = hi;
-    for (int sweep = 0; found && sweep < EVENTS_SWEEPS_MAX; sweep++) {
-        if (sweep >= EVENTS_SWEEPS && fastest < r->v_rest)
-            return hits + pool(l, m, r, lo, hi, v, du, b);
+    for (int sweep = 0; found && sweep < EVENTS_SWEEPS; sweep++) {
         found = 0, fastest = 0.0;
         int step = sweep % 2 ? -1 : 1, hit_lo = hi + 1, hit_hi = lo - 1;
         for (int kk = step > 0 ? from : to; kk >= from && kk <= to; kk += step) {
@@ -451,7 +447,9 @@ int events_hit(const struct collision_limits *l, const struct model *m, struct r
         hits += found;
         from = hit_lo - 1 > lo ? hit_lo - 1 : lo, to = hit_hi + 1 < hi ? hit_hi + 1 : hi;
     }
-    if (found) /* still closing at the rest speed after the sweeps: what touches moves as one */
+    if (found && fastest < r->v_rest)
+        hits += pool(l, m, r, lo, hi, v, du, b);
+    else if (found)
         hits += collision_merge(l, m, x, v, u, du, b);
     return hits;
 }
