@@ -26,8 +26,9 @@
  * still closes, pair by pair, in sweeps alternating left to right and back until none
  * does: held contacts take part like merely touching ones (the impulse is infinite beside
  * their force), part if they then move apart, and inelastic ones pressed shut are held
- * (an impact still closing after 16 sweeps, which the program settles by moving the row
- * as one, is not this reference's business).
+ * (if after 16 sweeps the last made only contacts slower than REF_V_REST, what still
+ * closes is carried on as perfectly inelastic sweeps until nothing closes: one contact;
+ * one whose last sweep made a faster contact is not this reference's business).
  * The square, triangle and sawtooth drives are pieces of constants and ramps (the definition's
  * formulas), sub-steps ending at their breakpoints; a jump of the end books the change of
  * the end spring's energy as the motor's work, and a jump into the last mass pushes every
@@ -437,113 +438,7 @@ static int ref_weakest(const struct ref *r, double *force)
     return w;
 }
 
-/* Gap g now (m), and its rate (m/s) with the end moving at du. */
-static double ref_gap_now(const struct ref *r, int g, double *rate, double du)
-{
-    int n = r->n;
-    double u, du0;
-    ref_drive(r, r->t, &u, &du0);
-    if (g == 0) {
-        *rate = r->v[0];
-        return r->xeq[0] + r->x[0] - 0.5 * r->w;
-    }
-    if (g < n) {
-        *rate = r->v[g] - r->v[g - 1];
-        return r->xeq[g] + r->x[g] - r->xeq[g - 1] - r->x[g - 1] - r->w;
-    }
-    *rate = du - r->v[n - 1];
-    return REF_L + u - 0.5 * r->w - r->xeq[n - 1] - r->x[n - 1];
-}
-
-/* The restitution rule on gap g between the two masses it joins (or a mass and the wall, or
- * the piston moving at du), with the books and the log: 1 if they were closing. One
- * closing slower than REF_V_REST is inelastic, and marked in soft (so is one touching and
- * moving as one: it may be held). */
-static int ref_pair(struct ref *r, int g, double du, bool *soft)
-{
-    int n = r->n;
-    double ml = g > 0 ? r->m[g - 1] : INFINITY, mr = g < n ? r->m[g] : INFINITY;
-    double vl0 = g > 0 ? r->v[g - 1] : 0.0, vr0 = g < n ? r->v[g] : du;
-    double closing = vl0 - vr0, e, mu, vl, vr;
-    if (!(closing > 0.0)) {
-        soft[g] = closing > -REF_RATE;
-        return 0;
-    }
-    e = closing < REF_V_REST ? 0.0 : REF_E;
-    soft[g] = e == 0.0;
-    r->near_rest = fmin(r->near_rest, fabs(closing - REF_V_REST));
-    if (isinf(ml)) {
-        mu = mr, vl = vl0, vr = vl0 + e * closing;
-    } else if (isinf(mr)) {
-        mu = ml, vl = vr0 - e * closing, vr = vr0;
-    } else {
-        double mt = ml + mr, p = ml * vl0 + mr * vr0;
-        mu = ml * mr / mt;
-        vl = (p - mr * e * closing) / mt, vr = (p + ml * e * closing) / mt;
-    }
-    if (g == n) /* the piston's impulse on the mass, times its speed, is its work */
-        r->motor_work += ml * (vl - vl0) * du;
-    if (g > 0)
-        r->v[g - 1] = vl;
-    if (g < n)
-        r->v[g] = vr;
-    r->contact += 0.5 * mu * (1.0 - e * e) * closing * closing;
-    struct ref_event ev = {r->t, g == 0 ? REF_LEFT : g == n ? REF_RIGHT : REF_PAIR,
-                           g == 0 ? 0 : g - 1, closing};
-    r->ev[r->nev % REF_MAXEVENTS] = ev; /* the last REF_MAXEVENTS, in a ring past that */
-    r->nev++;
-    r->count++;
-    return 1;
-}
-
-/* An impact on gap g: the restitution rule there, then on every touching gap of the row around
- * it (held or closed to 1e-12 m) still closing, sweeps alternating left to right and
- * back until none closes; held contacts take part like any other (the impulse is infinite
- * beside their force). Then held contacts moving apart part, inelastic ones pressed shut
- * are held. Returns the contacts. */
-static int ref_impact(struct ref *r, int g)
-{
-    int gaps = r->free_end ? r->n : r->n + 1, lo = g, hi = g, hits, found = 1;
-    double u, du, rate;
-    bool soft[REF_MAXN + 1] = {false};
-    ref_drive(r, r->t, &u, &du);
-    while (lo > 0 && (r->held[lo - 1] || ref_gap_now(r, lo - 1, &rate, du) <= 1e-12))
-        lo--;
-    while (hi + 1 < gaps && (r->held[hi + 1] || ref_gap_now(r, hi + 1, &rate, du) <= 1e-12))
-        hi++;
-    hits = ref_pair(r, g, du, soft);
-    for (int sweep = 0; sweep < 16 && found; sweep++) {
-        found = 0;
-        for (int j = 0; j <= hi - lo; j++)
-            found += ref_pair(r, sweep % 2 ? hi - j : lo + j, du, soft);
-        hits += found;
-    }
-    if (found) /* the program then moves the row as one: a call at a threshold */
-        r->error = "an impact still closing after 16 sweeps (an inelastic collapse)";
-    for (int j = lo; j <= hi; j++) {
-        ref_gap_now(r, j, &rate, du);
-        if (r->held[j] && rate > REF_RATE)
-            r->held[j] = false;
-        else if (soft[j] && fabs(rate) <= REF_RATE)
-            r->held[j] = true;
-    }
-    double force;
-    for (int w; (w = ref_weakest(r, &force)) >= 0 && force < -REF_PULL;)
-        r->held[w] = false;
-    return hits;
-}
-
-/* A contact on gap g found closing: the impact, unless another came at the same instant
- * (not this reference's business). */
-static void ref_contact(struct ref *r, int g)
-{
-    double last = r->nev > 0 ? r->ev[(r->nev - 1) % REF_MAXEVENTS].t : -INFINITY;
-    int before = r->nev;
-    ref_impact(r, g);
-    for (int j = before; j < r->nev && r->nev > 0; j++)
-        if (r->t - last < 1e-9 && r->ev[j % REF_MAXEVENTS].speed >= REF_V_REST)
-            r->error = "two contacts at one instant";
-}
+#include "contact_impact.h"
 
 /* The first instant in [0, h] at which a held contact's force F turns to a pull. */
 static bool ref_first_pull(struct ref *r, const double *F, double h, double *tau)

@@ -1,7 +1,8 @@
 /* test_campaign.c: the simulator with contacts against the event-driven reference
- * (contact_reference.h) on a random campaign: chains of 1 to 10 masses, every right end
- * and waveform, head-on throws, piles (masses thrown one way together), masses left to
- * settle on a wall or on the piston, and square pistons. Issue 17's goals, case by case:
+ * (contact_reference.h) on a random campaign: chains of 1 to 10 masses (CAMPAIGN_MAXN sets
+ * the most), every right end and waveform, head-on throws, piles (masses thrown one way
+ * together), masses left to settle on a wall or on the piston, and square pistons.
+ * Issue 17's goals, case by case:
  *
  *  - rk4 keeps order >= 3 from dt = 0.01 to 0.0025 (a least-squares slope through the
  *    three errors) in every case but the chaotic ones;
@@ -10,16 +11,16 @@
  *  - the contact column never decreases, and at dt = 0.0025 kinetic + potential +
  *    dissipated + contact - motor_work stays within 1e-6 of the peak energy.
  *
- * Chaotic: the reference itself, started 1e-9 m away, ends more than 1e-5 m away: its
- * contacts amplify a perturbation 1e4 times, so no fixed-step run can show its order
- * (a grazing contact that comes or goes with the perturbation is one such). Piston jumps
- * into the last mass and into piles are judged like any case. Cases the reference cannot
- * judge (two contacts at one instant, an impact still closing after 16 sweeps) are
- * counted and left out. A case whose reference makes a call within
- * the method's own error (a contact within 1e-4 m/s of the rest speed, a graze within
- * 1e-5 m of touching) may count one contact more or less: its count is not compared, its
- * motion is. CAMPAIGN_CASES sets the number of cases
- * (default 240; the memcheck run takes fewer). */
+ * Chaotic: the reference itself, started 1e-9 m away and sampled four times as often (its
+ * sub-steps then end elsewhere), ends more than 1e-6 m away: its contacts amplify a
+ * perturbation 1e3 times, so no fixed-step run can show its order (a grazing contact that
+ * comes or goes with the perturbation is one such). Piston jumps into the last mass and
+ * into piles are judged like any case. Cases the reference cannot judge (two contacts at
+ * one instant, an impact whose 16th sweep still made a contact at the rest speed or
+ * faster) are counted and left out. A case whose reference makes a call within the method's own error (a
+ * contact within 1e-4 m/s of the rest speed, a graze within 1e-5 m of touching) may count
+ * one contact more or less: its count is not compared, its motion is. CAMPAIGN_CASES sets
+ * the number of cases (default 240; the memcheck run takes fewer). */
 #include "testutil.h"
 
 #include <stdlib.h>
@@ -52,7 +53,8 @@ static void make_case(int j, struct kase *c)
     rng_state = 0x9E3779B97F4A7C15ull ^ (uint64_t)(j + 1) * 0xBF58476D1CE4E5B9ull;
     for (int i = 0; i < 4; i++)
         uniform(0, 1);
-    int n = 1 + (int)uniform(0, 10);
+    const char *most = getenv("CAMPAIGN_MAXN");
+    int n = 1 + (int)uniform(0, most ? atoi(most) : 10);
     struct model *m = model_new(n);
     assert_non_null(m);
     m->boundary = (enum boundary)(int)uniform(0, 3);
@@ -225,11 +227,14 @@ static void campaign(void **state)
             model_free(c.m);
             continue;
         }
-        track_run(&c, 1e-9, GRID, &pert);
+        /* Started 1e-9 m away and sampled four times as often (its sub-steps then end
+         * elsewhere): a reference that this moves by more than 1e-6 m judges nothing. */
+        track_run(&c, 1e-9, GRID / 4, &pert);
         double spread = 0.0;
-        size_t len = (size_t)(tr.steps + 1) * (size_t)c.m->n;
+        int n = c.m->n;
+        size_t len = (size_t)(tr.steps + 1) * (size_t)n;
         for (size_t i = 0; i < len && !pert.error; i++)
-            spread = fmax(spread, fabs(pert.x[i] - tr.x[i]));
+            spread = fmax(spread, fabs(pert.x[4 * (i / n) * n + i % n] - tr.x[i]));
         bool chaos = pert.error || spread > 1e-6;
         struct outcome o[3];
         for (int d = 0; d < 3; d++)
@@ -380,11 +385,69 @@ static void numbered_cases(void **state)
     }
 }
 
+/* The graze case at dt = 0.01 with some steps taken in 8 sub-steps of dt/8 (sim_set_dt
+ * and back): those holding a contact of the reference (fine = 1), or all the others
+ * (fine = 2), or none (0). The largest |x - x_ref| on the 0.01 grid. */
+static double graze_split(const struct kase *c, const struct track *tr, int fine)
+{
+    const double dt = 0.01;
+    struct ref *r = malloc(sizeof *r);
+    assert_non_null(r);
+    ref_init(r, c->m, c->x0, c->v0);
+    ref_advance(r, c->duration);
+    assert_true(r->nev <= REF_MAXEVENTS);
+    struct sim *s = sim_new(c->m, dt);
+    assert_non_null(s);
+    sim_reset(s, c->x0, c->v0);
+    int stride = (int)lround(dt / tr->grid), steps = (int)lround(c->duration / dt);
+    double err = 0.0;
+    for (int j = 1; j <= steps; j++) {
+        bool contact = false;
+        for (int e = 0; e < r->nev; e++)
+            contact |= r->ev[e].t > (j - 1) * dt && r->ev[e].t <= j * dt;
+        bool split = fine == 1 ? contact : fine == 2 && !contact;
+        sim_set_dt(s, split ? dt / 8 : dt);
+        for (int q = 0; q < (split ? 8 : 1); q++)
+            assert_int_equal(sim_step(s), SIM_OK);
+        err = fmax(err, fabs(sim_x(s)[0] - tr->x[(size_t)j * stride]));
+    }
+    sim_free(s);
+    free(r);
+    return err;
+}
+
+/* The graze's error at dt = 0.01 (issue 31 asked for 1e-4 m) is rk4's own error in the
+ * free flight between the grazes, which each graze then multiplies (its rebound speed
+ * goes as the square root of the depth): taking the six steps that hold the grazes in 8
+ * sub-steps leaves it as it is, taking every other step so brings it under 1e-4 m. */
+static void graze_error_source(void **state)
+{
+    (void)state;
+    struct kase c = {.kind = "graze", .duration = 5.0};
+    c.m = model_new(1);
+    assert_non_null(c.m);
+    c.m->k[0] = 50.0, c.m->c[0] = 0.0, c.m->boundary = BOUNDARY_FREE;
+    c.x0[0] = -4.0, c.v0[0] = -18.762942213309717;
+    struct track tr;
+    track_run(&c, 0.0, 0.00125, &tr);
+    assert_null(tr.error);
+    double plain = graze_split(&c, &tr, 0), at = graze_split(&c, &tr, 1);
+    double between = graze_split(&c, &tr, 2);
+    printf("  graze at dt 0.01: %.3e m; its 6 contact steps in 8 sub-steps %.3e m; every "
+           "other step in 8 sub-steps %.3e m\n", plain, at, between);
+    assert_true(plain > 1e-4);
+    assert_true(fabs(at - plain) <= 0.05 * plain);
+    assert_true(between <= 1e-4);
+    track_free(&tr);
+    model_free(c.m);
+}
+
 #ifndef CAMPAIGN_DEBUG
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(numbered_cases),
+        cmocka_unit_test(graze_error_source),
         cmocka_unit_test(campaign),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

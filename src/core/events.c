@@ -24,8 +24,9 @@
 /* A gap this small (m) may start to rest: the located instant's gap is the interpolant's
  * error, which resting then removes. */
 #define REST_GAP 1e-6
-/* Sweeps of the contact rule at one instant, beyond two for each contact of the row it
- * runs along, before what still closes moves as one (an inelastic collapse). */
+/* Sweeps of the contact rule at one instant; then what still closes takes the limit of
+ * further sweeps if the last made only contacts slower than the rest speed, or else moves
+ * as one with what touches it (an inelastic collapse). */
 #define EVENTS_SWEEPS 16
 
 /* x_i at theta of the piece, and its velocity. */
@@ -138,8 +139,11 @@ static double piston_close(const struct events_piece *p, int k, const double c[4
 /* Where constraint k, given its cubic c, first closes: theta, or -1. */
 static double first_close(const struct events_piece *p, int k, const double c[4])
 {
-    if (c[0] <= EVENTS_TOUCH && c[1] < 0.0)
-        return 0.0; /* touching and closing already */
+    /* Touching and closing already; a rate of rounding's size (two masses a release has
+     * just put in different clusters differ by 1e-17 m/s) is no motion: the cubic below
+     * tells whether the gap closes. */
+    if (c[0] <= EVENTS_TOUCH && c[1] < -REST_RATE * p->h)
+        return 0.0;
     /* The turning points: roots of c1 + 2 c2 theta + 3 c3 theta^2 inside (0, 1). */
     double pts[4] = {0.0}, qa = 3.0 * c[3], qb = 2.0 * c[2], qc = c[1];
     int np = 1;
@@ -358,6 +362,57 @@ static bool touching(const struct collision_limits *l, const struct rest *r, int
     return r->on[k] || collision_gap(l, k, x, u) <= EVENTS_TOUCH;
 }
 
+/* Element i of the row from the wall (i = -1, at rest) to the piston (i = n, at du):
+ * its mass, infinite for the two ends, and its velocity. */
+static double element(const struct model *m, int n, int i, const double *v, double du,
+                      double *vel)
+{
+    *vel = i < 0 ? 0.0 : i < n ? v[i] : du;
+    return i < 0 || i >= n ? INFINITY : m->m[i];
+}
+
+/* What still closes along the row of contacts [lo, hi] after the sweeps, every contact
+ * of the last sweep slower than the rest speed, resolved at once: the limit of perfectly
+ * inelastic sweeps, which is the velocities made non-decreasing from left to right with
+ * each run that would keep closing moving as one, its momentum kept (pool adjacent
+ * violators, weighted by the masses; the wall and the piston are ends of infinite mass).
+ * The pooled contacts may rest; the energy is booked, the piston doing the work of its
+ * impulse. Returns 1. */
+static int pool(const struct collision_limits *l, const struct model *m, struct rest *r,
+                int lo, int hi, double *v, double du, struct collision_books *bk)
+{
+    int n = l->n, first = lo - 1, last = hi < n ? hi : n, nb = 0;
+    double *bm = r->pool, *bv = bm + n + 2, *bs = bv + n + 2; /* each block's mass, v, start */
+    for (int i = first; i <= last; i++) {
+        bm[nb] = element(m, n, i, v, du, &bv[nb]), bs[nb] = i, nb++;
+        while (nb > 1 && bv[nb - 2] > bv[nb - 1]) {
+            double ma = bm[nb - 2], mb = bm[nb - 1], va = bv[nb - 2], vb = bv[nb - 1];
+            bv[nb - 2] = isinf(ma) ? va : isinf(mb) ? vb : (ma * va + mb * vb) / (ma + mb);
+            bm[nb - 2] = ma + mb;
+            nb--;
+        }
+    }
+    double e0 = 0.0, e1 = 0.0, impulse = 0.0;
+    for (int b = 0; b < nb; b++) {
+        int end = b + 1 < nb ? (int)bs[b + 1] : last + 1;
+        bool piston = end > n;
+        for (int i = (int)bs[b]; i < end; i++) {
+            if (i < 0 || i >= n)
+                continue;
+            e0 += 0.5 * m->m[i] * v[i] * v[i];
+            if (piston)
+                impulse += m->m[i] * (bv[b] - v[i]);
+            v[i] = bv[b];
+            e1 += 0.5 * m->m[i] * v[i] * v[i];
+        }
+        for (int k = (int)bs[b] + 1; k < end; k++)
+            r->soft[k] = r->enabled; /* constraint k joins elements k - 1 and k */
+    }
+    bk->piston += impulse * du;
+    bk->lost += fmax(0.0, e0 - e1 + impulse * du);
+    return 1;
+}
+
 int events_hit(const struct collision_limits *l, const struct model *m, struct rest *r, int k,
                const double *x, double *v, double u, double du, struct collision_books *b)
 {
@@ -370,14 +425,31 @@ int events_hit(const struct collision_limits *l, const struct model *m, struct r
     while (hi + 1 < l->count && touching(l, r, hi + 1, x, u))
         hi++;
     int hits = pair_hit(l, m, r, k, v, du, b), found = 1;
-    int sweeps = EVENTS_SWEEPS;
-    for (int sweep = 0; sweep < sweeps && found; sweep++) {
-        found = 0;
-        for (int j = 0; j <= hi - lo; j++)
-            found += pair_hit(l, m, r, sweep % 2 ? hi - j : lo + j, v, du, b);
+    double fastest = INFINITY; /* the fastest contact of the last sweep (m/s) */
+    /* A contact whose two masses have not changed since it was last visited does nothing
+     * (it was left open or parting), so each sweep visits only [from, to]: the contacts
+     * beside a change of the sweep before, stretched as a change reaches an end. */
+    int from = lo, to = hi;
+    for (int sweep = 0; found && sweep < EVENTS_SWEEPS; sweep++) {
+        found = 0, fastest = 0.0;
+        int step = sweep % 2 ? -1 : 1, hit_lo = hi + 1, hit_hi = lo - 1;
+        for (int kk = step > 0 ? from : to; kk >= from && kk <= to; kk += step) {
+            double closing = -collision_rate(l, kk, v, du);
+            if (!pair_hit(l, m, r, kk, v, du, b))
+                continue;
+            found++, fastest = closing > fastest ? closing : fastest;
+            hit_lo = kk < hit_lo ? kk : hit_lo, hit_hi = kk > hit_hi ? kk : hit_hi;
+            if (step > 0 && kk == to && to < hi)
+                to++;
+            else if (step < 0 && kk == from && from > lo)
+                from--;
+        }
         hits += found;
+        from = hit_lo - 1 > lo ? hit_lo - 1 : lo, to = hit_hi + 1 < hi ? hit_hi + 1 : hi;
     }
-    if (found) /* still closing after the sweeps: what touches moves as one */
+    if (found && fastest < r->v_rest)
+        hits += pool(l, m, r, lo, hi, v, du, b);
+    else if (found)
         hits += collision_merge(l, m, x, v, u, du, b);
     return hits;
 }

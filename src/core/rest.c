@@ -24,7 +24,7 @@ struct rest *rest_new(int n)
     if (!r)
         return NULL;
     r->on = calloc(2 * ((size_t)n + 1), sizeof *r->on);
-    r->acc = calloc((size_t)n, sizeof *r->acc);
+    r->acc = calloc((size_t)n + 3 * ((size_t)n + 2), sizeof *r->acc);
     r->first = calloc(2 * (size_t)n, sizeof *r->first);
     r->held = calloc((size_t)n, sizeof *r->held);
     if (!r->on || !r->acc || !r->first || !r->held) {
@@ -32,6 +32,7 @@ struct rest *rest_new(int n)
         return NULL;
     }
     r->soft = r->on + n + 1;
+    r->pool = r->acc + n;
     r->last = r->first + n;
     r->n = n;
     r->count = n + 1;
@@ -90,10 +91,15 @@ void rest_set(struct rest *r, int k, bool on)
     r->on[k] = on;
     r->active += on ? 1 : -1;
     /* The clusters anew: every run of masses joined by resting contacts, and single
-     * masses the wall or the piston holds. */
+     * masses the wall or the piston holds. A run of free single masses is passed over by
+     * its flags alone (in a long chain nearly every mass). */
+    int n = r->n;
     r->clusters = 0;
-    for (int f = 0, l; f < r->n && r->active; f = l + 1) {
-        int held = rest_cluster(r, r->n, f, &f, &l);
+    for (int f = 0, l; f < n && r->active; f = l + 1) {
+        if (f > 0)
+            while (f + 1 < n && !r->on[f + 1])
+                f++;
+        int held = rest_cluster(r, n, f, &f, &l);
         if (f == l && !held)
             continue;
         r->first[r->clusters] = f, r->last[r->clusters] = l;

@@ -25,6 +25,7 @@ struct rest {
     bool *on;   /* count flags: constraint k rests */
     bool *soft; /* count flags: constraint k was just hit slower than COLLISION_V_REST */
     double *acc; /* n: scratch for the chain's own accelerations */
+    double *pool; /* 3 (n + 2): scratch for an impact's pooled limit (events.c) */
     int clusters;      /* clusters of two or more masses, or held by the wall or piston */
     int *first, *last; /* each one's masses */
     signed char *held; /* -1 the wall holds it, 1 the piston, 0 nothing */
