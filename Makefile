@@ -40,8 +40,9 @@ CORE_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(CORE_PKGS))
 CORE_LIBS = $(shell $(PKG_CONFIG) --libs $(CORE_PKGS)) -lunistring -lm
 UI_CFLAGS = $(shell $(PKG_CONFIG) --cflags ncursesw)
 UI_LIBS = $(shell $(PKG_CONFIG) --libs ncursesw)
-# Figures and pixel charts: cairo draws and writes PNG, SVG and PDF; libsixel encodes sixel.
-FIG_PKGS = cairo fontconfig libsixel glib-2.0
+# Figures and pixel charts: cairo draws and writes PNG, SVG and PDF; libsixel encodes sixel
+# for terminals with fewer than 256 colour registers. GLib only for tests/sixelcheck.
+FIG_PKGS = cairo fontconfig libsixel
 FIG_CFLAGS = $(shell $(PKG_CONFIG) --cflags $(FIG_PKGS))
 FIG_LIBS = $(shell $(PKG_CONFIG) --libs $(FIG_PKGS))
 TEST_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka)
@@ -228,7 +229,8 @@ $(BUILD)/tests/pixterm: tests/pixterm.c | $(BUILD)/.deps-build
 	$(CC) $(CFLAGS) $(WARN) -D_GNU_SOURCE $(LDFLAGS) -o $@ $< -lutil
 $(BUILD)/tests/sixelcheck: tests/sixelcheck.c | $(BUILD)/.deps-build
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(WARN) $(FIG_CFLAGS) $(LDFLAGS) -o $@ $< $(FIG_LIBS)
+	$(CC) $(CFLAGS) $(WARN) $(FIG_CFLAGS) $$($(PKG_CONFIG) --cflags glib-2.0) $(LDFLAGS) -o $@ $< \
+	    $(FIG_LIBS) $$($(PKG_CONFIG) --libs glib-2.0)
 
 # tests/deb.sh builds the Debian package (make deb) unless DEB_CHECK=no; SANITIZED=yes
 # (make sanitize) tells the tests that memory and time figures are the sanitizer's.

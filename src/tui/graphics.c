@@ -5,7 +5,6 @@
 #include "graphics.h"
 
 #include <ctype.h>
-#include <glib.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -379,20 +378,33 @@ static void out_add(struct fig_bytes *b, const void *p, size_t n)
     b->len += n;
 }
 
+/* n bytes as base64 (RFC 4648, padded) into out; its length. */
+static size_t base64(const unsigned char *in, size_t n, char *out)
+{
+    static const char digit[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    size_t o = 0;
+    for (size_t i = 0; i < n; i += 3) {
+        unsigned long v = (unsigned long)in[i] << 16 | (i + 1 < n ? in[i + 1] << 8 : 0) |
+                          (i + 2 < n ? in[i + 2] : 0);
+        out[o++] = digit[v >> 18 & 63];
+        out[o++] = digit[v >> 12 & 63];
+        out[o++] = i + 1 < n ? digit[v >> 6 & 63] : '=';
+        out[o++] = i + 2 < n ? digit[v & 63] : '=';
+    }
+    return o;
+}
+
 /* The PNG in g->img as kitty escapes, placed at the cursor over cols x rows cells
  * (kitty scales it there: an image drawn with smaller cells than the terminal's still
- * fills its area), numbered id. */
+ * fills its area), numbered id. Every chunk but the last carries a multiple of 3 bytes,
+ * so each is base64 on its own. */
 static void kitty_escapes(struct graphics *g, int id, int cols, int rows)
 {
-    char head[96];
-    gchar chunk[KITTY_CHUNK + 8];
-    gint state = 0, save = 0;
+    char head[96], chunk[KITTY_CHUNK + 8];
     size_t per = KITTY_CHUNK / 4 * 3; /* raw bytes a chunk carries */
     for (size_t at = 0; at < g->img.len; at += per) {
         size_t n = g->img.len - at < per ? g->img.len - at : per;
-        gsize len = g_base64_encode_step(g->img.data + at, n, FALSE, chunk, &state, &save);
-        if (at + n >= g->img.len)
-            len += g_base64_encode_close(FALSE, chunk + len, &state, &save);
+        size_t len = base64(g->img.data + at, n, chunk);
         int hl = at == 0 ? snprintf(head, sizeof head,
                                     "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,c=%d,r=%d,m=%d;", id,
                                     cols, rows, at + n < g->img.len)
