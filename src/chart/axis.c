@@ -72,35 +72,82 @@ static bool tick_units(const struct axis *a, int k, int e, long long *n)
     return true;
 }
 
+/* v's decimal digits into d, zero-padded to at least min of them; their count. By hand:
+ * labels are formatted for every tick at every refresh, and snprintf was most of that. */
+static int put_digits(unsigned long long v, int min, char *d)
+{
+    char r[24];
+    int n = 0;
+    do {
+        r[n++] = (char)('0' + v % 10);
+        v /= 10;
+    } while (v);
+    while (n < min && n < (int)sizeof r)
+        r[n++] = '0';
+    for (int i = 0; i < n; i++)
+        d[i] = r[n - 1 - i];
+    d[n] = '\0';
+    return n;
+}
+
+/* The pieces given (NULL-ended) joined into out[32], cut as snprintf would; the length
+ * uncut. */
+static int join(char *out, const char *const *piece)
+{
+    int len = 0;
+    for (; *piece; piece++)
+        for (const char *p = *piece; *p; p++, len++)
+            if (len < 31)
+                out[len] = *p;
+    out[len < 31 ? len : 31] = '\0';
+    return len;
+}
+
+static unsigned long long magnitude(long long n)
+{
+    return n < 0 ? 0ULL - (unsigned long long)n : (unsigned long long)n;
+}
+
 /* n x 10^e in plain decimals (e < 0: -e decimals) into out[32]; its length, or a length
  * over AXIS_LABEL_MAX when it could not fit anyway. */
 static int format_plain(long long n, int e, char *out)
 {
     if (e > 15 || e < -15)
         return 99;
-    char d[40];
-    int len = snprintf(d, sizeof d, "%0*lld", e < 0 ? 1 - e : 1, llabs(n));
+    char d[40], whole[40], zeros[16] = "";
+    int len = put_digits(magnitude(n), e < 0 ? 1 - e : 1, d);
     const char *sign = n < 0 ? "-" : "";
-    if (e >= 0)
-        return snprintf(out, 32, "%s%s%.*s", sign, d, n ? e : 0, "000000000000000");
-    int whole = len + e; /* digits before the point (>= 1: zero-padded above) */
-    return snprintf(out, 32, "%s%.*s.%s", sign, whole, d, d + whole);
+    if (e >= 0) {
+        for (int i = 0; n && i < e; i++)
+            zeros[i] = '0', zeros[i + 1] = '\0';
+        return join(out, (const char *const[]){sign, d, zeros, NULL});
+    }
+    int w = len + e; /* digits before the point (>= 1: zero-padded above) */
+    memcpy(whole, d, (size_t)w);
+    whole[w] = '\0';
+    return join(out, (const char *const[]){sign, whole, ".", d + w, NULL});
 }
 
 /* n x 10^e as m.mmm e x with m 1..9 and no trailing zeros ("-2e4", "1.5e-5"). */
 static int format_exp(long long n, int e, char *out)
 {
     if (n == 0)
-        return snprintf(out, 32, "0");
-    char d[24];
-    int len = snprintf(d, sizeof d, "%lld", llabs(n));
-    int x = e + len - 1;
+        return join(out, (const char *const[]){"0", NULL});
+    char d[24], x[16], lead[2];
+    int len = put_digits(magnitude(n), 1, d);
+    int ex = e + len - 1;
     while (len > 1 && d[len - 1] == '0')
         d[--len] = '\0';
     const char *sign = n < 0 ? "-" : "";
+    x[0] = 'e';
+    if (ex < 0)
+        x[1] = '-', put_digits(magnitude(ex), 1, x + 2);
+    else
+        put_digits((unsigned long long)ex, 1, x + 1);
     if (len == 1)
-        return snprintf(out, 32, "%s%se%d", sign, d, x);
-    return snprintf(out, 32, "%s%c.%se%d", sign, d[0], d + 1, x);
+        return join(out, (const char *const[]){sign, d, x, NULL});
+    lead[0] = d[0], lead[1] = '\0';
+    return join(out, (const char *const[]){sign, lead, ".", d + 1, x, NULL});
 }
 
 /* v to one significant digit: for an axis no exact label fits (only a hand-made one:
@@ -108,9 +155,9 @@ static int format_exp(long long n, int e, char *out)
 static int format_rough(double v, char *out)
 {
     if (!isfinite(v))
-        return snprintf(out, 32, "?");
+        return join(out, (const char *const[]){"?", NULL});
     if (v == 0.0)
-        return snprintf(out, 32, "0");
+        return join(out, (const char *const[]){"0", NULL});
     int e = (int)floor(log10(fabs(v)));
     /* 10^e underflows below 1e-308: scale v up first. */
     double m = e < -300 ? v * 1e300 / pow(10.0, e + 300) : v / pow(10.0, e);

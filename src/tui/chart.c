@@ -58,8 +58,20 @@ void chart_free(struct chart *c)
     c->canvas = NULL;
 }
 
+/* True when axes a and b place and label the same ticks. */
+static bool same_axis(const struct axis *a, const struct axis *b)
+{
+    return a->lo == b->lo && a->step == b->step && a->intervals == b->intervals &&
+           a->first == b->first && a->spacing == b->spacing && a->cells == b->cells;
+}
+
 void chart_ticks_from_axis(struct chart_ticks *t, const struct axis *a)
 {
+    /* Most refreshes lay an axis as the last one did: its labels are the same. */
+    if (t->kept && same_axis(&t->of, a))
+        return;
+    t->kept = true;
+    t->of = *a;
     t->n = 0;
     for (int k = 0; k <= a->intervals && t->n < CHART_MAX_TICKS; k++) {
         int cell = a->first + k * a->spacing;
@@ -165,6 +177,22 @@ static bool is_zero(const struct axis *a, int cell)
     return fabs(v) < 1e-9 * a->step;
 }
 
+/* A gridline of w cells from (row, x) in the attributes set: solid for zero, else a dot
+ * every other cell. One wide character made once, not a string decoded per dot. */
+static void gridline(int row, int x, int w, bool zero)
+{
+    if (!term_utf8()) {
+        for (int col = 0; col < w; col += zero ? 1 : 2)
+            mvaddch(row, x + col, (chtype)(zero ? '-' : '.'));
+        return;
+    }
+    cchar_t cc;
+    wchar_t wc[2] = {zero ? L'\u2500' : L'\u00b7', 0}; /* ─ and · */
+    setcchar(&cc, wc, A_NORMAL, 0, NULL);
+    for (int col = 0; col < w; col += zero ? 1 : 2)
+        mvadd_wch(row, x + col, &cc);
+}
+
 static void draw_axes(const struct chart *c, const char *xunit)
 {
     struct rect a = c->area, f = c->frame;
@@ -175,8 +203,8 @@ static void draw_axes(const struct chart *c, const char *xunit)
         int row = a.y + a.h - 1 - c->yt.cell[k];
         bool zero = c->zero_line && is_zero(&c->ya, c->yt.cell[k]);
         attron(term_attr(PAIR_GRID));
-        for (int col = 0; col < a.w && !pixels; col += zero ? 1 : 2)
-            mvaddstr(row, a.x + col, zero ? (term_utf8() ? "─" : "-") : (term_utf8() ? "·" : "."));
+        if (!pixels)
+            gridline(row, a.x, a.w, zero);
         attroff(term_attr(PAIR_GRID));
         int len = draw_width(c->yt.label[k]);
         draw_text(row, axis - len, len, c->yt.label[k]);

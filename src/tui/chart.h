@@ -20,6 +20,8 @@ struct chart_ticks {
     int n;
     int cell[CHART_MAX_TICKS];       /* from the axis's start: the left for x, the bottom for y */
     char label[CHART_MAX_TICKS][12]; /* at most AXIS_LABEL_MAX columns */
+    bool kept;                       /* these are the ticks of axis `of` */
+    struct axis of;                  /* so an axis laid as before is not labelled again */
 };
 
 /* One legend entry: text in a colour pair (a mass's, the motor's, ...). */

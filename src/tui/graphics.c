@@ -5,14 +5,11 @@
 #include "graphics.h"
 
 #include <ctype.h>
-#include <glib.h>
 #include <math.h>
-#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
-#include <termios.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -132,19 +129,13 @@ static void parse(const char *buf, struct answers *a)
     }
 }
 
-/* Sends the queries and reads the answers until DA1's or the time is up. Keys typed
- * meanwhile wait in g->answers for the loop, and answers later than the wait are told
- * from keys there too (answer.h): nothing is flushed. */
-static void ask(struct graphics *g, struct answers *a)
+/* Sends the queries; their answers come in through the loop's keys (graphics_heard) and
+ * are taken as they are once DA1's has come or the wait is over (graphics_settle): the
+ * screen is drawn in braille meanwhile, so a terminal that answers nothing does not delay
+ * the first frame. Keys typed meanwhile wait in g->answers (answer.h): nothing is
+ * flushed. */
+static void ask(struct graphics *g)
 {
-    struct termios saved, raw;
-    if (tcgetattr(STDIN_FILENO, &saved) != 0)
-        return;
-    raw = saved;
-    raw.c_lflag &= (tcflag_t) ~(ICANON | ECHO);
-    raw.c_cc[VMIN] = 0;
-    raw.c_cc[VTIME] = 0;
-    tcsetattr(STDIN_FILENO, TCSANOW, &raw);
     /* The palette entries any pair may use, one OSC 4 asking for them all. */
     int idx[32], n = term_color_candidates(idx, 32);
     char pal[400] = "\033]4", out[sizeof queries + sizeof pal];
@@ -153,23 +144,19 @@ static void ask(struct graphics *g, struct answers *a)
         at += (size_t)snprintf(pal + at, sizeof pal - at, ";%d;?", idx[i]);
     snprintf(pal + at, sizeof pal - at, "\033\\");
     int len = snprintf(out, sizeof out, queries, pal);
-    if (len > 0 && write(STDOUT_FILENO, out, (size_t)len) == (ssize_t)len) {
-        double end = now_ms() + GRAPHICS_TIMEOUT_MS;
-        while (!a->da1) {
-            unsigned char buf[512];
-            int left = (int)(end - now_ms());
-            struct pollfd pfd = {STDIN_FILENO, POLLIN, 0};
-            if (left <= 0 || poll(&pfd, 1, left) <= 0)
-                break;
-            ssize_t got = read(STDIN_FILENO, buf, sizeof buf);
-            if (got <= 0)
-                break;
-            for (ssize_t i = 0; i < got; i++)
-                if (answer_feed(&g->answers, buf[i], now_ms() / 1e3))
-                    parse(g->answers.answer, a);
-        }
-    }
-    tcsetattr(STDIN_FILENO, TCSANOW, &saved);
+    free(g->got);
+    g->got = calloc(1, sizeof *g->got);
+    g->waiting = g->got != NULL;
+    g->wait_until = now_ms() / 1e3 + GRAPHICS_TIMEOUT_MS / 1e3;
+    fflush(stdout); /* what curses wrote goes first */
+    if (g->got && (len <= 0 || write(STDOUT_FILENO, out, (size_t)len) != (ssize_t)len))
+        g->wait_until = 0.0; /* nothing will answer */
+}
+
+void graphics_heard(struct graphics *g, const char *answer)
+{
+    if (g->waiting)
+        parse(answer, g->got);
 }
 
 /* Inside tmux or screen (no passthrough asked for): braille. */
@@ -180,12 +167,12 @@ static bool multiplexed(void)
            (term && (strncmp(term, "screen", 6) == 0 || strncmp(term, "tmux", 4) == 0));
 }
 
-/* Asks the terminal what it shows, its cell size and its background. */
-static void query(struct graphics *g)
+/* Takes what the terminal answered (a: nothing where it said nothing): what it shows, its
+ * cell size and its colours. */
+static void heard(struct graphics *g, const struct answers *ans)
 {
-    struct answers a = {0};
+    struct answers a = ans ? *ans : (struct answers){0};
     g->asked = true;
-    ask(g, &a);
     struct winsize ws;
     g->cw = g->ch = 0;
     if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_xpixel && ws.ws_ypixel && ws.ws_col &&
@@ -242,11 +229,11 @@ static void set_mode(struct graphics *g, enum graphics_mode mode)
         clearok(curscr, TRUE);
 }
 
-bool graphics_follow(struct graphics *g, enum config_graphics want, bool low)
+/* The mode for g->want and g->low as far as the terminal has said, asking it first if it
+ * never was; braille while its answers are awaited. */
+static void choose(struct graphics *g)
 {
-    if (want == g->want && low == g->low)
-        return false;
-    g->want = want, g->low = low;
+    enum config_graphics want = g->want;
     g->said[0] = '\0';
     enum graphics_mode named = want == CONFIG_GRAPHICS_SIXEL   ? GRAPHICS_SIXEL
                                : want == CONFIG_GRAPHICS_KITTY ? GRAPHICS_KITTY
@@ -254,26 +241,45 @@ bool graphics_follow(struct graphics *g, enum config_graphics want, bool low)
     enum graphics_mode mode = GRAPHICS_BRAILLE;
     if (want == CONFIG_GRAPHICS_BRAILLE || !g->tty) {
         mode = GRAPHICS_BRAILLE;
-    } else if (low) {
+    } else if (g->low) {
         snprintf(g->said, sizeof g->said, "braille while the refresh is low (the Refresh "
                  "control)");
     } else if (g->multiplexed) {
         snprintf(g->said, sizeof g->said, "braille inside tmux or screen");
+    } else if (!g->asked) {
+        if (!g->waiting)
+            ask(g); /* braille until the answers are in: graphics_settle */
+    } else if (named != GRAPHICS_BRAILLE && g->sized) {
+        mode = named; /* asked for by name: believed where the cell size is known */
+    } else if (named != GRAPHICS_BRAILLE) {
+        snprintf(g->said, sizeof g->said, "the terminal did not say its cell size in "
+                 "pixels; braille");
     } else {
-        if (!g->asked)
-            query(g);
-        /* Asked for by name: believed where the cell size is known, said otherwise. */
-        if (named != GRAPHICS_BRAILLE && g->sized)
-            mode = named;
-        else if (named != GRAPHICS_BRAILLE)
-            snprintf(g->said, sizeof g->said, "the terminal did not say its cell size in "
-                     "pixels; braille");
-        else
-            mode = g->can;
+        mode = g->can;
     }
     if (want == CONFIG_GRAPHICS_AUTO)
         g->said[0] = '\0'; /* auto takes what there is, and the control shows it */
     set_mode(g, mode);
+}
+
+bool graphics_follow(struct graphics *g, enum config_graphics want, bool low)
+{
+    if (want == g->want && low == g->low)
+        return false;
+    g->want = want, g->low = low;
+    choose(g);
+    return true;
+}
+
+bool graphics_settle(struct graphics *g)
+{
+    if (!g->waiting || (!g->got->da1 && now_ms() / 1e3 < g->wait_until))
+        return false;
+    g->waiting = false;
+    heard(g, g->got);
+    free(g->got);
+    g->got = NULL;
+    choose(g);
     return true;
 }
 
@@ -372,20 +378,33 @@ static void out_add(struct fig_bytes *b, const void *p, size_t n)
     b->len += n;
 }
 
+/* n bytes as base64 (RFC 4648, padded) into out; its length. */
+static size_t base64(const unsigned char *in, size_t n, char *out)
+{
+    static const char digit[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    size_t o = 0;
+    for (size_t i = 0; i < n; i += 3) {
+        unsigned long v = (unsigned long)in[i] << 16 | (i + 1 < n ? in[i + 1] << 8 : 0) |
+                          (i + 2 < n ? in[i + 2] : 0);
+        out[o++] = digit[v >> 18 & 63];
+        out[o++] = digit[v >> 12 & 63];
+        out[o++] = i + 1 < n ? digit[v >> 6 & 63] : '=';
+        out[o++] = i + 2 < n ? digit[v & 63] : '=';
+    }
+    return o;
+}
+
 /* The PNG in g->img as kitty escapes, placed at the cursor over cols x rows cells
  * (kitty scales it there: an image drawn with smaller cells than the terminal's still
- * fills its area), numbered id. */
+ * fills its area), numbered id. Every chunk but the last carries a multiple of 3 bytes,
+ * so each is base64 on its own. */
 static void kitty_escapes(struct graphics *g, int id, int cols, int rows)
 {
-    char head[96];
-    gchar chunk[KITTY_CHUNK + 8];
-    gint state = 0, save = 0;
+    char head[96], chunk[KITTY_CHUNK + 8];
     size_t per = KITTY_CHUNK / 4 * 3; /* raw bytes a chunk carries */
     for (size_t at = 0; at < g->img.len; at += per) {
         size_t n = g->img.len - at < per ? g->img.len - at : per;
-        gsize len = g_base64_encode_step(g->img.data + at, n, FALSE, chunk, &state, &save);
-        if (at + n >= g->img.len)
-            len += g_base64_encode_close(FALSE, chunk + len, &state, &save);
+        size_t len = base64(g->img.data + at, n, chunk);
         int hl = at == 0 ? snprintf(head, sizeof head,
                                     "\033_Ga=T,f=100,i=%d,q=2,C=1,z=-1,c=%d,r=%d,m=%d;", id,
                                     cols, rows, at + n < g->img.len)
@@ -394,6 +413,11 @@ static void kitty_escapes(struct graphics *g, int id, int cols, int rows)
         out_add(&g->out, chunk, len);
         out_add(&g->out, "\033\\", 2);
     }
+}
+
+bool graphics_ready(const struct graphics *g)
+{
+    return g->mode == GRAPHICS_BRAILLE || now_ms() / 1e3 >= g->next_at;
 }
 
 void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool overlay)
@@ -471,6 +495,8 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
 
 void graphics_free(struct graphics *g)
 {
+    free(g->got);
+    g->got = NULL;
     fig_bytes_free(&g->img);
     fig_bytes_free(&g->out);
     fig_bytes_free(&g->rgb);

@@ -19,13 +19,14 @@
 #include "../fig/pixels.h"
 #include "chart.h"
 
+struct answers;
 #define GRAPHICS_TIMEOUT_MS 100 /* how long the terminal has to answer at start */
 #define GRAPHICS_SLOTS 12       /* images shown at once, at most (the modes view's ten) */
 /* The images' pace: a batch of P pixels and B bytes is followed by none for P / PIXELS_S or
  * B / BYTES_S seconds, the longer (so a large terminal refreshes its images less often,
  * as the braille plots do, and the link and the CPU are spared). */
 #define GRAPHICS_PIXELS_S 1.2e6
-#define GRAPHICS_SIXEL_BYTES_S 700e3
+#define GRAPHICS_SIXEL_BYTES_S 280e3
 #define GRAPHICS_KITTY_BYTES_S 300e3
 
 enum graphics_mode { GRAPHICS_BRAILLE, GRAPHICS_SIXEL, GRAPHICS_KITTY };
@@ -35,8 +36,11 @@ struct graphics {
     enum graphics_mode can;    /* what the terminal said it shows (BRAILLE: no images) */
     bool tty;                  /* standard input and output are a terminal */
     bool multiplexed;          /* inside tmux or screen */
-    bool asked;                /* the terminal was asked (at start, or when pixels were
-                                * first wanted) */
+    bool asked;                /* the terminal has answered, or had its time to (asked at
+                                * start, or when pixels were first wanted) */
+    bool waiting;              /* the queries are out, their answers not all in */
+    double wait_until;         /* monotonic seconds: then the answers are taken as they are */
+    struct answers *got;       /* what they said so far, while waiting */
     bool sized;                /* its cell size in pixels is known */
     enum config_graphics want; /* what graphics_follow last followed (-1: nothing yet) */
     bool low;                  /* ... and the low refresh then */
@@ -62,23 +66,36 @@ struct graphics {
                                 * out wait there) */
 };
 
-/* Asks the terminal (standard input and output, before curses starts) and chooses the
- * mode for c's graphics and low bandwidth: braille without asking where they choose it,
- * and inside tmux and screen. */
+/* Chooses the mode for c's graphics and low bandwidth, after curses started: braille
+ * without asking where they choose it, and inside tmux and screen; otherwise the
+ * terminal is asked and the charts are braille until it answered (graphics_settle). */
 void graphics_detect(struct graphics *g, const struct config *c);
 
 /* Follows the Graphics control (want) and the low refresh (low) where they changed since
  * the last call: braille, or pixels where the terminal shows them (asking it first if
- * pixels were never wanted before); leaving pixels clears the images, and the screen is
- * drawn again. True when it changed something; g->said then says why it is braille if
- * pixels were asked for by name. */
+ * pixels were never wanted before: braille until graphics_settle); leaving pixels clears
+ * the images, and the screen is drawn again. True when it changed something; g->said then
+ * says why it is braille if pixels were asked for by name. */
 bool graphics_follow(struct graphics *g, enum config_graphics want, bool low);
+
+/* An answer the loop's key scanner completed (NUL-ended): taken while the queries' answers
+ * are awaited. */
+void graphics_heard(struct graphics *g, const char *answer);
+
+/* Once the terminal has answered every query (DA1's answer is the last), or had
+ * GRAPHICS_TIMEOUT_MS to: takes what it said and chooses the mode again as the last
+ * graphics_follow asked. True when it did (g->said as graphics_follow leaves it). */
+bool graphics_settle(struct graphics *g);
 
 /* The mode in force as --graphics spells it (CONFIG_GRAPHICS_SIXEL, _KITTY, _BRAILLE). */
 enum config_graphics graphics_now(const struct graphics *g);
 
 /* The images on the screen are gone (resize, Ctrl+L, a new layout): send them again. */
 void graphics_invalidate(struct graphics *g);
+
+/* True when an image could go now (always, for braille): the plots refresh no faster
+ * than their images can follow, so no refresh is computed for nothing. */
+bool graphics_ready(const struct graphics *g);
 
 /* After a frame: the n charts shown as images where they changed; with overlay, none
  * (kitty's are taken away, since text does not cover them). */

@@ -41,6 +41,7 @@ struct tui {
     struct record rec;    /* --record: the session being written */
     char said[64];        /* the command the key being handled stands for, or "" */
     struct graphics gfx;  /* the charts as images, where the terminal shows them */
+    bool gfx_start;       /* its answers awaited are to the queries at start (--graphics) */
 };
 
 /* True while time cursors are shown on the plots: their keys come first. */

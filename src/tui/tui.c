@@ -135,20 +135,25 @@ static void watch_backlog(struct tui *t, double spent)
 }
 
 /* The charts drawn as the Graphics and Refresh controls say, whatever changed them (a
- * key, the mouse, a typed value, a lesson, a slow link); a Graphics control asking for
- * pixels that cannot be says why. */
+ * key, the mouse, a typed value, a lesson, a slow link), and as the terminal answered
+ * once it has; a Graphics control (or --graphics) asking for pixels that cannot be says
+ * why. */
 static void follow_graphics(struct tui *t)
 {
     struct app *app = &t->app;
     bool asked = t->gfx.want != app->cfg.graphics;
-    if (!graphics_follow(&t->gfx, app->cfg.graphics, app->cfg.low_bandwidth))
+    bool followed = graphics_follow(&t->gfx, app->cfg.graphics, app->cfg.low_bandwidth);
+    bool settled = graphics_settle(&t->gfx);
+    if (!followed && !settled)
         return;
     if (app->graphics_now != graphics_now(&t->gfx))
         t->plots_dirty = true;
     app->graphics_now = graphics_now(&t->gfx);
-    if (asked && t->gfx.said[0])
-        app_say(app, SAID_ERROR, "Graphics %s: %s",
+    if ((asked || settled) && t->gfx.said[0])
+        app_say(app, SAID_ERROR, "%s %s: %s", t->gfx_start ? "--graphics" : "Graphics",
                 config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
+    if (settled)
+        t->gfx_start = false;
 }
 
 /* One step of the chain for the clock: a lesson's run stops at its end. */
@@ -177,7 +182,8 @@ static int next_key(struct tui *t, int ms)
             k = answer_key(s);
             return k >= 0 ? k : ERR;
         }
-        answer_feed(s, ch, now);
+        if (answer_feed(s, ch, now))
+            graphics_heard(&t->gfx, s->answer);
     }
 }
 
@@ -219,13 +225,16 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         app_free(&t.app);
         return EXIT_FAILURE;
     }
-    graphics_detect(&t.gfx, cfg); /* before curses: the terminal is asked directly */
-    t.app.graphics_now = graphics_now(&t.gfx);
     if (!term_start(cfg->color, cfg->glyphs)) {
         record_abandon(&t.rec);
         app_free(&t.app);
         return EXIT_FAILURE;
     }
+    /* Asked once curses has the terminal (no echo, no line buffering): the answers come in
+     * with the keys, and the first frames are braille until they have. */
+    graphics_detect(&t.gfx, cfg);
+    t.gfx_start = t.gfx.waiting;
+    t.app.graphics_now = graphics_now(&t.gfx);
     t.teach.view = -1;
     screen_relayout(&t);
     if (lesson) {
@@ -256,9 +265,10 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
             record_time(&t.rec, &t.app);
         /* Plots refresh at plot_hz() while running (the modes view's shapes swing even
-         * while paused), at once after anything else. */
+         * while paused), as images no faster than they can be sent, and at once after
+         * anything else. */
         bool moving = t.app.running || t.views.shown == VIEW_MODES;
-        bool refresh = t.plots_dirty || (moving && now >= t.plot_due);
+        bool refresh = t.plots_dirty || (moving && now >= t.plot_due && graphics_ready(&t.gfx));
         if (refresh) {
             t.plot_due = now + 1.0 / plot_hz(&t);
             t.plots_dirty = false;

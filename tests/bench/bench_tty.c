@@ -4,7 +4,7 @@
  * memory. Prints one table row. The terminal answers the program's start-up queries as
  * BENCH_TERM says: vt220 (the default: device attributes without sixel, so braille),
  * sixel or kitty (images; cells of 10 x 20 pixels, a white background), or none (it
- * never answers: the program waits its 100 ms and draws braille).
+ * never answers: the program draws braille at once and keeps it).
  * usage: bench_tty COLS ROWS SECONDS LABEL PROGRAM [ARGS...] */
 #include <errno.h>
 #include <poll.h>
