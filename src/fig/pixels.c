@@ -1,8 +1,7 @@
 /* pixels.c: drawing areas as sixel or PNG images. Sixel uses xterm's 256 colours, which
  * hold every colour of the program exactly, mapped without diffusion: a colour drawn is
- * a colour sent, and the anti-aliased edges take the nearest of the others (sixel.c
- * encodes it; in a terminal with fewer colour registers, libsixel's palette of that many
- * for each image). */
+ * a colour sent, and the anti-aliased edges take the nearest of the others (in a terminal
+ * with fewer colour registers, libsixel's palette of that many for each image). */
 #include "pixels.h"
 
 #include <cairo.h>
@@ -14,7 +13,6 @@
 #include <string.h>
 
 #include "paint.h"
-#include "sixel.h"
 
 
 double fig_pixel_x(double x, int cw)
@@ -142,18 +140,25 @@ static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch,
         fig_paint_strokes(cr, c->strokes, cw, ch, pal);
 }
 
-/* For a terminal with fewer than 256 colour registers: a palette of its size that
- * libsixel chooses from the image (median cut), mapped without diffusion. */
 static int encode_sixel(unsigned char *rgb, int w, int h, int registers, struct fig_bytes *out)
 {
+    /* xterm's 256 colours: the program's colours are among them (its 6x6x6 cube), and
+     * libsixel maps onto a built-in palette through its cache, fast enough for every
+     * refresh. A terminal with fewer registers gets a palette of its size that libsixel
+     * chooses from the image (median cut). */
     sixel_dither_t *dither = NULL;
-    SIXELSTATUS st = sixel_dither_new(&dither, registers, NULL);
-    if (SIXEL_SUCCEEDED(st))
-        st = sixel_dither_initialize(dither, rgb, w, h, SIXEL_PIXELFORMAT_RGB888,
-                                     SIXEL_LARGE_AUTO, SIXEL_REP_AUTO, SIXEL_QUALITY_AUTO);
+    SIXELSTATUS st = SIXEL_OK;
+    if (registers >= 2 && registers < 256) {
+        st = sixel_dither_new(&dither, registers, NULL);
+        if (SIXEL_SUCCEEDED(st))
+            st = sixel_dither_initialize(dither, rgb, w, h, SIXEL_PIXELFORMAT_RGB888,
+                                         SIXEL_LARGE_AUTO, SIXEL_REP_AUTO, SIXEL_QUALITY_AUTO);
+    } else {
+        dither = sixel_dither_get(SIXEL_BUILTIN_XTERM256);
+    }
     sixel_output_t *output = NULL;
     if (SIXEL_SUCCEEDED(st))
-        st = sixel_output_new(&output, sixel_write, out, NULL);
+        st = dither ? sixel_output_new(&output, sixel_write, out, NULL) : SIXEL_BAD_ALLOCATION;
     if (SIXEL_SUCCEEDED(st)) {
         sixel_dither_set_diffusion_type(dither, SIXEL_DIFFUSE_NONE);
         sixel_dither_set_pixelformat(dither, SIXEL_PIXELFORMAT_RGB888);
@@ -192,10 +197,6 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, const struct fig_palet
     int err = cs == CAIRO_STATUS_SUCCESS ? 0 : ENOMEM;
     if (!err && e == FIG_KITTY_PNG) {
         err = cairo_surface_write_to_png_stream(s, png_write, out) == CAIRO_STATUS_SUCCESS
-                  ? 0 : ENOMEM;
-    } else if (!err && !few) { /* xterm's 256 colours: sixel.c, straight from cairo's */
-        err = fig_sixel_xterm256(cairo_image_surface_get_data(s),
-                                 cairo_image_surface_get_stride(s), w, h, out) == 0
                   ? 0 : ENOMEM;
     } else if (!err) {
         /* cairo's RGB24 is a native-endian 32-bit word a pixel: take out R, G, B. */

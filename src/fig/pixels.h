@@ -1,6 +1,6 @@
 /* pixels.h: a chart's drawing area as an image for the terminal: painted with cairo (the
  * background, gridlines on the ticks, the zero line, the strokes) at the terminal's cell
- * size, then encoded as sixel (on xterm's 256 colours, which hold the program's: sixel.c)
+ * size, then encoded as sixel (libsixel, on xterm's 256 colours, which hold the program's)
  * or fewer where the terminal has fewer colour registers, or as PNG (for kitty's protocol). No curses here:
  * tui/graphics.c sends the bytes. */
 #ifndef SPRINGSIM_PIXELS_H
