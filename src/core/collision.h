@@ -1,6 +1,6 @@
 /* collision.h: contacts with the left wall, the piston or right wall, and between
  * neighbouring masses, plus the velocity cap. The limits are computed
- * once per model and shared by the checks, the event location in sim.c and the
+ * once per model and shared by the checks, the event location in sim_step.c and the
  * resolution; every change of energy a contact makes is booked. */
 #ifndef SPRINGSIM_COLLISION_H
 #define SPRINGSIM_COLLISION_H

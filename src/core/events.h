@@ -1,7 +1,7 @@
 /* events.h: contacts as events inside a step: where
  * along a piece a gap closes (grazes included) or a resting contact would start to pull,
  * and what happens at that instant (the contact rule on whole clusters, resting contacts
- * made and parted). sim.c steps to the instants these find. */
+ * made and parted). sim_step.c steps to the instants these find. */
 #ifndef SPRINGSIM_EVENTS_H
 #define SPRINGSIM_EVENTS_H
 
