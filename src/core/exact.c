@@ -62,18 +62,13 @@
 #define MAX_SLOTS 4                      /* cached steps, for small chains */
 #define SLOT_BUDGET (32.0 * 1024 * 1024) /* bytes of cache beyond the first slot */
 #define BASE_NORM 0.5                    /* ||A|| times the quadrature's base interval */
-#define REUSE 1e-8                       /* ||A|| |h - cached h| up to which a step is reused */
 
 /* One cached step: everything that depends on (model, drive kind, w, h) but not on z. */
 struct slot {
-    gsl_matrix prop;     /* E(h) */
-    gsl_matrix gram;     /* Gd: the dampers' loss as a quadratic form */
-    double *nw;          /* Nw_s then Nw_r (d each): the motor's work */
-    unsigned long model; /* the model's generation; 0: empty */
-    enum exact_kind kind;
-    double omega, h;    /* the sine's angular frequency (sine only), the step */
-    double norm;        /* ||A|| */
-    unsigned long used; /* when last used, for replacement */
+    struct exact_key key; /* which step it holds (first: exact_key_find reads it) */
+    gsl_matrix prop;      /* E(h) */
+    gsl_matrix gram;      /* Gd: the dampers' loss as a quadratic form */
+    double *nw;           /* Nw_s then Nw_r (d each): the motor's work */
 };
 
 struct exact {
@@ -166,7 +161,7 @@ static int dense_alloc(struct exact *e)
         sl->prop = gsl_matrix_view_array(at, (size_t)d, (size_t)d).matrix;
         sl->gram = gsl_matrix_view_array(at + dd, (size_t)d, (size_t)d).matrix;
         sl->nw = e->y + 2 * d + 2 * (size_t)d * (size_t)i;
-        sl->model = 0;
+        sl->key.model = 0;
     }
     return 0;
 }
@@ -214,12 +209,9 @@ int exact_copy(struct exact *dst, const struct exact *src)
         /* The values only: each keeps its own views of its own memory. */
         struct slot *a = &dst->slot[i];
         const struct slot *b = &src->slot[i];
-        a->model = src->mem ? b->model : 0;
-        a->kind = b->kind;
-        a->omega = b->omega;
-        a->h = b->h;
-        a->norm = b->norm;
-        a->used = b->used;
+        a->key = b->key;
+        if (!src->mem)
+            a->key.model = 0;
     }
     return 0;
 }
@@ -455,36 +447,16 @@ static int fill_slot(struct exact *e, struct slot *sl, enum exact_kind kind, dou
     generator(e, kind, omega, h, s);
     if (exact_expm(s, &pv.matrix, t))
         return -1;
-    sl->model = e->model;
-    sl->kind = kind;
-    sl->omega = omega;
-    sl->h = h;
-    sl->norm = norm;
+    sl->key = (struct exact_key){e->model, kind, omega, h, norm, sl->key.used};
     return 0;
 }
 
-/* The cached step for (kind, omega, h), filled if need be; NULL when that fails. A step
- * within REUSE / ||A|| of a cached one is that one, corrected to first order by the caller:
- * the steps of a long run differ by the rounding of their times. */
+/* The cached step for (kind, omega, h), filled if need be; NULL when that fails. */
 static struct slot *find_slot(struct exact *e, enum exact_kind kind, double omega, double h, int d)
 {
-    struct slot *old = &e->slot[0];
-    e->clock++;
-    for (int i = 0; i < e->slots; i++) {
-        struct slot *sl = &e->slot[i];
-        if (sl->model == e->model && sl->kind == kind &&
-            (kind != EXACT_SINE || sl->omega == omega) && fabs(sl->h - h) * sl->norm <= REUSE) {
-            sl->used = e->clock;
-            return sl;
-        }
-        if (sl->used < old->used)
-            old = sl;
-    }
-    old->model = 0;
-    if (fill_slot(e, old, kind, omega, h, d))
-        return NULL;
-    old->used = e->clock;
-    return old;
+    int fresh, i = exact_key_find(e->slot, sizeof e->slot[0], e->slots, &e->clock, e->model,
+                                  kind, omega, h, &fresh);
+    return fresh && fill_slot(e, &e->slot[i], kind, omega, h, d) ? NULL : &e->slot[i];
 }
 
 int exact_needs_general(const struct model *m)
@@ -575,7 +547,7 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
     /* A step a little longer or shorter than the cached one: the difference first, as
      * z + delta A z (error (delta ||A||)^2 / 2 <= 5e-17) and its books as delta times the
      * powers at z. */
-    double dd = 0.0, ww = 0.0, delta = h - sl->h;
+    double dd = 0.0, ww = 0.0, delta = h - sl->key.h;
     if (delta != 0.0) {
         for (int i = 0; i < n; i++)
             dd += delta * e->gam[i] * z[n + i] * z[n + i];

@@ -39,16 +39,12 @@
 #define SLOTS_MAX 4
 #define SLOT_BUDGET (32.0 * 1024 * 1024) /* bytes of cache beyond the first slot */
 #define BASE_NORM 0.5
-#define REUSE 1e-8
 enum { BOOK_D, BOOK_W, BOOK_F, BOOKS };
 
 struct gslot {
+    struct exact_key key;    /* which step it holds (first: exact_key_find reads it) */
     gsl_matrix prop;         /* E(h) */
     gsl_matrix book[BOOKS];  /* B for each book */
-    unsigned long model;     /* generation; 0: empty */
-    enum exact_kind kind;
-    double omega, h, norm;
-    unsigned long used;
 };
 
 struct general {
@@ -139,7 +135,7 @@ static int alloc_mem(struct general *g)
         at += dd;
         for (int b = 0; b < BOOKS; b++, at += dd)
             sl->book[b] = gsl_matrix_view_array(at, d, d).matrix;
-        sl->model = 0;
+        sl->key.model = 0;
     }
     return 0;
 }
@@ -160,9 +156,9 @@ int general_copy(struct general *dst, const struct general *src)
     for (int i = 0; i < src->slots; i++) {
         struct gslot *a = &dst->slot[i];
         const struct gslot *b = &src->slot[i];
-        a->model = src->mem ? b->model : 0;
-        a->kind = b->kind, a->omega = b->omega, a->h = b->h, a->norm = b->norm;
-        a->used = b->used;
+        a->key = b->key;
+        if (!src->mem)
+            a->key.model = 0;
     }
     return 0;
 }
@@ -365,30 +361,17 @@ static int fill_slot(struct general *g, struct gslot *sl, enum exact_kind kind, 
     generator(g, kind, omega, h, s);
     if (exact_expm(s, &pv.matrix, t))
         return -1;
-    sl->model = g->model, sl->kind = kind, sl->omega = omega, sl->h = h, sl->norm = norm;
+    sl->key = (struct exact_key){g->model, kind, omega, h, norm, sl->key.used};
     return 0;
 }
 
+/* The cached step for (kind, omega, h), filled if need be; NULL when that fails. */
 static struct gslot *find_slot(struct general *g, enum exact_kind kind, double omega, double h,
                                int d)
 {
-    struct gslot *old = &g->slot[0];
-    g->clock++;
-    for (int i = 0; i < g->slots; i++) {
-        struct gslot *sl = &g->slot[i];
-        if (sl->model == g->model && sl->kind == kind &&
-            (kind != EXACT_SINE || sl->omega == omega) && fabs(sl->h - h) * sl->norm <= REUSE) {
-            sl->used = g->clock;
-            return sl;
-        }
-        if (sl->used < old->used)
-            old = sl;
-    }
-    old->model = 0;
-    if (fill_slot(g, old, kind, omega, h, d))
-        return NULL;
-    old->used = g->clock;
-    return old;
+    int fresh, i = exact_key_find(g->slot, sizeof g->slot[0], g->slots, &g->clock, g->model,
+                                  kind, omega, h, &fresh);
+    return fresh && fill_slot(g, &g->slot[i], kind, omega, h, d) ? NULL : &g->slot[i];
 }
 
 /* z^T B z for the d x d leading block of b (y: d of scratch). */
@@ -440,7 +423,7 @@ int general_advance(struct general *g, const struct model *m, const struct exact
         z[2 * n] = d->w0 + d->dw * (a - d->t0);
         z[2 * n + 1] = d->dw / g->ws;
     }
-    double add[BOOKS] = {0.0, 0.0, 0.0}, delta = h - sl->h;
+    double add[BOOKS] = {0.0, 0.0, 0.0}, delta = h - sl->key.h;
     if (delta != 0.0) {
         /* the difference first, to first order: z += delta A z, books += delta z^T Q z */
         gsl_matrix q[BOOKS];

@@ -41,14 +41,11 @@
 #define PER_MODE 32      /* numbers a mode keeps for a step: E's rows q, p (8), Gd (16), Nw (8) */
 #define BASE_NORM 0.5    /* ||A_j|| times the quadrature's base interval */
 #define GSL_ROW_TOP 100.0 /* see exact_expm */
-#define REUSE 1e-8       /* ||A|| |h - cached h| up to which a step is reused */
 
 struct mslot {
-    double *data;        /* PER_MODE a mode */
-    unsigned long model; /* the generation; 0: empty */
-    enum exact_kind kind;
-    double omega, h, norm; /* the sine's angular frequency, the step, the largest ||A_j|| */
-    unsigned long used;
+    struct exact_key key; /* which step it holds, ||A|| the largest ||A_j|| (first:
+                             exact_key_find reads it) */
+    double *data;         /* PER_MODE a mode */
 };
 
 struct modal {
@@ -295,33 +292,20 @@ static int fill_mode(const struct modal *md, int j, enum exact_kind kind, double
 /* The cached step for (kind, omega, h), filled if need be; NULL when that fails. */
 static struct mslot *find_slot(struct modal *md, enum exact_kind kind, double omega, double h)
 {
-    struct mslot *old = &md->slot[0];
-    md->clock++;
-    for (int i = 0; i < SLOTS; i++) {
-        struct mslot *sl = &md->slot[i];
-        if (sl->model == md->model && sl->kind == kind &&
-            (kind != EXACT_SINE || sl->omega == omega) && fabs(sl->h - h) * sl->norm <= REUSE) {
-            sl->used = md->clock;
-            return sl;
-        }
-        if (sl->used < old->used)
-            old = sl;
-    }
-    old->model = 0;
+    int fresh, i = exact_key_find(md->slot, sizeof md->slot[0], SLOTS, &md->clock, md->model,
+                                  kind, omega, h, &fresh);
+    struct mslot *sl = &md->slot[i];
+    if (!fresh)
+        return sl;
     double most = 0.0;
     for (int j = 0; j < md->n; j++) {
         double norm;
-        if (fill_mode(md, j, kind, omega, h, old->data + (size_t)PER_MODE * (size_t)j, &norm))
+        if (fill_mode(md, j, kind, omega, h, sl->data + (size_t)PER_MODE * (size_t)j, &norm))
             return NULL;
         most = fmax(most, norm);
     }
-    old->model = md->model;
-    old->kind = kind;
-    old->omega = omega;
-    old->h = h;
-    old->norm = most;
-    old->used = md->clock;
-    return old;
+    sl->key = (struct exact_key){md->model, kind, omega, h, most, sl->key.used};
+    return sl;
 }
 
 /* The drive's end u at t. */
@@ -362,7 +346,7 @@ int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_dri
     }
     /* A step a little longer or shorter than the cached one: the difference first, to
      * first order (error (delta ||A||)^2 / 2 <= 5e-17), as exact.c does. */
-    double dd = 0.0, ww = 0.0, delta = h - sl->h;
+    double dd = 0.0, ww = 0.0, delta = h - sl->key.h;
     if (delta != 0.0) {
         for (int j = 0; j < n; j++) {
             double q = md->w[j] * md->hm[2 * j], p = md->hm[2 * j + 1];
@@ -448,4 +432,28 @@ int exact_expm(gsl_matrix *s, gsl_matrix *out, gsl_matrix *t)
         gsl_matrix_memcpy(out, t);
     }
     return 0;
+}
+
+int exact_key_find(void *slots, size_t stride, int count, unsigned long *clock,
+                   unsigned long model, enum exact_kind kind, double omega, double h,
+                   int *fresh)
+{
+    int old = 0;
+    struct exact_key *ko = slots;
+    ++*clock;
+    for (int i = 0; i < count; i++) {
+        struct exact_key *k = (struct exact_key *)((char *)slots + (size_t)i * stride);
+        if (k->model == model && k->kind == kind && (kind != EXACT_SINE || k->omega == omega) &&
+            fabs(k->h - h) * k->norm <= EXACT_REUSE) {
+            k->used = *clock;
+            *fresh = 0;
+            return i;
+        }
+        if (k->used < ko->used)
+            ko = k, old = i;
+    }
+    ko->model = 0;
+    ko->used = *clock;
+    *fresh = 1;
+    return old;
 }

@@ -44,6 +44,28 @@ int modal_take(struct modal *md, const struct model *m, double alpha, double bet
 int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_drive *d, double a,
                   double b, double *x, double *v, double *diss, double *work);
 
+/* Which step a cached propagator holds (exact.c's and exact_general.c's caches): the
+ * model's generation (0: empty), the drive's form, the sine's angular frequency (sine
+ * only), the step h, ||A||, and when it was last used. */
+struct exact_key {
+    unsigned long model;
+    enum exact_kind kind;
+    double omega, h, norm;
+    unsigned long used;
+};
+
+/* A step within this of a cached one, times ||A||, is that one (corrected to first order
+ * by the caller): the steps of a long run differ by the rounding of their times. */
+#define EXACT_REUSE 1e-8
+
+/* Among count slots, stride bytes apart, each opening with its struct exact_key (first
+ * the one at slots): the one that holds the step (model, kind, omega, h), marked used now
+ * (*clock advanced); when none does, the least recently used one, emptied and marked used,
+ * and *fresh set (the caller fills it and writes its key). Its index. */
+int exact_key_find(void *slots, size_t stride, int count, unsigned long *clock,
+                   unsigned long model, enum exact_kind kind, double omega, double h,
+                   int *fresh);
+
 /* expm(s) into out (square, same size); s is overwritten, t is scratch. 0 or -1. */
 int exact_expm(gsl_matrix *s, gsl_matrix *out, gsl_matrix *t);
 
