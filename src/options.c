@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <getopt.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -295,17 +296,14 @@ static bool mode_mismatch(const bool *given, enum mode mode, bool summary)
 }
 
 /* Parses the command line into c and cli. Returns -1 to go on, or an exit status. */
-int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
-                  const char *exe_dir)
+/* The first pass: help, version and the key list answered at once (their exit code), and
+ * the preset, applied before the rest wherever it stands. -1 to go on. */
+static int first_pass(int argc, char **argv, const char *shortopts, const struct option *lo,
+                      struct config *c, struct cli *cli, const char *exe_dir)
 {
-    struct option lo[CFG_KEY_COUNT + 1];
-    char shortopts[64], err[512], q[4 * CONFIG_QUOTE_MAX + 48];
     const char *preset = NULL;
+    char err[512];
     int ch;
-
-    build_longopts(lo, shortopts);
-    opterr = 0;
-    /* First pass: help, version and the preset, which is applied before the rest. */
     optind = 0;
     while ((ch = getopt_long(argc, argv, shortopts, lo, NULL)) != -1) {
         int k = option_index(ch);
@@ -333,109 +331,83 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
             preset = optarg;
         }
     }
-    if (preset) {
-        enum preset_status st = preset_find(preset, exe_dir, cli->preset_path,
-                                            sizeof cli->preset_path);
-        if (st == PRESET_NONE) {
-            options_say("--preset: %s", cli->preset_path);
-            return EXIT_USAGE;
-        }
-        st = preset_load(cli->preset_path, c, err, sizeof err);
-        if (st != PRESET_OK) {
-            options_say("%s", err);
-            return st == PRESET_IO ? EXIT_FAILURE : EXIT_USAGE;
-        }
+    if (!preset)
+        return -1;
+    if (preset_find(preset, exe_dir, cli->preset_path, sizeof cli->preset_path) ==
+        PRESET_NONE) {
+        options_say("--preset: %s", cli->preset_path);
+        return EXIT_USAGE;
     }
-    /* Second pass: everything else, in order; the first bad one is reported. */
-    optind = 0;
-    int modes = 0;
-    char mode_option[32] = ""; /* the option that chose the mode */
-    bool given[CFG_KEY_COUNT] = {false}; /* the options on the command line */
-    for (;;) {
-        int before = optind ? optind : 1;
-        ch = getopt_long(argc, argv, shortopts, lo, NULL);
-        if (ch == -1)
-            break;
-        if (ch == '?') {
-            if (optopt >= 256 && optopt < 256 + CFG_KEY_COUNT)
-                options_say("--%s: takes no value, but was given %s (see springsim --help)",
-                            config_options[optopt - 256].name, written(argv, before, q, sizeof q));
-            else if (optopt)
-                options_say("'-%c' is not an option (see springsim --help)", optopt);
-            else
-                options_say("%s is not an option (see springsim --help)",
-                            written(argv, before, q, sizeof q));
-            return EXIT_USAGE;
-        }
-        if (ch == ':') {
-            int k = option_index(optopt);
-            char arg[128];
-            if (k >= 0) {
-                config_arg(k, arg, sizeof arg);
-                options_say("--%s: needs a value (%s)", config_options[k].name, arg);
-            } else
-                options_say("%s needs a value (see springsim --help)",
-                            written(argv, before, q, sizeof q));
-            return EXIT_USAGE;
-        }
-        int k = option_index(ch);
-        if (k < 0)
-            continue;
-        given[k] = true;
-        if (config_options[k].kind != CONFIG_MODE) {
-            if (k == CFG_PRESET)
-                continue;
-            if (config_set(c, k, optarg, err, sizeof err) != 0) {
-                options_say("--%s: %s", config_options[k].name, err);
-                return EXIT_USAGE;
-            }
-            c->origin[k] = (struct config_origin){NULL, 0};
-            continue;
-        }
-        enum mode m = MODE_INTERACTIVE;
-        switch (k) {
-        case CFG_HEADLESS:
-            m = MODE_HEADLESS;
-            break;
-        case CFG_MODES:
-            m = MODE_MODES;
-            break;
-        case CFG_SWEEP:
-            m = MODE_SWEEP;
-            cli->sweep = optarg;
-            break;
-        case CFG_BATCH:
-            m = MODE_BATCH;
-            cli->batch = optarg;
-            break;
-        case CFG_SWEEP_RUN:
-            m = MODE_SWEEP_RUN;
-            cli->sweep_dir = optarg;
-            break;
-        case CFG_LIST_PRESETS:
-            m = MODE_LIST;
-            break;
-        case CFG_LIST_LESSONS:
-            m = MODE_LIST_LESSONS;
-            break;
-        case CFG_PLAIN:
-            m = MODE_PLAIN;
-            break;
-        default:
-            break;
-        }
-        if (m != MODE_INTERACTIVE) {
-            if (modes++) {
-                options_say("%s: give only one of --headless, --modes, --sweep, --sweep-run, "
-                            "--batch, --list-presets, --list-lessons and --plain, once%s",
-                            written(argv, before, q, sizeof q),
-                            cli->mode == m ? " (it was given twice)" : "");
-                return EXIT_USAGE;
-            }
-            cli->mode = m;
-            snprintf(mode_option, sizeof mode_option, "--%s", config_options[k].name);
-        }
+    enum preset_status st = preset_load(cli->preset_path, c, err, sizeof err);
+    if (st != PRESET_OK) {
+        options_say("%s", err);
+        return st == PRESET_IO ? EXIT_FAILURE : EXIT_USAGE;
     }
+    return -1;
+}
+
+/* getopt_long's complaint ch ('?': not an option or a value given to a switch; ':' a
+ * value missing) about the word at argv[before], said in one line. */
+static void say_bad_option(int ch, char **argv, int before)
+{
+    char q[4 * CONFIG_QUOTE_MAX + 48];
+    if (ch == '?') {
+        if (optopt >= 256 && optopt < 256 + CFG_KEY_COUNT)
+            options_say("--%s: takes no value, but was given %s (see springsim --help)",
+                        config_options[optopt - 256].name, written(argv, before, q, sizeof q));
+        else if (optopt)
+            options_say("'-%c' is not an option (see springsim --help)", optopt);
+        else
+            options_say("%s is not an option (see springsim --help)",
+                        written(argv, before, q, sizeof q));
+        return;
+    }
+    int k = option_index(optopt);
+    char arg[128];
+    if (k >= 0) {
+        config_arg(k, arg, sizeof arg);
+        options_say("--%s: needs a value (%s)", config_options[k].name, arg);
+    } else {
+        options_say("%s needs a value (see springsim --help)", written(argv, before, q, sizeof q));
+    }
+}
+
+/* The modes the options choose, and where each keeps its argument. */
+static const struct {
+    int key;
+    enum mode mode;
+    bool kept;  /* the option's value is kept in struct cli, at: */
+    size_t at;  /* offsetof that member */
+} mode_options[] = {
+    {CFG_HEADLESS, MODE_HEADLESS, false, 0},
+    {CFG_MODES, MODE_MODES, false, 0},
+    {CFG_SWEEP, MODE_SWEEP, true, offsetof(struct cli, sweep)},
+    {CFG_BATCH, MODE_BATCH, true, offsetof(struct cli, batch)},
+    {CFG_SWEEP_RUN, MODE_SWEEP_RUN, true, offsetof(struct cli, sweep_dir)},
+    {CFG_LIST_PRESETS, MODE_LIST, false, 0},
+    {CFG_LIST_LESSONS, MODE_LIST_LESSONS, false, 0},
+    {CFG_PLAIN, MODE_PLAIN, false, 0},
+};
+
+/* Option k, a mode's, chooses its mode (and keeps its value); MODE_INTERACTIVE for one
+ * that chooses none. */
+static enum mode take_mode(int k, struct cli *cli)
+{
+    for (size_t i = 0; i < sizeof mode_options / sizeof mode_options[0]; i++)
+        if (mode_options[i].key == k) {
+            if (mode_options[i].kept)
+                *(const char **)((char *)cli + mode_options[i].at) = optarg;
+            return mode_options[i].mode;
+        }
+    return MODE_INTERACTIVE;
+}
+
+/* The options that go together only in some ways, once all are read: EXIT_USAGE after
+ * one line for the first that does not, else -1. mode_option: the option that chose the
+ * mode. */
+static int check_together(struct config *c, struct cli *cli, const bool *given,
+                          const char *mode_option)
+{
     /* --summary is a headless run's: alone it asks for one. --batch writes summaries. */
     if (c->summary && cli->mode == MODE_INTERACTIVE)
         cli->mode = MODE_HEADLESS;
@@ -470,7 +442,14 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         if (given[k] && config_options[k].section &&
             strcmp(config_options[k].section, "run") != 0)
             c->name[0] = '\0';
-    /* --sweep-run's second word, FMIN:FMAX:COUNT, is the one argument left. */
+    return -1;
+}
+
+/* The words left after the options: --sweep-run's FMIN:FMAX:COUNT, and nothing else.
+ * EXIT_USAGE after one line, else -1. */
+static int check_rest(int argc, char **argv, struct cli *cli)
+{
+    char q[4 * CONFIG_QUOTE_MAX + 48];
     if (cli->mode == MODE_SWEEP_RUN && optind < argc && (optind == 1 ||
                                                          strcmp(argv[optind - 1], "--") != 0))
         cli->sweep = argv[optind++];
@@ -490,4 +469,60 @@ int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
         return EXIT_USAGE;
     }
     return -1;
+}
+
+int options_parse(int argc, char **argv, struct config *c, struct cli *cli,
+                  const char *exe_dir)
+{
+    struct option lo[CFG_KEY_COUNT + 1];
+    char shortopts[64], err[512], q[4 * CONFIG_QUOTE_MAX + 48];
+    build_longopts(lo, shortopts);
+    opterr = 0;
+    int done = first_pass(argc, argv, shortopts, lo, c, cli, exe_dir);
+    if (done >= 0)
+        return done;
+    /* Second pass: everything else, in order; the first bad one is reported. */
+    optind = 0;
+    int modes = 0;
+    char mode_option[32] = ""; /* the option that chose the mode */
+    bool given[CFG_KEY_COUNT] = {false}; /* the options on the command line */
+    for (;;) {
+        int before = optind ? optind : 1;
+        int ch = getopt_long(argc, argv, shortopts, lo, NULL);
+        if (ch == -1)
+            break;
+        if (ch == '?' || ch == ':') {
+            say_bad_option(ch, argv, before);
+            return EXIT_USAGE;
+        }
+        int k = option_index(ch);
+        if (k < 0)
+            continue;
+        given[k] = true;
+        if (config_options[k].kind != CONFIG_MODE) {
+            if (k == CFG_PRESET)
+                continue;
+            if (config_set(c, k, optarg, err, sizeof err) != 0) {
+                options_say("--%s: %s", config_options[k].name, err);
+                return EXIT_USAGE;
+            }
+            c->origin[k] = (struct config_origin){NULL, 0};
+            continue;
+        }
+        enum mode m = take_mode(k, cli);
+        if (m == MODE_INTERACTIVE)
+            continue;
+        if (modes++) {
+            options_say("%s: give only one of --headless, --modes, --sweep, --sweep-run, "
+                        "--batch, --list-presets, --list-lessons and --plain, once%s",
+                        written(argv, before, q, sizeof q),
+                        cli->mode == m ? " (it was given twice)" : "");
+            return EXIT_USAGE;
+        }
+        cli->mode = m;
+        snprintf(mode_option, sizeof mode_option, "--%s", config_options[k].name);
+    }
+    if (check_together(c, cli, given, mode_option) >= 0)
+        return EXIT_USAGE;
+    return check_rest(argc, argv, cli);
 }

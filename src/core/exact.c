@@ -459,21 +459,6 @@ static struct slot *find_slot(struct exact *e, enum exact_kind kind, double omeg
     return fresh && fill_slot(e, &e->slot[i], kind, omega, h, d) ? NULL : &e->slot[i];
 }
 
-int exact_needs_general(const struct model *m)
-{
-    if (model_forced(m))
-        return 1;
-    /* Rayleigh's spring dampers stay in the modes, unless the motor moves the end of a
-     * damped spring (its rate u' is an input the modes' drive does not carry). */
-    if (m->spring_damped && (!model_rayleigh(m) || (m->boundary == BOUNDARY_MOTOR &&
-                                                   m->motor.amplitude != 0.0 && m->cs[m->n] != 0.0)))
-        return 1;
-    for (int j = 0; j <= m->n; j++)
-        if (m->k[j] == 0.0 && (j < m->n || m->boundary != BOUNDARY_FREE))
-            return 1;
-    return 0;
-}
-
 int exact_stepped_in_modes(const struct exact *e)
 {
     return e->stepped_modal;
@@ -486,44 +471,13 @@ int exact_advance(struct exact *e, const struct model *m, const struct exact_dri
     return exact_advance_all(e, m, d, a, b, x, v, diss, work, &fwork);
 }
 
-int exact_advance_all(struct exact *e, const struct model *m, const struct exact_drive *d,
-                      double a, double b, double *x, double *v, double *diss, double *work,
-                      double *fwork)
+/* The dense step of h from a (exact_advance_all's, the chain's own coordinates z = (L^T
+ * M^(1/2) x, M^(1/2) v, the drive's two)): through the cached E(h) and its books. */
+static int dense_advance(struct exact *e, enum exact_kind kind, const struct exact_drive *d,
+                         double a, double h, double *x, double *v, double *diss, double *work)
 {
-    double h = b - a;
-    if (h == 0.0)
-        return 0;
-    if (!(h > 0.0) || m->n != e->n)
-        return -1;
-    int general = exact_needs_general(m);
-    if (!general) {
-        take_model(e, m);
-        general = !e->valid && m->spring_damped; /* the modes failed: the general path */
-    }
-    if (general) {
-        e->stepped_modal = 0;
-        if (!e->gen && !(e->gen = general_new(e->n)))
-            return -1;
-        return general_advance(e->gen, m, d, a, b, x, v, diss, work, fwork);
-    }
-    if (!e->valid)
-        return -1;
-
-    int n = e->n;
-    enum exact_kind kind = EXACT_NONE;
-    if (m->boundary == BOUNDARY_MOTOR && d) {
-        if (d->sine && d->amp != 0.0)
-            kind = EXACT_SINE;
-        else if (!d->sine && (d->u0 != 0.0 || d->du != 0.0))
-            kind = EXACT_LINE;
-    }
-    int dim = kind == EXACT_NONE ? 2 * n : 2 * n + 2;
+    int n = e->n, dim = kind == EXACT_NONE ? 2 * n : 2 * n + 2;
     double omega = kind == EXACT_SINE ? d->omega : 0.0;
-    if (!isfinite(omega))
-        return -1;
-    e->stepped_modal = e->use_modal;
-    if (e->use_modal)
-        return modal_advance(e->md, kind, d, a, b, x, v, diss, work);
     struct slot *sl = find_slot(e, kind, omega, h, dim);
     if (!sl)
         return -1;
@@ -597,4 +551,42 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
     *diss += dd;
     *work += ww;
     return 0;
+}
+
+int exact_advance_all(struct exact *e, const struct model *m, const struct exact_drive *d,
+                      double a, double b, double *x, double *v, double *diss, double *work,
+                      double *fwork)
+{
+    double h = b - a;
+    if (h == 0.0)
+        return 0;
+    if (!(h > 0.0) || m->n != e->n)
+        return -1;
+    int general = exact_needs_general(m);
+    if (!general) {
+        take_model(e, m);
+        general = !e->valid && m->spring_damped; /* the modes failed: the general path */
+    }
+    if (general) {
+        e->stepped_modal = 0;
+        if (!e->gen && !(e->gen = general_new(e->n)))
+            return -1;
+        return general_advance(e->gen, m, d, a, b, x, v, diss, work, fwork);
+    }
+    if (!e->valid)
+        return -1;
+
+    enum exact_kind kind = EXACT_NONE;
+    if (m->boundary == BOUNDARY_MOTOR && d) {
+        if (d->sine && d->amp != 0.0)
+            kind = EXACT_SINE;
+        else if (!d->sine && (d->u0 != 0.0 || d->du != 0.0))
+            kind = EXACT_LINE;
+    }
+    if (kind == EXACT_SINE && !isfinite(d->omega))
+        return -1;
+    e->stepped_modal = e->use_modal;
+    if (e->use_modal)
+        return modal_advance(e->md, kind, d, a, b, x, v, diss, work);
+    return dense_advance(e, kind, d, a, h, x, v, diss, work);
 }
