@@ -184,7 +184,7 @@ $(TEST_BIN): TEST_EXTRA = $(APP_OBJ) $(FIG_OBJ)
 APP_WRAPPED = config_model sim_new history_new trail_new trail_new_motion sweep_new modes_compute \
               limits_modes
 APP_TESTS = $(BUILD)/tests/test_app $(BUILD)/tests/test_app_rules $(BUILD)/tests/test_ghost \
-            $(BUILD)/tests/test_export $(BUILD)/tests/test_controls
+            $(BUILD)/tests/test_export $(BUILD)/tests/test_controls $(BUILD)/tests/test_app_window
 APP_FIXTURE = $(BUILD)/tests/app_fixture.o
 $(APP_TESTS): TEST_LDFLAGS = $(APP_WRAPPED:%=-Wl,--wrap=%)
 $(APP_TESTS): TEST_EXTRA += $(APP_FIXTURE)

@@ -49,7 +49,7 @@ static void two_masses(void **state)
     md->boundary = BOUNDARY_MOTOR;
     assert_true(exact_proportional(md));
     struct exact *e = exact_new(2);
-    struct exact_drive d = {1, amp, om, phi, 0.0, 0.0, 0.0};
+    struct exact_drive d = {.sine = 1, .amp = amp, .omega = om, .phi = phi};
     const double x0[2] = {0.12, -0.05}, v0[2] = {0.3, 0.1};
     double x[2] = {x0[0], x0[1]}, v[2] = {v0[0], v0[1]}, D = 0.0, W = 0.0;
     /* the modes' starts, in y = sqrt(m) x */
@@ -111,7 +111,7 @@ static void chain_against_rk4(void **state)
         const long double h = 0.05L / SUB, pi = 3.141592653589793238462643383279503L;
         double err = 0.0;
         for (int step = 0; step < 60; step++) {
-            struct exact_drive d = {1, 0.6, 2.0 * M_PI * 1.1, 0.0, 0.0, 0.0, 0.0};
+            struct exact_drive d = {.sine = 1, .amp = 0.6, .omega = 2.0 * M_PI * 1.1, .phi = 0.0};
             assert_int_equal(exact_advance(e, m, &d, step * 0.05, (step + 1) * 0.05, x, v, &D, &W),
                              0);
             for (int s = 0; s < SUB; s++) {
@@ -173,9 +173,9 @@ static void against_dense(void **state)
             double t = 0.0;
             for (int i = 0; i < 200; i++) {
                 double h = i % 5 == 4 ? 0.0031 + 0.001 * (i % 7) : 0.02;
-                struct exact_drive d = {1, 0.5, 2.0 * M_PI * 0.9, 0.1, 0.0, 0.0, 0.0};
+                struct exact_drive d = {.sine = 1, .amp = 0.5, .omega = 2.0 * M_PI * 0.9, .phi = 0.1};
                 if (i % 50 >= 40)
-                    d = (struct exact_drive){0, 0.0, 0.0, 0.0, t, 0.2, -0.3};
+                    d = (struct exact_drive){.t0 = t, .u0 = 0.2, .du = -0.3};
                 assert_int_equal(exact_advance(e, m, &d, t, t + h, x, v, &D, &W), 0);
                 assert_int_equal(exact_advance(f, p, &d, t, t + h, y, u, &D2, &W2), 0);
                 t += h;
@@ -208,7 +208,7 @@ static void long_balance(void **state)
         for (int i = 0; i < N; i++)
             x[i] = 0.05 * sin(0.3 * i + 1.0);
         double e0 = model_kinetic(m, v) + model_potential(m, x, 0.0), peak = e0, drift = 0.0;
-        struct exact_drive d = {1, 0.6, 2.0 * M_PI * 1.1, 0.0, 0.0, 0.0, 0.0};
+        struct exact_drive d = {.sine = 1, .amp = 0.6, .omega = 2.0 * M_PI * 1.1, .phi = 0.0};
         for (int i = 0; i < 10000; i++) {
             double a = i * 0.01, b = (i + 1) * 0.01;
             assert_int_equal(exact_advance(e, m, &d, a, b, x, v, &D, &W), 0);
@@ -234,7 +234,7 @@ static void copy(void **state)
     enum { N = 30 };
     struct model *m = chain(N, BOUNDARY_MOTOR, 0.2);
     struct exact *e = exact_new(N), *f = exact_new(N);
-    struct exact_drive d = {1, 0.6, 2.0 * M_PI * 1.1, 0.0, 0.0, 0.0, 0.0};
+    struct exact_drive d = {.sine = 1, .amp = 0.6, .omega = 2.0 * M_PI * 1.1, .phi = 0.0};
     double x[N], v[N] = {0}, y[N], u[N], D = 0, W = 0, D2, W2;
     for (int i = 0; i < N; i++)
         x[i] = 0.05 * sin(0.3 * i + 1.0);

@@ -44,7 +44,7 @@ static void elements_per_end(void **state)
 static void mass_and_spring_on_the_chain_only(void **state)
 {
     (void)state;
-    struct selection s = {FOCUS_CHAIN, CTL_FREQUENCY, 0, 0};
+    struct selection s = {FOCUS_CHAIN, CTL_FREQUENCY, 0, 0, 0};
     static const struct {
         int elem, mass, spring;
     } cases[] = {
@@ -68,7 +68,7 @@ static void clamp_after_the_chain_shrinks(void **state)
 {
     (void)state;
     struct model *five = chain(5, BOUNDARY_MOTOR), *two = chain(2, BOUNDARY_MOTOR);
-    struct selection s = {FOCUS_CHAIN, CTL_MASSES, 9, 0}; /* mass 5 */
+    struct selection s = {FOCUS_CHAIN, CTL_MASSES, 9, 0, 0}; /* mass 5 */
     select_clamp(&s, five);
     assert_int_equal(s.elem, 9);
     select_clamp(&s, two); /* N 5 -> 2 */
@@ -100,7 +100,7 @@ static void moves_wrap_both_ways(void **state)
 {
     (void)state;
     struct model *m = chain(3, BOUNDARY_MOTOR); /* elements 0..6 */
-    struct selection s = {FOCUS_CONTROLS, 0, 3, 0};
+    struct selection s = {FOCUS_CONTROLS, 0, 3, 0, 0};
     select_move(&s, -1, CTL_COUNT, m);
     assert_int_equal(s.control, CTL_COUNT - 1);
     select_move(&s, 1, CTL_COUNT, m);
@@ -144,7 +144,7 @@ static void toggle_lands_on_a_mass(void **state)
         {0, 1}, {4, 1}, {6, 1}, {7, 1}, {9, 1}, {3, 3}, {5, 5},
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
-        struct selection s = {FOCUS_CONTROLS, CTL_DAMPING, cases[i].from, 0};
+        struct selection s = {FOCUS_CONTROLS, CTL_DAMPING, cases[i].from, 0, 0};
         select_toggle_focus(&s, m, false);
         assert_int_equal(s.focus, FOCUS_CHAIN);
         if (s.elem != cases[i].to)
@@ -164,7 +164,7 @@ static void modes_in_the_round(void **state)
 {
     (void)state;
     struct model *m = chain(3, BOUNDARY_WALL);
-    struct selection s = {FOCUS_CONTROLS, CTL_DAMPING, 1, 0};
+    struct selection s = {FOCUS_CONTROLS, CTL_DAMPING, 1, 0, 0};
     assert_int_equal(select_mode(&s), -1);
     select_toggle_focus(&s, m, true);
     assert_int_equal(s.focus, FOCUS_CHAIN);
