@@ -205,14 +205,7 @@ int exact_copy(struct exact *dst, const struct exact *src)
     dst->sk = src->sk;
     dst->wscale = src->wscale;
     dst->damped = src->damped;
-    for (int i = 0; i < slots; i++) {
-        /* The values only: each keeps its own views of its own memory. */
-        struct slot *a = &dst->slot[i];
-        const struct slot *b = &src->slot[i];
-        a->key = b->key;
-        if (!src->mem)
-            a->key.model = 0;
-    }
+    exact_key_copy(dst->slot, src->slot, sizeof src->slot[0], slots, src->mem != NULL);
     return 0;
 }
 

@@ -153,13 +153,7 @@ int general_copy(struct general *dst, const struct general *src)
     dst->model = src->model, dst->clock = src->clock, dst->valid = src->valid;
     dst->ws = src->ws, dst->amp = src->amp, dst->force = src->force;
     dst->force_on = src->force_on, dst->boundary = src->boundary;
-    for (int i = 0; i < src->slots; i++) {
-        struct gslot *a = &dst->slot[i];
-        const struct gslot *b = &src->slot[i];
-        a->key = b->key;
-        if (!src->mem)
-            a->key.model = 0;
-    }
+    exact_key_copy(dst->slot, src->slot, sizeof src->slot[0], src->slots, src->mem != NULL);
     return 0;
 }
 

@@ -457,3 +457,13 @@ int exact_key_find(void *slots, size_t stride, int count, unsigned long *clock,
     *fresh = 1;
     return old;
 }
+
+void exact_key_copy(void *dst, const void *src, size_t stride, int count, int filled)
+{
+    for (int i = 0; i < count; i++) {
+        struct exact_key *a = (struct exact_key *)((char *)dst + (size_t)i * stride);
+        *a = *(const struct exact_key *)((const char *)src + (size_t)i * stride);
+        if (!filled)
+            a->model = 0;
+    }
+}

@@ -66,6 +66,11 @@ int exact_key_find(void *slots, size_t stride, int count, unsigned long *clock,
                    unsigned long model, enum exact_kind kind, double omega, double h,
                    int *fresh);
 
+/* Copies count slots' keys (laid out as for exact_key_find) from src to dst, the slots'
+ * other members untouched (each keeps its own memory); all emptied unless filled (the
+ * source's cached steps are in memory it copied). */
+void exact_key_copy(void *dst, const void *src, size_t stride, int count, int filled);
+
 /* expm(s) into out (square, same size); s is overwritten, t is scratch. 0 or -1. */
 int exact_expm(gsl_matrix *s, gsl_matrix *out, gsl_matrix *t);
 
