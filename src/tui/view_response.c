@@ -10,6 +10,7 @@
 #include "../chart/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
+#include "view_branches.h"
 #include "term.h"
 
 static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5",
@@ -40,6 +41,8 @@ void response_view_free(struct response_view *rv)
     free(rv->curve);
     free(rv->phase_curve);
     rv->curve = rv->phase_curve = NULL;
+    jump_theory_free(&rv->hb);
+    rv->hb_version = 0;
 }
 
 /* Solves the theory curves for the chain as it is, one solve per dot column, and the
@@ -377,6 +380,10 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
                                                   : "raise the Amplitude to see its response.");
         if (rv->phase.frame.h > 0)
             draw_frame(rv->phase.frame, "Phase", true);
+        return;
+    }
+    if (jump_two_way(m)) {
+        branches_draw(rv, app, fresh);
         return;
     }
     int W = 2 * c->canvas->cols;
