@@ -229,6 +229,16 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
         rv->hb_version = app->version;
         fresh = true;
     }
+    /* A low view gives the phase's rows to the amplitude, where the jump is. */
+    bool merge = rv->area.h < BRANCHES_PHASE_MIN_ROWS;
+    if (merge && !rv->merged && rv->phase.frame.h > 0) {
+        chart_free(&rv->phase);
+        rv->phase.frame = (struct rect){0, 0, 0, 0};
+        rv->merged = true;
+        if (!chart_place(c, rv->area, 0))
+            return;
+        rv->version = 0;
+    }
     if (rv->version != app->version) { /* placed afresh, or the linear view's */
         rv->version = app->version;
         fresh = true;
@@ -263,7 +273,7 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
         used += draw_width(legend[j].text) + 1;
     sweep_words(app, c->frame.w - 4 - used, state, sizeof state);
     legend[k++] = (struct legend_item){state, PAIR_MOTOR};
-    chart_draw(c, "Harmonic balance: amplitude (m), stable ━ unstable ╌ backbone ┈",
+    chart_draw(c, "Harmonic balance: amplitude (m), stable ━ unstable ┅ backbone ┄",
                "Harmonic balance (m)", "Hz", legend, k);
     chart_report(c, "Harmonic balance and the sweeps up and down", "motor frequency f (Hz)",
                  "amplitude (m)");

@@ -9,6 +9,8 @@
 
 #include "view_response.h"
 
+#define BRANCHES_PHASE_MIN_ROWS 26 /* the view's height from which the phase shows too */
+
 /* Draws rv for app's chain (jump_two_way); fresh redraws the curves from the newest data.
  * The theory is solved again only when the chain or the drive changes. */
 void branches_draw(struct response_view *rv, const struct app *app, bool fresh);

@@ -19,6 +19,8 @@ static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5"
 bool response_view_place(struct response_view *rv, struct rect area)
 {
     struct rect amp = area, ph = {0, 0, 0, 0};
+    rv->area = area;
+    rv->merged = false;
     if (area.h >= RESPONSE_PHASE_MIN_ROWS) {
         ph = area;
         ph.h = area.h * 2 / 5 > RESPONSE_PHASE_ROWS ? area.h * 2 / 5 : RESPONSE_PHASE_ROWS;
@@ -386,6 +388,8 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
         branches_draw(rv, app, fresh);
         return;
     }
+    if (rv->merged && !response_view_place(rv, rv->area))
+        return;
     int W = 2 * c->canvas->cols;
     if (rv->version != app->version || rv->width != W) {
         solve_curves(rv, app, W);

@@ -32,6 +32,8 @@ struct response_view {
     struct jump_theory hb; /* the harmonic-balance curve over the sweep's range */
     unsigned hb_version; /* app version it belongs to (0: none) */
     bool hb_ok;          /* it was solved; else hb_why says why not */
+    struct rect area;    /* the view's rectangle, as placed */
+    bool merged;         /* the amplitude chart takes it all (view_branches.c, when low) */
     char hb_why[160];
 };
 
