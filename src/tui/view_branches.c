@@ -29,6 +29,7 @@ static double curve_value(const struct jump_theory *t, int k, int i, bool phase)
 static void draw_theory(struct chart *c, const struct jump_theory *t, bool phase)
 {
     struct canvas *cv = c->canvas;
+    cv->mute++; /* the strokes are kept unrounded below */
     for (int i = t->n - 1; i >= 0; i--) {
         uint8_t color = (uint8_t)(PAIR_MASS + i % 10);
         int run = 0;
@@ -38,14 +39,21 @@ static void draw_theory(struct chart *c, const struct jump_theory *t, bool phase
                 continue;
             if (phase && fabs(v1 - v0) >= 180.0)
                 continue;
-            int x0 = (int)lround(dot_x(c, t->f[k])), x1 = (int)lround(dot_x(c, t->f[k + 1]));
-            int y0 = chart_dot_y(c, v0), y1 = chart_dot_y(c, v1);
-            if (t->rate[k] < 0.0 && t->rate[k + 1] < 0.0)
+            double fx0 = dot_x(c, t->f[k]), fx1 = dot_x(c, t->f[k + 1]);
+            double fy0 = chart_dot_yf(c, v0), fy1 = chart_dot_yf(c, v1);
+            int x0 = (int)lround(fx0), x1 = (int)lround(fx1), y0 = (int)lround(fy0),
+                y1 = (int)lround(fy1);
+            bool stable = t->rate[k] < 0.0 && t->rate[k + 1] < 0.0;
+            if (stable)
                 canvas_line(cv, x0, y0, x1, y1, color);
             else
                 canvas_stroke(cv, x0, y0, x1, y1, color, &run);
+            if (cv->strokes)
+                strokes_segment(cv->strokes, fx0, fy0, fx1, fy1, color,
+                                stable ? STROKE_LINE : STROKE_DASHED);
         }
     }
+    cv->mute--;
 }
 
 /* The backbone of one mass, dotted: w^2 = (k + 3/4 k3 a^2) / m (k, k3 the two springs'
@@ -56,36 +64,66 @@ static void draw_backbone(struct chart *c, const struct model *m)
         return;
     double k = m->k[0] + (m->boundary == BOUNDARY_FREE ? 0.0 : m->k[1]);
     double k3 = m->k3[0] + (m->boundary == BOUNDARY_FREE ? 0.0 : m->k3[1]);
-    int H = 4 * c->canvas->rows;
-    for (int y = H - 1; y >= 0; y -= 3) {
+    struct canvas *cv = c->canvas;
+    int H = 4 * cv->rows;
+    cv->mute++; /* in pixels a dashed line in the drive's colour, not dots like points */
+    if (cv->strokes)
+        strokes_begin(cv->strokes, PAIR_MOTOR, STROKE_DASHED);
+    for (int y = H - 1; y >= 0; y--) {
         double a = axis_value(&c->ya, 4 * c->area.h - 1 - y);
         double w2 = (k + 0.75 * k3 * a * a) / m->m[0];
-        if (a >= 0.0 && w2 > 0.0)
-            canvas_set(c->canvas, (int)lround(dot_x(c, sqrt(w2) / (2.0 * M_PI))), y, PAIR_MASS);
+        if (!(a >= 0.0 && w2 > 0.0))
+            continue;
+        double x = dot_x(c, sqrt(w2) / (2.0 * M_PI));
+        if (y % 3 == 0)
+            canvas_set(cv, (int)lround(x), y, PAIR_MASS);
+        if (cv->strokes)
+            strokes_point(cv->strokes, x, y);
     }
+    cv->mute--;
 }
 
 /* Dotted verticals at the theory's folds, and the drive's frequency solid. */
 static void draw_marks(struct chart *c, const struct jump_theory *t, double drive)
 {
     int H = 4 * c->canvas->rows;
-    for (int j = 0; j < t->folds; j++)
+    c->canvas->mute++;
+    for (int j = 0; j < t->folds; j++) {
+        double x = dot_x(c, t->fold_f[j]);
         for (int y = 0; y < H; y += 2)
-            canvas_set(c->canvas, (int)lround(dot_x(c, t->fold_f[j])), y, PAIR_MOTOR);
+            canvas_set(c->canvas, (int)lround(x), y, PAIR_MOTOR);
+        if (c->canvas->strokes)
+            strokes_segment(c->canvas->strokes, x, 0, x, H - 1, PAIR_MOTOR, STROKE_DASHED);
+    }
+    c->canvas->mute--;
     canvas_vspan(c->canvas, (int)lround(dot_x(c, drive)), 0, H - 1, PAIR_MOTOR);
 }
 
-/* The measured points of sweep s (amplitudes, or phases) as dots, and its jump as a line
- * from the point before it to the point after. */
-static void draw_points(struct chart *c, const struct sweep *s, bool phase)
+/* The measured points of sweep s (amplitudes, or phases) as dots, in pixels as discs (the
+ * sweep up's larger: up), and its jump as a line from the point before it to the point
+ * after. */
+static void draw_points(struct chart *c, const struct sweep *s, bool phase, bool up)
 {
+    struct canvas *cv = c->canvas;
     int n = s->n, k = phase ? -1 : jump_find(s);
     const double *v = phase ? s->phase : s->peak;
-    for (int p = 0; p < sweep_measured(s); p++)
-        for (int i = 0; i < n; i++)
-            if (isfinite(v[p * n + i]))
-                canvas_set(c->canvas, (int)lround(dot_x(c, s->freq[p])),
-                           chart_dot_y(c, v[p * n + i]), (uint8_t)(PAIR_MASS + i % 10));
+    for (int i = 0; i < n; i++) {
+        uint8_t color = (uint8_t)(PAIR_MASS + i % 10);
+        if (cv->strokes) {
+            strokes_begin(cv->strokes, color, STROKE_MARKS);
+            strokes_mark_size(cv->strokes, up ? 4 : 2);
+        }
+        cv->mute++;
+        for (int p = 0; p < sweep_measured(s); p++) {
+            if (!isfinite(v[p * n + i]))
+                continue;
+            double x = dot_x(c, s->freq[p]), y = chart_dot_yf(c, v[p * n + i]);
+            canvas_set(cv, (int)lround(x), (int)lround(y), color);
+            if (cv->strokes)
+                strokes_point(cv->strokes, x, y);
+        }
+        cv->mute--;
+    }
     if (k < 0)
         return;
     int x = (int)lround(dot_x(c, 0.5 * (s->freq[k] + s->freq[k + 1])));
@@ -213,8 +251,8 @@ static void draw_chart(struct response_view *rv, const struct app *app, struct c
     if (!phase)
         draw_backbone(c, app->model);
     draw_theory(c, t, phase);
-    draw_points(c, up, phase);
-    draw_points(c, down, phase);
+    draw_points(c, up, phase, true);
+    draw_points(c, down, phase, false);
 }
 
 void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
@@ -277,6 +315,12 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
                "Harmonic balance (m)", "Hz", legend, k);
     chart_report(c, "Harmonic balance and the sweeps up and down", "motor frequency f (Hz)",
                  "amplitude (m)");
+    for (int i = 0; i < m->n && i < 10; i++)
+        snprintf(c->report.name[FIG_MASS + i], sizeof c->report.name[0],
+                 "mass %d", i + 1);
+    snprintf(c->report.name[FIG_MOTOR], sizeof c->report.name[0],
+             "drive; backbone, folds dashed");
+    c->report.branches = true;
     draw_glyphs(c, up, down, false);
     draw_jump_labels(c, up, down);
     if (rv->phase.frame.h > 0) {
@@ -284,6 +328,7 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
                    "balance", "Phase (deg)", "Hz", NULL, 0);
         chart_report(&rv->phase, "Phase", "motor frequency f (Hz)",
                      "phase to the drive (°; a lag is negative)");
+        rv->phase.report.branches = true;
         draw_glyphs(&rv->phase, up, down, true);
     }
 }
