@@ -2,11 +2,13 @@
  * sweep turns from up to down, a jump is found where one is and not on a smooth peak, and
  * the app's sweeps of the duffing preset, up then down, jump between the same points as
  * the headless simulated sweep (sweeprun.c, what --sweep-run writes) over the same
- * frequencies, each side of the harmonic-balance folds, and measure the same
- * amplitudes. */
+ * frequencies, each side of the harmonic-balance folds, measure the same amplitudes, and
+ * are both exported (x). */
 #include "testutil.h"
 
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "app/app.h"
 #include "app/jump.h"
@@ -142,6 +144,26 @@ static void app_sweeps_like_headless(void **state)
     printf("# largest difference of the app's amplitudes from the headless ones: %.2f %%\n",
            100.0 * worst);
     assert_true(worst < 0.03);
+
+    /* The export (x) has both sweeps, the up one first, each point once. */
+    char dir[] = "/tmp/test_jump.XXXXXX", path[300], line[4096];
+    assert_non_null(mkdtemp(dir));
+    app_export_sweep(&app, dir, path, sizeof path);
+    FILE *fp = fopen(path, "r");
+    assert_non_null(fp);
+    int ups = 0, downs = 0, header = 0;
+    while (fgets(line, sizeof line, fp)) {
+        header += strncmp(line, "frequency_hz,direction,amp1,", 28) == 0;
+        if (strstr(line, ",up,"))
+            assert_int_equal(downs, 0), ups++;
+        downs += strstr(line, ",down,") != NULL;
+    }
+    fclose(fp);
+    remove(path);
+    rmdir(dir);
+    assert_int_equal(header, 1);
+    assert_int_equal(ups, APP_SWEEP_POINTS);
+    assert_int_equal(downs, APP_SWEEP_POINTS);
 
     jump_theory_free(&t);
     sweep_free(hu);
