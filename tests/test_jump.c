@@ -58,15 +58,17 @@ static void finds_jumps(void **state)
     (void)state;
     /* Up the high branch, then down at the fold: the drop from 4 to 5. */
     struct sweep *s = measured(0.5, 1.1, (double[]){0.3, 0.5, 0.8, 1.1, 1.3, 0.3, 0.25}, 7);
-    assert_int_equal(jump_find(s), 4);
+    assert_int_equal(jump_find(s, 0), 4);
+    assert_false(jump_rises(s, 4));
+    assert_int_equal(jump_find(s, 5), -1); /* the one jump */
     sweep_free(s);
     /* A sharp but smooth peak: every step as large as its neighbours, no jump. */
     s = measured(0.5, 1.1, (double[]){0.1, 0.3, 1.0, 0.3, 0.1}, 5);
-    assert_int_equal(jump_find(s), -1);
+    assert_int_equal(jump_find(s, 0), -1);
     sweep_free(s);
     /* Small changes are no jump however they fall. */
     s = measured(0.5, 1.1, (double[]){1.0, 1.0, 1.2, 1.2, 1.2}, 5);
-    assert_int_equal(jump_find(s), -1);
+    assert_int_equal(jump_find(s, 0), -1);
     sweep_free(s);
 }
 
@@ -123,16 +125,20 @@ static void app_sweeps_like_headless(void **state)
     assert_int_equal(t.folds, 2);
     assert_true(t.fold_f[0] < t.fold_f[1]);
 
-    int ku = jump_find(up), kd = jump_find(down);
+    int ku = jump_find(up, 0), kd = jump_find(down, 0);
     printf("# jumps: app up %d (%.4f..%.4f Hz), headless up %d; app down %d (%.4f..%.4f Hz), "
            "headless down %d; folds %.4f %.4f Hz\n", ku, up->freq[ku], up->freq[ku + 1],
-           jump_find(hu), kd, down->freq[kd], down->freq[kd + 1], jump_find(hd), t.fold_f[0],
+           jump_find(hu, 0), kd, down->freq[kd], down->freq[kd + 1], jump_find(hd, 0), t.fold_f[0],
            t.fold_f[1]);
-    assert_int_equal(ku, jump_find(hu));
-    assert_int_equal(kd, jump_find(hd));
+    assert_int_equal(ku, jump_find(hu, 0));
+    assert_int_equal(kd, jump_find(hd, 0));
     /* Up: the high branch ends at the upper fold; down: the low one at the lower fold. */
     assert_true(up->freq[ku] <= t.fold_f[1] && t.fold_f[1] < up->freq[ku + 1]);
     assert_true(down->freq[kd] >= t.fold_f[0] && t.fold_f[0] > down->freq[kd + 1]);
+    assert_false(jump_rises(up, ku));
+    assert_true(jump_rises(down, kd));
+    assert_int_equal(jump_find(up, ku + 1), -1);
+    assert_int_equal(jump_find(down, kd + 1), -1);
     assert_true(up->peak[ku] > 2.0 * up->peak[ku + 1]);
     assert_true(down->peak[kd + 1] > 2.0 * down->peak[kd]);
     /* The same amplitudes, but for the peak's third harmonic the lock-in leaves out. */

@@ -25,9 +25,9 @@ bool jump_turn(struct sweep **run, struct sweep **up, double t)
     return true;
 }
 
-/* The largest |log| of a mass's amplitude ratio from point k to k + 1 of s (0 out of
- * range or unmeasured). */
-static double step_size(const struct sweep *s, int k)
+/* The log of the amplitude ratio from point k to k + 1 of s of the mass whose is the
+ * largest in size (0 out of range or unmeasured). */
+static double step_log(const struct sweep *s, int k)
 {
     int n = s->n;
     double most = 0.0;
@@ -35,15 +35,25 @@ static double step_size(const struct sweep *s, int k)
         return 0.0;
     for (int i = 0; i < n; i++) {
         double a = s->peak[k * n + i], b = s->peak[(k + 1) * n + i];
-        if (a > 0.0 && b > 0.0)
-            most = fmax(most, fabs(log(b / a)));
+        if (a > 0.0 && b > 0.0 && fabs(log(b / a)) > fabs(most))
+            most = log(b / a);
     }
     return most;
 }
 
-int jump_find(const struct sweep *s)
+static double step_size(const struct sweep *s, int k)
 {
-    for (int k = 0; k + 1 < sweep_measured(s); k++) {
+    return fabs(step_log(s, k));
+}
+
+bool jump_rises(const struct sweep *s, int k)
+{
+    return step_log(s, k) > 0.0;
+}
+
+int jump_find(const struct sweep *s, int from)
+{
+    for (int k = from > 0 ? from : 0; k + 1 < sweep_measured(s); k++) {
         double d = step_size(s, k);
         if (d >= log(JUMP_RATIO) && d > 2.0 * step_size(s, k - 1) &&
             d > 2.0 * step_size(s, k + 1))

@@ -34,11 +34,15 @@ bool jump_two_way(const struct model *m);
  * False (nothing changed) when it went down. */
 bool jump_turn(struct sweep **run, struct sweep **up, double t);
 
-/* Where the measured points of s jumped: the first k (k + 1 < points measured) at which
+/* Where the measured points of s jumped: the first k >= from (k + 1 < points measured) at which
  * some mass's amplitude changes by JUMP_RATIO or more from point k to k + 1, and by more
  * than twice (in ratio's logarithm) the change from k - 1 to k and from k + 1 to k + 2;
  * -1 when none did. */
-int jump_find(const struct sweep *s);
+int jump_find(const struct sweep *s, int from);
+
+/* Whether the jump from point k to k + 1 of s goes up (the amplitude that changes most
+ * grows) or down. */
+bool jump_rises(const struct sweep *s, int k);
 
 /* Solves t (emptied first) for m from lo to hi Hz: 0, or -1 with the reason in why
  * (harmonic_trace's: no drive, too many masses, no memory). */

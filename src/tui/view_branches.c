@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "../app/sweeping.h"
 #include "../chart/strokes.h"
@@ -105,7 +106,7 @@ static void draw_marks(struct chart *c, const struct jump_theory *t, double driv
 static void draw_points(struct chart *c, const struct sweep *s, bool phase, bool up)
 {
     struct canvas *cv = c->canvas;
-    int n = s->n, k = phase ? -1 : jump_find(s);
+    int n = s->n;
     const double *v = phase ? s->phase : s->peak;
     for (int i = 0; i < n; i++) {
         uint8_t color = (uint8_t)(PAIR_MASS + i % 10);
@@ -124,12 +125,12 @@ static void draw_points(struct chart *c, const struct sweep *s, bool phase, bool
         }
         cv->mute--;
     }
-    if (k < 0)
-        return;
-    int x = (int)lround(dot_x(c, 0.5 * (s->freq[k] + s->freq[k + 1])));
-    for (int i = 0; i < n; i++)
-        canvas_vspan(c->canvas, x, chart_dot_y(c, v[k * n + i]), chart_dot_y(c, v[(k + 1) * n + i]),
-                     (uint8_t)(PAIR_MASS + i % 10));
+    for (int k = phase ? -1 : jump_find(s, 0); k >= 0; k = jump_find(s, k + 1)) {
+        int x = (int)lround(dot_x(c, 0.5 * (s->freq[k] + s->freq[k + 1])));
+        for (int i = 0; i < n; i++)
+            canvas_vspan(c->canvas, x, chart_dot_y(c, v[k * n + i]),
+                         chart_dot_y(c, v[(k + 1) * n + i]), (uint8_t)(PAIR_MASS + i % 10));
+    }
 }
 
 /* The glyph of a point of the sweep up (up true) or down at cell (cx, cy) of c, given the
@@ -172,22 +173,24 @@ static void draw_glyphs(const struct chart *c, const struct sweep *up, const str
     }
 }
 
-/* Where each sweep jumped, over the drawing's top rows: "↓0.84" for the sweep up's,
- * "↑0.80" for the sweep down's, at the column of the jump. */
+/* Where each sweep jumped, over the drawing's top rows (the sweep up's on the first, the
+ * sweep down's on the second): "↓0.84" for a drop, "↑0.80" for a rise, from the column
+ * of the jump (a drop's to its right, a rise's to its left). */
 static void draw_jump_labels(const struct chart *c, const struct sweep *up,
                              const struct sweep *down)
 {
     for (int leg = 0; leg < 2; leg++) {
         const struct sweep *s = leg ? down : up;
-        int k = jump_find(s);
-        if (k < 0)
-            continue;
-        double f = 0.5 * (s->freq[k] + s->freq[k + 1]);
-        char text[24];
-        snprintf(text, sizeof text, "%s%.2f", leg ? "↑" : "↓", f);
-        int w = draw_width(text), cx = (int)lround(dot_x(c, f)) / 2 - (leg ? w - 1 : 0);
-        cx = cx < 0 ? 0 : cx + w > c->area.w ? c->area.w - w : cx;
-        draw_text_attr(c->area.y + leg, c->area.x + cx, w, term_attr(PAIR_MOTOR) | A_BOLD, text);
+        for (int k = jump_find(s, 0); k >= 0; k = jump_find(s, k + 1)) {
+            double f = 0.5 * (s->freq[k] + s->freq[k + 1]);
+            bool rises = jump_rises(s, k);
+            char text[24];
+            snprintf(text, sizeof text, "%s%.2f", rises ? "↑" : "↓", f);
+            int w = draw_width(text), cx = (int)lround(dot_x(c, f)) / 2 - (rises ? w - 1 : 0);
+            cx = cx < 0 ? 0 : cx + w > c->area.w ? c->area.w - w : cx;
+            draw_text_attr(c->area.y + leg, c->area.x + cx, w, term_attr(PAIR_MOTOR) | A_BOLD,
+                           text);
+        }
     }
 }
 
@@ -195,19 +198,22 @@ static void draw_jump_labels(const struct chart *c, const struct sweep *up,
 static void sweep_words(const struct app *app, int room, char *buf, size_t len)
 {
     const struct sweep *s = app->sweep;
-    int ku = jump_find(app->sweep_up), kd = jump_find(s), got = sweep_measured(s);
-    bool down = sweep_measured(app->sweep_up) > 0;
-    double fu = ku >= 0 ? 0.5 * (app->sweep_up->freq[ku] + app->sweep_up->freq[ku + 1]) : NAN;
+    const struct sweep *su = app->sweep_up;
+    int ku = jump_find(su, 0), kd = jump_find(s, 0), got = sweep_measured(s);
+    bool down = sweep_measured(su) > 0;
+    double fu = ku >= 0 ? 0.5 * (su->freq[ku] + su->freq[ku + 1]) : NAN;
     double fd = kd >= 0 && down ? 0.5 * (s->freq[kd] + s->freq[kd + 1]) : NAN;
+    const char *au = ku >= 0 && jump_rises(su, ku) ? "↑" : "↓";
+    const char *ad = kd >= 0 && !jump_rises(s, kd) ? "↓" : "↑";
     for (int form = 0; form < 3; form++) {
         if (s->active)
             snprintf(buf, len, form == 0 ? "sweeping %s %d/%d at %.3f Hz (w stops)"
                                : form == 1 ? "%s %d/%d at %.3f Hz" : "%s %d/%d",
                      down ? "down" : "up", s->index + 1, s->points, sweep_frequency(s));
         else if (got && down)
-            snprintf(buf, len, form == 0 ? "jumped ↓%.3f ↑%.3f Hz (w sweeps again)"
-                               : form == 1 ? "jumped ↓%.3f ↑%.3f Hz" : "↓%.2f ↑%.2f",
-                     fu, fd);
+            snprintf(buf, len, form == 0 ? "jumped %s%.3f %s%.3f Hz (w sweeps again)"
+                               : form == 1 ? "jumped %s%.3f %s%.3f Hz" : "%s%.2f %s%.2f",
+                     au, fu, ad, fd);
         else if (got)
             snprintf(buf, len, form == 0 ? "▲ %d points, stopped (w sweeps again)"
                                : form == 1 ? "▲ %d points" : "▲ %d", got);
@@ -296,22 +302,26 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
     }
     const struct sweep *up, *down;
     legs(app, &up, &down);
-    struct legend_item legend[5];
+    struct legend_item legend[6];
     char folds[48] = "", state[80];
     int k = 0, used = 0;
     legend[k++] = (struct legend_item){term_utf8() ? "▲ up" : "^ up", PAIR_MASS};
     legend[k++] = (struct legend_item){term_utf8() ? "▼ down" : "v down", PAIR_MASS};
-    if (rv->hb.folds >= 2)
-        snprintf(folds, sizeof folds, "folds %.3f %.3f Hz", rv->hb.fold_f[0], rv->hb.fold_f[1]);
-    else if (rv->hb.folds == 1)
-        snprintf(folds, sizeof folds, "fold %.3f Hz", rv->hb.fold_f[0]);
+    legend[k++] = (struct legend_item){term_utf8() ? "◆ both" : "* both", PAIR_MASS};
+    /* Every fold the range holds, as many as the legend's entry takes. */
+    for (int j = 0, used_f = 0; j < rv->hb.folds && used_f < (int)sizeof folds - 12; j++)
+        used_f += snprintf(folds + used_f, sizeof folds - (size_t)used_f, "%s %.3f",
+                           j ? "" : rv->hb.folds > 1 ? "folds" : "fold", rv->hb.fold_f[j]);
+    if (folds[0])
+        snprintf(folds + strlen(folds), sizeof folds - strlen(folds), " Hz");
     if (folds[0])
         legend[k++] = (struct legend_item){folds, PAIR_MOTOR};
     for (int j = 0; j < k; j++)
         used += draw_width(legend[j].text) + 1;
     sweep_words(app, c->frame.w - 4 - used, state, sizeof state);
     legend[k++] = (struct legend_item){state, PAIR_MOTOR};
-    chart_draw(c, "Harmonic balance: amplitude (m), stable ━ unstable ┅ backbone ┄",
+    chart_draw(c, m->n == 1 ? "Harmonic balance: amplitude (m), stable ━ unstable ┅ backbone ┄"
+                            : "Harmonic balance: amplitude (m), stable ━ unstable ┅",
                "Harmonic balance (m)", "Hz", legend, k);
     chart_report(c, "Harmonic balance and the sweeps up and down", "motor frequency f (Hz)",
                  "amplitude (m)");
