@@ -6,6 +6,7 @@
 #define SPRINGSIM_JUMP_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "../core/harmonic.h"
 #include "../core/sweep.h"
@@ -48,6 +49,10 @@ bool jump_rises(const struct sweep *s, int k);
  * (harmonic_trace's: no drive, too many masses, no memory). */
 int jump_theory_solve(struct jump_theory *t, const struct model *m, double lo, double hi,
                       char *why, size_t len);
+
+/* A hash of what the theory of m depends on: the chain, the drive's wave and amplitude, the
+ * force; not the drive's frequency, which a sweep changes at every point. */
+uint64_t jump_theory_key(const struct model *m);
 
 /* Frees what t holds (t stays usable, empty). */
 void jump_theory_free(struct jump_theory *t);

@@ -265,14 +265,16 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
 {
     const struct model *m = app->model;
     struct chart *c = &rv->chart;
-    if (rv->hb_version != app->version) {
+    uint64_t key = rv->hb_version != app->version ? jump_theory_key(m) : rv->hb_key;
+    if (rv->hb_version != app->version && (rv->hb_version == 0 || key != rv->hb_key)) {
         struct sweep_plan plan;
         rv->hb_ok = sweeping_plan(app, &plan, rv->hb_why, sizeof rv->hb_why) == 0 &&
                     jump_theory_solve(&rv->hb, m, plan.lo, plan.hi, rv->hb_why,
                                       sizeof rv->hb_why) == 0;
-        rv->hb_version = app->version;
+        rv->hb_key = key;
         fresh = true;
     }
+    rv->hb_version = app->version;
     /* A low view gives the phase's rows to the amplitude, where the jump is. */
     bool merge = rv->area.h < BRANCHES_PHASE_MIN_ROWS;
     if (merge && !rv->merged && rv->phase.frame.h > 0) {

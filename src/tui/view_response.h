@@ -30,7 +30,8 @@ struct response_view {
                           * contacts (m; INFINITY: none, or no sweep) */
     /* A chain with cubic springs (view_branches.c): */
     struct jump_theory hb; /* the harmonic-balance curve over the sweep's range */
-    unsigned hb_version; /* app version it belongs to (0: none) */
+    uint64_t hb_key;     /* the chain and drive it belongs to (jump_theory_key) */
+    unsigned hb_version; /* app version it was last checked at (0: none) */
     bool hb_ok;          /* it was solved; else hb_why says why not */
     struct rect area;    /* the view's rectangle, as placed */
     bool merged;         /* the amplitude chart takes it all (view_branches.c, when low) */
