@@ -6,6 +6,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "../core/hash.h"
+
 bool jump_two_way(const struct model *m)
 {
     return m->cubic && m->motor.wave == WAVE_SINE;
@@ -62,27 +64,18 @@ int jump_find(const struct sweep *s, int from)
     return -1;
 }
 
-/* FNV-1a over len bytes at p, from h. */
-static uint64_t fnv(uint64_t h, const void *p, size_t len)
-{
-    const unsigned char *b = p;
-    for (size_t i = 0; i < len; i++)
-        h = (h ^ b[i]) * 1099511628211ULL;
-    return h;
-}
-
 uint64_t jump_theory_key(const struct model *m)
 {
     size_t n = (size_t)m->n;
     double drive[3] = {m->motor.amplitude, m->force, (double)m->force_on};
     int kind[3] = {m->n, (int)m->boundary, (int)m->motor.wave};
-    uint64_t h = fnv(14695981039346656037ULL, kind, sizeof kind);
-    h = fnv(h, drive, sizeof drive);
-    h = fnv(h, m->m, n * sizeof *m->m);
-    h = fnv(h, m->c, n * sizeof *m->c);
-    h = fnv(h, m->k, (n + 1) * sizeof *m->k);
-    h = fnv(h, m->k3, (n + 1) * sizeof *m->k3);
-    return fnv(h, m->cs, (n + 1) * sizeof *m->cs);
+    uint64_t h = hash_bytes(HASH_START, kind, sizeof kind);
+    h = hash_bytes(h, drive, sizeof drive);
+    h = hash_bytes(h, m->m, n * sizeof *m->m);
+    h = hash_bytes(h, m->c, n * sizeof *m->c);
+    h = hash_bytes(h, m->k, (n + 1) * sizeof *m->k);
+    h = hash_bytes(h, m->k3, (n + 1) * sizeof *m->k3);
+    return hash_bytes(h, m->cs, (n + 1) * sizeof *m->cs);
 }
 
 void jump_theory_free(struct jump_theory *t)
