@@ -194,6 +194,16 @@ static void draw_jump_labels(const struct chart *c, const struct sweep *up,
     }
 }
 
+/* Jump k of s (-1: none) in words, its frequency with that many decimals. */
+static void jump_words(const struct sweep *s, int k, int decimals, char *buf, size_t len)
+{
+    if (k < 0)
+        snprintf(buf, len, "no jump");
+    else
+        snprintf(buf, len, "%s%.*f", jump_rises(s, k) ? "↑" : "↓", decimals,
+                 0.5 * (s->freq[k] + s->freq[k + 1]));
+}
+
 /* What the sweep is doing, in the longest of its forms that fits in room columns. */
 static void sweep_words(const struct app *app, int room, char *buf, size_t len)
 {
@@ -201,19 +211,17 @@ static void sweep_words(const struct app *app, int room, char *buf, size_t len)
     const struct sweep *su = app->sweep_up;
     int ku = jump_find(su, 0), kd = jump_find(s, 0), got = sweep_measured(s);
     bool down = sweep_measured(su) > 0;
-    double fu = ku >= 0 ? 0.5 * (su->freq[ku] + su->freq[ku + 1]) : NAN;
-    double fd = kd >= 0 && down ? 0.5 * (s->freq[kd] + s->freq[kd + 1]) : NAN;
-    const char *au = ku >= 0 && jump_rises(su, ku) ? "↑" : "↓";
-    const char *ad = kd >= 0 && !jump_rises(s, kd) ? "↓" : "↑";
+    char ju[24], jd[24]; /* each sweep's first jump */
     for (int form = 0; form < 3; form++) {
+        jump_words(su, ku, form < 2 ? 3 : 2, ju, sizeof ju);
+        jump_words(s, kd, form < 2 ? 3 : 2, jd, sizeof jd);
         if (s->active)
             snprintf(buf, len, form == 0 ? "sweeping %s %d/%d at %.3f Hz (w stops)"
                                : form == 1 ? "%s %d/%d at %.3f Hz" : "%s %d/%d",
                      down ? "down" : "up", s->index + 1, s->points, sweep_frequency(s));
         else if (got && down)
-            snprintf(buf, len, form == 0 ? "jumped %s%.3f %s%.3f Hz (w sweeps again)"
-                               : form == 1 ? "jumped %s%.3f %s%.3f Hz" : "%s%.2f %s%.2f",
-                     au, fu, ad, fd);
+            snprintf(buf, len, form == 0 ? "jumped %s, %s Hz (w sweeps again)"
+                               : form == 1 ? "jumped %s, %s Hz" : "%s %s", ju, jd);
         else if (got)
             snprintf(buf, len, form == 0 ? "▲ %d points, stopped (w sweeps again)"
                                : form == 1 ? "▲ %d points" : "▲ %d", got);
