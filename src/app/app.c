@@ -13,6 +13,7 @@
 #include "../core/limits.h"
 #include "../core/modes.h"
 #include "ghost.h"
+#include "jump.h"
 #include "action.h"
 
 /* The chain-sized parts, made together and swapped in together. The parameters are the
@@ -23,6 +24,7 @@ struct parts {
     struct trail *trail;
     struct trail *coarse;
     struct sweep *sweep;
+    struct sweep *sweep_up;
 };
 
 static void parts_free(struct parts *p)
@@ -31,6 +33,7 @@ static void parts_free(struct parts *p)
     trail_free(p->trail);
     trail_free(p->coarse);
     sweep_free(p->sweep);
+    sweep_free(p->sweep_up);
     sim_free(p->sim);
     *p = (struct parts){0};
 }
@@ -47,8 +50,9 @@ static int parts_new(struct parts *p, struct model *m, const struct config *next
     p->trail = trail_new(m->n, TRAIL_FINE_RECORDS);
     p->coarse = trail_new(m->n, TRAIL_COARSE_RECORDS);
     p->sweep = sweep_new(m->n, APP_SWEEP_POINTS);
+    p->sweep_up = sweep_new(m->n, APP_SWEEP_POINTS);
     model_free(m);
-    if (p->sim && p->hist && p->trail && p->coarse && p->sweep)
+    if (p->sim && p->hist && p->trail && p->coarse && p->sweep && p->sweep_up)
         return 0;
     parts_free(p);
     return -1;
@@ -57,13 +61,15 @@ static int parts_new(struct parts *p, struct model *m, const struct config *next
 /* Puts p's parts into the app and the app's old ones into p. */
 static void parts_swap(struct app *app, struct parts *p)
 {
-    struct parts old = {app->sim, app->hist, app->trail, app->coarse, app->sweep};
+    struct parts old = {app->sim, app->hist, app->trail, app->coarse, app->sweep,
+                        app->sweep_up};
     app->sim = p->sim;
     app->model = app->sim ? sim_model(app->sim) : NULL;
     app->hist = p->hist;
     app->trail = p->trail;
     app->coarse = p->coarse;
     app->sweep = p->sweep;
+    app->sweep_up = p->sweep_up;
     *p = old;
 }
 
@@ -91,25 +97,6 @@ static void judge(struct app *app)
     app->runaway_base_ok = false;
 }
 
-/* What a chain with cubic springs adds to the warning in line: a stability warning holds
- * for the chain linearised at rest, and swings stiffen hardening springs, lowering the
- * limit; a softening spring's force turns over past some stretch. */
-static void say_nonlinear(const struct model *m, char *line, size_t len)
-{
-    int j = 0;
-    size_t used = strlen(line);
-    double s = m->cubic ? model_turnover(m, &j) : INFINITY;
-    if (used && m->cubic && model_hardening(m))
-        snprintf(line + used, len - used, " (linearised at rest: large swings stiffen the "
-                 "hardening springs and lower this limit)");
-    else if (!used && isfinite(s)) {
-        char name[48];
-        app_spring_name(m, j, name, sizeof name);
-        snprintf(line, len, "%s softens: its force turns over at a stretch of %.3g m, and "
-                 "past it the chain runs away", name, s);
-    }
-}
-
 /* Says what is wrong with dt after a change, if anything. A change of the chain, dt or
  * the integrator says the first of: unstable, a mode inaccurate, the drive short of
  * steps; one of the drive alone says only that the drive has just become short of them
@@ -129,7 +116,7 @@ static unsigned say_limits(struct app *app, unsigned what, bool drive_was_rough)
         limits_say_drive(l, true, line, sizeof line);
     }
     if (what & APP_CHANGED_CHAIN)
-        say_nonlinear(app->model, line, sizeof line);
+        app_say_nonlinear(app->model, line, sizeof line);
     return line[0] ? app_say(app, SAID_WARNING, "%s", line) : 0;
 }
 
@@ -468,6 +455,16 @@ unsigned app_step(struct app *app)
         what |= app_retune(app, sweep_frequency(app->sweep));
         break;
     case SWEEP_DONE:
+        if (jump_two_way(app->model) && jump_turn(&app->sweep, &app->sweep_up, t)) {
+            char a[32], b[32];
+            what |= app_retune(app, sweep_frequency(app->sweep));
+            what |= app_say(app, SAID_NOTE, "sweeping down %s..%s Hz, from the state the "
+                            "sweep up ended in; %s stops it",
+                            app_fixed(app->sweep->freq[0], 2, a, sizeof a),
+                            app_fixed(app->sweep_up->freq[0], 2, b, sizeof b),
+                            app_key(app, ACT_SWEEP));
+            break;
+        }
         what |= app_retune(app, app->sweep_from);
         char hint[64];
         if (app->sweep->unsteady > 0)
@@ -475,8 +472,9 @@ unsigned app_step(struct app *app)
                             "back at %.3f Hz", app->sweep->points, app->sweep->unsteady,
                             app->sweep->most, app->sweep_from);
         else
-            what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured%s; back at %.3f Hz",
-                            app->sweep->points,
+            what |= app_say(app, SAID_NOTE, "sweep done: %d frequencies measured%s%s; back at "
+                            "%.3f Hz", app->sweep->points,
+                            sweep_measured(app->sweep_up) > 0 ? " up and down" : "",
                             app_key_hint(app, ACT_RESPONSE, "shows them", hint, sizeof hint),
                             app->sweep_from);
         break;

@@ -152,6 +152,8 @@ struct app {
                               * (never 0): what is computed from the model is stale when
                               * it moves */
     struct sweep *sweep;     /* the sine-sweep experiment */
+    struct sweep *sweep_up;  /* a chain with cubic springs: its sweep up, kept while the
+                              * sweep down runs in sweep, and after (jump.c) */
     double sweep_from;       /* the user's frequency during a sweep, given back after */
     double energy0;          /* the energy balance at t = 0 */
     struct ghost *ghost;     /* a frozen copy run beside the chain (ghost.h), or NULL */
@@ -240,6 +242,11 @@ unsigned app_set_element(struct app *app, char what, int index, const char *text
 /* Spring j's name for the screen: numbered from 1 as in the --spring list, with what it
  * joins, "spring 1 (wall–1)", "spring 2 (1–2)", "spring 4 (3–motor)". */
 void app_spring_name(const struct model *m, int j, char *buf, size_t len);
+
+/* What a chain with cubic springs adds to the warning in line (empty: none): a limit is
+ * the chain's linearised at rest, and swings stiffen hardening springs; a softening
+ * spring's force turns over past some stretch. */
+void app_say_nonlinear(const struct model *m, char *line, size_t len);
 
 /* Sets the motor frequency to the natural frequency nearest to it. */
 unsigned app_nearest_mode(struct app *app);

@@ -71,19 +71,26 @@ static void sweep_name(const char *dir, char *path, size_t len)
         snprintf(path, len, "%s/springsim-sweep-%s-%d.csv", dir ? dir : ".", stamp, k);
 }
 
-/* The sweep's rows: each measured point's frequency, amplitudes and phases, then the
- * linear theory's at that frequency for the chain as it is. Returns the rows. */
-static int sweep_rows(FILE *fp, const struct app *app, double *amp, double *phase)
+/* The header of the sweep's rows for n masses, with a direction column after the
+ * frequency when there are two sweeps (legs). */
+static void sweep_header(FILE *fp, int n, bool legs)
 {
-    const struct sweep *s = app->sweep;
-    int n = s->n, rows = 0;
-    struct model m = *app->model; /* shares the arrays, only read */
-    fputs("frequency_hz", fp);
+    fputs(legs ? "frequency_hz,direction" : "frequency_hz", fp);
     static const char *const cols[] = {"amp", "phase", "theory_amp", "theory_phase"};
     for (int c = 0; c < 4; c++)
         for (int i = 1; i <= n; i++)
             fprintf(fp, ",%s%d", cols[c], i);
     fputc('\n', fp);
+}
+
+/* The rows of sweep s: each measured point's frequency (and leg, the direction, unless
+ * NULL), amplitudes and phases, then the linear theory's at that frequency for the chain
+ * as it is. Returns the rows. */
+static int sweep_rows(FILE *fp, const struct app *app, const struct sweep *s, const char *leg,
+                      double *amp, double *phase)
+{
+    int n = s->n, rows = 0;
+    struct model m = *app->model; /* shares the arrays, only read */
     for (int p = 0; p < s->points; p++) {
         const double *pk = s->peak + (size_t)p * n, *ph = s->phase + (size_t)p * n;
         if (isnan(pk[0]))
@@ -93,6 +100,8 @@ static int sweep_rows(FILE *fp, const struct app *app, double *amp, double *phas
             for (int i = 0; i < n; i++)
                 amp[i] = INFINITY, phase[i] = NAN;
         fprintf(fp, "%.12g", s->freq[p]);
+        if (leg)
+            fprintf(fp, ",%s", leg);
         for (int i = 0; i < n; i++)
             fprintf(fp, ",%.12g", pk[i]);
         for (int i = 0; i < n; i++)
@@ -120,9 +129,12 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
     sweep_name(dir, path, len);
     struct config c = app->cfg;
     c.frequency = s->active ? app->sweep_from : c.frequency;
+    /* A chain with cubic springs swept up, then down (jump.c): both, the up one first. */
+    const struct sweep *up = sweep_measured(app->sweep_up) > 0 ? app->sweep_up : NULL;
+    const struct sweep *first = up ? up : s;
     char spec[96], lo[32], hi[32];
-    config_format_exact(s->freq[0], lo, sizeof lo);
-    config_format_exact(s->freq[s->points - 1], hi, sizeof hi);
+    config_format_exact(first->freq[0], lo, sizeof lo);
+    config_format_exact(first->freq[first->points - 1], hi, sizeof hi);
     snprintf(spec, sizeof spec, "%s:%s:%d", lo, hi, s->points);
     struct output o;
     int e = output_open(&o, path), rows = 0;
@@ -143,7 +155,13 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
         if (s->contacts > 0)
             fprintf(o.fp, "# %ld contact%s during the sweep: off the linear theory\n",
                     s->contacts, s->contacts == 1 ? "" : "s");
-        rows = sweep_rows(o.fp, app, amp, amp + s->n);
+        if (up)
+            fprintf(o.fp, "# the sweep up, then the sweep down from the state it ended in "
+                    "(direction); theory_: the chain linearised at rest; --sweep with the "
+                    "line above gives the harmonic balance\n");
+        sweep_header(o.fp, s->n, up != NULL);
+        rows = up ? sweep_rows(o.fp, app, up, "up", amp, amp + s->n) : 0;
+        rows += sweep_rows(o.fp, app, s, up ? "down" : NULL, amp, amp + s->n);
         e = output_close(&o, true);
     }
     free(amp);

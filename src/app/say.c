@@ -1,5 +1,6 @@
 /* say.c: the status message, the one line every part of the app says what happened on,
- * the digits its times are given with, numbers kept to a width, and a spring's name. */
+ * the digits its times are given with, numbers kept to a width, a spring's name, and what
+ * cubic springs add to a warning. */
 #include "app.h"
 
 #include <math.h>
@@ -76,4 +77,23 @@ void app_spring_name(const struct model *m, int j, char *buf, size_t len)
     else
         snprintf(right, sizeof right, "%d", j + 1);
     snprintf(buf, len, "spring %d (%s–%s)", j + 1, left, right);
+}
+
+/* What a chain with cubic springs adds to the warning in line: a stability warning holds
+ * for the chain linearised at rest, and swings stiffen hardening springs, lowering the
+ * limit; a softening spring's force turns over past some stretch. */
+void app_say_nonlinear(const struct model *m, char *line, size_t len)
+{
+    int j = 0;
+    size_t used = strlen(line);
+    double s = m->cubic ? model_turnover(m, &j) : INFINITY;
+    if (used && m->cubic && model_hardening(m))
+        snprintf(line + used, len - used, " (linearised at rest: large swings stiffen the "
+                 "hardening springs and lower this limit)");
+    else if (!used && isfinite(s)) {
+        char name[48];
+        app_spring_name(m, j, name, sizeof name);
+        snprintf(line, len, "%s softens: its force turns over at a stretch of %.3g m, and "
+                 "past it the chain runs away", name, s);
+    }
 }

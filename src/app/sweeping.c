@@ -1,5 +1,6 @@
 /* sweeping.c: the app's sine sweep planned and started (sweeping.h); its points are
- * taken in app_step, its bookkeeping is the core's sweep.c. */
+ * taken in app_step, its bookkeeping is the core's sweep.c; on a chain with cubic springs
+ * it goes up, then down (jump.c). */
 #include "sweeping.h"
 
 #include <math.h>
@@ -7,6 +8,7 @@
 
 #include "action.h"
 #include "change.h"
+#include "jump.h"
 
 int sweeping_plan(const struct app *app, struct sweep_plan *plan, char *why, size_t len)
 {
@@ -59,6 +61,9 @@ unsigned app_toggle_sweep(struct app *app)
     if (sweeping_plan(app, &plan, why, sizeof why) != 0)
         return app_say(app, SAID_ERROR, "%s", why);
     app->sweep_from = app->model->motor.frequency;
+    /* The last sweep up is let go: its points are not this sweep's. */
+    sweep_start(app->sweep_up, plan.lo, plan.hi, 0.0, sim_time(app->sim));
+    sweep_stop(app->sweep_up);
     sweep_start(app->sweep, plan.lo, plan.hi, 0.0, sim_time(app->sim));
     sweep_until_steady(app->sweep, plan.hold, plan.most);
     unsigned what = app_retune(app, sweep_frequency(app->sweep)) | app_set_running(app, true);
@@ -68,6 +73,11 @@ unsigned app_toggle_sweep(struct app *app)
         return what | app_say(app, SAID_WARNING, "contacts expected above %.2g m: lower the "
                               "amplitude; sweeping, %s stops it", plan.contact,
                               app_key(app, ACT_SWEEP));
+    if (jump_two_way(app->model))
+        return what | app_say(app, SAID_NOTE, "sweeping up %s..%s Hz at %s, then down, each "
+                              "point from the last one's state; %s stops it",
+                              app_fixed(plan.lo, 2, a, sizeof a),
+                              app_fixed(plan.hi, 2, b, sizeof b), pace, app_key(app, ACT_SWEEP));
     return what | app_say(app, SAID_NOTE, "sweeping %s..%s Hz at %s, each point once steady to "
                           "1 %%; %s stops it", app_fixed(plan.lo, 2, a, sizeof a),
                           app_fixed(plan.hi, 2, b, sizeof b), pace, app_key(app, ACT_SWEEP));

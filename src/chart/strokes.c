@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../core/hash.h"
+
 #define FAR 1e6 /* dots: a point this far off the canvas is as good as at infinity */
 
 struct strokes *strokes_new(void)
@@ -98,26 +100,17 @@ void strokes_segment(struct strokes *k, double x0, double y0, double x1, double 
     strokes_point(k, x1, y1);
 }
 
-/* FNV-1a over the bytes. */
-static uint64_t fnv(uint64_t h, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ b[i]) * 0x100000001b3ULL;
-    return h;
-}
-
 uint64_t strokes_hash(const struct strokes *k)
 {
-    uint64_t h = 0xcbf29ce484222325ULL;
-    h = fnv(h, &k->n, sizeof k->n);
+    uint64_t h = HASH_START;
+    h = hash_bytes(h, &k->n, sizeof k->n);
     if (k->n)
-        h = fnv(h, k->xy, (size_t)k->n * 2 * sizeof *k->xy);
+        h = hash_bytes(h, k->xy, (size_t)k->n * 2 * sizeof *k->xy);
     for (int i = 0; i < k->ns; i++) {
         const struct stroke *s = &k->s[i];
-        h = fnv(h, &s->start, sizeof s->start);
-        h = fnv(h, &s->count, sizeof s->count);
-        h = fnv(h, &s->color, 3); /* colour, kind, size */
+        h = hash_bytes(h, &s->start, sizeof s->start);
+        h = hash_bytes(h, &s->count, sizeof s->count);
+        h = hash_bytes(h, &s->color, 3); /* colour, kind, size */
     }
     return h;
 }

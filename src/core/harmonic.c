@@ -525,6 +525,17 @@ int harmonic_at(const struct model *m, const struct harmonic_curve *c, double f,
     return found;
 }
 
+int harmonic_curve_rates(const struct model *m, const struct harmonic_curve *c, double *rate)
+{
+    struct hb h;
+    if (hb_init(&h, m, 1.0) != 0)
+        return -1;
+    for (int k = 0; k < c->count; k++)
+        rate[k] = slow_rate(&h, c->ab + (size_t)k * 2 * c->n, 2.0 * M_PI * c->f[k]);
+    hb_free(&h);
+    return 0;
+}
+
 double harmonic_backbone(const struct model *m, double f)
 {
     if (m->n != 1)

@@ -56,6 +56,11 @@ void harmonic_curve_free(struct harmonic_curve *c);
 int harmonic_at(const struct model *m, const struct harmonic_curve *c, double f,
                 struct harmonic_solution *out, int max);
 
+/* The stability of every point of curve c of m: the largest real part of the slow flow's
+ * eigenvalues there (1/s; below 0 stable, NAN unknown) into rate[0 .. c->count - 1].
+ * 0, or -1 on no memory. */
+int harmonic_curve_rates(const struct model *m, const struct harmonic_curve *c, double *rate);
+
 /* The amplitude a of the single-mass backbone w^2 = (k + 3/4 k3 a^2) / m at frequency
  * f of a chain of one mass (k and k3 the sum of its two springs' with the motor held):
  * NAN where there is none. */

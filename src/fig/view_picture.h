@@ -40,6 +40,8 @@ struct fig_report {
                                         * (W the dots across), not the x axis's value */
     double fmin, fmax;
     bool ylog;                         /* the y axis's values are log10 of what is shown */
+    bool branches;                     /* harmonic balance: the dashed lines its unstable
+                                        * branches, the points two sweeps' (up larger) */
     double ylo, yhi, ystep;            /* ystep > 0: y from ylo to yhi, ticks ystep apart */
     int ncursors;
     struct fig_cursor cursor[FIG_CURSORS];

@@ -123,6 +123,14 @@ static void add_legend(const struct fig_chart *c, const struct fig_series *s, in
     bool points = false;
     for (int i = 0; i < ns; i++)
         points |= s[i].no_line;
+    if (c->report->branches) { /* the jump view's: no ghost, two sweeps */
+        add_once(lg, nl, (struct fig_legend){"harmonic balance, stable", FIG_WALL, false,
+                                             false});
+        add_once(lg, nl, (struct fig_legend){"unstable", FIG_WALL, true, false});
+        add_once(lg, nl, (struct fig_legend){"measured: up large, down small", FIG_WALL,
+                                             false, true});
+        return;
+    }
     if (ghost)
         add_once(lg, nl, (struct fig_legend){"ghost: dashed, each mass's colour", FIG_MASS,
                                              true, false});

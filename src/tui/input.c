@@ -32,7 +32,7 @@ const struct binding input_bindings[] = {
     {'g', ACT_GHOST, "g", "g", "ghost: a frozen copy run beside the chain (again: drop it)", false},
     {'v', ACT_HIDE, "v", "v", "show / hide the selected mass's curves (Tab, ↑↓ to a mass)", false},
     {'n', ACT_NEAREST, "n", "n", "drive at the nearest natural frequency", false},
-    {'w', ACT_SWEEP, "w", "w", "start / stop a sine-sweep experiment (see it in f)", false},
+    {'w', ACT_SWEEP, "w", "w", "start / stop a sine sweep (f; cubic springs: up, then down)", false},
     {'s', ACT_SAVE, "s", "s", "save the set-up as a preset", false},
     {'x', ACT_EXPORT, "x", "x", "export the samples as CSV (f view: the sweep's points)", false},
     {'X', ACT_FIGURE, "X", "X", "report figure of the view (asks its name): SVG, PNG", false},

@@ -10,6 +10,7 @@
 #include "../chart/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
+#include "view_branches.h"
 #include "term.h"
 
 static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5",
@@ -18,6 +19,8 @@ static const char *const mass_keys[10] = {"━1", "━2", "━3", "━4", "━5"
 bool response_view_place(struct response_view *rv, struct rect area)
 {
     struct rect amp = area, ph = {0, 0, 0, 0};
+    rv->area = area;
+    rv->merged = false;
     if (area.h >= RESPONSE_PHASE_MIN_ROWS) {
         ph = area;
         ph.h = area.h * 2 / 5 > RESPONSE_PHASE_ROWS ? area.h * 2 / 5 : RESPONSE_PHASE_ROWS;
@@ -40,6 +43,8 @@ void response_view_free(struct response_view *rv)
     free(rv->curve);
     free(rv->phase_curve);
     rv->curve = rv->phase_curve = NULL;
+    jump_theory_free(&rv->hb);
+    rv->hb_version = 0;
 }
 
 /* Solves the theory curves for the chain as it is, one solve per dot column, and the
@@ -379,6 +384,12 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
             draw_frame(rv->phase.frame, "Phase", true);
         return;
     }
+    if (jump_two_way(m)) {
+        branches_draw(rv, app, fresh);
+        return;
+    }
+    if (rv->merged && !response_view_place(rv, rv->area))
+        return;
     int W = 2 * c->canvas->cols;
     if (rv->version != app->version || rv->width != W) {
         solve_curves(rv, app, W);

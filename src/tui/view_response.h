@@ -9,6 +9,7 @@
 #include <stdbool.h>
 
 #include "../app/app.h"
+#include "../app/jump.h"
 #include "chart.h"
 
 #define RESPONSE_PHASE_MIN_ROWS 17 /* the view's height from which the phase panel shows */
@@ -27,6 +28,14 @@ struct response_view {
     bool drive_phase_ok; /* drive_phase[] was solved */
     double contact;      /* the motor amplitude from which a sweep's steady swings make
                           * contacts (m; INFINITY: none, or no sweep) */
+    /* A chain with cubic springs (view_branches.c): */
+    struct jump_theory hb; /* the harmonic-balance curve over the sweep's range */
+    uint64_t hb_key;     /* the chain and drive it belongs to (jump_theory_key) */
+    unsigned hb_version; /* app version it was last checked at (0: none) */
+    bool hb_ok;          /* it was solved; else hb_why says why not */
+    struct rect area;    /* the view's rectangle, as placed */
+    bool merged;         /* the amplitude chart takes it all (view_branches.c, when low) */
+    char hb_why[160];
 };
 
 /* Places the view in area; false on no memory. */
