@@ -16,6 +16,8 @@ MANDIR ?= $(PREFIX)/share/man/man1
 BASHCOMPDIR ?= $(PREFIX)/share/bash-completion/completions
 ZSHCOMPDIR ?= $(PREFIX)/share/zsh/site-functions
 FISHCOMPDIR ?= $(PREFIX)/share/fish/vendor_completions.d
+LIBDIR ?= $(PREFIX)/lib
+FIGLIBDIR ?= $(LIBDIR)/springsim
 PKG_CONFIG ?= pkg-config
 CC ?= cc
 BUILD ?= build
@@ -31,7 +33,8 @@ shell_word = '$(subst ','\'',$(1))'
 c_text = $(subst ",\",$(subst \,\\,$(1)))
 DEFS = -D_GNU_SOURCE -DVERSION='"$(VERSION)"' \
        -DPRESETDIR=$(call shell_word,"$(call c_text,$(DATADIR)/presets)") \
-       -DLESSONDIR=$(call shell_word,"$(call c_text,$(DATADIR)/lessons)")
+       -DLESSONDIR=$(call shell_word,"$(call c_text,$(DATADIR)/lessons)") \
+       -DFIGLIBDIR=$(call shell_word,"$(call c_text,$(FIGLIBDIR))")
 
 # Expanded when a recipe runs, after mk/deps.sh has made sure the packages are there.
 CORE_PKGS = inih lapacke gsl fftw3
@@ -55,8 +58,14 @@ APP_SRC = $(wildcard src/app/*.c src/lab/*.c src/chart/*.c)
 APP_OBJ = $(APP_SRC:src/%.c=$(BUILD)/%.o)
 TUI_SRC = $(wildcard src/tui/*.c)
 TUI_OBJ = $(TUI_SRC:src/%.c=$(BUILD)/%.o)
+# The figure library (springsim-fig.so beside the program, loaded when a figure or a
+# pixel plot is wanted: src/fig/lib.h) is every file of src/fig but the three the program
+# keeps: the colours, a figure's data, the loader.
 FIG_SRC = $(wildcard src/fig/*.c)
 FIG_OBJ = $(FIG_SRC:src/%.c=$(BUILD)/%.o)
+FIG_KEPT = $(BUILD)/fig/palette.o $(BUILD)/fig/report_data.o $(BUILD)/fig/load.o
+FIG_SO_OBJ = $(filter-out $(FIG_KEPT),$(FIG_OBJ))
+FIG_SO = $(dir $(BIN))springsim-fig.so
 PLAIN_SRC = $(wildcard src/plain/*.c)
 PLAIN_OBJ = $(PLAIN_SRC:src/%.c=$(BUILD)/%.o)
 MAIN_OBJ = $(BUILD)/main.o $(BUILD)/run_headless.o $(BUILD)/run_tables.o $(BUILD)/run_batch.o \
@@ -118,7 +127,7 @@ $(BUILD)/chart/%.o: src/chart/%.c | $(BUILD)/.core-pure
 
 $(BUILD)/fig/%.o: src/fig/%.c | $(BUILD)/.core-pure
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(FIG_CFLAGS) -Isrc -MMD -MP \
+	$(CC) $(CFLAGS) -fPIC $(WARN) $(DEFS) $(CPPFLAGS) $(CORE_CFLAGS) $(FIG_CFLAGS) -Isrc -MMD -MP \
 	    -c -o $@ $<
 
 $(BUILD)/plain/%.o: src/plain/%.c | $(BUILD)/.core-pure
@@ -138,18 +147,27 @@ $(MAIN_OBJ): $(BUILD)/%.o: src/%.c | $(BUILD)/.deps-build
 # The preset directory is compiled in: rebuild what uses it when PREFIX or DATADIR change.
 $(BUILD)/.datadir: FORCE
 	@mkdir -p $(@D)
-	@printf '%s\n' $(call shell_word,$(DATADIR)) | cmp -s - $@ || \
-	    printf '%s\n' $(call shell_word,$(DATADIR)) >$@
-$(BUILD)/core/preset.o $(BUILD)/core/search.o $(BUILD)/main.o $(BUILD)/options.o: $(BUILD)/.datadir
+	@printf '%s\n' $(call shell_word,$(DATADIR)) $(call shell_word,$(FIGLIBDIR)) | \
+	    cmp -s - $@ || \
+	    printf '%s\n' $(call shell_word,$(DATADIR)) $(call shell_word,$(FIGLIBDIR)) >$@
+$(BUILD)/core/preset.o $(BUILD)/core/search.o $(BUILD)/main.o $(BUILD)/options.o \
+    $(BUILD)/fig/load.o: $(BUILD)/.datadir
 FORCE:
 
 $(CORE_LIB): $(CORE_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(FIG_OBJ) $(APP_OBJ) $(CORE_LIB)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(FIG_OBJ) $(APP_OBJ) \
-	    $(CORE_LIB) $(UI_LIBS) $(FIG_LIBS) $(CORE_LIBS)
+# The program exports its symbols (-rdynamic) and holds the whole core: the figure library
+# calls back into it (the core, the app, the charts) and is loaded with every symbol bound.
+$(BIN): $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(FIG_KEPT) $(APP_OBJ) $(CORE_LIB) $(FIG_SO)
+	$(CC) $(CFLAGS) $(LDFLAGS) -rdynamic -o $@ $(MAIN_OBJ) $(TUI_OBJ) $(PLAIN_OBJ) $(FIG_KEPT) \
+	    $(APP_OBJ) -Wl,--whole-archive $(CORE_LIB) -Wl,--no-whole-archive $(UI_LIBS) \
+	    $(CORE_LIBS) -ldl
+
+$(FIG_SO): $(FIG_SO_OBJ)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(LDFLAGS) -shared -o $@ $(FIG_SO_OBJ) $(FIG_LIBS) -lm
 
 # The shell completions are written from the option table by a build tool on the core.
 completions: $(COMPLETIONS)
@@ -363,13 +381,15 @@ INSTALL_DIRS = SS_BINDIR='$(subst ','\'',$(DESTDIR)$(BINDIR))' \
     SS_BASHCOMPDIR='$(subst ','\'',$(DESTDIR)$(BASHCOMPDIR))' \
     SS_ZSHCOMPDIR='$(subst ','\'',$(DESTDIR)$(ZSHCOMPDIR))' \
     SS_FISHCOMPDIR='$(subst ','\'',$(DESTDIR)$(FISHCOMPDIR))' \
+    SS_FIGLIBDIR='$(subst ','\'',$(DESTDIR)$(FIGLIBDIR))' SS_FIG_SO='$(subst ','\'',$(FIG_SO))' \
     SS_BIN='$(subst ','\'',$(BIN))' SS_BUILD='$(subst ','\'',$(BUILD))'
 
 install: $(BIN) completions
 	@$(INSTALL_DIRS); set -e; \
 	install -d "$$SS_BINDIR" "$$SS_MANDIR" "$$SS_DATADIR/presets" "$$SS_DATADIR/lessons" \
-	    "$$SS_BASHCOMPDIR" "$$SS_ZSHCOMPDIR" "$$SS_FISHCOMPDIR"; \
+	    "$$SS_BASHCOMPDIR" "$$SS_ZSHCOMPDIR" "$$SS_FISHCOMPDIR" "$$SS_FIGLIBDIR"; \
 	install -m 755 "$$SS_BIN" "$$SS_BINDIR/springsim"; \
+	install -m 644 "$$SS_FIG_SO" "$$SS_FIGLIBDIR/springsim-fig.so"; \
 	install -m 644 man/springsim.1 "$$SS_MANDIR/springsim.1"; \
 	install -m 644 presets/*.ini "$$SS_DATADIR/presets/"; \
 	install -m 644 lessons/*.lesson "$$SS_DATADIR/lessons/"; \
@@ -381,7 +401,8 @@ uninstall:
 	@$(INSTALL_DIRS); set -e; \
 	rm -f "$$SS_BINDIR/springsim" "$$SS_MANDIR/springsim.1" \
 	    "$$SS_BASHCOMPDIR/springsim" "$$SS_ZSHCOMPDIR/_springsim" \
-	    "$$SS_FISHCOMPDIR/springsim.fish"; \
+	    "$$SS_FISHCOMPDIR/springsim.fish" "$$SS_FIGLIBDIR/springsim-fig.so"; \
+	rmdir "$$SS_FIGLIBDIR" 2>/dev/null || true; \
 	for f in presets/*.ini lessons/*.lesson; do rm -f "$$SS_DATADIR/$$f"; done; \
 	rmdir "$$SS_DATADIR/presets" "$$SS_DATADIR/lessons" "$$SS_DATADIR" 2>/dev/null || true
 
@@ -406,6 +427,6 @@ deb: | $(BUILD)/.deps-build
 	@ls $(BUILD)/springsim_$(VERSION)_*.deb
 
 clean:
-	rm -rf $(BUILD) springsim
+	rm -rf $(BUILD) springsim springsim-fig.so
 
 -include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(FIG_OBJ:.o=.d) $(TUI_OBJ:.o=.d) $(PLAIN_OBJ:.o=.d) $(MAIN_OBJ:.o=.d)

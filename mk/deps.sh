@@ -43,6 +43,10 @@ for group in "$@"; do
         want_bin Xvfb xvfb
         want_bin xterm xterm
         want_bin convert imagemagick
+        want_bin identify imagemagick
+        want_bin import imagemagick
+        want_bin pdftotext poppler-utils
+        want_bin pdfinfo poppler-utils
         want_py pyte python3-pyte
         [ -e /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || need="$need fonts-dejavu-core"
         infocmp xterm-direct >/dev/null 2>&1 || need="$need ncurses-term"

@@ -12,6 +12,7 @@
 
 #include "core/config.h"
 #include "core/preset.h"
+#include "fig/lib.h"
 #include "lab/lesson.h"
 #include "lessons_cli.h"
 #include "options.h"
@@ -71,6 +72,7 @@ int main(int argc, char **argv)
     setlocale(LC_ALL, "");
     setlocale(LC_NUMERIC, "C");
     find_exe_dir(argv[0], exe_dir, sizeof exe_dir);
+    fig_lib_where(exe_dir); /* the figure library beside a build tree's program */
     config_init(&c);
     int status = options_parse(argc, argv, &c, &cli, exe_dir);
     if (status == EXIT_SUCCESS)

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "core/config.h"
-#include "fig/report.h"
+#include "fig/lib.h"
 #include "options.h"
 #include "run_files.h"
 
@@ -55,13 +55,19 @@ int run_close_output(struct output *o, const struct config *c, int status)
     return status;
 }
 
-/* --figure: opened before the run, so that a path that cannot be written is said before
- * any work (0, or EXIT_FAILURE after "PATH: REASON"); nothing to do without --figure. */
+/* --figure: the figure library loaded and the file opened before the run, so that a
+ * figure that cannot be drawn or written is said before any work (0, or EXIT_FAILURE
+ * after one line); nothing to do without --figure. */
 int run_open_figure(struct output *o, const struct config *c)
 {
     memset(o, 0, sizeof *o);
     if (!c->figure)
         return 0;
+    char why[600];
+    if (!fig_lib(why, sizeof why)) {
+        options_say("%s: %s", c->figure, why);
+        return EXIT_FAILURE;
+    }
     int e = output_open(o, c->figure);
     if (e) {
         options_say("%s: %s", c->figure, strerror(e));
@@ -78,7 +84,7 @@ int run_close_figure(struct output *o, const struct config *c, int draw, int sta
         return status;
     bool ok = status == EXIT_SUCCESS && draw == 0;
     int e = output_close(o, ok);
-    fig_done();
+    fig_lib_loaded()->done();
     if (status == EXIT_SUCCESS && (draw || e)) {
         options_say("%s: %s", c->figure, strerror(draw ? draw : e));
         return EXIT_FAILURE;

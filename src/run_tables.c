@@ -10,7 +10,7 @@
 #include "core/config.h"
 #include "core/modes.h"
 #include "core/output.h"
-#include "fig/report.h"
+#include "fig/lib.h"
 #include "options.h"
 #include "run.h"
 #include "run_files.h"
@@ -86,7 +86,7 @@ int run_modes(const struct config *c, const struct model *m)
             char settings[400];
             report_settings(c, m, settings, sizeof settings);
             struct report_look look = report_look_of(c, settings);
-            int draw = status == EXIT_SUCCESS ? report_modes(fo.fp, fig_format_of(c->figure), m,
+            int draw = status == EXIT_SUCCESS ? fig_lib_loaded()->modes(fo.fp, fig_format_of(c->figure), m,
                                                              f, shapes, &look)
                                               : 0;
             status = run_close_figure(&fo, c, draw, status);
@@ -213,7 +213,7 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
         report_settings(c, m, settings, sizeof settings);
         struct report_look look = report_look_of(c, settings);
         int draw = status == EXIT_SUCCESS
-                       ? report_sweep(fo.fp, fig_format_of(c->figure), fig, n, &look)
+                       ? fig_lib_loaded()->sweep(fo.fp, fig_format_of(c->figure), fig, n, &look)
                        : 0;
         status = run_close_figure(&fo, c, draw, status);
     }

@@ -45,13 +45,16 @@ fi
     fail "package version $(dpkg-deb -f "$deb" Version), Makefile's $version"
 dpkg-deb -f "$deb" Depends | grep -q 'libncursesw6' && pass ||
     fail "Depends lacks the libraries the binary links: $(dpkg-deb -f "$deb" Depends)"
+dpkg-deb -f "$deb" Depends | grep -q 'libcairo2' && pass ||
+    fail "Depends lacks the figure library's cairo: $(dpkg-deb -f "$deb" Depends)"
 
 # Unpacked into a throwaway root: what is there.
 root=$tmp/root
 dpkg -x "$deb" "$root" || fail "dpkg -x $deb"
 for f in usr/bin/springsim usr/share/man/man1/springsim.1.gz usr/share/doc/springsim/copyright \
     usr/share/bash-completion/completions/springsim usr/share/zsh/vendor-completions/_springsim \
-    usr/share/fish/vendor_completions.d/springsim.fish; do
+    usr/share/fish/vendor_completions.d/springsim.fish \
+    "usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)/springsim/springsim-fig.so"; do
     [ -s "$root/$f" ] && pass || fail "the package has no /$f"
 done
 want=$(cd presets && ls *.ini)
@@ -97,5 +100,16 @@ elif awk -F, 'NR == FNR { a[FNR] = $0; next }
     fail "packaged springsim $run differs from $SPRINGSIM's: $(sed -n 2p "$tmp/deb.csv")"
 else
     pass
+fi
+
+# Its figure library, loaded as the program does (beside it here: the package is not
+# installed), draws a figure.
+cp "$root/usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)/springsim/springsim-fig.so" \
+    "$root/usr/bin/" 2>/dev/null
+if "$bin" --headless --duration 1 --figure "$tmp/deb.png" >/dev/null 2>"$tmp/fig.err" &&
+    [ "$(head -c 8 "$tmp/deb.png" | od -An -c | tr -d ' ')" = '211PNG\r\n032\n' ]; then
+    pass
+else
+    fail "packaged springsim --figure: $(head -c 300 "$tmp/fig.err")"
 fi
 summary

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/install.sh: `make install DESTDIR=...` puts the binary, the man page, every preset,
+# tests/install.sh: `make install DESTDIR=...` puts the binary, its figure library, the man page, every preset,
 # every lesson and the three shell completions where README says, and `make uninstall` takes every one
 # of them away again. Uses the build under test ($BUILD, $SPRINGSIM) and the default PREFIX,
 # so that nothing is recompiled. Prints "install: N passed, M failed".
@@ -22,7 +22,7 @@ if ! mk install; then
 fi
 files="$p/bin/springsim $p/share/man/man1/springsim.1
     $p/share/bash-completion/completions/springsim $p/share/zsh/site-functions/_springsim
-    $p/share/fish/vendor_completions.d/springsim.fish"
+    $p/share/fish/vendor_completions.d/springsim.fish $p/lib/springsim/springsim-fig.so"
 for f in $(cd presets && ls *.ini); do
     files="$files $p/share/springsim/presets/$f"
 done

@@ -15,6 +15,7 @@
 
 #include <curses.h>
 
+#include "../fig/lib.h"
 #include "term.h"
 
 #define KITTY_CHUNK 4096 /* base64 bytes a kitty escape carries, at most */
@@ -259,6 +260,11 @@ static void choose(struct graphics *g)
     }
     if (want == CONFIG_GRAPHICS_AUTO)
         g->said[0] = '\0'; /* auto takes what there is, and the control shows it */
+    char why[sizeof g->said - 10];
+    if (mode != GRAPHICS_BRAILLE && !(g->lib = fig_lib(why, sizeof why))) {
+        mode = GRAPHICS_BRAILLE; /* said even for auto: the install is broken */
+        snprintf(g->said, sizeof g->said, "braille: %s", why);
+    }
     set_mode(g, mode);
 }
 
@@ -462,8 +468,8 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
             continue;
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
         int cw = g->cw, ch = g->ch;
-        fig_pixels_fit(pic.aw, pic.ah, &cw, &ch);
-        if (fig_pixels(&pic, cw, ch, &pal, g->bg, !known, e, g->registers, &g->img, &g->rgb) !=
+        g->lib->pixels_fit(pic.aw, pic.ah, &cw, &ch);
+        if (g->lib->pixels(&pic, cw, ch, &pal, g->bg, !known, e, g->registers, &g->img, &g->rgb) !=
             0)
             continue;
         char pos[32];
@@ -497,7 +503,9 @@ void graphics_free(struct graphics *g)
 {
     free(g->got);
     g->got = NULL;
-    fig_bytes_free(&g->img);
-    fig_bytes_free(&g->out);
-    fig_bytes_free(&g->rgb);
+    if (g->lib) { /* nothing is kept before pixels are drawn, nor without the library */
+        g->lib->bytes_free(&g->img);
+        g->lib->bytes_free(&g->out);
+        g->lib->bytes_free(&g->rgb);
+    }
 }

@@ -16,6 +16,7 @@
 
 #include "../app/answer.h"
 #include "../core/config.h"
+#include "../fig/lib.h"
 #include "../fig/pixels.h"
 #include "chart.h"
 
@@ -58,6 +59,7 @@ struct graphics {
     struct rect at[GRAPHICS_SLOTS];  /* where */
     uint64_t hash[GRAPHICS_SLOTS];   /* of what */
     struct fig_bytes img, out, rgb; /* the image, the bytes sent, the pixels on their way */
+    const struct fig_lib *lib; /* the figure library, once pixels were chosen */
     char said[160];            /* why the charts are braille though pixels were asked for
                                 * ("braille inside tmux or screen"), or "" */
     double next_at;            /* monotonic seconds before which no image is sent */

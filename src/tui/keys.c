@@ -8,7 +8,7 @@
 
 #include "../app/scope.h"
 #include "../app/verb.h"
-#include "../fig/save.h"
+#include "../fig/lib.h"
 #include "input.h"
 
 /* An arrow's adjustment: +-1, fine or coarse, on the control or the chain's mass; in
@@ -91,13 +91,17 @@ static void save_view(struct tui *t, const char *name)
 {
     struct chart *charts[GRAPHICS_SLOTS];
     struct fig_chart pics[GRAPHICS_SLOTS];
+    const struct fig_lib *lib;
+    char why[600];
     int n = screen_charts(t, charts, false);
     for (int i = 0; i < n; i++)
         chart_picture(charts[i], &pics[i]);
     if (t->layout.too_small)
         app_say(&t->app, SAID_ERROR, "figure: the terminal is too small to show the view");
+    else if (!(lib = fig_lib(why, sizeof why)))
+        app_say(&t->app, SAID_ERROR, "figure: %s", why);
     else
-        fig_save_view(&t->app, pics, n, name);
+        lib->save_view(&t->app, pics, n, name);
 }
 
 /* What a lesson's `view` asked for, shown (the plots' grid, one enlarged, a view). */
