@@ -110,6 +110,9 @@ while read -r name; do
         echo "$name exited with status $status"
         failed=$((failed + 1))
     fi
+    if [ "$status" -ne 0 ] || [ "$f" -gt 0 ]; then
+        echo "$name" >>"$work/failed"
+    fi
     printf '%s\t%s\n' "$name" "$(cat "$o.time")" >>"$work/times"
 done <"$work/jobs"
 # this run's seconds kept for the next one's order (those not run keep their old figure)
@@ -118,6 +121,16 @@ if [ -d "$(dirname "$times")" ]; then
         mv -f "$times.tmp" "$times"
 fi
 
+# What failed, again at the end (a log's tail is often all one reads): each test's name
+# and its first failure lines.
+if [ -s "$work/failed" ]; then
+    echo
+    while read -r name; do
+        echo "failed: $name"
+        grep -E '^(FAIL|not ok)|\[  (FAILED|ERROR)  *\]|ERROR|error:' \
+            "$work/out/$(echo "$name" | tr / _).log" | head -n 5 | cut -c 1-300 | sed 's/^/    /'
+    done <"$work/failed"
+fi
 echo
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
