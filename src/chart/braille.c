@@ -20,7 +20,7 @@ struct canvas *canvas_new(int cols, int rows)
     size_t cells = (size_t)cols * (size_t)rows;
     c->cols = cols;
     c->rows = rows;
-    c->strokes = NULL;
+    c->strokes = c->kept = NULL;
     c->mute = 0;
     c->bits = calloc(2 * cells, 1);
     if (!c->bits) {
@@ -35,21 +35,30 @@ void canvas_free(struct canvas *c)
 {
     if (c) {
         free(c->bits);
-        strokes_free(c->strokes);
+        strokes_free(c->kept);
     }
     free(c);
 }
 
+static bool recording = true; /* canvas_record */
+
+void canvas_record(bool on)
+{
+    recording = on;
+}
+
 bool canvas_keep_strokes(struct canvas *c)
 {
-    if (!c->strokes)
-        c->strokes = strokes_new();
-    return c->strokes != NULL;
+    if (!c->kept)
+        c->kept = strokes_new();
+    c->strokes = recording ? c->kept : NULL;
+    return c->kept != NULL;
 }
 
 void canvas_clear(struct canvas *c)
 {
     memset(c->bits, 0, 2 * (size_t)c->cols * (size_t)c->rows);
+    c->strokes = recording ? c->kept : NULL;
     if (c->strokes)
         strokes_clear(c->strokes);
 }

@@ -12,7 +12,8 @@ struct canvas {
     int cols, rows;  /* size in cells; dots are 2*cols by 4*rows */
     uint8_t *bits;   /* braille dot bits per cell (U+2800 + bits) */
     uint8_t *color;  /* colour index per cell: the last dot set wins */
-    struct strokes *strokes; /* what was drawn as lines, for pixels (NULL: not kept) */
+    struct strokes *strokes; /* what is drawn as lines, for pixels (NULL: not kept now) */
+    struct strokes *kept;    /* the strokes' memory, kept while not recording */
     int mute;        /* > 0: a caller keeps the strokes itself (plot_canvas.c, at full precision) */
 };
 
@@ -25,6 +26,11 @@ void canvas_free(struct canvas *c);
 /* From now on also keeps what is drawn as strokes (strokes.h), for pixel output; false on
  * no memory. */
 bool canvas_keep_strokes(struct canvas *c);
+
+/* Whether canvases that keep strokes record them from their next canvas_clear on (on by
+ * default; the terminal program turns it off while nothing needs them: braille charts
+ * and no figure being saved). */
+void canvas_record(bool on);
 
 /* Clears every dot (and the strokes). */
 void canvas_clear(struct canvas *c);

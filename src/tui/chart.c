@@ -13,11 +13,26 @@
 
 #define MIN_ROW_GAP 2 /* rows between y gridlines, at least */
 
-static bool pixels; /* the drawing areas are images: leave them blank */
+static bool pixels;     /* the drawing areas are images: leave them blank */
+static bool for_figure; /* a report figure is being made of the charts */
+
+/* The charts' strokes are recorded only when something reads them: the images, or X's
+ * figure (braille alone never does). */
+static void record_follow(void)
+{
+    canvas_record(pixels || for_figure);
+}
+
+void chart_keep_for_figure(bool on)
+{
+    for_figure = on;
+    record_follow();
+}
 
 void chart_use_pixels(bool on)
 {
     pixels = on;
+    record_follow();
 }
 
 bool chart_pixels(void)

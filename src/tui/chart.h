@@ -57,6 +57,10 @@ bool chart_place(struct chart *c, struct rect frame, int header_rows);
  * area blank (no braille, no gridline dots) for the image to show. */
 void chart_use_pixels(bool on);
 
+/* Whether the charts' strokes are kept for a report figure (X) from their next refresh on,
+ * images or not. */
+void chart_keep_for_figure(bool on);
+
 /* Whether they are (what is drawn around a canvas of its own leaves it blank too). */
 bool chart_pixels(void);
 

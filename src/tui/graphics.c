@@ -206,6 +206,7 @@ void graphics_detect(struct graphics *g, const struct config *c)
 {
     memset(g, 0, sizeof *g);
     g->mode = g->can = GRAPHICS_BRAILLE;
+    chart_use_pixels(false); /* and no strokes kept for images */
     g->bg[0] = g->bg[1] = g->bg[2] = 1.0;
     g->want = (enum config_graphics)-1;
     g->tty = isatty(STDIN_FILENO) && isatty(STDOUT_FILENO);

@@ -93,15 +93,24 @@ static void save_view(struct tui *t, const char *name)
     struct fig_chart pics[GRAPHICS_SLOTS];
     const struct fig_lib *lib;
     char why[600];
+    if (t->layout.too_small) {
+        app_say(&t->app, SAID_ERROR, "figure: the terminal is too small to show the view");
+        return;
+    }
+    if (!(lib = fig_lib(why, sizeof why))) {
+        app_say(&t->app, SAID_ERROR, "figure: %s", why);
+        return;
+    }
+    /* The charts drawn again with their strokes kept (braille keeps none), as the next
+     * frame will draw them. */
+    chart_keep_for_figure(true);
+    screen_draw_charts(t, true);
     int n = screen_charts(t, charts, false);
     for (int i = 0; i < n; i++)
         chart_picture(charts[i], &pics[i]);
-    if (t->layout.too_small)
-        app_say(&t->app, SAID_ERROR, "figure: the terminal is too small to show the view");
-    else if (!(lib = fig_lib(why, sizeof why)))
-        app_say(&t->app, SAID_ERROR, "figure: %s", why);
-    else
-        lib->save_view(&t->app, pics, n, name);
+    lib->save_view(&t->app, pics, n, name);
+    chart_keep_for_figure(false);
+    t->plots_dirty = true;
 }
 
 /* What a lesson's `view` asked for, shown (the plots' grid, one enlarged, a view). */

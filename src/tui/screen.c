@@ -31,6 +31,18 @@ void screen_relayout(struct tui *t)
     t->plots_dirty = true;
 }
 
+void screen_draw_charts(struct tui *t, bool refresh)
+{
+    /* The spectrum follows the mass last selected in the chain. */
+    if (select_mass(&t->sel) >= 0)
+        t->views.spectrum.mass = select_mass(&t->sel);
+    t->plots.top = select_mass(&t->sel); /* the selected mass over the others */
+    if (t->views.shown == VIEW_PLOTS)
+        plots_draw(&t->plots, &t->layout, &t->app, refresh);
+    else
+        views_draw(&t->views, &t->app, &t->sel, refresh);
+}
+
 int screen_charts(struct tui *t, struct chart **out, bool images)
 {
     int n = 0;

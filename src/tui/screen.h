@@ -50,6 +50,10 @@ bool screen_cursors_shown(const struct tui *t);
 /* Lays the screen out again for its size and what is shown; the plots refresh. */
 void screen_relayout(struct tui *t);
 
+/* Draws the charts (the plots, or the analysis view's) into curses' screen; with refresh,
+ * from the data as it is now. */
+void screen_draw_charts(struct tui *t, bool refresh);
+
 /* The charts on the screen (the plots, or the analysis view's): into out (room for
  * GRAPHICS_SLOTS), how many; with images, the modes view's shapes too, which are drawn
  * as charts' areas are but are not charts in X's figure of the view. */

@@ -38,14 +38,7 @@ static double draw(struct tui *t, bool refresh)
     } else {
         panel_status(l, &t->app, t->clock.behind);
         scene_draw(&t->scene, l, &t->app, &t->sel);
-        /* The spectrum follows the mass last selected in the chain. */
-        if (select_mass(&t->sel) >= 0)
-            t->views.spectrum.mass = select_mass(&t->sel);
-        t->plots.top = select_mass(&t->sel); /* the selected mass over the others */
-        if (t->views.shown == VIEW_PLOTS)
-            plots_draw(&t->plots, l, &t->app, refresh);
-        else
-            views_draw(&t->views, &t->app, &t->sel, refresh);
+        screen_draw_charts(t, refresh);
         if (screen_cursors_shown(t))
             readout_draw(l, &t->app);
         else
