@@ -3,6 +3,7 @@
  * that stand in for braille. */
 #include "testutil.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "chart/braille.h"
@@ -148,6 +149,43 @@ static void strokes_kept(void **state)
     canvas_free(c);
 }
 
+/* canvas_record(false) keeps no strokes from the next clear on (the braille is the same);
+ * on again, they are kept; a mark's size and shape survive a break in its stroke. */
+static void recording_switch(void **state)
+{
+    (void)state;
+    struct canvas *c = canvas_new(4, 2);
+    assert_non_null(c);
+    assert_true(canvas_keep_strokes(c));
+    canvas_record(false);
+    canvas_clear(c);
+    assert_null(c->strokes);
+    canvas_line(c, 0, 0, 7, 7, 3);
+    uint8_t off[8];
+    memcpy(off, c->bits, sizeof off);
+    canvas_record(true);
+    canvas_clear(c);
+    assert_non_null(c->strokes);
+    canvas_line(c, 0, 0, 7, 7, 3);
+    assert_memory_equal(off, c->bits, sizeof off);
+    assert_int_equal(c->strokes->ns, 1);
+    assert_int_equal(c->strokes->n, 2);
+
+    struct strokes *k = c->strokes;
+    strokes_clear(k);
+    strokes_begin(k, 5, STROKE_MARKS);
+    strokes_mark_size(k, 3);
+    strokes_mark_shape(k, MARK_DOWN);
+    strokes_point(k, 1.0, 1.0);
+    strokes_point(k, NAN, NAN);
+    strokes_point(k, 2.0, 2.0);
+    assert_int_equal(k->ns, 2);
+    assert_int_equal(k->s[1].kind, STROKE_MARKS);
+    assert_int_equal(k->s[1].size, 3);
+    assert_int_equal(k->s[1].shape, MARK_DOWN);
+    canvas_free(c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -156,6 +194,7 @@ int main(void)
         cmocka_unit_test(quadrants),
         cmocka_unit_test(lines_and_spans),
         cmocka_unit_test(strokes_kept),
+        cmocka_unit_test(recording_switch),
     };
     return cmocka_run_group_tests_name("braille", tests, NULL, NULL);
 }

@@ -54,7 +54,7 @@ void strokes_begin(struct strokes *k, uint8_t color, enum stroke_kind kind)
 {
     if (!room(k))
         return;
-    k->s[k->ns++] = (struct stroke){k->n, 0, color, (uint8_t)kind, 0};
+    k->s[k->ns++] = (struct stroke){k->n, 0, color, (uint8_t)kind, 0, 0};
 }
 
 void strokes_mark_size(struct strokes *k, int dots)
@@ -63,14 +63,24 @@ void strokes_mark_size(struct strokes *k, int dots)
         k->s[k->ns - 1].size = (uint8_t)(dots < 0 ? 0 : dots > 255 ? 255 : dots);
 }
 
+void strokes_mark_shape(struct strokes *k, enum stroke_mark shape)
+{
+    if (k->ns > 0)
+        k->s[k->ns - 1].shape = (uint8_t)shape;
+}
+
 void strokes_point(struct strokes *k, double x, double y)
 {
     if (k->ns == 0 || !room(k))
         return;
     struct stroke *s = &k->s[k->ns - 1];
     if (!isfinite(x) || !isfinite(y)) {
-        if (s->count > 0)
-            strokes_begin(k, s->color, (enum stroke_kind)s->kind);
+        if (s->count > 0) {
+            struct stroke was = *s;
+            strokes_begin(k, was.color, (enum stroke_kind)was.kind);
+            strokes_mark_size(k, was.size);
+            strokes_mark_shape(k, (enum stroke_mark)was.shape);
+        }
         return;
     }
     k->xy[2 * k->n] = fmin(fmax(x, -FAR), FAR);
@@ -110,7 +120,7 @@ uint64_t strokes_hash(const struct strokes *k)
         const struct stroke *s = &k->s[i];
         h = hash_bytes(h, &s->start, sizeof s->start);
         h = hash_bytes(h, &s->count, sizeof s->count);
-        h = hash_bytes(h, &s->color, 3); /* colour, kind, size */
+        h = hash_bytes(h, &s->color, 4); /* colour, kind, size, shape */
     }
     return h;
 }

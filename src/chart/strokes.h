@@ -15,12 +15,16 @@ enum stroke_kind {
     STROKE_MARKS, /* a mass's mark at each point: a disc (5 dots across unless sized) */
 };
 
+/* The shape of STROKE_MARKS' marks. */
+enum stroke_mark { MARK_DISC, MARK_UP, MARK_DOWN }; /* a disc, a triangle ▲ or ▼ */
+
 /* One stroke: points [start, start + count) of the list, in one colour. */
 struct stroke {
     int start, count;
     uint8_t color;  /* a colour pair's number (fig_color) */
     uint8_t kind;   /* an enum stroke_kind */
-    uint8_t size;   /* STROKE_MARKS: the discs' diameter in dots (0: 5) */
+    uint8_t size;   /* STROKE_MARKS: the marks' size across in dots (0: 5) */
+    uint8_t shape;  /* STROKE_MARKS: an enum stroke_mark */
 };
 
 struct strokes {
@@ -45,6 +49,9 @@ void strokes_begin(struct strokes *k, uint8_t color, enum stroke_kind kind);
 
 /* The current stroke's discs (STROKE_MARKS) are `dots` dots across. */
 void strokes_mark_size(struct strokes *k, int dots);
+
+/* The current stroke's marks (STROKE_MARKS) are shaped so: discs unless said. */
+void strokes_mark_shape(struct strokes *k, enum stroke_mark shape);
 
 /* Adds a point to the current stroke; a point that is not finite ends it (the next point
  * starts another of the same colour and kind). */

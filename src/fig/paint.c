@@ -27,9 +27,18 @@ void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double c
             double r = s->kind == STROKE_MARKS ? 0.5 * (s->size ? s->size : 5) * fmin(sx, sy)
                                                : 1.2 * lw;
             for (int j = 0; j < s->count; j++) {
+                double x = (p[2 * j] + 0.5) * sx, y = (p[2 * j + 1] + 0.5) * sy;
                 cairo_new_sub_path(cr);
-                cairo_arc(cr, (p[2 * j] + 0.5) * sx, (p[2 * j + 1] + 0.5) * sy, r, 0.0,
-                          2.0 * M_PI);
+                if (s->kind == STROKE_MARKS && s->shape != MARK_DISC) {
+                    /* a triangle as wide as the disc, its centroid on the point */
+                    double d = s->shape == MARK_UP ? -1.0 : 1.0, h = 1.5 * r;
+                    cairo_move_to(cr, x, y + d * h * 2.0 / 3.0);
+                    cairo_line_to(cr, x - 0.866 * h, y - d * h / 3.0);
+                    cairo_line_to(cr, x + 0.866 * h, y - d * h / 3.0);
+                    cairo_close_path(cr);
+                } else {
+                    cairo_arc(cr, x, y, r, 0.0, 2.0 * M_PI);
+                }
             }
             cairo_fill(cr);
             continue;

@@ -100,9 +100,9 @@ static void draw_marks(struct chart *c, const struct jump_theory *t, double driv
     canvas_vspan(c->canvas, (int)lround(dot_x(c, drive)), 0, H - 1, PAIR_MOTOR);
 }
 
-/* The measured points of sweep s (amplitudes, or phases) as dots, in pixels as discs (the
- * sweep up's larger: up), and its jump as a line from the point before it to the point
- * after. */
+/* The measured points of sweep s (amplitudes, or phases) as dots, in pixels as triangles
+ * (the sweep up's ▲, the sweep down's ▼, as the legend says), and its jump as a line from
+ * the point before it to the point after. */
 static void draw_points(struct chart *c, const struct sweep *s, bool phase, bool up)
 {
     struct canvas *cv = c->canvas;
@@ -112,7 +112,8 @@ static void draw_points(struct chart *c, const struct sweep *s, bool phase, bool
         uint8_t color = (uint8_t)(PAIR_MASS + i % 10);
         if (cv->strokes) {
             strokes_begin(cv->strokes, color, STROKE_MARKS);
-            strokes_mark_size(cv->strokes, up ? 4 : 2);
+            strokes_mark_size(cv->strokes, 3);
+            strokes_mark_shape(cv->strokes, up ? MARK_UP : MARK_DOWN);
         }
         cv->mute++;
         for (int p = 0; p < sweep_measured(s); p++) {
@@ -317,7 +318,8 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
     int k = 0, used = 0;
     legend[k++] = (struct legend_item){term_utf8() ? "▲ up" : "^ up", PAIR_MASS};
     legend[k++] = (struct legend_item){term_utf8() ? "▼ down" : "v down", PAIR_MASS};
-    legend[k++] = (struct legend_item){term_utf8() ? "◆ both" : "* both", PAIR_MASS};
+    if (!chart_pixels()) /* text's one glyph a cell; pixels draw both triangles */
+        legend[k++] = (struct legend_item){term_utf8() ? "◆ both" : "* both", PAIR_MASS};
     /* Every fold the range holds, as many as the legend's entry takes. */
     for (int j = 0, used_f = 0; j < rv->hb.folds && used_f < (int)sizeof folds - 12; j++)
         used_f += snprintf(folds + used_f, sizeof folds - (size_t)used_f, "%s %.3f",
