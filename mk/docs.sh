@@ -85,7 +85,8 @@ sed 's/\\/\\e/g; s/-/\\-/g' "$tmp/presets" |
 # Deps: the last word of mk/deps.sh's want_* and need="$need ..." lines of a group.
 group() {
     sed -n "/^    $1)/,/;;/p" mk/deps.sh |
-        sed -n 's/^ *want_[a-z]* [^ ]* \([^ ]*\)$/\1/p; s/.*need="\$need \([^"]*\)".*/\1/p'
+        sed -n 's/^ *want_[a-z]* [^ ]* \([^ ]*\)$/\1/p; s/.*need="\$need \([^"]*\)".*/\1/p' |
+        awk '!seen[$0]++' # a package named for several of its programs, once
 }
 {
     echo '    apt-get install '"$(group build | tr '\n' ' ' | sed 's/ $//')"

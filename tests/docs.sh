@@ -114,7 +114,8 @@ done
 # 5. The README names every Debian package of mk/deps.sh's build and test groups.
 group() {
     sed -n "/^    $1)/,/;;/p" mk/deps.sh |
-        sed -n 's/^ *want_[a-z]* [^ ]* \([^ ]*\)$/\1/p; s/.*need="\$need \([^"]*\)".*/\1/p'
+        sed -n 's/^ *want_[a-z]* [^ ]* \([^ ]*\)$/\1/p; s/.*need="\$need \([^"]*\)".*/\1/p' |
+        awk '!seen[$0]++' # a package named for several of its programs, once
 }
 for g in build test; do
     pkgs=$(group $g)
