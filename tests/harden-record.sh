@@ -8,7 +8,8 @@
 # a FIFO, a character device stays one (as root), a symbolic link stays and its target is
 # written, a new file gets the umask's mode and an old one keeps its own, names of 249 to
 # 255 bytes are written, kill -9 leaves no file behind. --plain --replay that ends in
-# another state says so and exits 1. Run from the repository root as
+# another state says so and exits 1. A session past a lesson's 1800 s of runs ends its
+# recording there, said, and the file replays. Run from the repository root as
 # `sh tests/harden-record.sh`, SPRINGSIM naming the binary. Ends with
 # "harden-record: N passed, M failed".
 NAME=harden-record
@@ -126,5 +127,18 @@ wait "$pid" 2>/dev/null
 exec 3>&-
 left=$(ls -A killed)
 [ -z "$left" ] && pass || fail "--record killed with SIGKILL left: $left"
+
+# A session longer than a lesson may run (1800 s of runs, reset or not): the recording
+# ends at that bound, says so and where it went, and replays; the session goes on.
+printf 'run 500\nrun 500\nreset\nrun 500\nrun 500\nstatus\nquit\n' |
+    "$SPRINGSIM" --plain --record long.lesson >long.out 2>long.err
+r=$?
+if [ "$r" -eq 0 ] && grep -q 'recording ended at 1800 s of runs.*written to long.lesson' long.out &&
+    grep -q 'status t=1000.00' long.out; then pass; else
+    fail "a 2000 s session recorded: exit $r, $(grep -i 'record\|^status' long.out | tail -n 3 | tr '\n' '|') $(head -c 200 long.err)"
+fi
+replays long.lesson "a recording ended at 1800 s"
+[ "$(awk '$1 == "run" { s += $2 } END { print s }' long.lesson)" = 1800 ] && pass ||
+    fail "the ended recording's runs should add up to 1800 s: $(grep '^run' long.lesson | tr '\n' ' ')"
 
 summary

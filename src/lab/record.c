@@ -93,6 +93,7 @@ static void run_to(struct record *r, double t, double dt, double pace)
     char num[32];
     format_run(t - r->t, dt, num, sizeof num);
     fprintf(r->mem, "run %s\n", num);
+    r->seconds += strtod(num, NULL);
     r->run_wall += (t - r->t) / (pace > 0.0 ? pace : 1.0);
     r->t = t;
 }
@@ -346,6 +347,23 @@ void record_abandon(struct record *r)
     free(r->text);
     r->text = NULL;
     output_close(&r->out, false);
+}
+
+bool record_full(const struct record *r, const struct app *app, double ahead)
+{
+    return r->mem && r->seconds + (sim_time(app->sim) - r->t) + ahead > LESSON_MAX_SECONDS;
+}
+
+void record_full_finish(struct record *r, struct app *app)
+{
+    char why[1400], safe[1200];
+    if (record_finish(r, app, why, sizeof why) != 0) {
+        app_say(app, SAID_ERROR, "--record: %s", why);
+        return;
+    }
+    config_escape(r->path, strlen(r->path), 256, safe, sizeof safe);
+    app_say(app, SAID_NOTE, "recording ended at %.0f s of runs (a lesson's %.0f minutes, so "
+            "that it replays): written to %s", r->seconds, LESSON_MAX_SECONDS / 60.0, safe);
 }
 
 int record_finish(struct record *r, const struct app *app, char *err, size_t errlen)

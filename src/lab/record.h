@@ -56,8 +56,18 @@ struct record {
     int lines;        /* commands written */
     double wall;      /* the wall clock (app_clock_now) at the last command written */
     double run_wall;  /* the wall seconds the runs written since took at their speed */
+    double seconds;   /* the simulated seconds of the run lines written, all added */
     struct record_mark mark; /* before the key being handled (record_mark) */
 };
+
+/* Whether the recording is full: its runs and the time run since, with `ahead` more
+ * simulated seconds, would pass the LESSON_MAX_SECONDS a lesson (and so a replay) may
+ * run. The caller then finishes it (record_full_finish), so that it always replays. */
+bool record_full(const struct record *r, const struct app *app, double ahead);
+
+/* Finishes a full recording now (record_finish) and says so through the app's message:
+ * where it went, or why it could not be written. */
+void record_full_finish(struct record *r, struct app *app);
 
 /* Starts recording app, its chain as it is now, for path: 0, or -1 with "PATH: reason"
  * in err (path cannot be written: output_open's refusals). */

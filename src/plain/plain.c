@@ -160,6 +160,11 @@ static void tell_message(struct plain *p)
 static bool step(struct plain *p)
 {
     struct app *app = &p->app;
+    /* A recording ends before the step that would take its runs past a lesson's bound. */
+    if (record_full(&p->rec, app, sim_dt(app->sim))) {
+        record_full_finish(&p->rec, app);
+        tell_message(p);
+    }
     if (!app_step(app)) {
         char line[sizeof app->message + 16];
         snprintf(line, sizeof line, "blow-up: %s", app->message);

@@ -257,6 +257,10 @@ int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *
         last = now;
         if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
             record_time(&t.rec, &t.app);
+        /* Ended (and written) while a second of motion at this pace still fits a
+         * lesson's bound: a frame runs far less than that. */
+        if (record_full(&t.rec, &t.app, app_clock_pace(&t.app) + sim_dt(t.app.sim)))
+            record_full_finish(&t.rec, &t.app);
         /* Plots refresh at plot_hz() while running (the modes view's shapes swing even
          * while paused), as images no faster than they can be sent, and at once after
          * anything else. */
