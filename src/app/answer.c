@@ -77,7 +77,8 @@ static int csi_byte(struct answer_scan *s, int ch)
         s->held[s->nheld++] = ch;
         if (csi_answer(s))
             return finish(s);
-        give_back(s);
+        s->nheld = 0; /* no answer, and no key curses knew: nothing to act on */
+        s->dropped++;
         return 0;
     }
     return -1;
@@ -113,21 +114,42 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
 {
     if (s->nheld > 0 && now - s->last > ANSWER_GAP)
         cut_off(s);
+    if (s->skipping && now - s->last > ANSWER_GAP)
+        s->skipping = false;
     s->last = now;
+    if (s->skipping) {
+        if (ch >= 0x20 && ch <= 0x3f)
+            return false;
+        s->skipping = false;
+        if (ch >= 0x40 && ch <= 0x7e)
+            return false; /* its final byte */
+    }
     for (;;) {
         if (s->nheld == 0) {
+            if (ch == 0x9b && s->utf8_left == 0) { /* 8-bit CSI: held as ESC [ */
+                s->held[s->nheld++] = ESC;
+                s->held[s->nheld++] = '[';
+                return false;
+            }
             if (ch == ESC)
                 s->held[s->nheld++] = ch;
             else
                 push_key(s, ch);
+            s->utf8_left = ch >= 0xc2 && ch <= 0xdf   ? 1
+                           : ch >= 0xe0 && ch <= 0xef ? 2
+                           : ch >= 0xf0 && ch <= 0xf4 ? 3
+                           : ch >= 0x80 && ch <= 0xbf && s->utf8_left > 0 ? s->utf8_left - 1
+                                                                         : 0;
             return false;
         }
         if (s->nheld >= ANSWER_MAX - 1) {
             /* Too long to keep: a string goes on to its end, its text dropped; a CSI
              * this long is no answer. */
             if (s->held[1] == '[') {
-                cut_off(s);
-                continue;
+                s->nheld = 0;
+                s->dropped++;
+                s->skipping = true;
+                return answer_feed(s, ch, now);
             }
             s->nheld = 2;
             s->truncated = true;
@@ -155,6 +177,13 @@ void answer_idle(struct answer_scan *s, double now)
         give_back(s);
     else if (s->nheld > 1 && now - s->last > ANSWER_GAP)
         cut_off(s);
+}
+
+void answer_idle_awaiting(struct answer_scan *s, double now)
+{
+    if (s->nheld == 1 && now - s->last < ANSWER_ESC_HOLD)
+        return;
+    answer_idle(s, now);
 }
 
 int answer_key(struct answer_scan *s)

@@ -7,13 +7,17 @@
  *   OSC ... ST/BEL  (colours: the background, the palette)
  *   APC ... ST      (kitty's graphics answer "_G...")
  *   DCS ... ST      (DECRQSS, XTGETTCAP)
- * No key starts like these but Alt with [, ], _ or P. A sequence cut short (by a byte no
+ * (each also with its 8-bit introducer, 0x9b for CSI, where no UTF-8 character typed is
+ * under way). No key starts like these but Alt with [, ], _ or P. A sequence cut short (by a byte no
  * answer holds: a control character, an Esc, a curses key code; or by ANSWER_GAP seconds
  * without its next byte) is given back as keys when it is only Esc and the introducer,
  * and dropped otherwise (a terminal's garbage or an answer cut off: its bytes as keys
- * would act at random). A complete CSI sequence that is no answer (an arrow curses did
- * not know) is given back. A string longer than ANSWER_MAX is swallowed to its end. A
- * lone Esc is given back as soon as nothing follows it (answer_idle). */
+ * would act at random). A complete CSI sequence that is no answer (a key curses did not
+ * know, a focus event, a paste bracket, a terminal's garbage) is dropped too: as keys its
+ * [ and digits would change the speed and the views. A string longer than ANSWER_MAX is
+ * swallowed to its end, and so is a CSI that long. A lone Esc is given back as soon as
+ * nothing follows it (answer_idle), or after ANSWER_ESC_HOLD seconds while answers are
+ * awaited (a slow link may part an answer right after its Esc). */
 #ifndef SPRINGSIM_ANSWER_H
 #define SPRINGSIM_ANSWER_H
 
@@ -22,7 +26,8 @@
 
 #define ANSWER_MAX 512   /* bytes an answer holds, at most */
 #define ANSWER_KEYS 1024 /* keys waiting, at most (older ones are kept, newer dropped) */
-#define ANSWER_GAP 0.3   /* seconds a part-answer waits for its next byte */
+#define ANSWER_GAP 1.0   /* seconds a part-answer waits for its next byte */
+#define ANSWER_ESC_HOLD 0.3 /* seconds a lone Esc waits for more while answers are due */
 
 struct answer_scan {
     int held[ANSWER_MAX]; /* what may be an answer, so far */
@@ -33,7 +38,11 @@ struct answer_scan {
     char answer[ANSWER_MAX + 1]; /* the answer answer_feed last completed, NUL-ended */
     size_t answer_len;
     int answers;         /* answers swallowed so far */
-    int dropped;         /* broken answers dropped so far (too long, cut off) */
+    int dropped;         /* broken answers dropped so far (too long, cut off), and CSI
+                          * sequences that are no answer */
+    bool skipping;       /* inside a CSI too long to hold: swallowed to its final byte */
+    int utf8_left;       /* continuation bytes the last UTF-8 character typed still has
+                          * (so a 0x9b inside one is no 8-bit CSI) */
     bool truncated;      /* the string held lost its text (longer than ANSWER_MAX) */
 };
 
@@ -45,6 +54,9 @@ bool answer_feed(struct answer_scan *s, int ch, double now);
 /* Nothing more is waiting to be read at `now`: a lone Esc held is a key, and so is a
  * part-answer quiet for ANSWER_GAP seconds. */
 void answer_idle(struct answer_scan *s, double now);
+
+/* The same while answers are awaited: a lone Esc waits ANSWER_ESC_HOLD seconds first. */
+void answer_idle_awaiting(struct answer_scan *s, double now);
 
 /* The next key, oldest first, or -1 when none waits. */
 int answer_key(struct answer_scan *s);

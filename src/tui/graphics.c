@@ -149,6 +149,7 @@ static void ask(struct graphics *g)
     g->got = calloc(1, sizeof *g->got);
     g->waiting = g->got != NULL;
     g->wait_until = now_ms() / 1e3 + GRAPHICS_TIMEOUT_MS / 1e3;
+    g->late_until = 0.0;
     fflush(stdout); /* what curses wrote goes first */
     if (g->got && (len <= 0 || write(STDOUT_FILENO, out, (size_t)len) != (ssize_t)len))
         g->wait_until = 0.0; /* nothing will answer */
@@ -156,8 +157,13 @@ static void ask(struct graphics *g)
 
 void graphics_heard(struct graphics *g, const char *answer)
 {
-    if (g->waiting)
+    if (g->got && (g->waiting || now_ms() / 1e3 < g->late_until))
         parse(answer, g->got);
+}
+
+bool graphics_awaiting(const struct graphics *g)
+{
+    return g->got && (g->waiting || now_ms() / 1e3 < g->late_until);
 }
 
 /* Inside tmux or screen (no passthrough asked for): braille. */
@@ -280,12 +286,26 @@ bool graphics_follow(struct graphics *g, enum config_graphics want, bool low)
 
 bool graphics_settle(struct graphics *g)
 {
-    if (!g->waiting || (!g->got->da1 && now_ms() / 1e3 < g->wait_until))
+    double now = now_ms() / 1e3;
+    g->late_taken = false;
+    if (!g->waiting && g->got && g->got->da1 && now < g->late_until) {
+        g->late_taken = true; /* what a slow link brought after the wait */
+    } else if (!g->waiting && g->got && now >= g->late_until) {
+        free(g->got); /* nothing more is coming */
+        g->got = NULL;
         return false;
+    } else if (!g->waiting || (!g->got->da1 && now < g->wait_until)) {
+        return false;
+    }
     g->waiting = false;
     heard(g, g->got);
-    free(g->got);
-    g->got = NULL;
+    if (g->got->da1 || g->late_taken) {
+        free(g->got);
+        g->got = NULL;
+        g->late_until = 0.0;
+    } else {
+        g->late_until = g->wait_until + GRAPHICS_LATE_S; /* its answers may be on the way */
+    }
     choose(g);
     return true;
 }

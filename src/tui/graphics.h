@@ -22,6 +22,7 @@
 
 struct answers;
 #define GRAPHICS_TIMEOUT_MS 100 /* how long the terminal has to answer at start */
+#define GRAPHICS_LATE_S 5.0      /* answers later than that, but within this, still count */
 #define GRAPHICS_SLOTS 12       /* images shown at once, at most (the modes view's ten) */
 /* The images' pace: a batch of P pixels and B bytes is followed by none for P / PIXELS_S or
  * B / BYTES_S seconds, the longer (so a large terminal refreshes its images less often,
@@ -41,7 +42,10 @@ struct graphics {
                                 * start, or when pixels were first wanted) */
     bool waiting;              /* the queries are out, their answers not all in */
     double wait_until;         /* monotonic seconds: then the answers are taken as they are */
-    struct answers *got;       /* what they said so far, while waiting */
+    struct answers *got;       /* what they said so far, while waiting (and while late) */
+    double late_until;         /* monotonic seconds: the wait ended without DA1's answer;
+                                * answers that come until then are still taken */
+    bool late_taken;           /* answers that came late were just taken (graphics_settle) */
     bool sized;                /* its cell size in pixels is known */
     enum config_graphics want; /* what graphics_follow last followed (-1: nothing yet) */
     bool low;                  /* ... and the low refresh then */
@@ -81,12 +85,18 @@ void graphics_detect(struct graphics *g, const struct config *c);
 bool graphics_follow(struct graphics *g, enum config_graphics want, bool low);
 
 /* An answer the loop's key scanner completed (NUL-ended): taken while the queries' answers
- * are awaited. */
+ * are awaited, and for GRAPHICS_LATE_S after the wait if DA1's had not come. */
 void graphics_heard(struct graphics *g, const char *answer);
+
+/* Whether answers are still due (the wait, or its late time): the key scanner then holds
+ * a lone Esc a moment (answer.h). */
+bool graphics_awaiting(const struct graphics *g);
 
 /* Once the terminal has answered every query (DA1's answer is the last), or had
  * GRAPHICS_TIMEOUT_MS to: takes what it said and chooses the mode again as the last
- * graphics_follow asked. True when it did (g->said as graphics_follow leaves it). */
+ * graphics_follow asked. True when it did (g->said as graphics_follow leaves it). A
+ * terminal whose DA1 answer comes later (a slow link), within GRAPHICS_LATE_S: its
+ * answers are taken then and the mode chosen again (g->late_taken set). */
 bool graphics_settle(struct graphics *g);
 
 /* The mode in force as --graphics spells it (CONFIG_GRAPHICS_SIXEL, _KITTY, _BRAILLE). */

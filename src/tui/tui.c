@@ -145,6 +145,9 @@ static void follow_graphics(struct tui *t)
     if ((asked || settled) && t->gfx.said[0])
         app_say(app, SAID_ERROR, "%s %s: %s", t->gfx_start ? "--graphics" : "Graphics",
                 config_options[CFG_GRAPHICS].choice_name((int)app->cfg.graphics), t->gfx.said);
+    else if (settled && t->gfx.late_taken && t->gfx.mode != GRAPHICS_BRAILLE)
+        app_say(app, SAID_NOTE, "the terminal's answers came late (a slow link): %s charts "
+                "now", graphics_name(t->gfx.mode));
     if (settled)
         t->gfx_start = false;
 }
@@ -166,12 +169,18 @@ static int next_key(struct tui *t, int ms)
         int k = answer_key(s);
         if (k >= 0)
             return k;
-        /* What follows an Esc curses hands over with it: waiting would only delay Esc. */
-        timeout(s->nheld == 1 ? 0 : ms);
+        /* What follows an Esc curses hands over with it: waiting would only delay Esc;
+         * but while answers are due, a slow link may part one right after its Esc. */
+        bool due = graphics_awaiting(&t->gfx);
+        int hold = (int)((ANSWER_ESC_HOLD - (app_clock_now() - s->last)) * 1000.0) + 1;
+        timeout(s->nheld != 1 ? ms : !due ? 0 : hold < ms ? (hold > 0 ? hold : 0) : ms);
         int ch = getch();
         double now = app_clock_now();
         if (ch == ERR) {
-            answer_idle(s, now);
+            if (due)
+                answer_idle_awaiting(s, now);
+            else
+                answer_idle(s, now);
             k = answer_key(s);
             return k >= 0 ? k : ERR;
         }
