@@ -218,4 +218,47 @@ if up rec; then
     shot "replay-80"
 fi
 
+# A run finished at once (space) or a step back (,) on a heavy chain stops on Esc: the
+# lesson is left within a second, long before the run could end (300 s of stiff cubic
+# springs under a fast drive at dt 0.001: about 10 s of computing at once here, and as
+# long for the lesson's check before the program starts).
+cat >"$tmp/heavy.lesson" <<'EOF2'
+title heavy
+setup
+[system]
+masses = 10
+spring_cubic = 1000
+damping = 0
+dt = 0.001
+[motor]
+amplitude = 5
+frequency = 1000000
+end
+say part one
+run 300
+pause
+say part two
+EOF2
+start heavy 80 24 -- --lesson "$tmp/heavy.lesson" --graphics braille
+S=heavy
+if wait_for 'part one' 90; then
+    keys Space
+    sleep 0.5
+    t0=$(date +%s.%N)
+    keys Escape
+    if wait_for 'left the lesson heavy' 5; then
+        secs=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
+        t=$(sed -n 's/.*Paused t = \([0-9.]*\) s.*/\1/p' "$scr" | head -n 1)
+        if awk -v s="$secs" -v t="$t" 'BEGIN { exit !(s < 1.5 && t != "" && t + 0 < 300) }'; then
+            pass
+        else
+            fail "heavy: Esc during a run finished at once should leave within a second, before t = 300: took $secs s, t = $t"
+        fi
+    else
+        fail "heavy: Esc during a run finished at once should leave the lesson; screen: $(brief)"
+    fi
+else
+    fail "heavy: the lesson should start; screen: $(brief)"
+fi
+
 summary

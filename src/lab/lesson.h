@@ -20,8 +20,11 @@
 #define LESSON_MAX_CHOICES 6          /* choices of one question, at most */
 #define LESSON_CAPTION 2048           /* bytes of one step's caption */
 #define LESSON_MAX_SECONDS 1800.0     /* simulated seconds of all a lesson's runs, at most:
-                                       * at the smallest dt (0.001 s) and ten masses its
-                                       * check takes about 1.5 s */
+                                       * at the smallest dt (0.001 s) and ten linear
+                                       * masses its check takes about 1.5 s (stiff cubic
+                                       * springs under a fast drive, far longer: the
+                                       * check and every run done at once stop on Esc,
+                                       * q or Ctrl+C) */
 #define LESSON_MAX_WAIT 600.0         /* wall seconds of one wait line, at most */
 
 struct app;

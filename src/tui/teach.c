@@ -16,15 +16,22 @@
 #define PANEL_LINES 96      /* caption lines kept, at most */
 
 /* Esc, q or Ctrl+C typed (or a signal that ends the program) while the program computes
- * at once: the lesson's check, a step back. */
+ * at once: the lesson's check, a step back, a run finished. Other keys typed meanwhile
+ * are put back, in their order, for when it is done (space pressed four times goes on
+ * four times). */
 static bool key_stop(void *ctx)
 {
     (void)ctx;
-    int ch;
+    int ch, kept[64], n = 0;
     timeout(0);
-    while ((ch = getch()) != ERR)
+    while ((ch = getch()) != ERR) {
         if (ch == 27 || ch == 'q' || ch == 3)
             return true;
+        if (n < (int)(sizeof kept / sizeof *kept))
+            kept[n++] = ch;
+    }
+    while (n > 0)
+        ungetch(kept[--n]);
     return term_quit_signal() != 0;
 }
 
@@ -46,14 +53,15 @@ static void play_run(struct teach *t, struct app *app, double seconds)
 }
 
 /* One command of the lesson, done as the plain mode does it; a run plays (at_once: is
- * stepped at once, the same steps), a view is handed to the caller, a query's answer
- * (modes) goes to the status line. */
-static void do_command(struct teach *t, struct app *app, const char *line, bool at_once)
+ * stepped at once, the same steps, until at_once says stop), a view is handed to the
+ * caller, a query's answer (modes) goes to the status line. */
+static void do_command(struct teach *t, struct app *app, const char *line,
+                       struct lesson_stop *at_once)
 {
     static struct command_result res; /* one command at a time */
     enum command_reply r = command_do(app, line, &res);
     if (r == REPLY_RUN && at_once)
-        lesson_run(app, res.seconds);
+        lesson_run_to(app, sim_time(app->sim) + res.seconds, at_once);
     else if (r == REPLY_RUN)
         play_run(t, app, res.seconds);
     else if (r == REPLY_VIEW)
@@ -64,7 +72,8 @@ static void do_command(struct teach *t, struct app *app, const char *line, bool 
         app_say(app, SAID_NOTE, "%s", res.answer);
 }
 
-static void do_item(struct teach *t, struct app *app, const struct lesson_item *it, bool at_once)
+static void do_item(struct teach *t, struct app *app, const struct lesson_item *it,
+                    struct lesson_stop *at_once)
 {
     char now[4096];
     switch (it->kind) {
@@ -98,19 +107,37 @@ static void play_on(struct teach *t, struct app *app)
     while (!t->playing && !t->wait_end && (it = lesson_next(&t->play))) {
         if (it->kind == LESSON_SAY || it->kind == LESSON_PAUSE || it->kind == LESSON_ASK)
             t->scroll = 0;
-        do_item(t, app, it, false);
+        do_item(t, app, it, NULL);
     }
     if (!t->playing && !t->wait_end && t->play.waiting < 0)
         t->done = true;
 }
 
-/* The run playing ends at once, by the steps it would have taken played. */
-static void finish_run(struct teach *t, struct app *app)
+/* Leaves the lesson, the chain as it is. */
+static void leave(struct teach *t, struct app *app, bool said)
 {
+    if (said)
+        app_say(app, SAID_NOTE, "left the %s %s: the chain is as it is",
+                t->demo ? "replay of" : "lesson", t->lesson->name);
     if (t->playing)
-        lesson_run_to(app, t->run_end, NULL);
+        app_set_running(app, false);
+    t->lesson = NULL;
+    t->done = t->playing = t->held = false;
+    t->wait_end = 0.0;
+}
+
+/* The run playing ends at once, by the steps it would have taken played; false when
+ * Esc, q or Ctrl+C left the lesson meanwhile (a long run of a heavy chain). */
+static bool finish_run(struct teach *t, struct app *app)
+{
+    struct lesson_stop stop = {.fn = key_stop};
+    if (t->playing)
+        lesson_run_to(app, t->run_end, &stop);
     t->playing = false;
     t->wait_end = 0.0;
+    if (stop.said)
+        leave(t, app, true);
+    return !stop.said;
 }
 
 void teach_start(struct teach *t, const struct lesson *l, struct app *app, bool demo)
@@ -194,19 +221,6 @@ static int parts(const struct lesson *l)
     return l->steps;
 }
 
-/* Leaves the lesson, the chain as it is. */
-static void leave(struct teach *t, struct app *app, bool said)
-{
-    if (said)
-        app_say(app, SAID_NOTE, "left the %s %s: the chain is as it is",
-                t->demo ? "replay of" : "lesson", t->lesson->name);
-    if (t->playing)
-        app_set_running(app, false);
-    t->lesson = NULL;
-    t->done = t->playing = t->held = false;
-    t->wait_end = 0.0;
-}
-
 /* Back to the end of the step before this one: the lesson played again from its start
  * to there, at once (the same commands, the same state); Esc, q or Ctrl+C leave it. */
 static void back(struct teach *t, struct app *app)
@@ -231,7 +245,11 @@ static void back(struct teach *t, struct app *app)
                 return;
             }
         }
-        do_item(t, app, it, true);
+        do_item(t, app, it, &stop);
+        if (stop.said) {
+            leave(t, app, true);
+            return;
+        }
         if (t->play.waiting >= 0 && t->play.waiting != end)
             lesson_go_on(&t->play);
     }
@@ -312,7 +330,8 @@ static bool demo_key(struct teach *t, struct app *app, int ch)
             app->running = true;
         app_quiet(app);
     } else if (ch == '.' && !t->done) {
-        finish_run(t, app);
+        if (!finish_run(t, app))
+            return true;
         play_on(t, app);
         if (t->held && t->playing)
             app->running = false;
@@ -368,8 +387,8 @@ bool teach_key(struct teach *t, struct app *app, const struct layout *l, int ch)
     if (ch != ' ')
         return false;
     if (t->playing || t->wait_end) {
-        finish_run(t, app);
-        play_on(t, app);
+        if (finish_run(t, app))
+            play_on(t, app);
     } else if (t->done) {
         leave(t, app, false);
         app_say(app, SAID_NOTE, "end of the lesson: the chain is yours (? lists every key)");
