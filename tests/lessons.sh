@@ -431,6 +431,9 @@ bad 'title T\npreset resonance\nsay \033[31mred\n' 3 'a control character (\x1b)
 bad 'title T\nsetup\n[system]\nmasses = 99\nend\n' 4 "masses: '99' is out of range for the interactive program"
 bad 'title T\nsetup\n[system]\nmass = heavy\nend\n' 4 "mass"
 bad 'title T\nsetup\n[system]\nmasses = 2\n' 2 "setup without its 'end' line"
+# settings wrong together: said at the line of the one named
+bad 'title T\nsetup\n[system]\nmasses = 10\n[motor]\namplitude = 10\nend\nrun 1\n' 6 "amplitude: '10' leaves the 10 blocks no room"
+bad 'title T\nsetup\n[system]\nmasses = 2\nspring_cubic = 5\nintegrator = exact\nend\nrun 1\n' 6 "integrator: 'exact'"
 # a missing file, by name and by path
 run --plain --lesson nonesuch
 if [ "$rc" -eq 2 ] && grep -qF "springsim: --lesson: 'nonesuch' is not a lesson (expected a name from --list-lessons, or a file)" "$err"; then pass; else

@@ -226,7 +226,7 @@ static int command_line(struct reader *r, const char *word, size_t wlen, const c
     if (cmd == CMD_RUN && config_parse_number(rest, &sec) == NULL && sec > 0.0) {
         r->l->seconds += sec;
         if (r->l->seconds > LESSON_MAX_SECONDS)
-            return bad(r, "run %.40s: the lesson's runs come to %.0f s of simulated time here, "
+            return bad(r, "run %.40s: the lesson's runs come to %.10g s of simulated time here, "
                        "past the %.0f s (30 minutes) a lesson may run", rest, r->l->seconds,
                        LESSON_MAX_SECONDS);
     }

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../core/model.h"
 #include "../core/preset.h"
 #include "../app/app.h"
 #include "../app/clock.h"
@@ -81,8 +82,14 @@ static int setup_check(const struct lesson *l, const struct lesson_item *it, cha
     if (preset_parse(l->path, it->text, strlen(it->text), &c, err, errlen) != PRESET_OK)
         return -1;
     int key = config_check_interactive(&c, why, sizeof why);
-    if (key < 0)
-        return 0;
+    if (key < 0) {
+        /* The settings together (an amplitude that leaves the blocks no room, exact with
+         * cubic springs): said at the line of the one named. */
+        struct model *m = config_model(&c, &key, why, sizeof why);
+        model_free(m);
+        if (m || key < 0)
+            return 0;
+    }
     const struct config_origin *o = &c.origin[key];
     snprintf(err, errlen, "%s:%d: %s: %s", l->path, o->file ? o->line : it->line,
              config_options[key].name, why);

@@ -320,6 +320,9 @@ enum config_graphics graphics_now(const struct graphics *g)
 void graphics_invalidate(struct graphics *g)
 {
     g->n = 0;
+    /* The images on their way are no longer the screen's: the new ones go at once, not
+     * after the old batch's pacing (with huge cells an enlarged plot waited 10 s). */
+    g->next_at = 0.0;
 }
 
 /* xterm's default colour idx (0..255): its 16, the 6x6x6 cube, the greys. */
