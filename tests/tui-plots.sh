@@ -23,12 +23,11 @@ shown_is() { [ "$(shown)" = "$1" ]; }
 area_at_least() { aa=$(plot_area "$1"); [ -n "$aa" ] && [ "${aa% *}" -ge "$2" ] && [ "${aa#* }" -ge "$3" ]; }
 # x_window W [TITLE]: the time axis of the plot TITLE (default $t1) is a window of W s in
 # absolute time: its labels evenly spaced, spread over W s give or take a tick (the axis
-# rounds W out to its ticks), none below 0
+# rounds W out to its ticks), none below 0; the steps even to within the rounding of
+# the labels (44.8 - 44.6 and 45.0 - 44.8 differ in binary)
 x_window() {
     xlabels "${2:-$t1}" | awk -v w="$1" '{ v[n++] = $1 + 0 }
         END { if (n < 2) exit 1; step = v[1] - v[0]; spread = v[n - 1] - v[0]
-              # even steps, to the labels' rounding (44.8 - 44.6 and 45.0 - 44.8 differ
-              # in binary)
               for (k = 1; k < n; k++) { d = v[k] - v[k - 1] - step; if (d > 1e-9 || d < -1e-9) exit 1 }
               exit !(v[0] >= 0 && spread <= w + step - 1e-9 && spread > w - 2 * step) }'
 }
