@@ -5,7 +5,8 @@
 # Answers that come 150 ms and 400 ms late (over SSH this is common), after the program
 # stopped waiting for them, are never taken as keys (their [, ?, g and digits would slow
 # the chain, open the help, show the ghost, enlarge a plot), and a key typed before they
-# came (space) is kept: the chain runs at 1x, no ghost, no help.
+# came (space) is kept: the chain runs at 1x, no ghost, no help; the images they allow
+# come then, and the status line says so.
 # A terminal that says its cells are 200 x 400 pixels (CSI 6;400;200 t) gets images of at
 # most 64 x 128 pixels a cell and 2048 x 2048 in all (kitty's placed over the whole area,
 # which kitty scales them to), and the program's peak memory stays under 64 MB: sixel at
@@ -38,7 +39,10 @@ term() {
 }
 brief() { grep -E "$1" "$tmp/screen" | head -n 3 | tr '\n' '|'; }
 
-# 1. Late answers, a key typed before them.
+# 1. Late answers, a key typed before them; once they came, the images they allow, and
+# the status line says why they came late (before, the answers were ignored after the
+# 100 ms wait: braille for good over a slow link).
+SIXELCHECK=${SIXELCHECK:-$root/build/tests/sixelcheck}
 for late in 150 400; do
     term "sixel+$late" 100 30 10 20 '^ ~~q' -p resonance
     [ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
@@ -51,10 +55,13 @@ for late in 150 400; do
     else
         pass
     fi
+    n=$("$SIXELCHECK" "$tmp/out" 005fff | grep -c '^sixel ')
+    [ "$n" -ge 1 ] && pass || fail "$cmd: the late answers said sixel, but no image came"
+    grep -q "answers came late" "$tmp/screen" && pass ||
+        fail "$cmd: the status line should say the answers came late: $(brief 'late|sixel')"
 done
 
 # 2. Cells of 200 x 400 pixels.
-SIXELCHECK=${SIXELCHECK:-$root/build/tests/sixelcheck}
 # capped KIND: every image of $tmp/out within the caps; kitty's placed with c= and r=.
 capped() {
     "$SIXELCHECK" "$tmp/out" 005fff >"$tmp/images"
