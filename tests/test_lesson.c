@@ -98,7 +98,7 @@ static void stop_ends_a_run(void **state)
     assert_true(stop.said);
     assert_int_equal(polls, 3);
     assert_true(said_at - start >= 2 * LESSON_POLL);
-    assert_true(app_clock_now() - said_at < 0.01);
+    assert_true(app_clock_now() - said_at < 0.2); /* at once: the 0.2 s a user is promised */
     assert_false(a.running);
     app_free(&a);
     app_free(&b);
@@ -167,10 +167,12 @@ static void check_left(void **state)
     polls = 0;
     start = app_clock_now();
     assert_int_equal(lesson_check(&l, &base, SRCDIR, &stop, err, sizeof err), LESSON_LEFT);
-    /* asked while it ran, and once it said so, left at once */
+    /* asked while it ran, and once it said so, left within the 0.2 s a user is promised
+     * (Esc leaves the check): no step after it (it was 10 ms here, which a loaded
+     * machine under AddressSanitizer missed by a context switch) */
     assert_int_equal(polls, 3);
     assert_true(said_at > start);
-    assert_true(app_clock_now() - said_at < 0.01);
+    assert_true(app_clock_now() - said_at < 0.2);
     assert_non_null(strstr(err, "the check was left"));
     lesson_free(&l);
 }
