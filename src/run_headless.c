@@ -287,8 +287,8 @@ int run_headless(const struct config *c, const struct model *m)
         struct report_look look = report_look_of(c, settings);
         bool moves = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
         int draw = status == EXIT_SUCCESS
-                       ? fig_lib_loaded()->headless(fo.fp, fig_format_of(c->figure), fig, n, moves,
-                                         c->energy, 0.0, sim_time(r.s), &look)
+                       ? fig_lib_loaded()->headless(fo.fp, fig_format_of(c->figure), fig, n,
+                                                    moves, c->energy, 0.0, sim_time(r.s), &look)
                        : 0;
         status = run_close_figure(&fo, c, draw, status);
     }

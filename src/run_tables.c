@@ -86,9 +86,10 @@ int run_modes(const struct config *c, const struct model *m)
             char settings[400];
             report_settings(c, m, settings, sizeof settings);
             struct report_look look = report_look_of(c, settings);
-            int draw = status == EXIT_SUCCESS ? fig_lib_loaded()->modes(fo.fp, fig_format_of(c->figure), m,
-                                                             f, shapes, &look)
-                                              : 0;
+            int draw = status == EXIT_SUCCESS
+                           ? fig_lib_loaded()->modes(fo.fp, fig_format_of(c->figure), m, f,
+                                                     shapes, &look)
+                           : 0;
             status = run_close_figure(&fo, c, draw, status);
         }
     } else {

@@ -8,9 +8,10 @@
  *   APC ... ST      (kitty's graphics answer "_G...")
  *   DCS ... ST      (DECRQSS, XTGETTCAP)
  * (each also with its 8-bit introducer, 0x9b for CSI, where no UTF-8 character typed is
- * under way). No key starts like these but Alt with [, ], _ or P. A sequence cut short (by a byte no
- * answer holds: a control character, an Esc, a curses key code; or by ANSWER_GAP seconds
- * without its next byte) is given back as keys when it is only Esc and the introducer,
+ * under way). No key starts like these but Alt with [, ], _ or P. A sequence cut short
+ * (by a byte no answer holds: a control character, an Esc, a curses key code; or by
+ * ANSWER_GAP seconds without its next byte) is given back as keys when it is only Esc
+ * and the introducer,
  * and dropped otherwise (a terminal's garbage or an answer cut off: its bytes as keys
  * would act at random). A complete CSI sequence that is no answer (a key curses did not
  * know, a focus event, a paste bracket, a terminal's garbage) is dropped too: as keys its

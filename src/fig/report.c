@@ -65,8 +65,9 @@ static void energy_panel(const struct report_data *d, int first, struct fig_seri
         s[i] = line_of(d, first + i, fig_energy_color(i), i == REPORT_E_TERMS - 1);
     for (int i = 0; i < REPORT_E_TERMS - 1; i++)
         lg[i] = (struct fig_legend){name[i], fig_energy_color(i), false, false};
-    snprintf(error_text, len, "balance error (largest %.2g J)", largest(d, first + REPORT_E_TERMS - 1));
-    lg[REPORT_E_TERMS - 1] = (struct fig_legend){error_text, fig_energy_color(REPORT_E_TERMS - 1), true, false};
+    int last = REPORT_E_TERMS - 1; /* the balance's error */
+    snprintf(error_text, len, "balance error (largest %.2g J)", largest(d, first + last));
+    lg[last] = (struct fig_legend){error_text, fig_energy_color(last), true, false};
 }
 
 int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, bool motor,
@@ -99,7 +100,8 @@ int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, b
         energy_panel(d, 3 * n + 1, s + k, elg, error_text, sizeof error_text);
         p[3] = (struct fig_panel){.xlabel = "t (s)", .ylabel = ylabel[3], .xfixed = true,
                                   .xlo = t0, .xhi = t_end, .series = s + k,
-                                  .nseries = REPORT_E_TERMS, .legend = elg, .nlegend = REPORT_E_TERMS};
+                                  .nseries = REPORT_E_TERMS, .legend = elg,
+                                  .nlegend = REPORT_E_TERMS};
     }
     struct fig_page pg = page_of(look, energy ? "Displacement, velocity, acceleration and "
                                                 "energy"

@@ -153,8 +153,8 @@ void report_settings(const struct config *c, const struct model *m, char *buf, s
     list_text(m->k, m->n + 1, ks, sizeof ks);
     list_text(m->c, m->n, cs, sizeof cs);
     if (m->boundary == BOUNDARY_MOTOR)
-        snprintf(drive, sizeof drive, "motor: %s, %g m at %g Hz", motor_wave_name(m->motor.wave),
-                 m->motor.amplitude, m->motor.frequency);
+        snprintf(drive, sizeof drive, "motor: %s, %g m at %g Hz",
+                 motor_wave_name(m->motor.wave), m->motor.amplitude, m->motor.frequency);
     else
         snprintf(drive, sizeof drive, "right end: %s", model_boundary_name(m->boundary));
     snprintf(buf, len, "%s%s%d mass%s, m %s kg, k %s N/m, c %s N·s/m; %s; %s, dt %g s",

@@ -226,9 +226,9 @@ static int command_line(struct reader *r, const char *word, size_t wlen, const c
     if (cmd == CMD_RUN && config_parse_number(rest, &sec) == NULL && sec > 0.0) {
         r->l->seconds += sec;
         if (r->l->seconds > LESSON_MAX_SECONDS)
-            return bad(r, "run %.40s: the lesson's runs come to %.10g s of simulated time here, "
-                       "past the %.0f s (30 minutes) a lesson may run", rest, r->l->seconds,
-                       LESSON_MAX_SECONDS);
+            return bad(r, "run %.40s: the lesson's runs come to %.10g s of simulated time "
+                       "here, past the %.0f s (30 minutes) a lesson may run", rest,
+                       r->l->seconds, LESSON_MAX_SECONDS);
     }
     if (r->commands++ == 0 && cmd != CMD_PRESET)
         return bad(r, "a lesson starts from a known chain: its first command is 'preset NAME' "

@@ -155,15 +155,15 @@ static void ask(struct graphics *g)
         g->wait_until = 0.0; /* nothing will answer */
 }
 
-void graphics_heard(struct graphics *g, const char *answer)
-{
-    if (g->got && (g->waiting || now_ms() / 1e3 < g->late_until))
-        parse(answer, g->got);
-}
-
 bool graphics_awaiting(const struct graphics *g)
 {
     return g->got && (g->waiting || now_ms() / 1e3 < g->late_until);
+}
+
+void graphics_heard(struct graphics *g, const char *answer)
+{
+    if (graphics_awaiting(g))
+        parse(answer, g->got);
 }
 
 /* Inside tmux or screen (no passthrough asked for): braille. */
@@ -286,23 +286,24 @@ bool graphics_follow(struct graphics *g, enum config_graphics want, bool low)
 
 bool graphics_settle(struct graphics *g)
 {
-    double now = now_ms() / 1e3;
     g->late_taken = false;
-    if (!g->waiting && g->got && g->got->da1 && now < g->late_until) {
-        g->late_taken = true; /* what a slow link brought after the wait */
-    } else if (!g->waiting && g->got && now >= g->late_until) {
+    if (!g->got)
+        return false;
+    double now = now_ms() / 1e3;
+    bool late = !g->waiting; /* the wait ended without DA1's answer */
+    if (late && now >= g->late_until) {
         free(g->got); /* nothing more is coming */
         g->got = NULL;
         return false;
-    } else if (!g->waiting || (!g->got->da1 && now < g->wait_until)) {
-        return false;
     }
+    if (!g->got->da1 && (late || now < g->wait_until))
+        return false;
+    g->late_taken = late; /* what a slow link brought after the wait */
     g->waiting = false;
     heard(g, g->got);
-    if (g->got->da1 || g->late_taken) {
+    if (g->got->da1) {
         free(g->got);
         g->got = NULL;
-        g->late_until = 0.0;
     } else {
         g->late_until = g->wait_until + GRAPHICS_LATE_S; /* its answers may be on the way */
     }
@@ -493,8 +494,8 @@ void graphics_frame(struct graphics *g, struct chart *const *charts, int n, bool
         enum fig_encoding e = g->mode == GRAPHICS_KITTY ? FIG_KITTY_PNG : FIG_SIXEL;
         int cw = g->cw, ch = g->ch;
         g->lib->pixels_fit(pic.aw, pic.ah, &cw, &ch);
-        if (g->lib->pixels(&pic, cw, ch, &pal, g->bg, !known, e, g->registers, &g->img, &g->rgb) !=
-            0)
+        if (g->lib->pixels(&pic, cw, ch, &pal, g->bg, !known, e, g->registers, &g->img,
+                           &g->rgb) != 0)
             continue;
         char pos[32];
         int pl = snprintf(pos, sizeof pos, "\033[%d;%dH", r.y + 1, r.x + 1);

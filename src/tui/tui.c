@@ -172,8 +172,12 @@ static int next_key(struct tui *t, int ms)
         /* What follows an Esc curses hands over with it: waiting would only delay Esc;
          * but while answers are due, a slow link may part one right after its Esc. */
         bool due = graphics_awaiting(&t->gfx);
-        int hold = (int)((ANSWER_ESC_HOLD - (app_clock_now() - s->last)) * 1000.0) + 1;
-        timeout(s->nheld != 1 ? ms : !due ? 0 : hold < ms ? (hold > 0 ? hold : 0) : ms);
+        int wait = ms;
+        if (s->nheld == 1) { /* a lone Esc: the rest of its hold while answers are due */
+            int hold = (int)((ANSWER_ESC_HOLD - (app_clock_now() - s->last)) * 1000.0) + 1;
+            wait = !due || hold < 0 ? 0 : hold < ms ? hold : ms;
+        }
+        timeout(wait);
         int ch = getch();
         double now = app_clock_now();
         if (ch == ERR) {
