@@ -166,6 +166,9 @@ static int run_steps(struct run *r, FILE *fp, struct report_data *fig, double *r
     /* A run that takes more than a second says how far it has got (a terminal only). */
     struct progress prog;
     progress_start(&prog, r->total * c->dt);
+    /* Steps to the next row and the next look at the clock, counted down (whole numbers,
+     * exact in a double; a huge stride is never reached, as it should be). */
+    double row_left = r->stride, tick_left = 64.0;
     for (double step = 1; !blown && step <= r->total; step++) {
         /* Past the stability limit a capped velocity, or energy made from nothing, means
          * the numbers are running away: stop rather than write nonsense (or a value that
@@ -189,7 +192,8 @@ static int run_steps(struct run *r, FILE *fp, struct report_data *fig, double *r
         }
         if (r->sum) {
             summary_add(r->sum, s, step, r->total);
-        } else if (fmod(step, r->stride) == 0.0) {
+        } else if (--row_left == 0.0) {
+            row_left = r->stride;
             if (output_csv_row(fp, s, c->energy, a) != 0) {
                 progress_end(&prog);
                 report_blowup(s, &r->l, r->judged, false);
@@ -202,8 +206,10 @@ static int run_steps(struct run *r, FILE *fp, struct report_data *fig, double *r
                 break;
         }
         /* The clock read every 64 steps, or every step of exact's (each may be slow). */
-        if (fmod(step, 64.0) == 0.0 || c->integrator == INTEGRATOR_EXACT)
+        if (--tick_left == 0.0 || c->integrator == INTEGRATOR_EXACT) {
+            tick_left = 64.0;
             progress_tick(&prog, sim_time(s));
+        }
     }
     progress_end(&prog);
     if (r->sum && status == EXIT_SUCCESS && !output_state_finite(s, a)) {

@@ -204,7 +204,7 @@ static void ends(const struct events_piece *p, int k, double g[2], double s[2], 
 }
 
 /* Whether a gap with these ends may close inside the piece (the bound of the header). */
-static inline bool may_close(double g0, double g1, double s0, double s1, double err)
+__attribute__((always_inline)) static inline bool may_close(double g0, double g1, double s0, double s1, double err)
 {
     double dg = g1 - g0, A = fabs(s0 - dg), B = fabs(s1 - dg);
     return (g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B) - err <= -EVENTS_TOUCH;
@@ -222,32 +222,52 @@ static double consider(const struct events_piece *p, int k)
     return first_close(p, k, c);
 }
 
-double events_contact(const struct events_piece *p, int *which, int *closing)
+/* Whether constraint k's gap may close inside the piece, by the bound alone (inline: the
+ * common case costs a few flops a gap). */
+__attribute__((always_inline)) static inline bool
+bound_may_close(const struct events_piece *p, int k)
 {
     const struct collision_limits *l = p->lim;
     const double *ya = p->ya, *y = p->y;
-    const bool *on = p->rest->active ? p->rest->on : NULL;
     int n = l->n;
-    double h = p->h, first = 2.0, pair = l->spacing - l->w;
-    *which = -1, *closing = 0;
-    double wall = l->spacing - 0.5 * l->w;
+    double h = p->h;
+    if (k > 0 && k < n) {
+        double pair = l->spacing - l->w;
+        return may_close(pair + ya[k] - ya[k - 1], pair + y[k] - y[k - 1],
+                         h * (ya[n + k] - ya[n + k - 1]), h * (y[n + k] - y[n + k - 1]), 0.0);
+    }
+    if (k == 0) {
+        double wall = l->spacing - 0.5 * l->w;
+        return may_close(wall + ya[0], wall + y[0], h * ya[n], h * y[n], 0.0);
+    }
     double face = MODEL_LENGTH - 0.5 * l->w - n * l->spacing;
-    for (int k = 0; k < l->count; k++) {
-        /* The bound alone, inline: the common case costs a few flops a gap. */
-        double g0, g1, s0, s1, err = 0.0;
-        if (k > 0 && k < n) {
-            g0 = pair + ya[k] - ya[k - 1], g1 = pair + y[k] - y[k - 1];
-            s0 = h * (ya[n + k] - ya[n + k - 1]), s1 = h * (y[n + k] - y[n + k - 1]);
-        } else if (k == 0) {
-            g0 = wall + ya[0], g1 = wall + y[0], s0 = h * ya[n], s1 = h * y[n];
-        } else {
-            g0 = face + p->ua - ya[n - 1], g1 = face + p->ub - y[n - 1];
-            s0 = h * (p->dua - ya[2 * n - 1]), s1 = h * (p->dub - y[2 * n - 1]);
-            err = p->drive_err;
-        }
-        if (!may_close(g0, g1, s0, s1, err))
-            continue;
-        if (on && on[k])
+    return may_close(face + p->ua - ya[n - 1], face + p->ub - y[n - 1],
+                     h * (p->dua - ya[2 * n - 1]), h * (p->dub - y[2 * n - 1]), p->drive_err);
+}
+
+bool events_may_close(const struct events_piece *p)
+{
+    const struct collision_limits *l = p->lim;
+    const double *ya = p->ya, *y = p->y;
+    int n = l->n;
+    double h = p->h, pair = l->spacing - l->w;
+    if (bound_may_close(p, 0))
+        return true;
+    /* bound_may_close's pairs, with what is the same for each taken once */
+    for (int k = 1; k < n; k++)
+        if (may_close(pair + ya[k] - ya[k - 1], pair + y[k] - y[k - 1],
+                      h * (ya[n + k] - ya[n + k - 1]), h * (y[n + k] - y[n + k - 1]), 0.0))
+            return true;
+    return l->count > n && bound_may_close(p, n);
+}
+
+double events_contact(const struct events_piece *p, int *which, int *closing)
+{
+    const bool *on = p->rest->active ? p->rest->on : NULL;
+    double first = 2.0;
+    *which = -1, *closing = 0;
+    for (int k = 0; k < p->lim->count; k++) {
+        if (!bound_may_close(p, k) || (on && on[k]))
             continue;
         double th = consider(p, k);
         if (th < 0.0)

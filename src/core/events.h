@@ -32,6 +32,10 @@ struct events_piece {
  * -1 when all stay open. */
 double events_contact(const struct events_piece *p, int *which, int *closing);
 
+/* Whether some gap may close inside the piece by the bound alone (events_contact's first
+ * test): false means every gap stays open to its end. */
+bool events_may_close(const struct events_piece *p);
+
 /* The first theta in (0, 1] at which a resting contact's force turns to a pull, along the
  * interpolant, and that constraint in *which; -1 when none does. work: 2n doubles,
  * force: count doubles of scratch. */

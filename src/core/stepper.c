@@ -16,6 +16,16 @@
 #include "exact.h"
 #include "rest.h"
 
+/* The sine drive's angle carried from step to step by rotations (sine_drive). */
+struct rotation {
+    double w, h;           /* w and h the rotations below were made for */
+    double s1, c1, s2, c2; /* sin, cos of w h/2 and of w h */
+    double next_t;         /* where the last sine step ended (NAN: none) */
+    double phase;          /* the drive's phase then */
+    double sn, cs;         /* sin and cos of the drive's angle there */
+    int carried;           /* steps since sin and cos were last taken afresh */
+};
+
 struct stepper {
     struct model *model;   /* own copy of the parameters */
     int n;
@@ -24,12 +34,8 @@ struct stepper {
     double *k1, *k2, *tmp; /* stage scratch, STEPPER_LEN(N) each */
     double *tri;           /* 3N: Verlet's tridiagonal solve with spring dampers */
     struct exact *exact;   /* the exact stepper's workspace, made when first needed */
-    double rot_w, rot_h;   /* w and h the rotations below were made for */
-    double rot_s1, rot_c1, rot_s2, rot_c2; /* sin, cos of w h/2 and of w h */
-    double rot_next_t;     /* where the last sine step ended (NAN: none) */
-    double rot_phase;      /* the drive's phase then */
-    double rot_sn, rot_cs; /* sin and cos of the drive's angle there */
-    int rot_carried;       /* steps since sin and cos were last taken afresh */
+    struct rotation rot;   /* the sine drive's rotations */
+    struct rotation rot_before; /* as they were before the last bare step */
     double end_u, end_du;  /* the drive at the end of the last step taken */
     double start_u, start_du; /* and at its start */
     const struct rest *rest;  /* resting contacts held as constraints, or NULL */
@@ -122,7 +128,7 @@ struct stepper *stepper_new(const struct model *m)
     st->k2 = st->k1 + len;
     st->tmp = st->k2 + len;
     st->tri = st->tmp + len;
-    st->rot_next_t = NAN;
+    st->rot.next_t = NAN;
     stepper_set_model(st, m, 0.01);
     return st;
 }
@@ -175,12 +181,7 @@ int stepper_copy(struct stepper *dst, const struct stepper *src)
     if (src->exact && exact_copy(dst->exact, src->exact) != 0)
         return -1;
     stepper_set_model(dst, src->model, src->dt);
-    dst->rot_w = src->rot_w, dst->rot_h = src->rot_h;
-    dst->rot_s1 = src->rot_s1, dst->rot_c1 = src->rot_c1;
-    dst->rot_s2 = src->rot_s2, dst->rot_c2 = src->rot_c2;
-    dst->rot_next_t = src->rot_next_t, dst->rot_phase = src->rot_phase;
-    dst->rot_sn = src->rot_sn, dst->rot_cs = src->rot_cs;
-    dst->rot_carried = src->rot_carried;
+    dst->rot = src->rot;
     dst->end_u = src->end_u, dst->end_du = src->end_du;
     dst->start_u = src->start_u, dst->start_du = src->start_du;
     return 0;
@@ -232,33 +233,34 @@ static void sine_drive(struct stepper *st, const struct drive *d, double a, doub
     double h = b - a;
     const struct motor *mot = &st->model->motor;
     double w = 2.0 * M_PI * mot->frequency, amp = d->amp;
+    struct rotation *r = &st->rot;
     /* b - a of a grid step differs from dt by the rounding of t (a few ulp of b, which
      * grow with t): such a step keeps the rotation made for dt, an angle error no larger
      * than that rounding makes anyway. */
     if (fabs(h - st->dt) <= 1e-12 * st->dt + 8.0 * DBL_EPSILON * fabs(b))
         h = st->dt;
-    if (w != st->rot_w || h != st->rot_h) {
-        sincos(0.5 * w * h, &st->rot_s1, &st->rot_c1);
-        sincos(w * h, &st->rot_s2, &st->rot_c2);
-        st->rot_w = w;
-        st->rot_h = h;
-        st->rot_next_t = NAN; /* nothing to carry over */
+    if (w != r->w || h != r->h) {
+        sincos(0.5 * w * h, &r->s1, &r->c1);
+        sincos(w * h, &r->s2, &r->c2);
+        r->w = w;
+        r->h = h;
+        r->next_t = NAN; /* nothing to carry over */
     }
     double sn, cs;
-    if (a == st->rot_next_t && mot->phase == st->rot_phase && st->rot_carried < 64) {
+    if (a == r->next_t && mot->phase == r->phase && r->carried < 64) {
         /* This step starts where the last ended: carry its sin and cos over, and only
          * every 64 steps take them afresh, so rounding cannot build up. */
-        sn = st->rot_sn, cs = st->rot_cs;
-        st->rot_carried++;
+        sn = r->sn, cs = r->cs;
+        r->carried++;
     } else {
         sincos(w * a + 2.0 * M_PI * mot->phase, &sn, &cs);
-        st->rot_carried = 0;
+        r->carried = 0;
     }
-    double sm = sn * st->rot_c1 + cs * st->rot_s1, cm = cs * st->rot_c1 - sn * st->rot_s1;
-    double se = sn * st->rot_c2 + cs * st->rot_s2, ce = cs * st->rot_c2 - sn * st->rot_s2;
-    st->rot_next_t = b;
-    st->rot_phase = mot->phase;
-    st->rot_sn = se, st->rot_cs = ce;
+    double sm = sn * r->c1 + cs * r->s1, cm = cs * r->c1 - sn * r->s1;
+    double se = sn * r->c2 + cs * r->s2, ce = cs * r->c2 - sn * r->s2;
+    r->next_t = b;
+    r->phase = mot->phase;
+    r->sn = se, r->cs = ce;
     u[0] = amp * sn, du[0] = amp * w * cs;
     u[1] = amp * sm, du[1] = amp * w * cm;
     u[2] = amp * se, du[2] = amp * w * ce;
@@ -308,6 +310,78 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     double h6 = h / 6.0;
     for (int i = 0; i < len; i++)
         y[i] += h6 * (acc[i] + k[i]);
+}
+
+bool stepper_bare_fits(const struct model *m)
+{
+    return m->force == 0.0 && !m->spring_damped && !m->cubic &&
+           (m->motor.wave == WAVE_SINE || !model_driven(m));
+}
+
+/* One stage of the bare step: the accelerations a at (x, v), the dampers' power *d and
+ * the motor's *w. */
+__attribute__((always_inline)) static inline void
+bare_rates(const struct stepper *st, const double *x, const double *v, double u, double du,
+           double *a, double *d, double *w)
+{
+    const double *inv_m = st->inv_m;
+    if (!inv_m)
+        __builtin_unreachable(); /* so the inlined rates multiply, with no test a mass */
+    model_rates(st->model, inv_m, x, v, u, du, a, d, w);
+}
+
+void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, double b, double *y)
+{
+    int n = st->n;
+    double h = b - a, h2 = 0.5 * h, u[3], du[3], f[3];
+    double *x = y, *v = y + n;
+    /* acc: the stages' sum for x (first n) and v; kv: a stage's accelerations; tx, tv:
+     * the next stage's argument. */
+    double *acc = st->k1, *kv = st->k2, *tx = st->tmp, *tv = st->tmp + n;
+    st->rot_before = st->rot;
+    drive3(st, d, a, b, u, du, f);
+    st->start_u = u[0], st->start_du = du[0];
+    st->end_u = u[2], st->end_du = du[2];
+    /* rk4()'s arithmetic, operation for operation: x' = v needs no copy, and the books,
+     * which no rate reads, need no stage arguments. */
+    double d0, w0, dk, wk;
+    bare_rates(st, x, v, u[0], du[0], acc + n, &d0, &w0);
+    for (int i = 0; i < n; i++) {
+        tx[i] = x[i] + h2 * v[i];
+        tv[i] = v[i] + h2 * acc[n + i];
+    }
+    bare_rates(st, tx, tv, u[1], du[1], kv, &dk, &wk);
+    double sd = d0 + 2.0 * dk, sw = w0 + 2.0 * wk;
+    for (int i = 0; i < n; i++) {
+        double vi = tv[i];
+        acc[i] = v[i] + 2.0 * vi;
+        acc[n + i] += 2.0 * kv[i];
+        tx[i] = x[i] + h2 * vi;
+        tv[i] = v[i] + h2 * kv[i];
+    }
+    bare_rates(st, tx, tv, u[1], du[1], kv, &dk, &wk);
+    sd += 2.0 * dk, sw += 2.0 * wk;
+    for (int i = 0; i < n; i++) {
+        double vi = tv[i];
+        acc[i] += 2.0 * vi;
+        acc[n + i] += 2.0 * kv[i];
+        tx[i] = x[i] + h * vi;
+        tv[i] = v[i] + h * kv[i];
+    }
+    bare_rates(st, tx, tv, u[2], du[2], kv, &dk, &wk);
+    double h6 = h / 6.0;
+    for (int i = 0; i < n; i++) {
+        x[i] += h6 * (acc[i] + tv[i]);
+        v[i] += h6 * (acc[n + i] + kv[i]);
+    }
+    y[2 * n] += h6 * (sd + dk);
+    y[2 * n + 1] += h6 * (sw + wk);
+    y[2 * n + 2] += h6 * (0.0 + 0.0); /* the force's work: no force, as rk4() adds it */
+}
+
+void stepper_undo_bare(struct stepper *st)
+{
+    st->rot = st->rot_before;
 }
 
 /* Explicit Euler: y += h f(a, y). */
