@@ -334,10 +334,12 @@ void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, doubl
 {
     int n = st->n;
     double h = b - a, h2 = 0.5 * h, u[3], du[3], f[3];
-    double *x = y, *v = y + n;
     /* acc: the stages' sum for x (first n) and v; kv: a stage's accelerations; tx, tv:
-     * the next stage's argument. */
-    double *acc = st->k1, *kv = st->k2, *tx = st->tmp, *tv = st->tmp + n;
+     * the next stage's argument. None overlaps another (restrict: the loops may go two
+     * values at a time, which changes no bit: each value is its own). */
+    double *restrict x = y, *restrict v = y + n;
+    double *restrict acc = st->k1, *restrict kv = st->k2;
+    double *restrict tx = st->tmp, *restrict tv = st->tmp + n;
     st->rot_before = st->rot;
     drive3(st, d, a, b, u, du, f);
     st->start_u = u[0], st->start_du = du[0];
