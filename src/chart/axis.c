@@ -261,6 +261,51 @@ void axis_fit(struct axis *a, double lo, double hi, int max_ticks, int cells, in
     fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, false);
 }
 
+/* The span of values an axis shows on its cells. */
+static double shown_span(const struct axis *a)
+{
+    return a->cells * a->step / a->spacing;
+}
+
+/* Axis a laid with its ticks inside [lo, hi] on step: the widest whole spacing that
+ * keeps [lo, hi] on the cells (a scale's range, padded already: its ends may take the
+ * outer cells' edges), [lo, hi] centred. False when that is under min_spacing,
+ * fewer than two ticks fall inside, or the labels do not fit. */
+static bool lay_inside(struct axis *a, double lo, double hi, double step, int min_spacing)
+{
+    int spacing = (int)floor(a->cells * step / (hi - lo) + 1e-9);
+    double k0 = ceil(lo / step - 1e-9), k1 = floor(hi / step + 1e-9);
+    if (spacing < min_spacing || k1 - k0 < 1.0 || (k1 - k0) * spacing > a->cells - 1)
+        return false;
+    a->lo = k0 * step;
+    a->step = step;
+    a->intervals = (int)(k1 - k0);
+    a->spacing = spacing;
+    /* The middle of [lo, hi] on the middle cell, rounded to a whole cell. */
+    double mid = 0.5 * (a->cells - 1) - (0.5 * (lo + hi) - a->lo) / step * spacing;
+    a->first = (int)floor(mid + 0.5);
+    int last = a->first + a->intervals * spacing, width;
+    return a->first >= 0 && last <= a->cells - 1 && label_form(a, &width) != FORM_ROUGH;
+}
+
+void axis_fit_inside(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+                     int min_spacing)
+{
+    fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, false);
+    if (!(hi - lo > 0.0) || !isfinite(hi - lo))
+        return;
+    /* The steps around the one the ticks would take, finest first: the first whose
+     * layout shows less than the rounded-out one wins. */
+    double step = step_next(axis_step(lo, hi, max_ticks), -1);
+    for (int i = 0; i < 3; i++, step = step_next(step, +1)) {
+        struct axis b = *a;
+        if (lay_inside(&b, lo, hi, step, min_spacing) && shown_span(&b) < shown_span(a)) {
+            *a = b;
+            return;
+        }
+    }
+}
+
 /* Moves a rolling axis laid on [-window, 0] (its step and spacing) to absolute time: the
  * last cell is the one (in whole cells counted from t = 0) that holds end, and the ticks
  * are the multiples of the step that fall on the cells. */

@@ -37,6 +37,13 @@ void axis_round_out(double *lo, double *hi, double step);
 void axis_fit(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
               int min_spacing);
 
+/* As axis_fit, but when ticks laid inside [lo, hi] (not rounded out to them: the range
+ * shown is [lo, hi] with the leftover cells around it) show less than axis_fit's
+ * rounded-out range, those: a short vertical axis then spends its rows on the data, not
+ * on a tick step's rounding. At least two ticks, min_spacing cells apart. */
+void axis_fit_inside(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
+                     int min_spacing);
+
 /* A rolling time axis in absolute time: the window [end - window, end] on the step and
  * spacing of [-window, 0] laid as axis_fit would but with its last tick on the last cell
  * (the leftover cells extending it to the left; the step widened while the absolute
