@@ -65,6 +65,22 @@ if ok; then
     near "motor_work" "$(col motor_work)" 0 0
 fi
 
+# A force on mass 1 and spring dampers (the tuned-mass damper, run for 20 s): the
+# settings are in the row as the options spell them, and the books are --energy's last
+# row: force_work and dissipated the same, motor_work 0.
+set -- -p tuned-mass-damper --duration 20
+run --summary "$@"
+if ok; then
+    near "boundary is a setting" "$([ "$(col boundary)" = free ] && echo 1)" 1 0
+    near "force" "$(col force)" 0.5 0
+    near "force-on" "$(col force-on)" 1 0
+    last=$("$SPRINGSIM" --headless --energy "$@" | awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i }
+        END { printf "%.12g %.12g", $c["force_work"], $c["dissipated"] }')
+    near "force_work as --energy has it" "$(col force_work)" "${last% *}" 1e-11
+    near "dissipated as --energy has it" "$(col dissipated)" "${last#* }" 1e-11
+    near "no motor work with the motor off" "$(col motor_work)" 0 0
+fi
+
 # Damping and no drive: the dampers took what the mechanical energy lost, E0 - E(T), with
 # E(T) from the last row of the same run's time series (1/2 m v^2 + 2 * 1/2 k x^2).
 set -- -n 1 --boundary wall --damping 0.7 --x0 0.5 --v0 1.5 --no-collisions --dt 0.001 --duration 5

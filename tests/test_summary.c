@@ -161,9 +161,10 @@ static void settings_as_the_command_line_spells_them(void **state)
     static const char *const want[][2] = {
         {"masses", "2"},     {"mass", "1,2.5"},     {"spring", "7"}, {"damping", "0.1"},
         {"frequency", "0.75"}, {"amplitude", "0.25"}, {"wave", "square"}, {"dt", "0.005"},
-        {"integrator", "verlet"},
+        {"integrator", "verlet"}, {"boundary", "motor"}, {"spring-damping", "0"},
+        {"spring-cubic", "0"}, {"force", "0"}, {"force-on", "1"},
     };
-    assert_int_equal(t.cols, 9 + 3 * 2 + 3);
+    assert_int_equal(t.cols, 14 + 3 * 2 + 4);
     for (size_t i = 0; i < sizeof want / sizeof *want; i++) {
         assert_string_equal(t.head[i], want[i][0]);
         assert_string_equal(t.row[i], want[i][1]);

@@ -55,9 +55,10 @@ void summary_add(struct summary *s, const struct sim *sim, double step, double t
 }
 
 /* The settings a study varies, in the order of the columns. */
-static const enum config_key columns[] = {CFG_MASSES,   CFG_MASS,      CFG_SPRING,
-                                          CFG_DAMPING,  CFG_FREQUENCY, CFG_AMPLITUDE,
-                                          CFG_WAVE,     CFG_DT,        CFG_INTEGRATOR};
+static const enum config_key columns[] = {
+    CFG_MASSES, CFG_MASS,       CFG_SPRING,         CFG_DAMPING,     CFG_FREQUENCY,
+    CFG_AMPLITUDE, CFG_WAVE,    CFG_DT,             CFG_INTEGRATOR,  CFG_BOUNDARY,
+    CFG_SPRING_DAMPING, CFG_SPRING_CUBIC, CFG_FORCE, CFG_FORCE_ON};
 #define NCOLUMNS (int)(sizeof columns / sizeof *columns)
 
 void summary_header(FILE *fp, int n)
@@ -68,7 +69,7 @@ void summary_header(FILE *fp, int n)
     for (int g = 0; g < 3; g++)
         for (int i = 1; i <= n; i++)
             fprintf(fp, ",%s%d", groups[g], i);
-    fputs(",contacts,dissipated,motor_work\n", fp);
+    fputs(",contacts,dissipated,motor_work,force_work\n", fp);
 }
 
 /* A list as --mass takes it, after sep: one value when all are equal, else all of them
@@ -108,7 +109,8 @@ void summary_row(FILE *fp, const struct summary *s, const struct sim *sim)
         fprintf(fp, ",%.12g", s->samples > 0.0 ? sqrt(s->sum_x2[i] / s->samples) : 0.0);
     for (int i = 0; i < s->n; i++)
         fprintf(fp, ",%.12g", s->max_v[i]);
-    fprintf(fp, ",%.0f,%.12g,%.12g\n", s->contacts, e.dissipated, e.motor_work);
+    fprintf(fp, ",%.0f,%.12g,%.12g,%.12g\n", s->contacts, e.dissipated, e.motor_work,
+            e.force_work);
 }
 
 double summary_contacts(const struct summary *s)
