@@ -14,6 +14,8 @@ NAME=tui-force
 
 start tmd 80 24 -- -p tuned-mass-damper --record "$tmp/rec.lesson"
 start ascii 80 24 LANG=C LC_ALL=C NO_COLOR=1 -- -p tuned-mass-damper
+start resp 120 40 -- -p tuned-mass-damper
+start rigid 100 30 -- -n 2 --mass 1,2 --spring 0,10,0 --boundary free
 
 # chain_rows: the scene's three rows inside its frame (alternatives, not a bracket: mawk
 # reads one byte of └ there)
@@ -73,6 +75,34 @@ if up tmd; then
     if grep -q 'is the one recorded, bit for bit' "$tmp/replay.out"; then pass; else
         fail "tmd: the recording should replay bit for bit: $(tail -n 3 "$tmp/replay.out" | tr '\n' '|')"
     fi
+fi
+
+# The force alone drives the tuned-mass damper: the response view draws its curves (the
+# primary's two peaks), not a word that nothing drives the chain.
+S=resp
+if up resp; then
+    keys f
+    if wait_for 'drive 0.503 Hz' 3 && ! has 'drives the chain' && [ "$(plot_peaks 'Frequency response')" -ge 2 ]; then
+        pass
+    else
+        fail "resp: f should draw the force's response with its two peaks; screen: $(brief)"
+    fi
+fi
+
+# A chain no spring holds: its rigid-body mode is named, in the modes view and in plain
+# modes, never a NaN damping ratio or an unbounded Q.
+S=rigid
+if up rigid; then
+    keys m
+    if wait_for 'rigid-body mode' 3 && ! has nan; then pass; else
+        fail "rigid: the modes view should name mode 1 a rigid-body mode; screen: $(brief)"
+    fi
+fi
+printf 'modes\nquit\n' | "$SPRINGSIM" --plain -n 2 --mass 1,2 --spring 0,10,0 --boundary free \
+    >"$tmp/rigid.out" 2>&1
+if grep -q '^ok modes: 1: 0 Hz, a rigid-body mode' "$tmp/rigid.out" &&
+    ! grep -q 'unbounded' "$tmp/rigid.out"; then pass; else
+    fail "plain modes should name the rigid-body mode: $(grep modes "$tmp/rigid.out")"
 fi
 
 summary

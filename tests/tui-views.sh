@@ -121,8 +121,8 @@ if up resp; then
 fi
 if up wall; then
     keys f
-    if wait_for 'Frequency response' && settle_for 'does not drive the chain' 2; then pass; else
-        fail "response with --boundary wall: expected 'does not drive the chain'; screen: $(brief "$scr" 'drive|response')"
+    if wait_for 'Frequency response' && settle_for 'Nothing drives the chain' 2; then pass; else
+        fail "response with --boundary wall: expected 'Nothing drives the chain'; screen: $(brief "$scr" 'drive|response')"
     fi
     keys w
     if settle_for 'a sweep needs a drive' 3 && has Paused && lacks 'sweep 1/'; then pass; else
@@ -136,7 +136,7 @@ if up to-wall; then
     keys f
     if settle_re '^│ +1e0┤' 3; then
         keys Down Down Down Down Down Down Down Right
-        if settle_for 'does not drive the chain' 3 && [ "$(amp_frame | grep -c '1e[0-9]')" = 0 ] &&
+        if settle_for 'Nothing drives the chain' 3 && [ "$(amp_frame | grep -c '1e[0-9]')" = 0 ] &&
             ! amp_frame | LC_ALL=C grep -q "$(printf '\342[\240-\243]')"; then pass; else
             fail "response after Right end = wall: the old curves and their 1e.. axis should be cleared, not left under the message; screen: $(brief "$scr" 'drive|1e')"
         fi

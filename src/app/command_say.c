@@ -2,6 +2,7 @@
  * modes, the controls and the presets, each in one line. */
 #include "command_say.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -37,6 +38,8 @@ enum command_reply say_modes(const struct app *app, char *answer, size_t len)
         char damping[64] = "";
         if (!app->damping_ok)
             snprintf(damping, sizeof damping, ", damping not known");
+        else if (isnan(z)) /* damped.c's mark of a rigid-body mode */
+            snprintf(damping, sizeof damping, ", a rigid-body mode (no spring holds it)");
         else if (z >= 1.0)
             snprintf(damping, sizeof damping, ", damping ratio %.3g, overdamped", z);
         else if (z > 0.0)

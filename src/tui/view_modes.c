@@ -72,6 +72,12 @@ static void damping_text(const struct app *app, int j, int w, char *buf, size_t 
         snprintf(buf, len, "damping not known");
         return;
     }
+    if (isnan(z)) { /* a rigid-body mode (damped.c): 0 Hz, no ratio */
+        snprintf(buf, len, "rigid-body mode: no spring holds it, no %s", zeta);
+        if (draw_width(buf) > w)
+            snprintf(buf, len, "rigid-body mode");
+        return;
+    }
     if (z >= 1.0) {
         snprintf(buf, len, "%s %.3g  overdamped: no resonance", zeta, z);
         if (draw_width(buf) > w)

@@ -367,7 +367,8 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
                                    "amplitude (m) against frequency, log-log"
                                  : "Frequency response: steady-state amplitude (m) against "
                                    "frequency, log-log";
-    if (m->boundary != BOUNDARY_MOTOR || m->motor.amplitude <= 0.0 || !c->canvas) {
+    bool motor = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+    if ((!motor && !model_forced(m)) || !c->canvas) {
         /* The frame and the reason alone: no axis, curve or tick of a chain driven before
          * is left standing, and the canvas is clean for the next drive. */
         if (c->canvas)
@@ -376,10 +377,10 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
         struct rect f = c->frame;
         draw_frame(f, draw_width(title) + 4 <= f.w ? title : "Response", true);
         bool end = m->boundary != BOUNDARY_MOTOR;
-        draw_text(f.y + 2, f.x + 3, f.w - 6, end ? "The right end does not drive the chain:"
-                                                  : "The motor's amplitude is 0:");
-        draw_text(f.y + 3, f.x + 3, f.w - 6, end ? "choose Right end = motor to see its response."
-                                                  : "raise the Amplitude to see its response.");
+        draw_text(f.y + 2, f.x + 3, f.w - 6, end ? "Nothing drives the chain:"
+                                                  : "The motor's amplitude is 0 and no force acts:");
+        draw_text(f.y + 3, f.x + 3, f.w - 6, end ? "choose Right end = motor, or a Force, to see its response."
+                                                  : "raise the Amplitude or the Force to see its response.");
         if (rv->phase.frame.h > 0)
             draw_frame(rv->phase.frame, "Phase", true);
         return;
