@@ -29,16 +29,18 @@ static bool judge(const struct config *c, const struct model *m, struct limits *
     return ok;
 }
 
-/* The warnings about dt, one line each, before anything runs. */
-static void warn_limits(const struct limits *l)
+/* The warnings about dt, one line each, before anything runs (a chain with hardening
+ * springs told that they are its linearised chain's). */
+static void warn_limits(const struct limits *l, const struct model *m)
 {
     char line[400];
+    const char *note = limits_linearised_note(m);
     limits_say_stability(l, false, line, sizeof line);
     if (line[0])
-        options_say("warning: %s", line);
+        options_say("warning: %s%s", line, note);
     limits_say_modes(l, false, line, sizeof line);
     if (line[0])
-        options_say("warning: %s", line);
+        options_say("warning: %s%s", line, note);
     limits_say_drive(l, false, line, sizeof line);
     if (line[0])
         options_say("warning: %s", line);
@@ -126,7 +128,7 @@ static int run_begin(struct run *r, const struct config *c, const struct model *
     r->judged = judge(c, m, &r->l);
     r->unstable = r->judged && limits_unstable(&r->l);
     if (r->judged)
-        warn_limits(&r->l);
+        warn_limits(&r->l, m);
     sim_set_integrator(r->s, c->integrator);
     if (config_initial(c, m, r->x, r->x + n) != 0) {
         options_say("--start-mode: mode %d's shape cannot be computed for these values "

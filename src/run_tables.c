@@ -76,6 +76,9 @@ int run_modes(const struct config *c, const struct model *m)
                 fprintf(o.fp, ",%.12g", ratio[j]);
             fprintf(o.fp, ",%.12g,%.12g\n", damped_hz[j], eigen[j]);
         }
+        if (m->cubic)
+            options_say("note: the modes of the chain linearised at rest (its cubic springs "
+                        "at zero stretch, k3 left out)");
         int rigid = model_rigid_modes(m);
         if (rigid > 0)
             options_say("note: %d rigid-body mode%s at 0 Hz (a group of masses no spring ties "

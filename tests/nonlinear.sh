@@ -100,4 +100,19 @@ if grep -q '^ok modes (linearised at rest):' "$out" &&
     fail "plain set spring-cubic: $(tr '\n' '|' <"$out" | head -c 500)"
 fi
 
+# The linear theory says it is the linearised chain's wherever a cubic chain meets it: a
+# stability warning at a dt past the limit (headless, and plain after set dt), --modes.
+run -n 1 --spring 2000 --spring-cubic 10 --headless --dt 0.05 --duration 0.1
+if grep -q 'warning: .*linearised at rest: large swings stiffen' "$err"; then pass; else
+    fail "headless past the limit with a hardening spring: no linearised note: $(head -c 300 "$err")"
+fi
+run -p duffing --modes
+if [ "$rc" -eq 0 ] && grep -q 'note: the modes of the chain linearised at rest' "$err"; then pass; else
+    fail "--modes of a cubic chain: no linearised note: $(head -c 300 "$err")"
+fi
+printf 'set dt 0.05\nquit\n' | "$SPRINGSIM" --plain -n 1 --spring 2000 --spring-cubic 10 >"$out" 2>&1
+if grep -q 'linearised at rest: large swings stiffen' "$out"; then pass; else
+    fail "plain set dt past the limit with a hardening spring: no linearised note: $(grep -i 'warn\|limit' "$out" | head -c 300)"
+fi
+
 summary

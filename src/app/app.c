@@ -115,7 +115,7 @@ static unsigned say_limits(struct app *app, unsigned what, bool drive_was_rough)
     } else if ((what & APP_CHANGED_DRIVE) && !drive_was_rough && !limits_unstable(l)) {
         limits_say_drive(l, true, line, sizeof line);
     }
-    if (what & APP_CHANGED_CHAIN)
+    if (what & (APP_CHANGED_CHAIN | APP_CHANGED_DT | APP_CHANGED_INTEGRATOR))
         app_say_nonlinear(app->model, line, sizeof line);
     return line[0] ? app_say(app, SAID_WARNING, "%s", line) : 0;
 }

@@ -87,9 +87,8 @@ void app_say_nonlinear(const struct model *m, char *line, size_t len)
     int j = 0;
     size_t used = strlen(line);
     double s = m->cubic ? model_turnover(m, &j) : INFINITY;
-    if (used && m->cubic && model_hardening(m))
-        snprintf(line + used, len - used, " (linearised at rest: large swings stiffen the "
-                 "hardening springs and lower this limit)");
+    if (used && limits_linearised_note(m)[0])
+        snprintf(line + used, len - used, "%s", limits_linearised_note(m));
     else if (!used && isfinite(s)) {
         char name[48];
         app_spring_name(m, j, name, sizeof name);

@@ -568,3 +568,10 @@ void limits_say_drive(const struct limits *l, bool short_form, char *buf, size_t
                  "dt < %.3g s keeps it under 1 %%", l->dt, l->drive_hz, pc, name,
                  l->drive_steps, need);
 }
+
+const char *limits_linearised_note(const struct model *m)
+{
+    return m->cubic && model_hardening(m) ? " (linearised at rest: large swings stiffen the "
+                                            "hardening springs and lower this limit)"
+                                          : "";
+}

@@ -116,4 +116,9 @@ void limits_say_stability(const struct limits *l, bool short_form, char *buf, si
 void limits_say_modes(const struct limits *l, bool short_form, char *buf, size_t len);
 void limits_say_drive(const struct limits *l, bool short_form, char *buf, size_t len);
 
+/* What a limit said of a chain with hardening cubic springs must add: the limits are the
+ * chain's linearised at rest, and large swings stiffen it and lower them. "" for any
+ * other chain. */
+const char *limits_linearised_note(const struct model *m);
+
 #endif

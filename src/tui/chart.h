@@ -70,6 +70,10 @@ void chart_free(struct chart *c);
 /* Fits the y axis to data in [lo, hi] (autoscaled, ticks evenly spaced on the rows). */
 void chart_fit_y(struct chart *c, double lo, double hi);
 
+/* As chart_fit_y, but the ticks laid inside the scale's range when that shows the data
+ * larger (axis_fit_inside): for plots whose data may fill every row, the time plots. */
+void chart_fit_y_inside(struct chart *c, double lo, double hi);
+
 /* Fits the x axis to data in [lo, hi] (autoscaled, ticks evenly spaced on the columns). */
 void chart_fit_x(struct chart *c, double lo, double hi);
 

@@ -169,7 +169,10 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
         ylo = fmin(ylo, rec[s * w + TRAIL_U]), yhi = fmax(yhi, rec[s * w + TRAIL_U]);
     c->still = !app->running;
     if (k > 0) {
-        chart_fit_y(c, ylo, yhi);
+        if (xq)
+            chart_fit_y(c, ylo, yhi);
+        else
+            chart_fit_y_inside(c, ylo, yhi);
         if (xq)
             chart_fit_x(c, xlo, xhi);
     }
