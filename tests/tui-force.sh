@@ -16,6 +16,7 @@ start tmd 80 24 -- -p tuned-mass-damper --record "$tmp/rec.lesson"
 start ascii 80 24 LANG=C LC_ALL=C NO_COLOR=1 -- -p tuned-mass-damper
 start resp 120 40 -- -p tuned-mass-damper
 start rigid 100 30 -- -n 2 --mass 1,2 --spring 0,10,0 --boundary free
+start missing 80 24 LANG=C LC_ALL=C -- -n 3 --spring 0,10,0,10
 
 # chain_rows: the scene's three rows inside its frame (alternatives, not a bracket: mawk
 # reads one byte of └ there)
@@ -96,6 +97,17 @@ if up rigid; then
     keys m
     if wait_for 'rigid-body mode' 3 && ! has nan; then pass; else
         fail "rigid: the modes view should name mode 1 a rigid-body mode; screen: $(brief)"
+    fi
+fi
+# Springs of k = 0 are missing from the scene: no coil between the wall and mass 1 or
+# between masses 2 and 3, the others drawn.
+S=missing
+if up missing && wait_for Paused 3; then
+    row=$(chain_rows | sed -n 2p)
+    if printf '%s\n' "$row" | grep -qE '^\|## +=1=/' && printf '%s\n' "$row" | grep -qE '=2= +=3=/'; then
+        pass
+    else
+        fail "missing: springs of k = 0 should not be drawn: '$row'"
     fi
 fi
 printf 'modes\nquit\n' | "$SPRINGSIM" --plain -n 2 --mass 1,2 --spring 0,10,0 --boundary free \

@@ -196,15 +196,17 @@ static void draw_springs(struct scene *s, const struct layout *l, const struct a
         if (b <= a)
             continue;
         bool hot = select_spring(sel) == j;
+        bool coil = m->k[j] != 0.0; /* a spring of k = 0 is missing: no coil drawn */
         if (term_utf8()) {
-            draw_spring(s, l, a, b, hot ? PAIR_TITLE : PAIR_SPRING);
+            if (coil)
+                draw_spring(s, l, a, b, hot ? PAIR_TITLE : PAIR_SPRING);
             if (m->cs[j] > 0.0)
                 draw_dashpot(s, l, a, b, hot ? PAIR_TITLE : PAIR_SPRING);
             continue;
         }
         int c0 = (int)lround(layout_scene_col(l, a)), c1 = (int)lround(layout_scene_col(l, b));
         attron(term_attr(hot ? PAIR_TITLE : PAIR_SPRING));
-        for (int c = c0; c < c1; c++)
+        for (int c = c0; coil && c < c1; c++)
             if (c > r.x && c < r.x + r.w - 1)
                 mvaddch(r.y + CHAIN_ROW, c, ((c - c0) % 2) ? '\\' : '/');
         int cm = (c0 + c1) / 2;
