@@ -1,13 +1,13 @@
-/* test_verb.c: the verb table (app/verb.c), the one place each verb is bound to its
- * function, and what a verb or a command comes to. A verb done as a key does it
- * (verb_do with the argument the screen gives) and as the plain command that names it
- * (command_do) leaves two chains built alike in the same state, bit for bit, with the
- * same kind of result; what a verb done from a key is recorded as (verb_command, for
- * --record) does the same again when replayed as a command. The kinds are set where the
- * answer or the app's message is made, never read back from the words: a change that
- * leaves dt past a limit is done with a warning, a refusal is an error, the commands
- * whose answer says whether the chain runs say so, the cap's count is a kind of its
- * own. */
+/* test_verb.c: the table of user verbs (app/command.c), the one place each verb is bound
+ * to its command, its action and its function, and what a verb or a command comes to.
+ * A verb done as a key does it (verb_do with the argument the screen gives) and as
+ * the plain command that names it (command_do) leaves two chains built alike in the
+ * same state, bit for bit, with the same kind of result; what a verb done from a key
+ * is recorded as (verb_command, for --record) does the same again when replayed as a
+ * command. The kinds are set where the answer or the app's message is made, never
+ * read back from the words: a change that leaves dt past a limit is done with a
+ * warning, a refusal is an error, the commands whose answer says whether the chain
+ * runs say so, the cap's count is a kind of its own. */
 #include "testutil.h"
 
 #include <stdlib.h>
@@ -231,22 +231,45 @@ static void recorded_verbs_replay(void **state)
     assert_int_equal(verb_do(&by_key, ACT_HELP, NULL, NULL), RESULT_ERROR);
 }
 
-/* Every command row is whole: found by its name, a function that does it, its help;
- * the rows a lesson may not hold are those that write files or end the program, and a
- * pause is not recorded (a lesson's pause waits for the user). */
+/* Every row is whole: a command found by its name, with a function that reads its words
+ * and its help; an action bound to one row only, with the app's function for it. The
+ * commands a lesson may not hold are those that write files or end the program, a pause
+ * is not recorded (a lesson's pause waits for the user), and the flags that lessons and
+ * recordings decide on are each on the row they name. */
 static void every_command_row_is_whole(void **state)
 {
     (void)state;
-    for (int i = 0; i < CMD_COUNT; i++) {
-        assert_int_equal(command_find(commands[i].name, strlen(commands[i].name)), i);
-        assert_non_null(commands[i].run);
-        assert_true(strlen(commands[i].help) > 0);
-        bool files = i == CMD_SAVE || i == CMD_EXPORT || i == CMD_QUIT;
-        assert_int_equal(!!(commands[i].flags & COMMAND_NOT_IN_LESSON), files);
+    int named = 0;
+    for (int i = 0; i < command_rows; i++) {
+        const struct command *row = &commands[i];
+        if (row->name) {
+            named++;
+            assert_ptr_equal(command_find(row->name, strlen(row->name)), row);
+            assert_non_null(row->run);
+            assert_true(strlen(row->help) > 0);
+            bool files = strcmp(row->name, "save") == 0 || strcmp(row->name, "export") == 0 ||
+                         strcmp(row->name, "quit") == 0;
+            assert_int_equal(!!(row->flags & COMMAND_NOT_IN_LESSON), files);
+        } else {
+            assert_int_not_equal(row->action, ACT_NONE); /* a verb with no command: a key's */
+        }
+        if (row->action != ACT_NONE) {
+            assert_ptr_equal(command_of_action(row->action), row);
+            assert_true(row->fn || row->with || row->act || row->go);
+            assert_true(verb_bound(row->action));
+        }
+        if (row->flags & COMMAND_BY_KEY)
+            assert_true(row->name && row->action != ACT_NONE && (row->flags & COMMAND_RECORDED));
     }
-    assert_false(commands[CMD_PAUSE].flags & COMMAND_RECORDED);
-    assert_true(commands[CMD_START].flags & COMMAND_RECORDED);
-    assert_true(commands[CMD_RUN].flags & COMMAND_SAYS_PLAY);
+    assert_int_equal(named, 27);
+    assert_null(command_find("bogus", 5));
+    assert_false(command_find("pause", 5)->flags & COMMAND_RECORDED);
+    assert_true(command_find("start", 5)->flags & COMMAND_RECORDED);
+    assert_true(command_find("run", 3)->flags & COMMAND_SAYS_PLAY);
+    assert_true(command_find("run", 3)->flags & COMMAND_RUNS);
+    assert_true(command_find("preset", 6)->flags & COMMAND_LOADS);
+    assert_true(command_find("quit", 4)->flags & COMMAND_ENDS);
+    assert_true(command_find("random", 6)->flags & COMMAND_SEEDED);
 }
 
 /* The terminal program refreshes the plots after a verb only when it changed something

@@ -1,6 +1,7 @@
-/* action.h: what the user can do, by name: the keys' table maps keys to these, the verb
- * table (verb.c) and the screen's (tui/keys.c) map them to the functions that do them,
- * and the app's messages name them (app_key) as the front end showing them calls them. */
+/* action.h: what the user can do, by name: the keys' table maps keys to these, the table
+ * of user verbs (command.c: the row naming the action) and the screen's (tui/keys.c) map
+ * them to the functions that do them, and the app's messages name them (app_key) as the
+ * front end showing them calls them. */
 #ifndef SPRINGSIM_ACTION_H
 #define SPRINGSIM_ACTION_H
 

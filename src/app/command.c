@@ -1,6 +1,6 @@
-/* command.c: the plain mode's commands, one row each naming its verb (verb.h: what the
- * keys do too), and the line's words turned into the verb's arguments and its result
- * into the answer. */
+/* command.c: the table of user verbs (command.h), one row each, and each row's functions:
+ * the app's (what the key's action does, verb_do calls it) and the command's (do_NAME:
+ * its words turned into the verb's argument, its result into the answer). */
 #include "command.h"
 
 #include <ctype.h>
@@ -14,22 +14,9 @@
 #include "../core/preset.h"
 #include "app.h"
 #include "command_say.h"
-#include "scope_text.h"
+#include "ghost.h"
+#include "scope.h"
 
-
-const char *const command_views[CV_COUNT] = {
-    [CV_PLOTS] = "plots", [CV_X] = "x",   [CV_V] = "v",     [CV_A] = "a",
-    [CV_XV] = "x-v",      [CV_XA] = "x-a", [CV_VA] = "v-a", [CV_MODES] = "modes",
-    [CV_RESPONSE] = "response", [CV_ENERGY] = "energy", [CV_SPECTRUM] = "spectrum",
-};
-
-int command_find(const char *name, size_t n)
-{
-    for (int i = 0; i < CMD_COUNT; i++)
-        if (strlen(commands[i].name) == n && strncmp(commands[i].name, name, n) == 0)
-            return i;
-    return -1;
-}
 
 #define RUN_MAX 1000.0 /* simulated seconds one run may take */
 
@@ -55,17 +42,6 @@ static int find_control(const char *word)
     return -1;
 }
 
-/* The commands' names with their arguments, "start, pause, ..., set CONTROL VALUE, ...". */
-static void command_list(char *buf, size_t len)
-{
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < CMD_COUNT && used < len; i++)
-        used += (size_t)snprintf(buf + used, len - used, "%s%s%s%s", i ? ", " : "",
-                                 commands[i].name, commands[i].args[0] ? " " : "",
-                                 commands[i].args);
-}
-
 /* The controls' names, "preset, masses, ..., bandwidth". */
 static void control_list(char *buf, size_t len)
 {
@@ -76,6 +52,131 @@ static void control_list(char *buf, size_t len)
                                  app_control_name((enum control)c));
     if (used < len) /* settings with keys (< and >; K on a spring) but no row of the panel */
         snprintf(buf + used, len - used, ", window, spring-cubic, spring-damping");
+}
+
+/* Each row's app function: what its key's action does (verb_do calls it). */
+
+static enum result run(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    bool on = arg->dir > 0 || (arg->dir == 0 && !app->running);
+    *changed = app_set_running(app, on);
+    return RESULT_OK; /* running already, paused already: as asked */
+}
+
+/* Pauses, and one step: what the step changed (0 for a blow-up: paused, and said why). */
+static enum result step(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    (void)arg;
+    app_set_running(app, false);
+    *changed = app_step(app);
+    return *changed ? RESULT_OK : RESULT_ERROR;
+}
+
+static enum result back(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    (void)arg;
+    *changed = app_back(app);
+    return *changed ? RESULT_OK : RESULT_ERROR;
+}
+
+static enum result reset(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    (void)arg;
+    *changed = app_reset(app) | app_say(app, SAID_NOTE, "reset to t = 0, at the initial "
+                                        "conditions");
+    return RESULT_OK;
+}
+
+static enum result random_start(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    *changed = arg->seeded ? app_random_seed(app, arg->seed) : app_random(app);
+    return verb_result(app, *changed);
+}
+
+static enum result nearest(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    (void)arg;
+    *changed = app_nearest_mode(app);
+    if (!*changed && !app->message[0])
+        *changed = app_say(app, SAID_ERROR, "nearest: the modes are not known");
+    return verb_result(app, *changed);
+}
+
+/* Playback slower or faster: at either end it stays as it is, and that is no error. */
+static enum result speed(struct app *app, int dir, unsigned *changed)
+{
+    *changed = app_adjust(app, CTL_SPEED, dir, false);
+    return RESULT_OK;
+}
+
+static enum result slower(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    (void)arg;
+    return speed(app, -1, changed);
+}
+
+static enum result faster(struct app *app, const struct verb_arg *arg, unsigned *changed)
+{
+    (void)arg;
+    return speed(app, 1, changed);
+}
+
+/* The app's actions that take the verb's argument, their result by verb_result. */
+
+/* The samples, or the sweep's points (its file's path is in the message). */
+static unsigned export(struct app *app, const struct verb_arg *arg)
+{
+    char path[4200];
+    return arg->sweep ? app_export_sweep(app, NULL, path, sizeof path)
+                      : app_export(app, NULL, path, sizeof path);
+}
+
+static unsigned mode(struct app *app, const struct verb_arg *arg)
+{
+    return app_start_mode(app, arg->index);
+}
+
+static unsigned set(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_text(app, (enum control)arg->index, arg->text);
+}
+
+static unsigned element(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_element(app, arg->what, arg->index, arg->text);
+}
+
+static unsigned cubic(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_cubic(app, arg->index, arg->text);
+}
+
+static unsigned spring_damping(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_spring_damping(app, arg->index, arg->text);
+}
+
+static unsigned place(struct app *app, const struct verb_arg *arg)
+{
+    return app_place_start(app, arg->index, arg->value);
+}
+
+static unsigned preset(struct app *app, const struct verb_arg *arg)
+{
+    return app_load_preset(app, arg->text, arg->name);
+}
+
+static unsigned window(struct app *app, const struct verb_arg *arg)
+{
+    return app_set_window(app, arg->text);
+}
+
+/* The controls' names, for help's set: "controls: preset, masses, ...". */
+static void controls_more(char *buf, size_t len)
+{
+    char names[200];
+    control_list(names, sizeof names);
+    snprintf(buf, len, "controls: %s", names);
 }
 
 /* What a verb's result is as a reply. */
@@ -160,16 +261,27 @@ static int whole(const char *text, int hi)
 /* Each command's work: the words after its name in c->rest (blanks trimmed), its answer
  * into c->answer. */
 
-static enum command_reply do_start_pause(struct command_call *c)
+/* start (run) or pause. */
+static enum command_reply start_pause(struct command_call *c, bool run)
 {
     struct app *app = c->app;
-    bool run = c->cmd == CMD_START, was = app->running;
+    bool was = app->running;
     int d;
     verb_do(app, ACT_RUN, &(struct verb_arg){.dir = run ? 1 : -1}, NULL);
     double t = now_t(app, &d);
     snprintf(c->answer, c->len, "%s at t = %.*f s", was == run ? run ? "running already" :
              "paused already" : run ? "started" : "paused", d, t);
     return REPLY_OK;
+}
+
+static enum command_reply do_start(struct command_call *c)
+{
+    return start_pause(c, true);
+}
+
+static enum command_reply do_pause(struct command_call *c)
+{
+    return start_pause(c, false);
 }
 
 static enum command_reply do_step(struct command_call *c)
@@ -236,16 +348,6 @@ static enum command_reply do_preset(struct command_call *c)
     return load_preset(c->app, c->rest, c->answer, c->len);
 }
 
-static enum command_reply do_presets(struct command_call *c)
-{
-    return say_presets(c->app, c->answer, c->len);
-}
-
-static enum command_reply do_modes(struct command_call *c)
-{
-    return say_modes(c->app, c->answer, c->len);
-}
-
 static enum command_reply do_mode(struct command_call *c)
 {
     int k = whole(c->rest, c->app->model->n);
@@ -307,9 +409,9 @@ static enum command_reply do_sweep(struct command_call *c)
     return verb(c->app, ACT_SWEEP, NULL, c->answer, c->len);
 }
 
-static enum command_reply do_speed(struct command_call *c)
+/* faster or slower: the speed now, and whether it is at its end. */
+static enum command_reply speed_to(struct command_call *c, bool faster)
 {
-    bool faster = c->cmd == CMD_FASTER;
     unsigned changed;
     verb_do(c->app, faster ? ACT_FASTER : ACT_SLOWER, NULL, &changed);
     char value[32];
@@ -317,6 +419,16 @@ static enum command_reply do_speed(struct command_call *c)
     snprintf(c->answer, c->len, "Speed %s%s", value,
              changed ? "" : faster ? " (the fastest)" : " (the slowest)");
     return REPLY_OK;
+}
+
+static enum command_reply do_faster(struct command_call *c)
+{
+    return speed_to(c, true);
+}
+
+static enum command_reply do_slower(struct command_call *c)
+{
+    return speed_to(c, false);
 }
 
 static enum command_reply do_save(struct command_call *c)
@@ -351,16 +463,6 @@ static enum command_reply do_export(struct command_call *c)
     return r;
 }
 
-static enum command_reply do_cursor(struct command_call *c)
-{
-    return scope_say_cursor(c->app, c->rest, c->answer, c->len) ? REPLY_OK : REPLY_ERROR;
-}
-
-static enum command_reply do_measure(struct command_call *c)
-{
-    return scope_say_measure(c->app, c->rest, c->answer, c->len) ? REPLY_OK : REPLY_ERROR;
-}
-
 static enum command_reply do_run(struct command_call *c)
 {
     const char *why = config_parse_number(c->rest, c->value);
@@ -389,50 +491,6 @@ static enum command_reply do_view(struct command_call *c)
     return REPLY_ERROR;
 }
 
-static enum command_reply do_status(struct command_call *c)
-{
-    command_status(c->app, c->answer, c->len);
-    return REPLY_OK;
-}
-
-static enum command_reply do_controls(struct command_call *c)
-{
-    return say_controls(c->app, c->answer, c->len);
-}
-
-/* "PREFIX'WORD' is not a command (expected ...)": what dispatch and help both say. */
-static enum command_reply not_a_command(const char *prefix, const char *word, char *answer,
-                                        size_t len)
-{
-    char q[4 * CONFIG_QUOTE_MAX + 48], list[600];
-    command_list(list, sizeof list);
-    config_quote(word, strlen(word), q, sizeof q);
-    snprintf(answer, len, "%s%s is not a command (expected %s)", prefix, q, list);
-    return REPLY_ERROR;
-}
-
-static enum command_reply do_help(struct command_call *c)
-{
-    char list[600];
-    if (!*c->rest) {
-        command_list(list, sizeof list);
-        snprintf(c->answer, c->len, "commands: %s (help COMMAND says what one does)", list);
-        return REPLY_OK;
-    }
-    int h = command_find(c->rest, strlen(c->rest));
-    if (h < 0)
-        return not_a_command("help: ", c->rest, c->answer, c->len);
-    const struct command *row = &commands[h];
-    if (h == CMD_SET) {
-        control_list(list, sizeof list);
-        snprintf(c->answer, c->len, "set CONTROL VALUE: %s; controls: %s", row->help, list);
-    } else {
-        snprintf(c->answer, c->len, "%s%s%s: %s", row->name, row->args[0] ? " " : "", row->args,
-                 row->help);
-    }
-    return REPLY_OK;
-}
-
 static enum command_reply do_quit(struct command_call *c)
 {
     int d;
@@ -442,114 +500,84 @@ static enum command_reply do_quit(struct command_call *c)
 }
 
 /* Recorded (R): a recording replays it (not pause: in a lesson it waits for the user,
- * and every run ends paused anyway). Not in a lesson (N): it writes files or ends the
- * program. Says play (P): its answer says whether the chain runs now. */
+ * and every run ends paused anyway); by key (K): a key doing it is recorded as it. Not
+ * in a lesson: it writes files (W) or ends the program (E). Says play (P): its answer
+ * says whether the chain runs now. */
 #define R COMMAND_RECORDED
-#define N COMMAND_NOT_IN_LESSON
+#define K COMMAND_BY_KEY
+#define W COMMAND_WRITES
+#define E COMMAND_ENDS
 #define P COMMAND_SAYS_PLAY
-const struct command commands[CMD_COUNT] = {
-    [CMD_START] = {"start", "", "start the simulation; time follows the clock at the Speed "
-                                "control's rate", do_start_pause, R | P},
-    [CMD_PAUSE] = {"pause", "", "pause it", do_start_pause, P},
-    [CMD_STEP] = {"step", "", "one step of dt forward (pauses)", do_step, R | P},
-    [CMD_BACK] = {"back", "", "one step back (paused; up to 500 states)", do_back, R},
-    [CMD_RESET] = {"reset", "", "back to the initial conditions, t = 0", do_reset, R},
-    [CMD_RANDOM] = {"random", "[SEED]",
-                    "random initial positions (from SEED: the same each time), and a reset",
-                    do_random, R},
-    [CMD_SET] = {"set", "CONTROL VALUE",
-                 "set a control as typed in the interactive program (controls lists them)",
-                 do_set, R},
-    [CMD_PRESET] = {"preset", "NAME", "load a preset by name or file", do_preset, R},
-    [CMD_PRESETS] = {"presets", "", "the presets' names", do_presets, 0},
-    [CMD_MODES] = {"modes", "", "each natural frequency with its damping ratio and Q", do_modes,
-                   0},
-    [CMD_MODE] = {"mode", "K", "start the chain in mode K, at rest, running", do_mode, R | P},
-    [CMD_PLACE] = {"place", "MASS X0",
-                   "start mass MASS displaced by X0 m (kept inside its neighbours), the others "
-                   "where they stand, at rest, t = 0 (paused)", do_place, R},
-    [CMD_ELEMENT] = {"element", "m|c|k|cs I VALUE",
-                     "one element: mass I's mass (m) or damping (c), or spring I's constant "
-                     "(k) or the damper beside it (cs; spring 0 is the wall's, spring N the "
-                     "motor's)", do_element, R},
-    [CMD_NEAREST] = {"nearest", "", "drive at the nearest natural frequency", do_nearest, R},
-    [CMD_SWEEP] = {"sweep", "", "start / stop a sine-sweep experiment", do_sweep, R},
-    [CMD_FASTER] = {"faster", "", "playback faster", do_speed, R},
-    [CMD_SLOWER] = {"slower", "", "playback slower", do_speed, R},
-    [CMD_SAVE] = {"save", "NAME", "save the set-up as a user preset", do_save, N},
-    [CMD_EXPORT] = {"export", "", "export the samples as CSV (and a sweep's points)", do_export,
-                    N},
-    [CMD_CURSOR] = {"cursor", "T",
-                    "every mass's x, v, a and the motor at the recorded sample nearest to time T",
-                    do_cursor, 0},
-    [CMD_MEASURE] = {"measure", "[MASS]",
-                     "period, frequency, peak-to-peak, rms, log decrement and zeta of a mass "
-                     "over the time window", do_measure, 0},
-    [CMD_RUN] = {"run", "SECONDS",
-                 "run SECONDS of simulated time at once (not in real time), then pause", do_run,
-                 P},
-    [CMD_VIEW] = {"view", "NAME",
-                  "what the interactive program shows (lessons set the scene with it): plots, "
-                  "x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
-                  "spectrum; nothing changes here", do_view, R},
-    [CMD_STATUS] = {"status", "", "the status line now", do_status, 0},
-    [CMD_CONTROLS] = {"controls", "", "every control, its name for set and its value",
-                      do_controls, 0},
-    [CMD_HELP] = {"help", "[COMMAND]", "the commands, or what one does", do_help, 0},
-    [CMD_QUIT] = {"quit", "", "quit (so does the end of input)", do_quit, N},
+const struct command commands[] = {
+    {"start", "", "start the simulation; time follows the clock at the Speed control's rate",
+     do_start, .action = ACT_RUN, .fn = run, .flags = R | K | P},
+    {"pause", "", "pause it", do_pause, .flags = P},
+    {"step", "", "one step of dt forward (pauses)", do_step, .action = ACT_STEP, .fn = step,
+     .flags = R | K | P},
+    {"back", "", "one step back (paused; up to 500 states)", do_back, .action = ACT_BACK,
+     .fn = back, .flags = R | K},
+    {"reset", "", "back to the initial conditions, t = 0", do_reset, .action = ACT_RESET,
+     .fn = reset, .flags = R | K},
+    {"random", "[SEED]", "random initial positions (from SEED: the same each time), and a "
+     "reset", do_random, .action = ACT_RANDOM, .fn = random_start,
+     .flags = R | K | COMMAND_SEEDED},
+    {"set", "CONTROL VALUE", "set a control as typed in the interactive program (controls "
+     "lists them)", do_set, controls_more, .action = ACT_SET, .with = set,
+     .flags = R | COMMAND_OWN_WORDS},
+    {"preset", "NAME", "load a preset by name or file", do_preset, .action = ACT_PRESET,
+     .with = preset, .flags = R | COMMAND_LOADS | COMMAND_WHOLE},
+    {"presets", "", "the presets' names", say_presets, .flags = 0},
+    {"modes", "", "each natural frequency with its damping ratio and Q", say_modes, .flags = 0},
+    {"mode", "K", "start the chain in mode K, at rest, running", do_mode, .action = ACT_MODE,
+     .with = mode, .flags = R | K | P},
+    {"place", "MASS X0", "start mass MASS displaced by X0 m (kept inside its neighbours), the "
+     "others where they stand, at rest, t = 0 (paused)", do_place, .action = ACT_PLACE,
+     .with = place, .flags = R},
+    {"element", "m|c|k|cs I VALUE", "one element: mass I's mass (m) or damping (c), or spring "
+     "I's constant (k) or the damper beside it (cs; spring 0 is the wall's, spring N the "
+     "motor's)", do_element, .action = ACT_ELEMENT, .with = element, .flags = R},
+    {"nearest", "", "drive at the nearest natural frequency", do_nearest,
+     .action = ACT_NEAREST, .fn = nearest, .flags = R | K},
+    {"sweep", "", "start / stop a sine-sweep experiment", do_sweep, .action = ACT_SWEEP,
+     .act = app_toggle_sweep, .flags = R | K},
+    {"faster", "", "playback faster", do_faster, .action = ACT_FASTER, .fn = faster,
+     .flags = R | K},
+    {"slower", "", "playback slower", do_slower, .action = ACT_SLOWER, .fn = slower,
+     .flags = R | K},
+    {"save", "NAME", "save the set-up as a user preset", do_save, .flags = W},
+    {"export", "", "export the samples as CSV (and a sweep's points)", do_export,
+     .action = ACT_EXPORT, .with = export, .flags = W},
+    {"cursor", "T", "every mass's x, v, a and the motor at the recorded sample nearest to "
+     "time T", say_cursor, .flags = 0},
+    {"measure", "[MASS]", "period, frequency, peak-to-peak, rms, log decrement and zeta of a "
+     "mass over the time window", say_measure, .flags = 0},
+    {"run", "SECONDS", "run SECONDS of simulated time at once (not in real time), then pause",
+     do_run, .flags = P | COMMAND_RUNS},
+    {"view", "NAME", "what the interactive program shows (lessons set the scene with it): "
+     "plots, x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
+     "spectrum; nothing changes here", do_view, .flags = R},
+    {"status", "", "the status line now", say_status, .flags = 0},
+    {"controls", "", "every control, its name for set and its value", say_controls, .flags = 0},
+    {"help", "[COMMAND]", "the commands, or what one does", command_help, .flags = 0},
+    {"quit", "", "quit (so does the end of input)", do_quit, .flags = E},
+    /* Verbs with no command of their own: a key's, or reached from a menu, a typed value
+     * (Enter) or another command's words (set window, element cs). */
+    {.action = ACT_NARROWER, .go = app_window_step, .way = -1},
+    {.action = ACT_WIDER, .go = app_window_step, .way = 1},
+    {.action = ACT_GHOST, .act = app_toggle_ghost},
+    {.action = ACT_CURSOR_STEP, .go = scope_move},
+    {.action = ACT_CURSOR_JUMP, .go = scope_jump},
+    {.action = ACT_CURSOR_PAGE, .go = scope_page},
+    {.action = ACT_CURSOR_MASS, .go = scope_select},
+    {.action = ACT_APPLY, .act = app_apply_masses},
+    {.action = ACT_WINDOW, .with = window},
+    {.action = ACT_CUBIC, .with = cubic},
+    {.action = ACT_SPRING_DAMPING, .with = spring_damping},
 };
 #undef R
-#undef N
+#undef K
+#undef W
+#undef E
 #undef P
 
-/* One line: its reply, the answer into answer, a run's seconds or a view's number into
- * *value, the command's row into *row (-1 for none). */
-static enum command_reply dispatch(struct app *app, const char *line, char *answer, size_t len,
-                                   double *value, int *row)
-{
-    char buf[2048];
-    snprintf(buf, sizeof buf, "%s", line);
-    char *rest = buf + strspn(buf, " \t"), *word = next_word(&rest);
-    for (char *end = rest + strlen(rest); end > rest && (end[-1] == ' ' || end[-1] == '\t');)
-        *--end = '\0';
-    if (!*word)
-        return REPLY_NONE;
-    int cmd = command_find(word, strlen(word));
-    if (cmd < 0)
-        return not_a_command("", word, answer, len);
-    const struct command *c = &commands[cmd];
-    *row = cmd;
-    bool wants = c->args[0] && c->args[0] != '[';
-    if (cmd == CMD_SET && !*rest)
-        return set_control(app, "", "", answer, len);
-    if (wants && !*rest) {
-        snprintf(answer, len, "%s: needs %s", c->name, c->args);
-        return REPLY_ERROR;
-    }
-    if (!c->args[0] && *rest) {
-        char q[4 * CONFIG_QUOTE_MAX + 48];
-        config_quote(rest, strlen(rest), q, sizeof q);
-        snprintf(answer, len, "%s: takes nothing, but was given %s", c->name, q);
-        return REPLY_ERROR;
-    }
-    app_quiet(app);
-    struct command_call call = {app, cmd, rest, answer, len, value};
-    return c->run(&call);
-}
-
-enum command_reply command_do(struct app *app, const char *line, struct command_result *res)
-{
-    double value = 0.0;
-    int row = -1;
-    res->answer[0] = '\0';
-    res->reply = dispatch(app, line, res->answer, sizeof res->answer, &value, &row);
-    res->seconds = res->reply == REPLY_RUN ? value : 0.0;
-    res->view = res->reply == REPLY_VIEW ? (int)value : -1;
-    res->says_play = row >= 0 && (commands[row].flags & COMMAND_SAYS_PLAY);
-    return res->reply;
-}
-
-bool command_done(enum command_reply r)
-{
-    return r == REPLY_OK || r == REPLY_WARNING || r == REPLY_VIEW;
-}
+const int command_rows = (int)(sizeof commands / sizeof *commands);

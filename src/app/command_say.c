@@ -1,5 +1,6 @@
-/* command_say.c: the plain mode's answers that tell rather than do: the status line, the
- * modes, the controls and the presets, each in one line. */
+/* command_say.c: the plain mode's commands that tell rather than do (command_say.h): the
+ * status line, the modes, the controls, the presets, a cursor's sample and a measurement,
+ * each in one line. */
 #include "command_say.h"
 
 #include <math.h>
@@ -8,6 +9,7 @@
 
 #include "../core/preset.h"
 #include "app.h"
+#include "scope_text.h"
 
 void command_status(const struct app *app, char *buf, size_t len)
 {
@@ -25,8 +27,11 @@ void command_status(const struct app *app, char *buf, size_t len)
 }
 
 /* The modes in one line: frequency, damping ratio and Q = 1/(2 zeta) of each. */
-enum command_reply say_modes(const struct app *app, char *answer, size_t len)
+enum command_reply say_modes(struct command_call *c)
 {
+    const struct app *app = c->app;
+    char *answer = c->answer;
+    size_t len = c->len;
     if (!app->modes_ok) {
         snprintf(answer, len, "modes: the modes of this chain are not known");
         return REPLY_ERROR;
@@ -53,15 +58,19 @@ enum command_reply say_modes(const struct app *app, char *answer, size_t len)
 }
 
 /* Every control with its name for set and its value, in one line. */
-enum command_reply say_controls(const struct app *app, char *answer, size_t len)
+enum command_reply say_controls(struct command_call *c)
 {
+    const struct app *app = c->app;
+    char *answer = c->answer;
+    size_t len = c->len;
     size_t used = 0;
     answer[0] = '\0';
-    for (int c = 0; c < CTL_COUNT && used < len; c++) {
+    for (int ctl = 0; ctl < CTL_COUNT && used < len; ctl++) {
         char value[96];
-        app_control_value(app, (enum control)c, value, sizeof value);
-        used += (size_t)snprintf(answer + used, len - used, "%s%s %s", c ? "; " : "controls: ",
-                                 app_control_name((enum control)c), value);
+        app_control_value(app, (enum control)ctl, value, sizeof value);
+        used += (size_t)snprintf(answer + used, len - used, "%s%s %s",
+                                 ctl ? "; " : "controls: ", app_control_name((enum control)ctl),
+                                 value);
     }
     if (used < len)
         snprintf(answer + used, len - used, "; window %g s", app_window(app));
@@ -69,8 +78,11 @@ enum command_reply say_controls(const struct app *app, char *answer, size_t len)
 }
 
 /* The presets' names in one line. */
-enum command_reply say_presets(const struct app *app, char *answer, size_t len)
+enum command_reply say_presets(struct command_call *c)
 {
+    const struct app *app = c->app;
+    char *answer = c->answer;
+    size_t len = c->len;
     struct search_entry *list = NULL;
     int n = preset_scan(app->exe_dir, &list);
     size_t used = (size_t)snprintf(answer, len, "presets:");
@@ -80,4 +92,20 @@ enum command_reply say_presets(const struct app *app, char *answer, size_t len)
         snprintf(answer + used, len - used, " none found");
     free(list);
     return REPLY_OK;
+}
+
+enum command_reply say_status(struct command_call *c)
+{
+    command_status(c->app, c->answer, c->len);
+    return REPLY_OK;
+}
+
+enum command_reply say_cursor(struct command_call *c)
+{
+    return scope_say_cursor(c->app, c->rest, c->answer, c->len) ? REPLY_OK : REPLY_ERROR;
+}
+
+enum command_reply say_measure(struct command_call *c)
+{
+    return scope_say_measure(c->app, c->rest, c->answer, c->len) ? REPLY_OK : REPLY_ERROR;
 }

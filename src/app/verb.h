@@ -1,10 +1,10 @@
-/* verb.h: what the user can do, each verb bound to the one function that does it to the
- * app (htop's Action.c). The key table (tui/input.c) maps keys to these actions and the
+/* verb.h: an action done to the app through its row of the one table of user verbs
+ * (command.h; htop's Action.c). The key table (tui/input.c) maps keys to actions and the
  * terminal program hands every action that is not screen-only (overlays, focus, the
- * arrows in the panels, views) to verb_do; the plain mode's commands (command.c) are
- * rows whose functions call these verbs, and turn their arguments into a verb_arg for the
- * same call. What a verb came to is an enum beside the app's message (tmux's
- * cmd_retval), set where the message is made: nothing is decided on its words. */
+ * arrows in the panels, views) to verb_do, which finds the row; the plain mode's
+ * commands turn their words into a verb_arg for the same call. What a verb came to is an
+ * enum beside the app's message (tmux's cmd_retval), set where the message is made:
+ * nothing is decided on its words. */
 #ifndef SPRINGSIM_VERB_H
 #define SPRINGSIM_VERB_H
 
@@ -39,6 +39,15 @@ struct verb_arg {
     uint64_t seed;
     bool sweep;       /* export: the sweep's points, not the samples */
 };
+
+/* A verb's function for a key's action (a row of command.h's table): what it changed
+ * into *changed, what it came to returned. */
+typedef enum result (*verb_fn)(struct app *app, const struct verb_arg *arg, unsigned *changed);
+
+/* What an app action came to, from the kind of the message it made: a change made with a
+ * warning; an error made (or the cap's note), or nothing done and nothing said; else
+ * done. */
+enum result verb_result(const struct app *app, unsigned changed);
 
 /* Whether a is a verb of the table (and not screen-only). */
 bool verb_bound(enum action a);

@@ -16,12 +16,6 @@
 #include "../core/search.h"
 #include "../app/command.h"
 
-/* The commands a lesson may not hold: they write files or end the program. */
-static bool forbidden(int cmd)
-{
-    return commands[cmd].flags & COMMAND_NOT_IN_LESSON;
-}
-
 struct reader {
     struct lesson *l;
     const char *path;
@@ -214,25 +208,25 @@ static const struct {
  * its preset; kept as written, its blanks made one. */
 static int command_line(struct reader *r, const char *word, size_t wlen, const char *rest)
 {
-    int cmd = command_find(word, wlen);
-    if (cmd < 0)
+    const struct command *cmd = command_find(word, wlen);
+    if (!cmd)
         return bad(r, "'%.*s' is not a command or a lesson's word (expected title, say, pause, "
                    "ask, choice, answer, setup, expect or a command of the plain mode: help "
                    "lists them)", wlen > 40 ? 40 : (int)wlen, word);
-    if (forbidden(cmd))
-        return bad(r, "%s is not allowed in a lesson (it %s)", commands[cmd].name,
-                   cmd == CMD_QUIT ? "would end the program" : "writes a file");
+    if (cmd->flags & COMMAND_NOT_IN_LESSON)
+        return bad(r, "%s is not allowed in a lesson (it %s)", cmd->name,
+                   cmd->flags & COMMAND_ENDS ? "would end the program" : "writes a file");
     double sec = 0.0; /* a run's own errors are the dry run's to say */
-    if (cmd == CMD_RUN && config_parse_number(rest, &sec) == NULL && sec > 0.0) {
+    if ((cmd->flags & COMMAND_RUNS) && config_parse_number(rest, &sec) == NULL && sec > 0.0) {
         r->l->seconds += sec;
         if (r->l->seconds > LESSON_MAX_SECONDS)
             return bad(r, "run %.40s: the lesson's runs come to %.10g s of simulated time "
                        "here, past the %.0f s (30 minutes) a lesson may run", rest,
                        r->l->seconds, LESSON_MAX_SECONDS);
     }
-    if (r->commands++ == 0 && cmd != CMD_PRESET)
+    if (r->commands++ == 0 && !(cmd->flags & COMMAND_LOADS))
         return bad(r, "a lesson starts from a known chain: its first command is 'preset NAME' "
-                   "(or a setup block), not %s", commands[cmd].name);
+                   "(or a setup block), not %s", cmd->name);
     char line[LESSON_MAX_LINE + 2];
     snprintf(line, sizeof line, "%.*s%s%s", (int)wlen, word, *rest ? " " : "", rest);
     return add(r, LESSON_COMMAND, line) ? 0 : 1;

@@ -28,11 +28,6 @@ static void say_failed(char *err, size_t errlen, const char *path, const char *w
     snprintf(err, errlen, "%s: %s", safe, why);
 }
 
-bool record_wants(int cmd)
-{
-    return cmd >= 0 && cmd < CMD_COUNT && (commands[cmd].flags & COMMAND_RECORDED);
-}
-
 int record_start(struct record *r, const char *path, const struct app *app, char *err,
                  size_t errlen)
 {
@@ -129,21 +124,21 @@ void record_command(struct record *r, const struct app *app, const char *line)
 {
     const char *w = line + strspn(line, " \t");
     size_t n = strcspn(w, " \t");
-    int cmd = command_find(w, n);
-    if (!r->mem || cmd < 0 || !record_wants(cmd))
+    const struct command *cmd = command_find(w, n);
+    if (!r->mem || !cmd || !(cmd->flags & COMMAND_RECORDED))
         return;
     char text[2100];
-    if (cmd == CMD_RANDOM) {
+    if (cmd->flags & COMMAND_SEEDED) {
         /* the seed it drew, so that the replay draws the same positions */
-        snprintf(text, sizeof text, "random %llu", (unsigned long long)app->cfg.seed);
-    } else if (cmd == CMD_PRESET) {
+        snprintf(text, sizeof text, "%s %llu", cmd->name, (unsigned long long)app->cfg.seed);
+    } else if (cmd->flags & COMMAND_WHOLE) {
         /* a file's name as typed, its blanks kept (the command takes the rest of the
          * line, trimmed) */
         const char *rest = w + n + strspn(w + n, " \t");
         size_t len = strlen(rest);
         while (len > 0 && (rest[len - 1] == ' ' || rest[len - 1] == '\t'))
             len--;
-        snprintf(text, sizeof text, "preset %.*s", (int)len, rest);
+        snprintf(text, sizeof text, "%s %.*s", cmd->name, (int)len, rest);
     } else {
         /* the words as typed, their blanks made one */
         size_t o = 0;
@@ -324,19 +319,6 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
     }
     if (r->t == k->t)
         r->t = sim_time(app->sim);
-}
-
-void record_key(char *out, size_t len, enum action a, const struct verb_arg *arg,
-                unsigned changed, bool running, const char *view)
-{
-    /* The actions that change what is shown: a view line (as `view NAME`). */
-    static const bool shows[ACT_COUNT] = {[ACT_MODES] = true,    [ACT_RESPONSE] = true,
-                                          [ACT_ENERGY] = true,   [ACT_SPECTRUM] = true,
-                                          [ACT_ENLARGE] = true,  [ACT_GRID] = true};
-    if (a > ACT_NONE && a < ACT_COUNT && shows[a])
-        snprintf(out, len, "view %s", view);
-    else
-        verb_command(a, arg, changed, running, out, len);
 }
 
 void record_abandon(struct record *r)

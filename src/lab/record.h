@@ -18,7 +18,6 @@
 
 #include "../core/config.h"
 #include "../core/output.h"
-#include "../app/verb.h"
 
 struct app;
 
@@ -82,8 +81,9 @@ void record_time(struct record *r, const struct app *app);
  * before it was done); the recording is then at the chain's time. */
 void record_line(struct record *r, const struct app *app, const char *line);
 
-/* A command line of the plain mode done (its answer ok), recorded if record_wants it:
- * random with the seed it drew, the rest as typed. */
+/* A command line of the plain mode done (its answer ok), recorded if its row says
+ * (COMMAND_RECORDED): random with the seed it drew, a preset's name as typed, the rest
+ * with their blanks made one. */
 void record_command(struct record *r, const struct app *app, const char *line);
 
 /* Before a key or a mouse event of the interactive program: what the chain is now. */
@@ -95,21 +95,11 @@ void record_mark(struct record *r, const struct app *app);
  * the key. */
 void record_changes(struct record *r, const struct app *app, const char *cmd);
 
-/* The command a key's action a stands for, into out ("" for none): a verb's (arg its
- * argument, changed what it changed but the message, running whether the chain runs
- * after it: verb_command), or a view shown, `view` naming the one shown after it. */
-void record_key(char *out, size_t len, enum action a, const struct verb_arg *arg,
-                unsigned changed, bool running, const char *view);
-
 /* Ends it: the time run, the expect line, the file written whole. 0, or -1 with "PATH:
  * reason" in err (the old file, if any, left as it was). */
 int record_finish(struct record *r, const struct app *app, char *err, size_t errlen);
 
 /* Gives it up: the temporary file removed, nothing written. */
 void record_abandon(struct record *r);
-
-/* Whether the plain mode's command cmd (enum command_id) changes the chain or what is
- * shown, and so is recorded (not pause, which in a lesson waits for the user). */
-bool record_wants(int cmd);
 
 #endif

@@ -157,13 +157,6 @@ static const char *view_name(const struct tui *t)
     return command_views[of[t->views.shown]];
 }
 
-/* The command action a stood for, for --record, once it has done what it did. */
-static void say_command(struct tui *t, enum action a, const struct verb_arg *arg,
-                        unsigned changed)
-{
-    record_key(t->said, sizeof t->said, a, arg, changed, t->app.running, view_name(t));
-}
-
 /* What Enter does where the selection is: start the mode chosen in the modes view, or
  * apply a pending number of masses (verbs, with their argument into arg); else Enter as
  * it is, which opens what the selection asks for. */
@@ -191,19 +184,29 @@ static void enter(struct tui *t)
 }
 
 /* What is only the screen's to do: overlays, focus, the arrows in the panels, views,
- * cursors shown or not, a figure of what is shown; one function per action, in the table
- * below (the key table names the action, the verb table the app's verbs). */
-typedef void screen_fn(struct tui *t, enum action a, int ch, unsigned *changed);
+ * cursors shown or not, a figure of what is shown; one row per action in the table
+ * below (the key table names the action, the table of user verbs the app's). */
+struct screen_action;
+typedef void screen_fn(struct tui *t, const struct screen_action *row, enum action a,
+                       int ch, unsigned *changed);
 
-static void scr_presets(struct tui *t, enum action a, int ch, unsigned *changed)
+struct screen_action {
+    screen_fn *fn;   /* does it */
+    enum view view;  /* the analysis view it shows (scr_view) */
+    bool shows;      /* it changes what is shown: recorded as `view NAME` */
+};
+
+static void scr_presets(struct tui *t, const struct screen_action *row, enum action a,
+                        int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     overlay_presets(&t->overlay, &t->app);
 }
 
-static void scr_lessons(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_lessons(struct tui *t, const struct screen_action *row, enum action a,
+                        int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     if (t->rec.mem)
         app_say(&t->app, SAID_NOTE, "no lessons while recording (--record): the recording "
                 "would miss their commands");
@@ -211,34 +214,39 @@ static void scr_lessons(struct tui *t, enum action a, int ch, unsigned *changed)
         overlay_lessons(&t->overlay, &t->app);
 }
 
-static void scr_help(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_help(struct tui *t, const struct screen_action *row, enum action a,
+                     int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     overlay_help(&t->overlay);
 }
 
-static void scr_move(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_move(struct tui *t, const struct screen_action *row, enum action a,
+                     int ch, unsigned *changed)
 {
-    (void)ch, (void)changed;
+    (void)row, (void)ch, (void)changed;
     select_move(&t->sel, a == ACT_UP ? -1 : 1, CTL_COUNT, t->app.model);
 }
 
-static void scr_adjust(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_adjust(struct tui *t, const struct screen_action *row, enum action a,
+                       int ch, unsigned *changed)
 {
-    (void)ch;
+    (void)row, (void)ch;
     *changed = adjust(t, a == ACT_LEFT || a == ACT_LEFT_BIG ? -1 : 1,
                       a == ACT_LEFT_BIG || a == ACT_RIGHT_BIG);
 }
 
-static void scr_enter(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_enter(struct tui *t, const struct screen_action *row, enum action a,
+                      int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     enter(t);
 }
 
-static void scr_damping(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_damping(struct tui *t, const struct screen_action *row, enum action a,
+                        int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     if (select_mass(&t->sel) >= 0)
         overlay_edit(&t->overlay, EDIT_DAMPING);
     else if (select_spring(&t->sel) >= 0)
@@ -248,89 +256,114 @@ static void scr_damping(struct tui *t, enum action a, int ch, unsigned *changed)
                 "↑↓)");
 }
 
-static void scr_cubic(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_cubic(struct tui *t, const struct screen_action *row, enum action a,
+                      int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     if (select_spring(&t->sel) >= 0)
         overlay_edit(&t->overlay, EDIT_CUBIC);
     else
         app_say(&t->app, SAID_NOTE, "select a spring in the chain first (Tab, then ↑↓)");
 }
 
-static void scr_focus(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_focus(struct tui *t, const struct screen_action *row, enum action a,
+                      int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     select_toggle_focus(&t->sel, t->app.model, t->views.shown == VIEW_MODES);
 }
 
-static void scr_view(struct tui *t, enum action a, int ch, unsigned *changed)
-{
-    (void)ch, (void)changed;
-    toggle_view(t, a == ACT_MODES      ? VIEW_MODES
-                   : a == ACT_RESPONSE ? VIEW_RESPONSE
-                   : a == ACT_ENERGY   ? VIEW_ENERGY
-                                       : VIEW_SPECTRUM);
-}
-
-static void scr_hide(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_view(struct tui *t, const struct screen_action *row, enum action a,
+                     int ch, unsigned *changed)
 {
     (void)a, (void)ch, (void)changed;
+    toggle_view(t, row->view);
+}
+
+static void scr_hide(struct tui *t, const struct screen_action *row, enum action a,
+                     int ch, unsigned *changed)
+{
+    (void)row, (void)a, (void)ch, (void)changed;
     plots_toggle_mass(&t->plots, &t->app, select_mass(&t->sel));
 }
 
-static void scr_save(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_save(struct tui *t, const struct screen_action *row, enum action a,
+                     int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     overlay_edit(&t->overlay, EDIT_SAVE);
 }
 
-static void scr_figure(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_figure(struct tui *t, const struct screen_action *row, enum action a,
+                       int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     ask_figure(t);
 }
 
-static void scr_enlarge(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_enlarge(struct tui *t, const struct screen_action *row, enum action a,
+                        int ch, unsigned *changed)
 {
-    (void)changed;
+    (void)row, (void)changed;
     enlarge(t, a == ACT_GRID ? -1 : ch - '1');
 }
 
-static void scr_escape(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_escape(struct tui *t, const struct screen_action *row, enum action a,
+                       int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     t->sel.focus = FOCUS_CONTROLS;
 }
 
-static void scr_cursor(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_cursor(struct tui *t, const struct screen_action *row, enum action a,
+                       int ch, unsigned *changed)
 {
-    (void)ch;
+    (void)row, (void)ch;
     *changed = cursor_action(t, a);
 }
 
-static void scr_redraw(struct tui *t, enum action a, int ch, unsigned *changed)
+static void scr_redraw(struct tui *t, const struct screen_action *row, enum action a,
+                       int ch, unsigned *changed)
 {
-    (void)a, (void)ch, (void)changed;
+    (void)row, (void)a, (void)ch, (void)changed;
     clearok(curscr, TRUE);
     graphics_invalidate(&t->gfx);
 }
 
-/* The screen's actions; NULL where the action is a verb of the app's, or nothing. */
-static screen_fn *const screen_actions[ACT_COUNT] = {
-    [ACT_PRESETS] = scr_presets,   [ACT_LESSONS] = scr_lessons, [ACT_HELP] = scr_help,
-    [ACT_UP] = scr_move,           [ACT_DOWN] = scr_move,       [ACT_LEFT] = scr_adjust,
-    [ACT_RIGHT] = scr_adjust,      [ACT_LEFT_BIG] = scr_adjust, [ACT_RIGHT_BIG] = scr_adjust,
-    [ACT_ENTER] = scr_enter,       [ACT_DAMPING] = scr_damping, [ACT_FOCUS] = scr_focus,
-    [ACT_CUBIC_KEY] = scr_cubic,
-    [ACT_MODES] = scr_view,        [ACT_RESPONSE] = scr_view,   [ACT_ENERGY] = scr_view,
-    [ACT_SPECTRUM] = scr_view,     [ACT_HIDE] = scr_hide,       [ACT_SAVE] = scr_save,
-    [ACT_FIGURE] = scr_figure,     [ACT_ENLARGE] = scr_enlarge, [ACT_GRID] = scr_enlarge,
-    [ACT_ESCAPE] = scr_escape,     [ACT_CURSOR] = scr_cursor,   [ACT_CURSOR_OFF] = scr_cursor,
-    [ACT_REDRAW] = scr_redraw,
+/* The screen's actions; none where the action is a verb of the app's, or nothing. */
+static const struct screen_action screen_actions[ACT_COUNT] = {
+    [ACT_PRESETS] = {scr_presets},     [ACT_LESSONS] = {scr_lessons},
+    [ACT_HELP] = {scr_help},
+    [ACT_UP] = {scr_move},             [ACT_DOWN] = {scr_move},
+    [ACT_LEFT] = {scr_adjust},         [ACT_RIGHT] = {scr_adjust},
+    [ACT_LEFT_BIG] = {scr_adjust},     [ACT_RIGHT_BIG] = {scr_adjust},
+    [ACT_ENTER] = {scr_enter},         [ACT_DAMPING] = {scr_damping},
+    [ACT_FOCUS] = {scr_focus},         [ACT_CUBIC_KEY] = {scr_cubic},
+    [ACT_MODES] = {scr_view, VIEW_MODES, true},
+    [ACT_RESPONSE] = {scr_view, VIEW_RESPONSE, true},
+    [ACT_ENERGY] = {scr_view, VIEW_ENERGY, true},
+    [ACT_SPECTRUM] = {scr_view, VIEW_SPECTRUM, true},
+    [ACT_ENLARGE] = {scr_enlarge, VIEW_PLOTS, true},
+    [ACT_GRID] = {scr_enlarge, VIEW_PLOTS, true},
+    [ACT_HIDE] = {scr_hide},           [ACT_SAVE] = {scr_save},
+    [ACT_FIGURE] = {scr_figure},
+    [ACT_ESCAPE] = {scr_escape},       [ACT_CURSOR] = {scr_cursor},
+    [ACT_CURSOR_OFF] = {scr_cursor},   [ACT_REDRAW] = {scr_redraw},
 };
 
-/* Acts on a: a verb through the verb table (verb.h), with its argument from the screen;
- * the rest on the screen. False to quit. */
+/* The command action a stood for, for --record, once it has done what it did: a view
+ * shown, as `view NAME`; a verb's, as its row says (verb_command). */
+static void say_command(struct tui *t, enum action a, const struct verb_arg *arg,
+                        unsigned changed)
+{
+    if (a > ACT_NONE && a < ACT_COUNT && screen_actions[a].shows)
+        snprintf(t->said, sizeof t->said, "view %s", view_name(t));
+    else
+        verb_command(a, arg, changed, t->app.running, t->said, sizeof t->said);
+}
+
+/* Acts on a: a verb through its row of the table of user verbs (verb.h), with its
+ * argument from the screen; the rest on the screen. False to quit. */
 static bool on_action(struct tui *t, enum action a, int ch)
 {
     struct app *app = &t->app;
@@ -352,8 +385,8 @@ static bool on_action(struct tui *t, enum action a, int ch)
         verb_do(app, a, &arg, &changed);
         if (a == ACT_SWEEP && app->sweep->active && t->views.shown != VIEW_RESPONSE)
             toggle_view(t, VIEW_RESPONSE);
-    } else if (a > ACT_NONE && a < ACT_COUNT && screen_actions[a]) {
-        screen_actions[a](t, a, ch, &changed);
+    } else if (a > ACT_NONE && a < ACT_COUNT && screen_actions[a].fn) {
+        screen_actions[a].fn(t, &screen_actions[a], a, ch, &changed);
     }
     if (changed & APP_CHANGED_SIZE)
         select_clamp(&t->sel, app->model);

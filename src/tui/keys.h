@@ -1,7 +1,7 @@
 /* keys.h: what a key or the mouse does in the terminal program: the actions that are
- * verbs go through the verb table (app/verb.h) with their argument from the screen
- * (the selection, the view shown); the rest is the screen's own (overlays, focus, the
- * arrows in the panels, views, lessons' keys). */
+ * verbs go through their rows of the table of user verbs (app/verb.h) with their
+ * argument from the screen (the selection, the view shown); the rest is the screen's own
+ * table (overlays, focus, the arrows in the panels, views, lessons' keys). */
 #ifndef SPRINGSIM_KEYS_H
 #define SPRINGSIM_KEYS_H
 

@@ -215,100 +215,121 @@ static const char *action_key(int a)
     return input_key_name(a, term_utf8());
 }
 
-int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson)
+/* Sets t up: the app, the recording, the terminal, the graphics' queries, a lesson and
+ * the first message. False when it cannot (said on stderr, what was set up undone). */
+static bool tui_start(struct tui *t, const struct config *cfg, const char *exe_dir,
+                      const struct lesson *lesson)
 {
-    static struct tui t;
-    memset(&t, 0, sizeof t);
-    t.enlarged = -1;
-    if (app_init_named(&t.app, cfg, exe_dir, action_key, true) != 0) {
+    memset(t, 0, sizeof *t);
+    t->enlarged = -1;
+    if (app_init_named(&t->app, cfg, exe_dir, action_key, true) != 0) {
         fprintf(stderr, "springsim: out of memory\n");
-        return EXIT_FAILURE;
+        return false;
     }
-    t.sel.elem = 1;
+    t->sel.elem = 1;
     char why[4600];
-    if (cfg->record && record_start(&t.rec, cfg->record, &t.app, why, sizeof why) != 0) {
+    if (cfg->record && record_start(&t->rec, cfg->record, &t->app, why, sizeof why) != 0) {
         fprintf(stderr, "springsim: --record: %s\n", why);
-        app_free(&t.app);
-        return EXIT_FAILURE;
+        app_free(&t->app);
+        return false;
     }
     if (!term_start(cfg->color, cfg->glyphs)) {
-        record_abandon(&t.rec);
-        app_free(&t.app);
-        return EXIT_FAILURE;
+        record_abandon(&t->rec);
+        app_free(&t->app);
+        return false;
     }
     /* Asked once curses has the terminal (no echo, no line buffering): the answers come in
      * with the keys, and the first frames are braille until they have. */
-    graphics_detect(&t.gfx, cfg);
-    t.gfx_start = t.gfx.waiting;
-    t.app.graphics_now = graphics_now(&t.gfx);
-    t.teach.view = -1;
-    screen_relayout(&t);
+    graphics_detect(&t->gfx, cfg);
+    t->gfx_start = t->gfx.waiting;
+    t->app.graphics_now = graphics_now(&t->gfx);
+    t->teach.view = -1;
+    screen_relayout(t);
     if (lesson) {
-        teach_start(&t.teach, lesson, &t.app, cfg->replay != NULL);
-        keys_after_teach(&t, false);
+        teach_start(&t->teach, lesson, &t->app, cfg->replay != NULL);
+        keys_after_teach(t, false);
     }
-    if (t.gfx.said[0])
-        app_say(&t.app, SAID_ERROR, "--graphics %s: %s",
-                config_options[CFG_GRAPHICS].choice_name((int)cfg->graphics), t.gfx.said);
-    if (t.app.message[0] == '\0' && !lesson) /* a lesson's panel says what space does */
-        app_say(&t.app, SAID_NOTE, "%s starts; %s lists every key", app_key(&t.app, ACT_RUN),
-                app_key(&t.app, ACT_HELP));
+    if (t->gfx.said[0])
+        app_say(&t->app, SAID_ERROR, "--graphics %s: %s",
+                config_options[CFG_GRAPHICS].choice_name((int)cfg->graphics), t->gfx.said);
+    if (t->app.message[0] == '\0' && !lesson) /* a lesson's panel says what space does */
+        app_say(&t->app, SAID_NOTE, "%s starts; %s lists every key", app_key(&t->app, ACT_RUN),
+                app_key(&t->app, ACT_HELP));
+    return true;
+}
 
+/* One frame at now (the last at *last): a lesson's next items, the chain stepped for the
+ * time gone, the recording kept within its bounds, and the screen drawn, the plots
+ * refreshed when they are due. */
+static void frame(struct tui *t, double now, double *last)
+{
+    /* A lesson's run that ended, or its wait, goes on to its next items. */
+    if (teach_tick(&t->teach, &t->app, now))
+        keys_after_teach(t, true);
+    /* Never spend more than half a frame computing: fall behind and say so. */
+    /* A replay's chain moves in its runs alone: its waits were paused. */
+    bool run = t->teach.playing || (t->teach.demo && teach_shown(&t->teach) && !t->teach.done);
+    app_clock_follow(&t->clock, &t->app, now - *last, 0.5 / frame_hz(t),
+                     run ? lesson_step : NULL, run ? t : NULL);
+    follow_graphics(t);
+    *last = now;
+    if (t->rec.mem && sim_time(t->app.sim) - t->rec.t >= RECORD_RUN_MAX)
+        record_time(&t->rec, &t->app);
+    /* Ended (and written) while a second of motion at this pace still fits a
+     * lesson's bound: a frame runs far less than that. */
+    if (record_full(&t->rec, &t->app, app_clock_pace(&t->app) + sim_dt(t->app.sim)))
+        record_full_finish(&t->rec, &t->app);
+    /* Plots refresh at plot_hz() while running (the modes view's shapes swing even
+     * while paused), as images no faster than they can be sent, and at once after
+     * anything else. */
+    bool moving = t->app.running || t->views.shown == VIEW_MODES;
+    bool refresh = t->plots_dirty || (moving && now >= t->plot_due && graphics_ready(&t->gfx));
+    if (refresh) {
+        t->plot_due = now + 1.0 / plot_hz(t);
+        t->plots_dirty = false;
+    }
+    watch_backlog(t, draw(t, refresh));
+}
+
+/* Waits for input until the next frame, taking every key that is there; false to quit. */
+static bool take_keys(struct tui *t, double next_frame)
+{
+    for (;;) {
+        int ms = (int)((next_frame - app_clock_now()) * 1000.0);
+        int ch = next_key(t, ms > 0 ? ms : 0);
+        if (ch == ERR) {
+            /* No key, or no terminal: a hung-up one gives ERR at once, for ever, and
+             * SIGHUP may never come (it was ignored, or this is not the controlling
+             * terminal). */
+            term_check_hangup();
+            return true;
+        }
+        if (!keys_on_key(t, ch))
+            return false;
+        if (term_quit_signal())
+            return true;
+    }
+}
+
+int tui_run(const struct config *cfg, const char *exe_dir, const struct lesson *lesson)
+{
+    static struct tui t;
+    if (!tui_start(&t, cfg, exe_dir, lesson))
+        return EXIT_FAILURE;
     double last = app_clock_now(), next_frame = last;
     bool go = true;
     while (go && !term_quit_signal()) {
         double now = app_clock_now();
-        /* A lesson's run that ended, or its wait, goes on to its next items. */
-        if (teach_tick(&t.teach, &t.app, now))
-            keys_after_teach(&t, true);
-        /* Never spend more than half a frame computing: fall behind and say so. */
-        /* A replay's chain moves in its runs alone: its waits were paused. */
-        bool run = t.teach.playing || (t.teach.demo && teach_shown(&t.teach) && !t.teach.done);
-        app_clock_follow(&t.clock, &t.app, now - last, 0.5 / frame_hz(&t),
-                         run ? lesson_step : NULL, run ? &t : NULL);
-        follow_graphics(&t);
-        last = now;
-        if (t.rec.mem && sim_time(t.app.sim) - t.rec.t >= RECORD_RUN_MAX)
-            record_time(&t.rec, &t.app);
-        /* Ended (and written) while a second of motion at this pace still fits a
-         * lesson's bound: a frame runs far less than that. */
-        if (record_full(&t.rec, &t.app, app_clock_pace(&t.app) + sim_dt(t.app.sim)))
-            record_full_finish(&t.rec, &t.app);
-        /* Plots refresh at plot_hz() while running (the modes view's shapes swing even
-         * while paused), as images no faster than they can be sent, and at once after
-         * anything else. */
-        bool moving = t.app.running || t.views.shown == VIEW_MODES;
-        bool refresh = t.plots_dirty || (moving && now >= t.plot_due && graphics_ready(&t.gfx));
-        if (refresh) {
-            t.plot_due = now + 1.0 / plot_hz(&t);
-            t.plots_dirty = false;
-        }
-        watch_backlog(&t, draw(&t, refresh));
+        frame(&t, now, &last);
         double hz = frame_hz(&t);
         next_frame += 1.0 / hz;
         if (next_frame < now)
             next_frame = now + 1.0 / hz;
-        /* Wait for input until the next frame; take every key that is there. */
-        for (;;) {
-            int ms = (int)((next_frame - app_clock_now()) * 1000.0);
-            int ch = next_key(&t, ms > 0 ? ms : 0);
-            if (ch == ERR) {
-                /* No key, or no terminal: a hung-up one gives ERR at once, for ever, and
-                 * SIGHUP may never come (it was ignored, or this is not the controlling
-                 * terminal). */
-                term_check_hangup();
-                break;
-            }
-            if (!keys_on_key(&t, ch)) {
-                go = false;
-                break;
-            }
-            if (term_quit_signal())
-                break;
-        }
+        go = take_keys(&t, next_frame);
     }
     term_stop();
     int status = EXIT_SUCCESS;
+    char why[4600];
     if (t.rec.mem && record_finish(&t.rec, &t.app, why, sizeof why) != 0) {
         fprintf(stderr, "springsim: --record: %s\n", why);
         status = EXIT_FAILURE;
