@@ -400,4 +400,14 @@ kill "$reader" 2>/dev/null
 [ "$(cat "$tmp/rc" 2>/dev/null)" = 143 ] && pass ||
     fail "SIGTERM with stdout a full pipe: expected status 143 within 5 s; got '$(cat "$tmp/rc" 2>/dev/null || echo still running)'"
 
+
+# ASCII spells a root with its operand in brackets: "sqrt(20)", not "sqrt20", and
+# "sqrt(2) f_n"; a bracketed operand keeps its own brackets.
+printf '2\nnext\nnext\nnext\n' | "$SPRINGSIM" --plain --lesson damping >"$tmp/root.out" 2>&1
+"$SPRINGSIM" --plain --lesson transmissibility </dev/null >>"$tmp/root.out" 2>&1
+if grep -q '0.5 / (2 sqrt(20))' "$tmp/root.out" && grep -q 'at sqrt(2) f_n' "$tmp/root.out" &&
+    grep -q 'sqrt(2k m)' "$tmp/root.out" && ! grep -qE 'sqrt[0-9]' "$tmp/root.out"; then pass; else
+    fail "plain roots: $(grep -o '.\{20\}sqrt.\{12\}' "$tmp/root.out" | head -n 4 | tr '\n' '|')"
+fi
+
 summary

@@ -6,7 +6,8 @@
 #include <stddef.h>
 
 /* The ASCII spelling of the character starting at s when it is one of ours, its length
- * in bytes into *len; NULL when it is not. */
+ * in bytes into *len; NULL when it is not. A root sign takes its bare operand with it
+ * ("√20" is "sqrt(20)", *len covering both; the spelling then lasts to the next call). */
 const char *spell_ascii(const char *s, size_t *len);
 
 #endif
