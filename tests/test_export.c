@@ -105,7 +105,7 @@ static void sweep_points_beside_the_theory(void **state)
     assert_true(lo == app.sweep->freq[0] && hi == app.sweep->freq[APP_SWEEP_POINTS - 1]);
     assert_int_equal(points, APP_SWEEP_POINTS);
     assert_non_null(strstr(lines[1], " --frequency 0.9 ")); /* the user's, not the sweep's */
-    assert_non_null(strstr(lines[2], "# measured by springsim's sweep (w): "));
+    assert_non_null(strstr(lines[2], "# measured by springsim's sweep experiment: "));
     assert_string_equal(lines[3], "frequency_hz,amp1,amp2,amp3,phase1,phase2,phase3,theory_amp1,"
                                   "theory_amp2,theory_amp3,theory_phase1,theory_phase2,"
                                   "theory_phase3");

@@ -148,7 +148,8 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
         else
             snprintf(settle, sizeof settle, "after settling at least %.3g s and 8 periods",
                      s->settle_min);
-        fprintf(o.fp, "# measured by springsim's sweep (w): a stepped sine, each point %s, over "
+        fprintf(o.fp, "# measured by springsim's sweep experiment: a stepped sine, each point %s, "
+                "over "
                 "3 s or 4 periods; amp: peak |x| (m), phase: x to the drive (degrees); "
                 "theory_: the linear steady state, as the line above gives it%s\n", settle,
                 s->active ? "; the sweep was still running" : "");
