@@ -331,11 +331,48 @@ static void time_axis(void **state)
     assert_true(a.step >= 1.0);
 }
 
+/* axis_fit_inside: the range's values all on the cells (to the outer cells' edges), at
+ * least two ticks min_spacing apart inside it, never more shown than axis_fit shows; on
+ * few rows, much less (the damping lesson's plot: 6 rows, [-0.6, 0.6]); and ranges
+ * whose steps would be subnormal or overflow are laid without a fault. */
+static void inside(void **state)
+{
+    (void)state;
+    static const double ranges[][2] = {{-0.6, 0.6}, {-1.5, 1.5}, {-0.1, 0.6}, {0, 1000},
+                                       {-0.002, 0.006}, {-3.2, 7.9}, {12.5, 13.25}};
+    for (size_t i = 0; i < sizeof ranges / sizeof *ranges; i++)
+        for (int cells = 3; cells <= 40; cells++) {
+            double lo = ranges[i][0], hi = ranges[i][1];
+            int ticks = cells / 2 < 2 ? 2 : cells / 2 > 8 ? 8 : cells / 2;
+            struct axis a, b;
+            axis_fit_inside(&a, lo, hi, ticks, cells, 4, 2);
+            axis_fit(&b, lo, hi, ticks, cells, 4, 2);
+            double shown = a.cells * a.step / a.spacing, wide = b.cells * b.step / b.spacing;
+            assert_true(shown <= wide * (1 + 1e-12));
+            assert_true(a.intervals >= 1 && a.first >= 0);
+            assert_true(a.first + a.intervals * a.spacing <= cells - 1);
+            /* every value of the range on the canvas's dots (dot d spans d +- 0.5) */
+            assert_true(axis_dot(&a, lo) >= -0.5 - 1e-9);
+            assert_true(axis_dot(&a, hi) <= cells * a.dpc - 0.5 + 1e-9);
+            if (a.spacing < b.spacing || a.step != b.step) /* laid inside: ticks in range */
+                assert_true(a.lo >= lo - 1e-12 && a.lo + a.intervals * a.step <= hi + 1e-12);
+        }
+    struct axis a;
+    axis_fit_inside(&a, -0.6, 0.6, 3, 6, 4, 2);
+    assert_true(a.cells * a.step / a.spacing <= 1.5 + 1e-12); /* axis_fit's: 3 */
+    static const double odd[][2] = {{5e-324, 1e-323}, {0, 1e-320}, {-1.7e308, 1.7e308}};
+    for (size_t i = 0; i < sizeof odd / sizeof *odd; i++) {
+        axis_fit_inside(&a, odd[i][0], odd[i][1], 3, 7, 4, 2);
+        assert_true(a.step > 0.0 && isfinite(a.lo) && a.intervals >= 1 && a.spacing >= 1);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(spacing_exact), cmocka_unit_test(steps),       cmocka_unit_test(linear),
         cmocka_unit_test(labels_sweep),  cmocka_unit_test(label_forms), cmocka_unit_test(time_axis),
+        cmocka_unit_test(inside),
     };
     return cmocka_run_group_tests_name("axis", tests, NULL, NULL);
 }

@@ -217,6 +217,10 @@ static void lay(struct axis *a, double lo, double hi, double step, bool anchored
     a->first = anchored ? leftover : leftover / 2;
 }
 
+/* Ranges narrower than this (m or any unit) are shown as [-1, 1]: their steps would be
+ * subnormal. */
+#define AXIS_TINY 1e-290
+
 static void fit(struct axis *a, double lo, double hi, int max_ticks, int cells, int dpc,
                 int min_spacing, bool anchored)
 {
@@ -232,6 +236,8 @@ static void fit(struct axis *a, double lo, double hi, int max_ticks, int cells, 
         double pad = lo != 0.0 ? 0.1 * fabs(lo) : 1.0;
         lo -= pad, hi += pad;
     }
+    if (!(hi - lo >= AXIS_TINY)) /* subnormal data: no step to show it on */
+        lo = -1.0, hi = 1.0;
     if (max_ticks < 1)
         max_ticks = 1;
     a->cells = cells < 1 ? 1 : cells;
@@ -273,17 +279,25 @@ static double shown_span(const struct axis *a)
  * fewer than two ticks fall inside, or the labels do not fit. */
 static bool lay_inside(struct axis *a, double lo, double hi, double step, int min_spacing)
 {
-    int spacing = (int)floor(a->cells * step / (hi - lo) + 1e-9);
+    double room = floor(a->cells * step / (hi - lo) + 1e-9); /* may be huge: no int yet */
     double k0 = ceil(lo / step - 1e-9), k1 = floor(hi / step + 1e-9);
-    if (spacing < min_spacing || k1 - k0 < 1.0 || (k1 - k0) * spacing > a->cells - 1)
+    if (!(room >= min_spacing && room <= a->cells) || k1 - k0 < 1.0 ||
+        (k1 - k0) * room > a->cells - 1)
         return false;
+    int spacing = (int)room;
     a->lo = k0 * step;
     a->step = step;
     a->intervals = (int)(k1 - k0);
     a->spacing = spacing;
-    /* The middle of [lo, hi] on the middle cell, rounded to a whole cell. */
-    double mid = 0.5 * (a->cells - 1) - (0.5 * (lo + hi) - a->lo) / step * spacing;
-    a->first = (int)floor(mid + 0.5);
+    /* Tick 0's cell: lo no lower than the first cell's lower edge, hi no higher than the
+     * last cell's upper edge, and as near as that allows to [lo, hi] centred. */
+    double below = (lo - a->lo) / step * spacing, above = (hi - a->lo) / step * spacing;
+    double least = ceil(-0.5 - below - 1e-9), most = floor(a->cells - 0.5 - above + 1e-9);
+    double mid = floor(0.5 * (a->cells - 1) - 0.5 * (below + above) + 0.5);
+    mid = fmin(fmax(mid, least), most);
+    if (!(least <= most && mid >= 0.0 && mid < a->cells))
+        return false;
+    a->first = (int)mid;
     int last = a->first + a->intervals * spacing, width;
     return a->first >= 0 && last <= a->cells - 1 && label_form(a, &width) != FORM_ROUGH;
 }
@@ -292,7 +306,7 @@ void axis_fit_inside(struct axis *a, double lo, double hi, int max_ticks, int ce
                      int min_spacing)
 {
     fit(a, lo, hi, max_ticks, cells, dpc, min_spacing, false);
-    if (!(hi - lo > 0.0) || !isfinite(hi - lo))
+    if (!(hi - lo >= AXIS_TINY) || !isfinite(hi - lo))
         return;
     /* The steps around the one the ticks would take, finest first: the first whose
      * layout shows less than the rounded-out one wins. */
