@@ -300,6 +300,23 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@$(CC) -O2 -g $(DEFS) $(CORE_CFLAGS) -Isrc -o $(BUILD)/bench/bench_core \
 	    tests/bench/bench_core.c $(CORE_LIB) $$($(PKG_CONFIG) --cflags --libs gsl) $(CORE_LIBS)
 	@$(CC) -O2 -g -D_GNU_SOURCE -o $(BUILD)/bench/bench_tty tests/bench/bench_tty.c -lutil
+	@$(CC) -O2 -g -o $(BUILD)/bench/bench_procs tests/bench/bench_procs.c
+	@$(CC) -O2 -g -o $(BUILD)/bench/anchor_plain tests/bench/anchor_plain.c -lm
+	@$(CC) -O2 -g -o $(BUILD)/bench/anchor_gsl tests/bench/anchor_gsl.c \
+	    $$($(PKG_CONFIG) --cflags --libs gsl)
+	@echo "whole processes, N = 5, dt = 0.001, 3e6 steps, CPU time, medians of 5 alternated"
+	@echo "(goals: GSL's rk4 driver >= 4.5x springsim's time; the plain loop >= 1.0x with"
+	@echo "collisions on, >= 1.1x with them off)"
+	@echo
+	@echo "| process | CPU | time / springsim's |"
+	@echo "| --- | --- | --- |"
+	@$(BUILD)/bench/bench_procs 'springsim --headless, collisions on' -- \
+	    ./$(BIN) --headless -n 5 --dt 0.001 --duration 3000 --sample 3000 -- \
+	    'springsim --headless --no-collisions' -- \
+	    ./$(BIN) --headless -n 5 --dt 0.001 --duration 3000 --sample 3000 --no-collisions -- \
+	    'plain RK4 loop (anchor_plain.c)' -- $(BUILD)/bench/anchor_plain 5 0.001 3000000 -- \
+	    'GSL rk4, fixed-step driver (anchor_gsl.c)' -- $(BUILD)/bench/anchor_gsl 5 0.001 3000000
+	@echo
 	@$(BUILD)/bench/bench_core
 	@echo
 	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"
