@@ -38,6 +38,7 @@ The PDF's words come from pdftotext -bbox (poppler-utils).
 The SVG is parsed as XML; colours are cairo's rgb(p%,q%,r%) or rgb(r,g,b)."""
 import csv
 import re
+import signal
 import struct
 import sys
 import xml.etree.ElementTree as ET
@@ -332,4 +333,5 @@ def main():
         print('%d %d %.6g %.6g %.3g' % (len(pts), len(want), ry, c, off))
 
 
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # a reader that stops early (head) is no error
 main()
