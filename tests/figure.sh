@@ -172,6 +172,7 @@ expect "$cmd: exit status" "$rc" 0
 expect "$cmd: curves of mass 1's colour (x, v, a, kinetic)" "$($fc curves "$tmp/e.svg" $M1)" 4
 expect "$cmd: curves of the motor's colour (u, motor work)" "$($fc curves "$tmp/e.svg" $MOTOR)" 2
 $fc text "$tmp/e.pdf" >"$tmp/e.txt"
+grep -qx 'time t (s)' "$tmp/e.txt" && pass || fail "$cmd: no x axis title 'time t (s)'"
 for w in kinetic potential dissipated "motor work" contact "balance error"; do
     grep -q "$w" "$tmp/e.txt" && pass || fail "$cmd: no '$w' in the energy panel's legend"
 done

@@ -184,6 +184,24 @@ if up driven; then
     if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $M1)" -ge 2 ]; then pass; else
         fail "X in the response view: expected a figure with the amplitude and phase curves; screen: $(brief)"
     fi
+    # The drive's line has an upright mark in the legend, not the theory's level stroke.
+    expect "X in the response view: the drive's upright legend mark" \
+        "$($fc uprights "$tmp/drv/$base.svg" $MOTOR)" 1
+    # The energy view in --energy --figure's words.
+    keys e
+    wait_for 'kinetic'
+    keys X
+    wait_for 'figure name'
+    text e.pdf
+    keys Enter
+    if wait_for 'saved the figure as ./e.pdf'; then
+        $fc text "$tmp/drv/e.pdf" >"$tmp/e-text" 2>&1
+        grep -q 'dissipated' "$tmp/e-text" && ! grep -q 'damped' "$tmp/e-text" &&
+            grep -q '^time t (s)$' "$tmp/e-text" && pass ||
+            fail "X in the energy view: expected 'dissipated' and 'time t (s)': $(tr '\n' '|' <"$tmp/e-text")"
+    else
+        fail "X in the energy view: e.pdf not saved; screen: $(brief)"
+    fi
     # The modes view: the shape of the one mode, as --modes --figure draws it.
     keys m
     wait_for 'Modes'
@@ -193,8 +211,8 @@ if up driven; then
     if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $M1)" = 1 ]; then pass; else
         fail "X in the modes view: expected the mode's shape; screen: $(brief)"
     fi
-    [ "$(ls "$tmp/drv" | wc -l)" -eq 6 ] && pass ||
-        fail "X: expected three SVG and PNG pairs; found $(ls "$tmp/drv" | tr '\n' ' ')"
+    [ "$(ls "$tmp/drv" | grep -vc '^e\.pdf$')" -eq 6 ] && pass ||
+        fail "X: expected three SVG and PNG pairs and e.pdf; found $(ls "$tmp/drv" | tr '\n' ' ')"
 fi
 
 S=sweeping

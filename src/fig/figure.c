@@ -370,8 +370,8 @@ static void panel(cairo_t *cr, const struct fig_panel *p, double left, double to
 }
 
 /* The legend from x0 at baseline y, wrapped before right: a short stroke (a dot for
- * markers) in each entry's colour, then its text. Draws only when draw is true; returns
- * the baseline after its last line. */
+ * markers, upright for a line at one x) in each entry's colour, then its text. Draws only
+ * when draw is true; returns the baseline after its last line. */
 static double legend(cairo_t *cr, const struct fig_legend *lg, int nl, double x0, double right,
                      double y, bool draw)
 {
@@ -390,6 +390,10 @@ static double legend(cairo_t *cr, const struct fig_legend *lg, int nl, double x0
             if (e->dot) {
                 cairo_arc(cr, x + 7.5, y - 0.33 * LABEL_PT, MARKER_R + 0.4, 0.0, 2.0 * M_PI);
                 cairo_fill(cr);
+            } else if (e->upright) {
+                cairo_move_to(cr, x + 7.5, y - LABEL_PT);
+                cairo_line_to(cr, x + 7.5, y + 0.2 * LABEL_PT);
+                cairo_stroke(cr);
             } else {
                 cairo_move_to(cr, x, y - 0.33 * LABEL_PT);
                 cairo_line_to(cr, x + 15.0, y - 0.33 * LABEL_PT);

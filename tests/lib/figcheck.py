@@ -23,6 +23,8 @@
                                            joined by a line in the second curve of that
                                            colour (the phase panel: the last five gridlines,
                                            of 90 degrees each, give the scale)
+  figcheck.py uprights FILE.svg R,G,B      number of upright strokes under 20 points long in
+                                           that colour (a legend's mark for a line at one x)
   figcheck.py fills FILE.svg R,G,B         number of filled paths (markers) in that colour
   figcheck.py markers FILE.svg R,G,B       "N SMALLEST LARGEST": the markers (each filled
                                            sub-path) in that colour and their widths
@@ -307,6 +309,16 @@ def main():
             print(n)
         else:
             print('%d %.2f %.2f' % (len(widths), min(widths or [0]), max(widths or [0])))
+        return
+    if cmd == 'uprights':
+        n = 0
+        for el in ET.parse(sys.argv[2]).getroot().iter(SVG + 'path'):
+            if stroke_of(el) == rgb:
+                for sp in sub_paths(el.get('d', '')):
+                    pts = transformed(el, sp)
+                    n += (len(pts) == 2 and abs(pts[0][0] - pts[1][0]) < 1e-6 and
+                          0 < abs(pts[0][1] - pts[1][1]) < 20)
+        print(n)
         return
     if cmd == 'phasejump':
         root = ET.parse(sys.argv[2]).getroot()
