@@ -98,6 +98,18 @@ expect "$cmd: title" "$(title "$tmp/t.pdf")" "Lab 3: a chain of two"
 expect "$cmd: the PDF's title" "$(pdfinfo "$tmp/t.pdf" | sed -n 's/^Title: *//p')" "Lab 3: a chain of two"
 run --sweep 1:2:5 --figure "$tmp/t.svg" --figure-title "Lab 3: a chain of two" -o /dev/null
 expect "$cmd: exit status" "$rc" 0
+# The SVG's text is glyph outlines: its title is its <title> element, the XML's escapes
+# undone (the file parses).
+svg_title() {
+    python3 -c 'import sys, xml.etree.ElementTree as E
+t = E.parse(sys.argv[1]).getroot().find("{http://www.w3.org/2000/svg}title")
+print("" if t is None else t.text)' "$1" 2>&1
+}
+expect "$cmd: the SVG's title" "$(svg_title "$tmp/t.svg")" "Lab 3: a chain of two"
+run --headless --duration 1 --figure "$tmp/t.svg" --figure-title "Lab <3> & Zebra" -o /dev/null
+expect "$cmd: the SVG's title" "$(svg_title "$tmp/t.svg")" "Lab <3> & Zebra"
+run --modes --figure "$tmp/t.svg" -o /dev/null
+expect "$cmd: the SVG's title" "$(svg_title "$tmp/t.svg")" "Mode shapes"
 run -p resonance --modes --figure "$tmp/t.pdf" -o /dev/null
 $fc text "$tmp/t.pdf" | sed -n 2p | grep -qi '^resonance' && pass ||
     fail "$cmd: the subtitle should name the preset: $($fc text "$tmp/t.pdf" | sed -n 2p)"
@@ -160,6 +172,7 @@ expect "$cmd: exit status" "$rc" 0
 expect "$cmd: curves of mass 1's colour (x, v, a, kinetic)" "$($fc curves "$tmp/e.svg" $M1)" 4
 expect "$cmd: curves of the motor's colour (u, motor work)" "$($fc curves "$tmp/e.svg" $MOTOR)" 2
 $fc text "$tmp/e.pdf" >"$tmp/e.txt"
+grep -qx 'time t (s)' "$tmp/e.txt" && pass || fail "$cmd: no x axis title 'time t (s)'"
 for w in kinetic potential dissipated "motor work" contact "balance error"; do
     grep -q "$w" "$tmp/e.txt" && pass || fail "$cmd: no '$w' in the energy panel's legend"
 done

@@ -4,8 +4,9 @@
 # went. The displacement plot's figure, after 25 s shown in a 10 s window with a cursor,
 # read back from its PDF: a title with no key digit, axis titles with units on both axes,
 # the time axis absolute (about 15..25 s, as the screen's), the cursor's values written
-# (its time the readout's), the settings under the title; its SVG: the mass's curve, the
-# motor's only where it moves. The response and modes views saved too, and six instances
+# (its time the readout's), the settings under the title; with a second cursor close by,
+# both cursors' values, no text on another and all inside the plot; its SVG: the mass's
+# curve, the motor's only where it moves. The response and modes views saved too, and six instances
 # pressing X in the same second leave six pairs. A sweep's measured points: markers of one
 # small size in the figure, its state on the response view's border never cut.
 # Ends with "tui-figure: N passed, M failed".
@@ -123,6 +124,29 @@ if up cosine; then
     keys Escape
     wait_gone 'figure name'
     [ "$(ls "$tmp/fig" | wc -l)" -eq "$n" ] && pass || fail "X, Esc: files were written: $(ls "$tmp/fig" | tr '\n' ' ')"
+    # A second cursor a tenth of the window from the first: both cursors' values written,
+    # no text on another, each inside the plot (right of the y labels, left of the page's
+    # right margin: 160 mm less 12 pt).
+    keys '|'
+    sleep 0.3
+    keys X
+    wait_for 'figure name'
+    text x2.pdf
+    keys Enter
+    if wait_for 'saved the figure as ./x2.pdf'; then
+        $fc overlaps "$tmp/fig/x2.pdf" >"$tmp/x2-overlaps" 2>&1
+        [ -s "$tmp/x2-overlaps" ] && fail "X, two cursors: texts on each other: $(tr '\n' '|' <"$tmp/x2-overlaps")" ||
+            pass
+        $fc cursors "$tmp/fig/x2.pdf" >"$tmp/x2-cursors" 2>&1
+        left=$(sed -n 's/^plot //p' "$tmp/x2-cursors")
+        if [ "$(grep -c ' t = ' "$tmp/x2-cursors")" -eq 2 ] && [ "$(grep -c ' x1 = ' "$tmp/x2-cursors")" -eq 2 ] &&
+            awk -v l="$left" '$1 != "plot" && ($1 < l || $2 > 441.5) { bad = 1 } END { exit bad }' "$tmp/x2-cursors"
+        then pass; else
+            fail "X, two cursors: expected two cursors' t and x1 inside the plot: $(tr '\n' '|' <"$tmp/x2-cursors")"
+        fi
+    else
+        fail "X, two cursors: x2.pdf not saved; screen: $(brief)"
+    fi
 fi
 
 S=still
@@ -160,6 +184,24 @@ if up driven; then
     if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $M1)" -ge 2 ]; then pass; else
         fail "X in the response view: expected a figure with the amplitude and phase curves; screen: $(brief)"
     fi
+    # The drive's line has an upright mark in the legend, not the theory's level stroke.
+    expect "X in the response view: the drive's upright legend mark" \
+        "$($fc uprights "$tmp/drv/$base.svg" $MOTOR)" 1
+    # The energy view in --energy --figure's words.
+    keys e
+    wait_for 'kinetic'
+    keys X
+    wait_for 'figure name'
+    text e.pdf
+    keys Enter
+    if wait_for 'saved the figure as ./e.pdf'; then
+        $fc text "$tmp/drv/e.pdf" >"$tmp/e-text" 2>&1
+        grep -q 'dissipated' "$tmp/e-text" && ! grep -q 'damped' "$tmp/e-text" &&
+            grep -q '^time t (s)$' "$tmp/e-text" && pass ||
+            fail "X in the energy view: expected 'dissipated' and 'time t (s)': $(tr '\n' '|' <"$tmp/e-text")"
+    else
+        fail "X in the energy view: e.pdf not saved; screen: $(brief)"
+    fi
     # The modes view: the shape of the one mode, as --modes --figure draws it.
     keys m
     wait_for 'Modes'
@@ -169,8 +211,8 @@ if up driven; then
     if saved "$tmp/drv" && [ "$($fc curves "$tmp/drv/$base.svg" $M1)" = 1 ]; then pass; else
         fail "X in the modes view: expected the mode's shape; screen: $(brief)"
     fi
-    [ "$(ls "$tmp/drv" | wc -l)" -eq 6 ] && pass ||
-        fail "X: expected three SVG and PNG pairs; found $(ls "$tmp/drv" | tr '\n' ' ')"
+    [ "$(ls "$tmp/drv" | grep -vc '^e\.pdf$')" -eq 6 ] && pass ||
+        fail "X: expected three SVG and PNG pairs and e.pdf; found $(ls "$tmp/drv" | tr '\n' ' ')"
 fi
 
 S=sweeping

@@ -220,15 +220,15 @@ static double ylabel_width(cairo_t *cr, const struct fig_panel *p, double w, dou
     return most;
 }
 
-/* Mark m across the panel (x its axis, top and bottom the panel's): a dashed line, its
- * text beside it on a white ground, right of the line or, past the middle, left of it. */
-static void mark(cairo_t *cr, const struct fig_mark *m, const struct fig_axis *x, double top,
-                 double bottom)
+/* A cursor's text on the page: its ground's edges; x1 < x0 for a mark not shown. */
+struct mark_box {
+    double x0, y0, x1, y1;
+};
+
+/* A mark's dashed line across the panel (top to bottom) at page x at. */
+static void mark_line(cairo_t *cr, double at, double top, double bottom)
 {
     static const double dash[] = {2.0, 2.0};
-    if (!fig_axis_ok(x, m->x))
-        return;
-    double at = fig_axis_map(x, m->x), widest = 0.0;
     set_color(cr, FIG_WALL);
     cairo_set_line_width(cr, 0.8);
     cairo_set_dash(cr, dash, 2, 0.0);
@@ -236,18 +236,102 @@ static void mark(cairo_t *cr, const struct fig_mark *m, const struct fig_axis *x
     cairo_line_to(cr, at, bottom);
     cairo_stroke(cr);
     cairo_set_dash(cr, NULL, 0, 0.0);
+}
+
+/* Mark m's lines of text in box b, on a white ground. */
+static void mark_text(cairo_t *cr, const struct fig_mark *m, const struct mark_box *b)
+{
     font(cr, TICK_PT, false);
-    for (int i = 0; i < m->nlines; i++)
-        widest = fmax(widest, text_width(cr, m->line[i]));
-    bool left = at > 0.5 * (x->a + x->b);
-    double tx = left ? at - 3.0 - widest : at + 3.0, ty = top + 2.0;
     cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.85);
-    cairo_rectangle(cr, tx - 1.0, ty, widest + 2.0, m->nlines * LINE * TICK_PT + 2.0);
+    cairo_rectangle(cr, b->x0, b->y0, b->x1 - b->x0, b->y1 - b->y0);
     cairo_fill(cr);
     for (int i = 0; i < m->nlines; i++) {
         set_color(cr, m->color[i]);
-        text_at(cr, tx, ty + (i + 1) * LINE * TICK_PT - 1.0, m->line[i], 0.0);
+        text_at(cr, b->x0 + 1.0, b->y0 + (i + 1) * LINE * TICK_PT - 1.0, m->line[i], 0.0);
     }
+}
+
+/* Whether box b for mark k of n is free: inside the plot (x its axis, bottom its lower
+ * edge), meeting none of the k boxes placed before it and, with lines, crossing none of
+ * the other marks' lines at[]. */
+static bool box_free(const struct mark_box *b, int k, int n, const struct mark_box *placed,
+                     const double *at, const struct fig_axis *x, double bottom, bool lines)
+{
+    if (b->x0 < x->a || b->x1 > x->b || b->y1 > bottom)
+        return false;
+    for (int j = 0; j < n; j++) {
+        const struct mark_box *o = &placed[j];
+        if (j < k && o->x0 < b->x1 && b->x0 < o->x1 && o->y0 < b->y1 && b->y0 < o->y1)
+            return false;
+        if (lines && j != k && at[j] > b->x0 && at[j] < b->x1)
+            return false;
+    }
+    return true;
+}
+
+/* A free place (box_free) for mark k of n's text, w x h points, into b: at the top, on
+ * the side left says then the other, then a row lower, and so on; first crossing no other
+ * mark's line, then crossing them if need be. False where none is free. */
+static bool free_place(int k, int n, double w, double h, bool left, const double *at,
+                       const struct mark_box *placed, const struct fig_axis *x, double top,
+                       double bottom, struct mark_box *b)
+{
+    for (int pass = 0; pass < 2; pass++)
+        for (int row = 0; top + 2.0 + row * (h + 2.0) + h <= bottom; row++)
+            for (int side = 0; side < 2; side++) {
+                bool l = side ? !left : left;
+                b->x0 = l ? at[k] - 4.0 - w : at[k] + 2.0, b->x1 = b->x0 + w + 2.0;
+                b->y0 = top + 2.0 + row * (h + 2.0), b->y1 = b->y0 + h;
+                if (box_free(b, k, n, placed, at, x, bottom, pass == 0))
+                    return true;
+            }
+    return false;
+}
+
+/* Where each of the n marks' text goes (box[k]): beside its line, at the top, right of it
+ * or, past the middle, left of it; where that meets another mark's text or line or leaves
+ * the plot, elsewhere (free_place); where nothing is free, the first place, kept inside
+ * the plot. at[k]: each line's page x, NAN for a mark off the axis. */
+static void place_marks(cairo_t *cr, const struct fig_mark *m, int n, const double *at,
+                        const struct fig_axis *x, double top, double bottom, struct mark_box *box)
+{
+    font(cr, TICK_PT, false);
+    for (int k = 0; k < n; k++) {
+        double w = 0.0, h = m[k].nlines * LINE * TICK_PT + 2.0;
+        box[k] = (struct mark_box){0.0, 0.0, -1.0, 0.0};
+        if (isnan(at[k]))
+            continue;
+        for (int i = 0; i < m[k].nlines; i++)
+            w = fmax(w, text_width(cr, m[k].line[i]));
+        bool left = at[k] > 0.5 * (x->a + x->b);
+        struct mark_box b;
+        if (!free_place(k, n, w, h, left, at, box, x, top, bottom, &b)) {
+            b.x0 = left ? at[k] - 4.0 - w : at[k] + 2.0;
+            b.x0 = fmax(x->a, fmin(b.x0, x->b - w - 2.0));
+            b.x1 = b.x0 + w + 2.0, b.y0 = top + 2.0, b.y1 = b.y0 + h;
+        }
+        box[k] = b;
+    }
+}
+
+/* The marks of panel p across it (x its axis, top and bottom its edges): the dashed
+ * lines, then each one's values beside it (place_marks). */
+static void marks(cairo_t *cr, const struct fig_panel *p, const struct fig_axis *x, double top,
+                  double bottom)
+{
+    enum { MAX = 8 };
+    double at[MAX];
+    struct mark_box box[MAX];
+    int n = p->nmarks < MAX ? p->nmarks : MAX;
+    for (int k = 0; k < n; k++) {
+        at[k] = fig_axis_ok(x, p->marks[k].x) ? fig_axis_map(x, p->marks[k].x) : NAN;
+        if (!isnan(at[k]))
+            mark_line(cr, at[k], top, bottom);
+    }
+    place_marks(cr, p->marks, n, at, x, top, bottom, box);
+    for (int k = 0; k < n; k++)
+        if (box[k].x1 > box[k].x0)
+            mark_text(cr, &p->marks[k], &box[k]);
 }
 
 /* Panel p in the box (left, top, width, height) of its plot area; margin: the room left of
@@ -268,8 +352,7 @@ static void panel(cairo_t *cr, const struct fig_panel *p, double left, double to
     for (int s = 0; s < p->nseries; s++)
         series(cr, &p->series[s], &x, &y);
     cairo_restore(cr);
-    for (int k = 0; k < p->nmarks; k++)
-        mark(cr, &p->marks[k], &x, top, top + h);
+    marks(cr, p, &x, top, top + h);
     set_color(cr, FIG_WALL);
     cairo_set_line_width(cr, 0.7);
     cairo_rectangle(cr, left, top, w, h);
@@ -287,8 +370,8 @@ static void panel(cairo_t *cr, const struct fig_panel *p, double left, double to
 }
 
 /* The legend from x0 at baseline y, wrapped before right: a short stroke (a dot for
- * markers) in each entry's colour, then its text. Draws only when draw is true; returns
- * the baseline after its last line. */
+ * markers, upright for a line at one x) in each entry's colour, then its text. Draws only
+ * when draw is true; returns the baseline after its last line. */
 static double legend(cairo_t *cr, const struct fig_legend *lg, int nl, double x0, double right,
                      double y, bool draw)
 {
@@ -307,6 +390,10 @@ static double legend(cairo_t *cr, const struct fig_legend *lg, int nl, double x0
             if (e->dot) {
                 cairo_arc(cr, x + 7.5, y - 0.33 * LABEL_PT, MARKER_R + 0.4, 0.0, 2.0 * M_PI);
                 cairo_fill(cr);
+            } else if (e->upright) {
+                cairo_move_to(cr, x + 7.5, y - LABEL_PT);
+                cairo_line_to(cr, x + 7.5, y + 0.2 * LABEL_PT);
+                cairo_stroke(cr);
             } else {
                 cairo_move_to(cr, x, y - 0.33 * LABEL_PT);
                 cairo_line_to(cr, x + 15.0, y - 0.33 * LABEL_PT);

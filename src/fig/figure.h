@@ -103,6 +103,8 @@ struct fig_legend {
     int color;
     bool dashed;
     bool dot;      /* a marker, not a stroke (points measured) */
+    bool upright;  /* an upright stroke: a line across the panel at one x (the drive's
+                    * frequency), told from a curve's level stroke */
 };
 
 /* A page: title (and the settings under it, wrapped), legend, panels stacked top to

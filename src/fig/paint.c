@@ -7,6 +7,20 @@
 
 #include "figure.h"
 
+/* Where points p[0..n) lie on a line across axis a (0: x, 1: y; scale: pixels a dot)
+ * that spans less than a pixel: the middle of the pixel under their mean; else NAN. */
+static double level(const double *p, int n, int a, double scale)
+{
+    double lo = INFINITY, hi = -INFINITY, sum = 0.0;
+    for (int j = 0; j < n; j++) {
+        double v = (p[2 * j + a] + 0.5) * scale;
+        lo = fmin(lo, v), hi = fmax(hi, v), sum += v;
+    }
+    if (n < 2 || !(hi - lo < 1.0))
+        return NAN;
+    return floor(sum / n) + 0.5;
+}
+
 void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double ch,
                        const struct fig_palette *pal)
 {
@@ -43,11 +57,20 @@ void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double c
             cairo_fill(cr);
             continue;
         }
-        cairo_move_to(cr, (p[0] + 0.5) * sx, (p[1] + 0.5) * sy);
-        for (int j = 1; j < s->count; j++)
-            cairo_line_to(cr, (p[2 * j] + 0.5) * sx, (p[2 * j + 1] + 0.5) * sy);
-        if (s->count == 1)
-            cairo_line_to(cr, (p[0] + 0.5) * sx, (p[1] + 0.5) * sy);
+        /* A line upright or level to within a pixel (the drive's frequency, a constant)
+         * on the middle of one column or row of pixels: on a boundary between two it
+         * would be two paler ones, not the colour of its legend's mark. */
+        double snap_x = level(p, s->count, 0, sx), snap_y = level(p, s->count, 1, sy);
+        int n = s->count > 1 ? s->count : 2; /* a lone point: a line to itself, a dot */
+        for (int j = 0; j < n; j++) {
+            const double *q = p + 2 * (j < s->count ? j : 0);
+            double x = isnan(snap_x) ? (q[0] + 0.5) * sx : snap_x;
+            double y = isnan(snap_y) ? (q[1] + 0.5) * sy : snap_y;
+            if (j == 0)
+                cairo_move_to(cr, x, y);
+            else
+                cairo_line_to(cr, x, y);
+        }
         cairo_set_line_width(cr, lw);
         cairo_set_dash(cr, dash, s->kind == STROKE_DASHED ? 2 : 0, 0.0);
         cairo_stroke(cr);

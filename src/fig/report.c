@@ -33,11 +33,11 @@ static int mass_legend(struct fig_legend *lg, char (*text)[48], int n)
     int k = 0;
     for (int i = 0; i < n && i < 10; i++, k++) {
         snprintf(text[k], sizeof text[k], "mass %d", i + 1);
-        lg[k] = (struct fig_legend){text[k], FIG_MASS + i % 10, false, false};
+        lg[k] = (struct fig_legend){.text = text[k], .color = FIG_MASS + i % 10};
     }
     if (n > 10) {
         snprintf(text[k], sizeof text[k], "masses 11–%d: the same colours again", n);
-        lg[k] = (struct fig_legend){text[k], FIG_GRID, false, false};
+        lg[k] = (struct fig_legend){.text = text[k], .color = FIG_GRID};
         k++;
     }
     return k;
@@ -64,10 +64,11 @@ static void energy_panel(const struct report_data *d, int first, struct fig_seri
     for (int i = 0; i < REPORT_E_TERMS; i++)
         s[i] = line_of(d, first + i, fig_energy_color(i), i == REPORT_E_TERMS - 1);
     for (int i = 0; i < REPORT_E_TERMS - 1; i++)
-        lg[i] = (struct fig_legend){name[i], fig_energy_color(i), false, false};
+        lg[i] = (struct fig_legend){.text = name[i], .color = fig_energy_color(i)};
     int last = REPORT_E_TERMS - 1; /* the balance's error */
     snprintf(error_text, len, "balance error (largest %.2g J)", largest(d, first + last));
-    lg[last] = (struct fig_legend){error_text, fig_energy_color(last), true, false};
+    lg[last] = (struct fig_legend){.text = error_text, .color = fig_energy_color(last),
+                                   .dashed = true};
 }
 
 int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, bool motor,
@@ -87,7 +88,7 @@ int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, b
             s[k++] = line_of(d, 3 * n, FIG_MOTOR, true);
         for (int i = 0; i < n; i++)
             s[k++] = line_of(d, q * n + i, FIG_MASS + i % 10, false);
-        p[q] = (struct fig_panel){.xlabel = "t (s)", .ylabel = ylabel[q], .xfixed = true,
+        p[q] = (struct fig_panel){.xlabel = "time t (s)", .ylabel = ylabel[q], .xfixed = true,
                                   .xlo = t0, .xhi = t_end, .series = s + first,
                                   .nseries = k - first};
     }
@@ -95,10 +96,10 @@ int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, b
     char text[11][48], error_text[64];
     int nl = mass_legend(lg, text, n);
     if (motor)
-        lg[nl++] = (struct fig_legend){"motor u(t)", FIG_MOTOR, true, false};
+        lg[nl++] = (struct fig_legend){.text = "motor u(t)", .color = FIG_MOTOR, .dashed = true};
     if (energy) {
         energy_panel(d, 3 * n + 1, s + k, elg, error_text, sizeof error_text);
-        p[3] = (struct fig_panel){.xlabel = "t (s)", .ylabel = ylabel[3], .xfixed = true,
+        p[3] = (struct fig_panel){.xlabel = "time t (s)", .ylabel = ylabel[3], .xfixed = true,
                                   .xlo = t0, .xhi = t_end, .series = s + k,
                                   .nseries = REPORT_E_TERMS, .legend = elg,
                                   .nlegend = REPORT_E_TERMS};
@@ -136,7 +137,7 @@ int report_modes(FILE *fp, enum fig_format f, const struct model *m, const doubl
         s[j] = (struct fig_series){.x = x, .y = y, .stride = 1, .count = n + 1 + fixed,
                                    .color = FIG_MASS + j % 10, .markers = n <= 40};
         snprintf(text[j], sizeof text[j], "mode %d: %.*f Hz", j + 1, dec, freq[j]);
-        lg[j] = (struct fig_legend){text[j], FIG_MASS + j % 10, false, false};
+        lg[j] = (struct fig_legend){.text = text[j], .color = FIG_MASS + j % 10};
     }
     struct fig_panel p = {.xlabel = "mass (0: the left wall)",
                           .ylabel = "shape (largest |x| = 1)", .xfixed = true, .xwhole = true,

@@ -117,26 +117,28 @@ static void add_legend(const struct fig_chart *c, const struct fig_series *s, in
             else if (solid < 0 || (s[solid].no_line && !s[i].no_line))
                 solid = i; /* a line rather than points */
         }
-        if (name[0] && solid >= 0 && *nl < LEGEND_MAX - 3)
-            add_once(lg, nl, (struct fig_legend){name, col, s[solid].dashed, s[solid].no_line});
+        if (name[0] && solid >= 0 && *nl < LEGEND_MAX - 3) /* the drive's line: upright */
+            add_once(lg, nl, (struct fig_legend){name, col, s[solid].dashed, s[solid].no_line,
+                                                 s[solid].vline});
     }
     bool points = false;
     for (int i = 0; i < ns; i++)
         points |= s[i].no_line;
     if (c->report->branches) { /* the jump view's: no ghost, two sweeps */
-        add_once(lg, nl, (struct fig_legend){"harmonic balance, stable", FIG_WALL, false,
-                                             false});
-        add_once(lg, nl, (struct fig_legend){"unstable", FIG_WALL, true, false});
-        add_once(lg, nl, (struct fig_legend){"measured: up large, down small", FIG_WALL,
-                                             false, true});
+        add_once(lg, nl,
+                 (struct fig_legend){.text = "harmonic balance, stable", .color = FIG_WALL});
+        add_once(lg, nl,
+                 (struct fig_legend){.text = "unstable", .color = FIG_WALL, .dashed = true});
+        add_once(lg, nl, (struct fig_legend){.text = "measured: up large, down small",
+                                             .color = FIG_WALL, .dot = true});
         return;
     }
     if (ghost)
-        add_once(lg, nl, (struct fig_legend){"ghost: dashed, each mass's colour", FIG_MASS,
-                                             true, false});
+        add_once(lg, nl, (struct fig_legend){.text = "ghost: dashed, each mass's colour",
+                                             .color = FIG_MASS, .dashed = true});
     if (points) { /* a sweep's: the points measured on the lines of the theory */
-        add_once(lg, nl, (struct fig_legend){"measured", FIG_WALL, false, true});
-        add_once(lg, nl, (struct fig_legend){"linear theory", FIG_WALL, false, false});
+        add_once(lg, nl, (struct fig_legend){.text = "measured", .color = FIG_WALL, .dot = true});
+        add_once(lg, nl, (struct fig_legend){.text = "linear theory", .color = FIG_WALL});
     }
 }
 

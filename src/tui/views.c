@@ -104,9 +104,12 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
                "Energy (J)", "s", NULL, 0);
     chart_report(c, "Energy balance", "time t (s)", "energy (J)");
     c->report.time = true;
+    /* The report's words are --energy --figure's (the screen's "damped" is short). */
+    static const char *const report_names[TRAIL_ENERGIES] = {"kinetic", "potential",
+                                                             "dissipated", "motor work",
+                                                             "contact"};
     for (int q = 0; q < TRAIL_ENERGIES; q++)
-        snprintf(c->report.name[colors[q]], sizeof c->report.name[0], "%s",
-                 q == TRAIL_WORK ? "motor work" : names[q]);
+        snprintf(c->report.name[colors[q]], sizeof c->report.name[0], "%s", report_names[q]);
     /* Above the data: each energy now, in its colour, then how good the balance is. */
     struct rect f = c->frame;
     const double vals[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,

@@ -23,6 +23,8 @@
                                            joined by a line in the second curve of that
                                            colour (the phase panel: the last five gridlines,
                                            of 90 degrees each, give the scale)
+  figcheck.py uprights FILE.svg R,G,B      number of upright strokes under 20 points long in
+                                           that colour (a legend's mark for a line at one x)
   figcheck.py fills FILE.svg R,G,B         number of filled paths (markers) in that colour
   figcheck.py markers FILE.svg R,G,B       "N SMALLEST LARGEST": the markers (each filled
                                            sub-path) in that colour and their widths
@@ -34,10 +36,18 @@
   figcheck.py textsize FILE.pdf            the smallest text's size in points (the scale of
                                            the text matrices in the page's content)
   figcheck.py text FILE.pdf                the words, one line of the page a line
+  figcheck.py overlaps FILE.pdf            every two words whose boxes meet (by more than
+                                           0.2 pt each way), a line a pair: none on a page
+                                           whose texts are apart
+  figcheck.py cursors FILE.pdf             each cursor's lines of text ("t = ...", "x1 =
+                                           ...", runs of words less than 6 pt apart on a
+                                           line): "XMIN XMAX YMIN YMAX TEXT", then a line
+                                           "plot LEFT": the right edge of the y tick labels
 The PDF's words come from pdftotext -bbox (poppler-utils).
 The SVG is parsed as XML; colours are cairo's rgb(p%,q%,r%) or rgb(r,g,b)."""
 import csv
 import re
+import signal
 import struct
 import sys
 import xml.etree.ElementTree as ET
@@ -158,9 +168,45 @@ def axis_titles(words, word):
     return sorted(set(round(w[1], 2) for w in words if w[4] == word))
 
 
+def text_runs(words):
+    """The words in runs: on one line (the same top), less than 6 pt apart; each run
+    (xMin, yMin, xMax, yMax, text)."""
+    rows, runs = {}, []
+    for w in words:
+        rows.setdefault(round(w[1], 1), []).append(w)
+    for y in sorted(rows):
+        run = None
+        for w in sorted(rows[y]):
+            if run and w[0] - run[2] < 6.0:
+                run = (run[0], min(run[1], w[1]), w[2], max(run[3], w[3]), run[4] + ' ' + w[4])
+            else:
+                if run:
+                    runs.append(run)
+                run = w
+        runs.append(run)
+    return runs
+
+
+def text_command(cmd, words):
+    """overlaps and cursors: where the texts on a page lie."""
+    if cmd == 'overlaps':
+        for i, a in enumerate(words):
+            for b in words[i + 1:]:
+                if a[0] + 0.2 < b[2] and b[0] + 0.2 < a[2] and a[1] + 0.2 < b[3] and b[1] + 0.2 < a[3]:
+                    print('%s [%.1f..%.1f, %.1f..%.1f] meets %s [%.1f..%.1f, %.1f..%.1f]' %
+                          (a[4], a[0], a[2], a[1], a[3], b[4], b[0], b[2], b[1], b[3]))
+    elif cmd == 'cursors':
+        for r in text_runs(words):
+            if re.match(r'(t|[xva][0-9]+) = ', r[4]):
+                print('%.1f %.1f %.1f %.1f %s' % r)
+        print('plot %.1f' % y_column([w for w in words if is_number(w[4])]))
+
+
 def pdf_command(cmd, path, arg):
     words = pdf_words(path)
-    if cmd == 'textsize':
+    if cmd in ('overlaps', 'cursors'):
+        text_command(cmd, words)
+    elif cmd == 'textsize':
         # The size of every run of text: its text matrix's scale (cairo sets the font at
         # size 1 and scales by Tm, under a page transform of scale 1).
         data = open(path, 'rb').read()
@@ -224,7 +270,7 @@ def main():
     if cmd == 'png':
         print('%d %d' % png_size(sys.argv[2]))
         return
-    if cmd in ('textsize', 'text', 'xticks', 'yticks'):
+    if cmd in ('textsize', 'text', 'xticks', 'yticks', 'overlaps', 'cursors'):
         pdf_command(cmd, sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None)
         return
     rgb = tuple(int(v) for v in sys.argv[3].split(','))
@@ -263,6 +309,16 @@ def main():
             print(n)
         else:
             print('%d %.2f %.2f' % (len(widths), min(widths or [0]), max(widths or [0])))
+        return
+    if cmd == 'uprights':
+        n = 0
+        for el in ET.parse(sys.argv[2]).getroot().iter(SVG + 'path'):
+            if stroke_of(el) == rgb:
+                for sp in sub_paths(el.get('d', '')):
+                    pts = transformed(el, sp)
+                    n += (len(pts) == 2 and abs(pts[0][0] - pts[1][0]) < 1e-6 and
+                          0 < abs(pts[0][1] - pts[1][1]) < 20)
+        print(n)
         return
     if cmd == 'phasejump':
         root = ET.parse(sys.argv[2]).getroot()
@@ -332,4 +388,5 @@ def main():
         print('%d %d %.6g %.6g %.3g' % (len(pts), len(want), ry, c, off))
 
 
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # a reader that stops early (head) is no error
 main()
