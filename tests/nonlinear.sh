@@ -100,6 +100,19 @@ if grep -q '^ok modes (linearised at rest):' "$out" &&
     fail "plain set spring-cubic: $(tr '\n' '|' <"$out" | head -c 500)"
 fi
 
+# A simulated sweep of a linear chain settles to the steady state the linear theory
+# gives, each amplitude within 0.1 % (the point is steady to 0.1 %), also where a drive
+# period is no whole number of steps (0.3 to 2 Hz at dt 0.01).
+run -n 2 --damping 0.3 --sweep-run up 0.3:2:18
+"$SPRINGSIM" -n 2 --damping 0.3 --sweep 0.3:2:18 >"$tmp/theory.csv"
+worst=$(paste -d, "$out" "$tmp/theory.csv" | awk -F, 'NR > 1 { for (i = 4; i <= 5; i++) {
+        e = ($i - $(i + 5)) / $(i + 5); e = e < 0 ? -e : e; if (e > w) w = e } }
+    END { print w + 0 }')
+if [ "$rc" -eq 0 ] && [ "$(wc -l <"$out")" -eq 19 ] &&
+    awk -v w="$worst" 'BEGIN { exit !(w <= 1e-3) }'; then pass; else
+    fail "sweep-run of a linear chain: worst amplitude $worst of the theory's (at most 1e-3)"
+fi
+
 # The linear theory says it is the linearised chain's wherever a cubic chain meets it: a
 # stability warning at a dt past the limit (headless, and plain after set dt), --modes.
 run -n 1 --spring 2000 --spring-cubic 10 --headless --dt 0.05 --duration 0.1
