@@ -312,7 +312,11 @@ struct clear_ctx {
     struct onestep *o;
 };
 
-#define MODES_CLEAR 1e-6
+/* The modes here are dgeev's eigenvalues of A (stable_clear runs up to ONESTEP_MAX masses,
+ * within LIMITS_DGEEV_MAX), good to the rounding of that solve, about 1e-15 of |lambda|:
+ * 1e-12 is a thousand times that, and leaves S's radius (a dgeev of its own, 2N x 2N, at
+ * every h) to the last dozen halvings instead of the last thirty. */
+#define MODES_CLEAR 1e-12
 
 static bool stable_clear(void *ctx, double h)
 {
