@@ -345,7 +345,7 @@ static int advance(struct sim *s, double t0, double t1)
     return 0;
 }
 
-/* The common step, taken bare (stepper_rk4_bare): RK4 on a chain it fits, no contact
+/* The common step, taken bare: RK4 in one piece (a sine drive or none), no contact
  * resting. When the bound finds a gap that may close inside the step, the step is taken
  * again from its start by advance, which finds the same and locates it. */
 static int bare(struct sim *s, double t0, double t1)
@@ -353,7 +353,7 @@ static int bare(struct sim *s, double t0, double t1)
     const struct model *m = sim_model(s);
     struct drive d;
     drive_at(&d, m, 0.5 * (t0 + t1));
-    stepper_rk4_bare(s->st, &d, t0, t1, s->y);
+    stepper_rk4(s->st, &d, t0, t1, s->y);
     if (!s->lim.on)
         return 0;
     double h = t1 - t0, h2 = h * h;
@@ -365,7 +365,7 @@ static int bare(struct sim *s, double t0, double t1)
     if (!events_may_close(&p))
         return 0;
     memcpy(s->y, s->y0, (size_t)STEPPER_LEN(s->n) * sizeof *s->y);
-    stepper_undo_bare(s->st);
+    stepper_undo_rk4(s->st);
     return advance(s, t0, t1);
 }
 
@@ -390,8 +390,9 @@ enum sim_status sim_step(struct sim *s)
     double contact0 = s->contact;
     memcpy(s->y0, s->y, (size_t)len * sizeof *s->y);
     s->last_contacts = s->last_capped = 0;
+    const struct model *m = sim_model(s);
     bool bare_fits = s->integrator == INTEGRATOR_RK4 && !s->rest->active &&
-                     stepper_bare_fits(sim_model(s));
+                     (m->motor.wave == WAVE_SINE || !model_driven(m));
     if ((bare_fits ? bare(s, t0, t1) : advance(s, t0, t1)) != 0 || !all_finite(s->y, len)) {
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
         s->contact = contact0;

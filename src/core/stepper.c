@@ -35,7 +35,7 @@ struct stepper {
     double *tri;           /* 3N: Verlet's tridiagonal solve with spring dampers */
     struct exact *exact;   /* the exact stepper's workspace, made when first needed */
     struct rotation rot;   /* the sine drive's rotations */
-    struct rotation rot_before; /* as they were before the last bare step */
+    struct rotation rot_before; /* as they were before the last rk4 step */
     double end_u, end_du;  /* the drive at the end of the last step taken */
     double start_u, start_du; /* and at its start */
     const struct rest *rest;  /* resting contacts held as constraints, or NULL */
@@ -197,13 +197,33 @@ const double *stepper_inv_m(const struct stepper *st)
     return st->inv_m;
 }
 
-/* Resting contacts: the accelerations dy + n made the constrained ones, and the piston's
- * push on its cluster booked as the motor's work. */
-static void constrain(const struct stepper *st, double u, double du, double *dy)
+/* Resting contacts: the accelerations a made the constrained ones, and the piston's push
+ * on its cluster booked as the motor's work (*dw). */
+static void constrain(const struct stepper *st, double u, double du, double *a, double *dw)
 {
-    int n = st->n;
-    double push = rest_project(st->rest, st->model, dy + n, st->ddu_factor * u);
-    dy[2 * n + 1] -= push * du;
+    double push = rest_project(st->rest, st->model, a, st->ddu_factor * u);
+    *dw -= push * du;
+}
+
+/* One stage of a step: the accelerations a at (x, v) with the right end at u moving at du
+ * and the force input at f, the dampers' power *dd, the motor's *dw and the force's *dp
+ * (the rates of D, W and P). Inline: the inner loop of every stepper. */
+__attribute__((always_inline)) static inline void
+stage(const struct stepper *st, const double *x, const double *v, double u, double du,
+      double f, double *a, double *dd, double *dw, double *dp)
+{
+    const double *inv_m = st->inv_m;
+    if (!inv_m)
+        __builtin_unreachable(); /* so the inlined rates multiply, with no test a mass */
+    model_rates(st->model, inv_m, x, v, u, du, a, dd, dw);
+    *dp = 0.0;
+    if (f != 0.0) {
+        int k = st->model->force_on;
+        a[k] += f * inv_m[k];
+        *dp = f * v[k];
+    }
+    if (st->constrained)
+        constrain(st, u, du, a, dw);
 }
 
 /* dy/dt at state y with the right end at u moving at du and the force input at f. */
@@ -213,15 +233,7 @@ static void deriv(const struct stepper *st, const double *y, double u, double du
     int n = st->n;
     for (int i = 0; i < n; i++) /* a loop: for a short chain memcpy's call costs more */
         dy[i] = y[n + i];
-    model_rates(st->model, st->inv_m, y, y + n, u, du, dy + n, &dy[2 * n], &dy[2 * n + 1]);
-    dy[2 * n + 2] = 0.0;
-    if (f != 0.0) {
-        int k = st->model->force_on;
-        dy[n + k] += f * st->inv_m[k];
-        dy[2 * n + 2] = f * y[n + k];
-    }
-    if (st->constrained)
-        constrain(st, u, du, dy);
+    stage(st, y, y + n, u, du, f, dy + n, &dy[2 * n], &dy[2 * n + 1], &dy[2 * n + 2]);
 }
 
 /* The sine drive u = A sin(th), du = A w cos(th) at a, a + h/2 and a + h, with one
@@ -282,55 +294,11 @@ static void drive3(struct stepper *st, const struct drive *d, double a, double b
     }
 }
 
-/* y += h/6 (k1 + 2 k2 + 2 k3 + k4). */
+/* Classic RK4, y += h/6 (k1 + 2 k2 + 2 k3 + k4), with the stages folded together: x' = v
+ * needs no copy, and the books (D, W, P), which no rate reads, no stage arguments. The
+ * sum builds up in acc as the stages come, each pass also making the next stage's
+ * argument. */
 static void rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
-{
-    int len = STEPPER_LEN(st->n);
-    double h = b - a, h2 = 0.5 * h, u[3], du[3], f[3];
-    double *tmp = st->tmp, *acc = st->k1, *k = st->k2;
-    drive3(st, d, a, b, u, du, f);
-    st->start_u = u[0], st->start_du = du[0];
-    st->end_u = u[2], st->end_du = du[2];
-    /* The sum k1 + 2 k2 + 2 k3 + k4 builds up in acc as the stages come, each loop also
-     * making the next stage's argument: four passes over the state instead of seven. */
-    deriv(st, y, u[0], du[0], f[0], acc);
-    for (int i = 0; i < len; i++)
-        tmp[i] = y[i] + h2 * acc[i];
-    deriv(st, tmp, u[1], du[1], f[1], k);
-    for (int i = 0; i < len; i++) {
-        acc[i] += 2.0 * k[i];
-        tmp[i] = y[i] + h2 * k[i];
-    }
-    deriv(st, tmp, u[1], du[1], f[1], k);
-    for (int i = 0; i < len; i++) {
-        acc[i] += 2.0 * k[i];
-        tmp[i] = y[i] + h * k[i];
-    }
-    deriv(st, tmp, u[2], du[2], f[2], k);
-    double h6 = h / 6.0;
-    for (int i = 0; i < len; i++)
-        y[i] += h6 * (acc[i] + k[i]);
-}
-
-bool stepper_bare_fits(const struct model *m)
-{
-    return m->force == 0.0 && !m->spring_damped && !m->cubic &&
-           (m->motor.wave == WAVE_SINE || !model_driven(m));
-}
-
-/* One stage of the bare step: the accelerations a at (x, v), the dampers' power *d and
- * the motor's *w. */
-__attribute__((always_inline)) static inline void
-bare_rates(const struct stepper *st, const double *x, const double *v, double u, double du,
-           double *a, double *d, double *w)
-{
-    const double *inv_m = st->inv_m;
-    if (!inv_m)
-        __builtin_unreachable(); /* so the inlined rates multiply, with no test a mass */
-    model_rates(st->model, inv_m, x, v, u, du, a, d, w);
-}
-
-void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
     int n = st->n;
     double h = b - a, h2 = 0.5 * h, u[3], du[3], f[3];
@@ -344,16 +312,14 @@ void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, doubl
     drive3(st, d, a, b, u, du, f);
     st->start_u = u[0], st->start_du = du[0];
     st->end_u = u[2], st->end_du = du[2];
-    /* rk4()'s arithmetic, operation for operation: x' = v needs no copy, and the books,
-     * which no rate reads, need no stage arguments. */
-    double d0, w0, dk, wk;
-    bare_rates(st, x, v, u[0], du[0], acc + n, &d0, &w0);
+    double d0, w0, p0, dk, wk, pk;
+    stage(st, x, v, u[0], du[0], f[0], acc + n, &d0, &w0, &p0);
     for (int i = 0; i < n; i++) {
         tx[i] = x[i] + h2 * v[i];
         tv[i] = v[i] + h2 * acc[n + i];
     }
-    bare_rates(st, tx, tv, u[1], du[1], kv, &dk, &wk);
-    double sd = d0 + 2.0 * dk, sw = w0 + 2.0 * wk;
+    stage(st, tx, tv, u[1], du[1], f[1], kv, &dk, &wk, &pk);
+    double sd = d0 + 2.0 * dk, sw = w0 + 2.0 * wk, sp = p0 + 2.0 * pk;
     for (int i = 0; i < n; i++) {
         double vi = tv[i];
         acc[i] = v[i] + 2.0 * vi;
@@ -361,8 +327,8 @@ void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, doubl
         tx[i] = x[i] + h2 * vi;
         tv[i] = v[i] + h2 * kv[i];
     }
-    bare_rates(st, tx, tv, u[1], du[1], kv, &dk, &wk);
-    sd += 2.0 * dk, sw += 2.0 * wk;
+    stage(st, tx, tv, u[1], du[1], f[1], kv, &dk, &wk, &pk);
+    sd += 2.0 * dk, sw += 2.0 * wk, sp += 2.0 * pk;
     for (int i = 0; i < n; i++) {
         double vi = tv[i];
         acc[i] += 2.0 * vi;
@@ -370,7 +336,7 @@ void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, doubl
         tx[i] = x[i] + h * vi;
         tv[i] = v[i] + h * kv[i];
     }
-    bare_rates(st, tx, tv, u[2], du[2], kv, &dk, &wk);
+    stage(st, tx, tv, u[2], du[2], f[2], kv, &dk, &wk, &pk);
     double h6 = h / 6.0;
     for (int i = 0; i < n; i++) {
         x[i] += h6 * (acc[i] + tv[i]);
@@ -378,10 +344,17 @@ void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, doubl
     }
     y[2 * n] += h6 * (sd + dk);
     y[2 * n + 1] += h6 * (sw + wk);
-    y[2 * n + 2] += h6 * (0.0 + 0.0); /* the force's work: no force, as rk4() adds it */
+    y[2 * n + 2] += h6 * (sp + pk);
 }
 
-void stepper_undo_bare(struct stepper *st)
+void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
+{
+    st->ddu_factor = drive_ddu_factor(d);
+    st->constrained = st->rest && st->rest->active;
+    rk4(st, d, a, b, y);
+}
+
+void stepper_undo_rk4(struct stepper *st)
 {
     st->rot = st->rot_before;
 }

@@ -66,18 +66,13 @@ struct rest;
  * stepper reads them, the caller keeps them. */
 void stepper_set_rest(struct stepper *st, const struct rest *r);
 
-/* Whether stepper_rk4_bare may take a step of m: no force input, no spring dampers, no
- * cubic springs, and the drive a sine or none. */
-bool stepper_bare_fits(const struct model *m);
+/* Classic RK4 over [a, b] on drive d, as stepper_apply takes it (the stages folded
+ * together, no copies: the common step as cheap as a hand-written loop). */
+void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y);
 
-/* Classic RK4 on a chain that stepper_bare_fits, with no resting contacts: the same
- * arithmetic as stepper_apply's RK4, bit for bit, with the equation of motion folded into
- * the stages (the common step, made as cheap as a hand-written loop). */
-void stepper_rk4_bare(struct stepper *st, const struct drive *d, double a, double b, double *y);
-
-/* Puts the sine drive's carried angle back as it was before the last stepper_rk4_bare,
- * so that the step can be taken again another way with the same bits. */
-void stepper_undo_bare(struct stepper *st);
+/* Puts the sine drive's carried angle back as it was before the last RK4 step, so that
+ * the step can be taken again another way with the same bits. */
+void stepper_undo_rk4(struct stepper *st);
 
 /* Sets the drive's phase (cycles) in the stepper's model; dt as for stepper_set_model. */
 void stepper_set_phase(struct stepper *st, double phase, double dt);
