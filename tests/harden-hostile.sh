@@ -212,8 +212,10 @@ done
 [ "$both" -eq 0 ] && pass ||
     fail "two --plain saving 'race' at once: not exactly one 'ok saved' in $both of 20 rounds"
 
-# --- 3: --integrator exact takes any N when its dampers are proportional to the masses
-# (stepped in the modes); otherwise it is refused where it would look hung, with the reason
+# --- 3: --integrator exact takes any N when its damping is Rayleigh's, dampers in
+# proportion to the masses and the springs, with a force and a damper on the motor's spring
+# too (stepped in the modes); otherwise it is refused where it would look hung, with the
+# reason
 dampers() { awk -v n="$1" 'BEGIN { for (i = 0; i < n; i++) printf "%s%g", i ? "," : "", 0.1 + 0.01 * i }'; }
 refused "'exact' takes at most 20 masses with collisions (100 without) when the dampers are not proportional" \
     --headless --integrator exact -n 1000 --damping "$(dampers 1000)"
@@ -233,6 +235,11 @@ accepted --headless --integrator exact -n 300 --damping 0 --duration 0.05
 accepted --headless --integrator exact -n 300 --mass "$(dampers 300)" \
     --damping "$(awk 'BEGIN { for (i = 0; i < 300; i++) printf "%s%.17g", i ? "," : "", 0.3 * (0.1 + 0.01 * i) }')" \
     --duration 0.05
+# Rayleigh's with spring dampers (the motor's too) and a force; spring dampers off it
+accepted --headless --integrator exact -n 300 --spring-damping 0.01 --damping 0.1 --force 1 \
+    --force-on 150 --duration 0.05
+refused "'exact' takes at most 20 masses with collisions (100 without) when the dampers are not proportional" \
+    --headless --integrator exact -n 300 --spring-damping "$(dampers 301)"
 accepted --headless -p "$tmp/exact.ini" --duration 0.05
 
 # --- 12: an option the mode would ignore is refused in one line, as --plain -o is ---

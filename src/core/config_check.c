@@ -70,13 +70,14 @@ int config_check_exact(const struct config *c, char *err, size_t errlen)
     int bad;
     char why[8];
     struct model *m = config_model(c, &bad, why, sizeof why);
-    int modes = !m || exact_proportional(m);
+    int modes = !m || exact_in_modes(m);
     model_free(m);
     if (modes)
         return -1; /* stepped in its modes at any N (or refused elsewhere) */
     snprintf(err, errlen, "'exact' takes at most %d masses %s when the dampers are not "
-             "proportional to the masses, not %d: %s (expected dampers in proportion to the "
-             "masses, rk4, verlet, semi-implicit or euler, or fewer masses)", most,
+             "proportional to the masses and springs (Rayleigh's), not %d: %s (expected "
+             "dampers in proportion to the masses and springs, rk4, verlet, semi-implicit "
+             "or euler, or fewer masses)", most,
              c->no_collisions ? "without collisions" : "with collisions (100 without)",
              c->masses,
              c->no_collisions ? "its set-up is a matrix exponential of order 2N+2 (0.7 s at "

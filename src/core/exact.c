@@ -39,10 +39,13 @@
  * a cached one (late in a run, b - a carries the rounding of the times) is taken as a
  * first-order step of the difference, then the cached one.
  *
- * All of the above is the dense path, for dampers that are not proportional to the masses.
- * When they are (c_i / m_i all equal: the default chain, undamped ones) the same method
- * runs mode by mode on 4 x 4 matrices (exact_modal.c), which contacts' step lengths do not
- * make expensive, and the dense matrices are never made. */
+ * All of the above is the dense path, for ground dampers not proportional to the masses
+ * and the motor as the only input. With Rayleigh's damping, C = alpha M + beta K (the
+ * default chain, undamped ones, dampers beside the springs in proportion to them), the
+ * same method runs mode by mode on 4 x 4 matrices (exact_modal.c), the motor's end, its
+ * damper and a force input all carried by each mode's drive states: contacts' step
+ * lengths do not make it expensive, and the dense matrices are never made. Other spring
+ * dampers, a force or a missing spring take exact_general.c's dense exponential. */
 #include "exact.h"
 
 #include <float.h>
@@ -555,10 +558,12 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
         return 0;
     if (!(h > 0.0) || m->n != e->n)
         return -1;
-    int general = exact_needs_general(m);
+    int forced = model_forced(m) || (d && d->force != 0.0);
+    int general = exact_needs_general(m) || (forced && !model_rayleigh(m));
     if (!general) {
         take_model(e, m);
-        general = !e->valid && m->spring_damped; /* the modes failed: the general path */
+        /* the modes failed: the general path for what the dense one here cannot hold */
+        general = !e->use_modal && (m->spring_damped || forced);
     }
     if (general) {
         e->stepped_modal = 0;
@@ -569,17 +574,16 @@ int exact_advance_all(struct exact *e, const struct model *m, const struct exact
     if (!e->valid)
         return -1;
 
-    enum exact_kind kind = EXACT_NONE;
-    if (m->boundary == BOUNDARY_MOTOR && d) {
-        if (d->sine && d->amp != 0.0)
-            kind = EXACT_SINE;
-        else if (!d->sine && (d->u0 != 0.0 || d->du != 0.0))
-            kind = EXACT_LINE;
-    }
-    if (kind == EXACT_SINE && !isfinite(d->omega))
+    /* The end moves with a motor only; the force is the modes' alone (forced chains that
+     * reach here are stepped in them). */
+    struct exact_drive ed = d ? *d : (struct exact_drive){0};
+    if (m->boundary != BOUNDARY_MOTOR)
+        ed.amp = ed.u0 = ed.du = 0.0;
+    enum exact_kind kind = exact_drive_kind(&ed);
+    if (kind == EXACT_SINE && !isfinite(ed.omega))
         return -1;
     e->stepped_modal = e->use_modal;
     if (e->use_modal)
-        return modal_advance(e->md, kind, d, a, b, x, v, diss, work);
-    return dense_advance(e, kind, d, a, h, x, v, diss, work);
+        return modal_advance(e->md, kind, &ed, m->force_on, a, b, x, v, diss, work, fwork);
+    return dense_advance(e, kind, &ed, a, h, x, v, diss, work);
 }

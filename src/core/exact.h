@@ -10,9 +10,9 @@
 struct exact;
 
 /* Workspace for chains of n masses, or NULL on no memory (or n out of 1..1000). A chain
- * whose dampers are proportional to its masses (c_i / m_i all equal: the default chain,
- * any undamped one) is stepped in its modes (exact_modal.c): n^2 + 266 n doubles, 10 MB
- * at n = 1000. Any other adds, when first stepped, three (2n+2)^2 matrices of scratch and
+ * with Rayleigh's damping (c_i / m_i all equal, cs_j / k_j all equal: the default chain,
+ * any undamped one), with or without a force and a damper on the motor's spring, is
+ * stepped in its modes (exact_modal.c): n^2 + 393 n doubles, 11 MB at n = 1000. Any other adds, when first stepped, three (2n+2)^2 matrices of scratch and
  * the exponentials of the last steps seen (four steps below n = 418, one above n = 723):
  * 42 KB at n = 10, 160 MB at n = 1000. */
 struct exact *exact_new(int n);
@@ -21,6 +21,11 @@ struct exact *exact_new(int n);
  * undamped chains and the default one included), so that exact steps it in its modes,
  * whose cost does not grow with the step lengths it meets; 0 otherwise. */
 int exact_proportional(const struct model *m);
+
+/* 1 when exact steps m in its modes (barring a failure of LAPACK there): Rayleigh's
+ * damping, a force and a damper on the motor's spring included, and no spring of k = 0;
+ * 0 when it takes a dense exponential of order 2N+2. */
+int exact_in_modes(const struct model *m);
 
 /* Frees it. */
 void exact_free(struct exact *e);
@@ -53,8 +58,9 @@ struct exact_drive {
  * were. a == b does nothing. The drive is read for a motor end only (d may be NULL: u = 0);
  * a jump of u between pieces is the caller's to book (its work is the change of the end
  * spring's energy).
- * Cost, dampers proportional to the masses (exact_proportional): two N x N products a
- * step, and a new step length (every contact makes one) seven 4 x 4 exponentials a mode;
+ * Cost, Rayleigh's damping (model_rayleigh; exact_proportional without spring dampers):
+ * two N x N by N x 2 products a step, and a new step length (every contact makes one)
+ * seven 4 x 4 exponentials a mode;
  * the modes themselves once per model values: a second of motion at dt = 0.01 with
  * collisions 0.15 s at n = 100, 2.2 s at n = 1000 (make bench).
  * Cost, other dampers: a step with the same model values, drive form, omega (sine) and
@@ -69,13 +75,17 @@ int exact_advance(struct exact *e, const struct model *m, const struct exact_dri
                   double a, double b, double *x, double *v, double *diss, double *work);
 
 /* Whether m needs exact_general.c's dense exponential in the chain's own coordinates:
- * spring dampers, a force input or a spring of k = 0 (a rigid-body mode). */
+ * spring dampers or a force input with damping other than Rayleigh's, or a spring of
+ * k = 0 (a rigid-body mode). */
 int exact_needs_general(const struct model *m);
 
-/* exact_advance with the force input's work, integral of F w v_K, added to *fwork too.
- * A chain with spring dampers, a force or a spring of k = 0 is stepped by exact_general.c
+/* exact_advance with the force input's work, integral of F w v_K, added to *fwork too;
+ * the motor's work is then integral of (k_N (u - x_N) + cs_N (u' - v_N)) u' and the loss
+ * takes the spring dampers' too. For a force, d must give it and, for a line, w0 and dw.
+ * With Rayleigh's damping the modes step it (the force d->force); with other spring
+ * dampers or ground dampers beside a force, or a spring of k = 0, exact_general.c does
  * (the dense exponential of the chain's first-order system with the drive's, books as
- * quadratic forms), for which d must give the force and, for a line, w0 and dw. */
+ * quadratic forms; the force m->force, the end's amplitude m->motor.amplitude). */
 int exact_advance_all(struct exact *e, const struct model *m, const struct exact_drive *d,
                       double a, double b, double *x, double *v, double *diss, double *work,
                       double *fwork);

@@ -459,15 +459,19 @@ int general_advance(struct general *g, const struct model *m, const struct exact
 /* Declared in exact.h: the question exact.c asks before each step. */
 int exact_needs_general(const struct model *m)
 {
-    if (model_forced(m))
-        return 1;
-    /* Rayleigh's spring dampers stay in the modes, unless the motor moves the end of a
-     * damped spring (its rate u' is an input the modes' drive does not carry). */
-    if (m->spring_damped && (!model_rayleigh(m) || (m->boundary == BOUNDARY_MOTOR &&
-                                                   m->motor.amplitude != 0.0 && m->cs[m->n] != 0.0)))
+    /* Rayleigh's damping stays in the modes, with a force and a damper at the motor's end
+     * too (both inputs of the modes' drive states). */
+    if ((m->spring_damped || model_forced(m)) && !model_rayleigh(m))
         return 1;
     for (int j = 0; j <= m->n; j++)
         if (m->k[j] == 0.0 && (j < m->n || m->boundary != BOUNDARY_FREE))
             return 1;
     return 0;
+}
+
+/* Declared in exact.h. */
+int exact_in_modes(const struct model *m)
+{
+    return !exact_needs_general(m) &&
+           (m->spring_damped || model_forced(m) ? model_rayleigh(m) : exact_proportional(m));
 }

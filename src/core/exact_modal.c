@@ -1,28 +1,42 @@
 /* exact_modal.c: the exact step of a chain whose damping is Rayleigh's, C = alpha M +
  * beta K (ground dampers proportional to the masses, spring dampers to the springs), mode
- * by mode; gamma below is mode j's own gamma_j = alpha + beta w_j^2 (exact.c passes no
- * spring dampers where the motor's spring has one and the motor moves).
+ * by mode; gamma below is mode j's own gamma_j = alpha + beta w_j^2.
  *
  * With y = M^(1/2) x and T = M^(-1/2) K M^(-1/2) = Phi diag(w_j^2) Phi^T (T symmetric
  * tridiagonal: Phi by LAPACK's dstevr, w_j as the singular values of T's bidiagonal
- * factor, accurate however small), eta = Phi^T y: C = gamma M makes every mode a damped
- * oscillator of its own, driven through the last mass only,
+ * factor, accurate however small), eta = Phi^T y: Rayleigh's C keeps every mode a damped
+ * oscillator of its own, driven through the last mass by the end's spring and damper
+ * (k_N u + cs_N u', the cs_N v_N part being in beta K) and through mass K by the force
+ * F w (w the motor's unit waveform, at its phase):
  *
- *     eta_j'' + gamma eta_j' + w_j^2 eta_j = Phi_(N,j) k_N u / sqrt(m_N).
+ *     eta_j'' + gamma eta_j' + w_j^2 eta_j = b_j(t),
+ *     b_j = cn_j (k_N u + cs_N u') + ck_j F w,   cn_j = Phi_(N,j) / sqrt(m_N),
+ *                                                ck_j = Phi_(K,j) / sqrt(m_K).
  *
- * Each mode is taken in exact.c's skewed coordinates, q_j = w_j eta_j, p_j = eta_j', with
- * the drive's two states (s, r) scaled as there (s = sqrt(k_N) u; a sine's r = sqrt(k_N)
- * amp cos, a line's r = sqrt(k_N) u' / w_s): z_j = (q_j, p_j, s, r) and
+ * On a piece b_j is a sine of the drive's angle or a straight line, so each mode carries
+ * it as two states of its own, scaled by w_j so that a quasi-static mode's q equals s:
+ * with q_j = w_j eta_j, p_j = eta_j', z_j = (q_j, p_j, s_j, r_j),
  *
- *     q' = w p,  p' = -w q - gamma p + f_j s,  f_j = Phi_(N,j) sqrt(k_N) / sqrt(m_N).
+ *     q' = w p,   p' = -w q - gamma p + w s,   s = b_j / w_j,
+ *     sine:  s' = om r, r' = -om s  (r = b_j' / (om w_j));
+ *     line:  s' = w r,  r' = 0      (r = b_j' / w_j^2).
  *
- * Its 4 x 4 exponential and books come by exact.c's method on 4 x 4 matrices (6-point
- * Gauss-Legendre on a base interval with ||A_j|| t <= 1/2, doubled up; every exponential
- * GSL's afresh): the dampers' loss gamma |p|^2 sums over the modes (Phi is orthogonal),
- * and the motor's work k_N (u - x_N) u' is k_N (u(b)^2 - u(a)^2) / 2 less the modes' parts
- * k_N x_N u' = sum_j -ax_j q_j u', ax_j = -k_N Phi_(N,j) / (w_j sqrt(m_N)).
+ * Its 4 x 4 exponential E_j does not depend on the amplitudes, the force or its mass: a
+ * cached step serves any of them. The books come by exact.c's method on 4 x 4 matrices
+ * (6-point Gauss-Legendre on a base interval with ||A_j|| t <= 1/2, doubled up; every
+ * exponential GSL's afresh), each a form in z_j(a):
+ *  - the dampers' loss: v^T C v (= sum_j gamma |p_j|^2, Phi orthogonal) and the end's
+ *    damper's rest, cs_N (u'^2 - 2 u' v_N), v_N = sum_j cn_j p_j;
+ *  - the motor's work (k_N (u - x_N) + cs_N (u' - v_N)) u': k_N (u(b)^2 - u(a)^2) / 2 +
+ *    cs_N int u'^2 less int u' (k_N x_N + cs_N v_N), x_N = sum_j cn_j q_j / w_j;
+ *  - the force's work int F w v_K, v_K = sum_j ck_j p_j.
+ * u' and w over the piece are the drive's states moved by R(tau), the drive's 2 x 2 block
+ * of E_j: u'(a + tau) = U . R_r(tau), w(a + tau) = V . R_s(tau) (U, V from the drive at
+ * a), so the books need Gd = int gamma E_p^T E_p, and for c = s, r the vectors
+ * Nq_c = int R_rc E_q, Np_c = int R_rc E_p and Fp_c = int R_sc E_p (rows of E_j), doubled
+ * as Nw is in exact.c: B_c(2t) = B_c(t) + E(t)^T sum_k B_k(t) R_kc(t).
  *
- * Cost: a step is two products with Phi (n x n by n x 2) and 32 numbers a mode; a new step
+ * Cost: a step is two products with Phi (n x n by n x 2) and 48 numbers a mode; a new step
  * length (a contact's) is seven 4 x 4 exponentials a mode, none of them n-sized. The modes
  * are found once per model: contacts change the state, never them. */
 #include "exact_modal.h"
@@ -37,10 +51,14 @@
 #include <gsl/gsl_linalg.h>
 #include <lapacke.h>
 
-#define SLOTS 8          /* cached step lengths: the grid's and those of contacts */
-#define PER_MODE 32      /* numbers a mode keeps for a step: E's rows q, p (8), Gd (16), Nw (8) */
-#define BASE_NORM 0.5    /* ||A_j|| times the quadrature's base interval */
+#define SLOTS 8           /* cached step lengths: the grid's and those of contacts */
+#define PER_MODE 48       /* numbers a mode keeps for a step: see struct mslot */
+#define BASE_NORM 0.5     /* ||A_j|| times the quadrature's base interval */
 #define GSL_ROW_TOP 100.0 /* see exact_expm */
+
+/* A mode's part of a cached step, at these offsets of its PER_MODE numbers: E's rows q and
+ * p, Gd, then Nq, Np and Fp (each its _s then its _r). */
+enum { AT_E = 0, AT_GD = 8, AT_NQ = 24, AT_NP = 32, AT_FP = 40 };
 
 struct mslot {
     struct exact_key key; /* which step it holds, ||A|| the largest ||A_j|| (first:
@@ -51,15 +69,24 @@ struct mslot {
 struct modal {
     int n, damped;
     unsigned long model, clock;
-    double alpha, beta, sk, kn, wscale; /* gamma_j = alpha + beta w_j^2; sqrt(k_N), k_N (0
-                                           for a free end); w_s */
-    double *w, *f, *ax, *sqm;     /* w_j, f_j, ax_j, sqrt(m_i) */
+    double alpha, beta, kn, csn; /* gamma_j = alpha + beta w_j^2; k_N, cs_N (0: free end) */
+    double *w, *cn, *sqm;         /* w_j, cn_j, sqrt(m_i) */
     double *diag, *off;           /* T for dstevr (overwritten) */
     double *phi;                  /* Phi, column-major: as a row-major n x n matrix, Phi^T */
     double *yin, *hm;             /* n x 2 each: (y, M^(1/2) v) and the modes' (eta, eta') */
     int *isuppz;
     double *mem;
     struct mslot slot[SLOTS];
+};
+
+/* The drive at a time t of a piece: the end's u, u' and the rates that make r (ur, upr: a
+ * sine's u' / om and u'' / om, a line's u' and 0), the force's waveform w and its rate wr
+ * (likewise), and U, which moves u' (see the top). */
+struct piece {
+    enum exact_kind kind;
+    double force; /* F */
+    int on;       /* its mass */
+    double u, up, ur, upr, wv, wr, us[2];
 };
 
 /* 6-point Gauss-Legendre on [-1, 1]: nodes +-gl_x[i], weights gl_w[i]. */
@@ -70,7 +97,7 @@ static const double gl_w[3] = {0.4679139345726910473898703, 0.360761573048138607
 
 static size_t doubles(int n)
 {
-    return (size_t)n * (size_t)n + (size_t)(10 + SLOTS * PER_MODE) * (size_t)n;
+    return (size_t)n * (size_t)n + (size_t)(9 + SLOTS * PER_MODE) * (size_t)n;
 }
 
 struct modal *modal_new(int n)
@@ -89,9 +116,8 @@ struct modal *modal_new(int n)
     }
     size_t nn = (size_t)n;
     md->w = md->mem;
-    md->f = md->w + nn;
-    md->ax = md->f + nn;
-    md->sqm = md->ax + nn;
+    md->cn = md->w + nn;
+    md->sqm = md->cn + nn;
     md->diag = md->sqm + nn;
     md->off = md->diag + nn;
     md->yin = md->off + nn;
@@ -123,7 +149,7 @@ void modal_copy(struct modal *dst, const struct modal *src)
     ptrdiff_t shift = mem - src->mem;
     dst->mem = mem;
     dst->isuppz = isuppz;
-    dst->w += shift, dst->f += shift, dst->ax += shift, dst->sqm += shift;
+    dst->w += shift, dst->cn += shift, dst->sqm += shift;
     dst->diag += shift, dst->off += shift, dst->yin += shift, dst->hm += shift;
     dst->phi += shift;
     for (int i = 0; i < SLOTS; i++)
@@ -162,8 +188,8 @@ int modal_take(struct modal *md, const struct model *m, double alpha, double bet
     if (LAPACKE_dbdsqr(LAPACK_COL_MAJOR, 'L', n, 0, 0, 0, md->diag, md->off, NULL, 1, NULL, 1,
                        NULL, 1) != 0)
         return -1;
-    md->sk = free_end ? 0.0 : sqrt(m->k[n]);
     md->kn = free_end ? 0.0 : m->k[n];
+    md->csn = free_end ? 0.0 : m->cs[n];
     double top = md->diag[0] * md->diag[0];
     for (int j = 0; j < n; j++) {
         /* The two agree to the eigenvalues' rounding (pairing the shapes with the right
@@ -172,15 +198,18 @@ int modal_take(struct modal *md, const struct model *m, double alpha, double bet
         if (!(sv > 0.0) || !isfinite(sv) || !(fabs(md->w[j] - sv * sv) <= 1e-10 * top))
             return -1;
         md->w[j] = sv;
-        double last = md->phi[(size_t)(n - 1) + (size_t)n * (size_t)j];
-        md->f[j] = last * md->sk / md->sqm[n - 1];
-        md->ax[j] = -md->kn * last / (md->w[j] * md->sqm[n - 1]);
+        md->cn[j] = md->phi[(size_t)(n - 1) + (size_t)n * (size_t)j] / md->sqm[n - 1];
     }
-    md->wscale = md->w[n - 1]; /* the largest: sorted up above */
     md->alpha = alpha;
     md->beta = beta;
     md->damped = alpha > 0.0 || beta > 0.0;
     return 0;
+}
+
+/* The drive's rate scale in mode j: om for a sine, w_j for a line. */
+static double rate_scale(const struct modal *md, int j, enum exact_kind kind, double omega)
+{
+    return kind == EXACT_SINE ? omega : md->w[j];
 }
 
 /* tau A_j into s (4 x 4, row-major) for mode j; returns ||A_j|| (tau = 1: the larger of
@@ -193,8 +222,8 @@ static double mode_generator(const struct modal *md, int j, enum exact_kind kind
     s[4] = -tau * md->w[j];
     s[5] = -tau * mode_gamma(md, j);
     if (kind != EXACT_NONE) {
-        s[6] = tau * md->f[j];
-        s[11] = tau * (kind == EXACT_SINE ? omega : md->wscale);
+        s[6] = tau * md->w[j];
+        s[11] = tau * rate_scale(md, j, kind, omega);
         s[14] = kind == EXACT_SINE ? -tau * omega : 0.0;
     }
     double norm = 0.0;
@@ -220,21 +249,68 @@ static int mode_expm(const struct modal *md, int j, enum exact_kind kind, double
     return exact_expm(&sv.matrix, &xv.matrix, &tv.matrix);
 }
 
+/* A drive book at one quadrature node: B_c += wt R_(row, c) E_(from) for c = s, r (x =
+ * E at the node). */
+static void book_node(double *bk, const double *x, int row, int from, double wt)
+{
+    for (int c = 0; c < 2; c++) {
+        double f = wt * x[4 * row + 2 + c];
+        for (int b = 0; b < 4; b++)
+            bk[4 * c + b] += f * x[4 * from + b];
+    }
+}
+
+/* A drive book doubled: B_c += E^T sum_k B_k R_kc, R the drive's block of E (x). */
+static void book_double(double *bk, const double *x)
+{
+    double r00 = x[10], r01 = x[11], r10 = x[14], r11 = x[15], y[8];
+    for (int b = 0; b < 4; b++) {
+        y[b] = bk[b] * r00 + bk[4 + b] * r10;
+        y[4 + b] = bk[b] * r01 + bk[4 + b] * r11;
+    }
+    for (int c = 0; c < 2; c++)
+        for (int a = 0; a < 4; a++) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; k++)
+                sum += x[4 * k + a] * y[4 * c + k];
+            bk[4 * c + a] += sum;
+        }
+}
+
+/* Gd doubled: Gd += E^T Gd E. */
+static void gram_double(double *g, const double *x)
+{
+    double gx[16];
+    for (int a = 0; a < 4; a++)
+        for (int b = 0; b < 4; b++) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; k++)
+                sum += g[4 * a + k] * x[4 * k + b];
+            gx[4 * a + b] = sum;
+        }
+    for (int a = 0; a < 4; a++)
+        for (int b = 0; b < 4; b++) {
+            double sum = 0.0;
+            for (int k = 0; k < 4; k++)
+                sum += x[4 * k + a] * gx[4 * k + b];
+            g[4 * a + b] += sum;
+        }
+}
+
 /* Mode j's part of a step h into out (PER_MODE numbers); *norm gets ||A_j||. */
 static int fill_mode(const struct modal *md, int j, enum exact_kind kind, double omega, double h,
                      double *out, double *norm)
 {
     double s[16], x[16];
-    double *prop = out, *g = out + 8, *nw = out + 24;
+    double *g = out + AT_GD, *nq = out + AT_NQ, *np = out + AT_NP, *fp = out + AT_FP;
     int driven = kind != EXACT_NONE;
     *norm = mode_generator(md, j, kind, omega, 1.0, s);
-    memset(g, 0, 24 * sizeof *g);
+    memset(out, 0, PER_MODE * sizeof *out);
     if (md->damped || driven) {
         int levels = 0;
         while (*norm * ldexp(h, -levels) > BASE_NORM && levels < 1000)
             levels++;
-        double base = ldexp(h, -levels);
-        double br = driven ? (kind == EXACT_SINE ? omega : md->wscale) / md->sk : 0.0;
+        double base = ldexp(h, -levels), gamma = mode_gamma(md, j);
         for (int i = 0; i < 6; i++) {
             double node = 0.5 * base * (1.0 + (i < 3 ? -gl_x[i] : gl_x[i - 3]));
             double w = 0.5 * base * gl_w[i % 3];
@@ -242,50 +318,27 @@ static int fill_mode(const struct modal *md, int j, enum exact_kind kind, double
                 return -1;
             for (int a = 0; a < 4; a++)
                 for (int b = 0; b < 4; b++)
-                    g[4 * a + b] += w * mode_gamma(md, j) * x[4 + a] * x[4 + b];
-            for (int c = 0; driven && c < 2; c++) {
-                double fc = w * br * x[12 + 2 + c] * md->ax[j];
-                for (int b = 0; b < 4; b++)
-                    nw[4 * c + b] += fc * x[b];
+                    g[4 * a + b] += w * gamma * x[4 + a] * x[4 + b];
+            if (driven) {
+                book_node(nq, x, 3, 0, w);
+                book_node(np, x, 3, 1, w);
+                book_node(fp, x, 2, 1, w);
             }
         }
         for (int level = 0; level < levels; level++) {
             if (mode_expm(md, j, kind, omega, ldexp(base, level), x))
                 return -1;
-            double gx[16], y[8];
-            /* Gd += E^T Gd E */
-            for (int a = 0; a < 4; a++)
-                for (int b = 0; b < 4; b++) {
-                    double sum = 0.0;
-                    for (int k = 0; k < 4; k++)
-                        sum += g[4 * a + k] * x[4 * k + b];
-                    gx[4 * a + b] = sum;
-                }
-            for (int a = 0; a < 4; a++)
-                for (int b = 0; b < 4; b++) {
-                    double sum = 0.0;
-                    for (int k = 0; k < 4; k++)
-                        sum += x[4 * k + a] * gx[4 * k + b];
-                    g[4 * a + b] += sum;
-                }
-            /* Nw += E^T (Nw R), R the drive's block of E */
-            double r00 = x[10], r01 = x[11], r10 = x[14], r11 = x[15];
-            for (int b = 0; b < 4; b++) {
-                y[b] = nw[b] * r00 + nw[4 + b] * r10;
-                y[4 + b] = nw[b] * r01 + nw[4 + b] * r11;
+            gram_double(g, x);
+            if (driven) {
+                book_double(nq, x);
+                book_double(np, x);
+                book_double(fp, x);
             }
-            for (int c = 0; c < 2; c++)
-                for (int a = 0; a < 4; a++) {
-                    double sum = 0.0;
-                    for (int k = 0; k < 4; k++)
-                        sum += x[4 * k + a] * y[4 * c + k];
-                    nw[4 * c + a] += sum;
-                }
         }
     }
     if (mode_expm(md, j, kind, omega, h, x))
         return -1;
-    memcpy(prop, x, 8 * sizeof *prop);
+    memcpy(out + AT_E, x, 8 * sizeof *out);
     return 0;
 }
 
@@ -308,19 +361,128 @@ static struct mslot *find_slot(struct modal *md, enum exact_kind kind, double om
     return sl;
 }
 
-/* The drive's end u at t. */
-static double drive_u(enum exact_kind kind, const struct exact_drive *d, double t)
+/* The drive of kind at time t into p (d read for a sine or a line). */
+static void piece_at(struct piece *p, enum exact_kind kind, const struct exact_drive *d, double t)
 {
-    if (kind == EXACT_SINE)
-        return d->amp * sin(d->omega * t + d->phi);
-    return kind == EXACT_LINE ? d->u0 + d->du * (t - d->t0) : 0.0;
+    memset(p, 0, sizeof *p);
+    p->kind = kind;
+    p->force = kind != EXACT_NONE ? d->force : 0.0;
+    if (kind == EXACT_SINE) {
+        double th = d->omega * t + d->phi, sn = sin(th), cs = cos(th), aw = d->amp * d->omega;
+        p->u = d->amp * sn, p->up = aw * cs, p->ur = d->amp * cs, p->upr = -aw * sn;
+        p->wv = sn, p->wr = cs;
+        p->us[0] = aw * sn, p->us[1] = aw * cs;
+    } else if (kind == EXACT_LINE) {
+        double tau = t - d->t0;
+        p->u = d->u0 + d->du * tau, p->up = p->ur = d->du;
+        p->wv = d->w0 + d->dw * tau, p->wr = d->dw;
+        p->us[1] = d->du;
+    }
 }
 
-int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_drive *d, double a,
-                  double b, double *x, double *v, double *diss, double *work)
+/* Mode j's drive states (s, r) at p into z[2], z[3], and the force's book states F ck_j V
+ * into fv (see the top). */
+static void mode_drive(const struct modal *md, const struct piece *p, int j, double *z,
+                       double *fv)
+{
+    double wj = md->w[j], rho = p->kind == EXACT_LINE ? wj : 1.0;
+    double ck = p->force != 0.0
+                    ? p->force * md->phi[(size_t)p->on + (size_t)md->n * (size_t)j] / md->sqm[p->on]
+                    : 0.0;
+    z[2] = (md->cn[j] * (md->kn * p->u + md->csn * p->up) + ck * p->wv) / wj;
+    z[3] = (md->cn[j] * (md->kn * p->ur + md->csn * p->upr) + ck * p->wr) / (wj * rho);
+    fv[0] = ck * p->wv;
+    fv[1] = ck * p->wr / rho;
+}
+
+/* A step delta (the difference from a cached step) of every mode in md->hm, to first
+ * order (error (delta ||A||)^2 / 2 <= 5e-17, as exact.c does), its books at p's powers. */
+static void nudge(struct modal *md, const struct piece *p, double delta, double *add)
+{
+    for (int j = 0; j < md->n; j++) {
+        double z[4], fv[2], w = md->w[j], g = mode_gamma(md, j), cn = md->cn[j];
+        mode_drive(md, p, j, z, fv);
+        double q = w * md->hm[2 * j], v = md->hm[2 * j + 1];
+        add[0] += delta * (g * v * v - 2.0 * md->csn * cn * p->up * v);
+        add[1] -= delta * p->up * cn * (md->kn * q / w + md->csn * v);
+        add[2] += delta * fv[0] * v;
+        md->hm[2 * j] = (q + delta * w * v) / w;
+        md->hm[2 * j + 1] = v + delta * (-w * q - g * v + w * z[2]);
+    }
+}
+
+/* Mode j's cached step sl from p, in md->hm, its books added to add. */
+static void mode_step(struct modal *md, const struct mslot *sl, const struct piece *p, int j,
+                      double *add)
+{
+    const double *k = sl->data + (size_t)PER_MODE * (size_t)j;
+    double z[4] = {md->w[j] * md->hm[2 * j], md->hm[2 * j + 1]}, fv[2];
+    mode_drive(md, p, j, z, fv);
+    double q1 = 0.0, p1 = 0.0, nq[2] = {0.0, 0.0}, np[2] = {0.0, 0.0}, fp[2] = {0.0, 0.0};
+    for (int c = 0; c < 4; c++) {
+        q1 += k[AT_E + c] * z[c];
+        p1 += k[AT_E + 4 + c] * z[c];
+    }
+    if (md->damped)
+        for (int c = 0; c < 4; c++) {
+            double gz = 0.0;
+            for (int e = 0; e < 4; e++)
+                gz += k[AT_GD + 4 * c + e] * z[e];
+            add[0] += z[c] * gz;
+        }
+    if (p->kind != EXACT_NONE) {
+        for (int c = 0; c < 2; c++)
+            for (int e = 0; e < 4; e++) {
+                nq[c] += k[AT_NQ + 4 * c + e] * z[e];
+                np[c] += k[AT_NP + 4 * c + e] * z[e];
+                fp[c] += k[AT_FP + 4 * c + e] * z[e];
+            }
+        double uq = p->us[0] * nq[0] + p->us[1] * nq[1], uv = p->us[0] * np[0] + p->us[1] * np[1];
+        add[0] -= 2.0 * md->csn * md->cn[j] * uv;
+        add[1] -= md->cn[j] * (md->kn * uq / md->w[j] + md->csn * uv);
+        add[2] += fv[0] * fp[0] + fv[1] * fp[1];
+    }
+    md->hm[2 * j] = q1 / md->w[j];
+    md->hm[2 * j + 1] = p1;
+}
+
+/* The books' parts that the drive alone makes over [a, b]: k_N (u(b)^2 - u(a)^2) / 2 of
+ * the motor's work, and cs_N int u'^2 of it and of the loss. */
+static void drive_books(const struct modal *md, enum exact_kind kind, const struct exact_drive *d,
+                        double a, double b, double *add)
+{
+    if (kind == EXACT_NONE)
+        return;
+    struct piece pa, pb;
+    piece_at(&pa, kind, d, a);
+    piece_at(&pb, kind, d, b);
+    double h = b - a, sq = 0.0;
+    if (kind == EXACT_SINE) /* int cos^2 = h / 2 + cos(th_a + th_b) sin(om h) / (2 om) */
+        sq = 0.5 * d->amp * d->amp * d->omega *
+             (d->omega * h + cos(d->omega * (a + b) + 2.0 * d->phi) * sin(d->omega * h));
+    else
+        sq = d->du * d->du * h;
+    add[0] += md->csn * sq;
+    add[1] += 0.5 * md->kn * (pb.u - pa.u) * (pb.u + pa.u) + md->csn * sq;
+}
+
+enum exact_kind exact_drive_kind(const struct exact_drive *d)
+{
+    if (d->sine)
+        return d->amp != 0.0 || d->force != 0.0 ? EXACT_SINE : EXACT_NONE;
+    if (d->u0 != 0.0 || d->du != 0.0 || (d->force != 0.0 && (d->w0 != 0.0 || d->dw != 0.0)))
+        return EXACT_LINE;
+    return EXACT_NONE;
+}
+
+int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_drive *d, int on,
+                  double a, double b, double *x, double *v, double *diss, double *work,
+                  double *fwork)
 {
     int n = md->n;
     double h = b - a, omega = kind == EXACT_SINE ? d->omega : 0.0;
+    if (kind != EXACT_NONE && d->force != 0.0 && (on < 0 || on >= n))
+        return -1;
     struct mslot *sl = find_slot(md, kind, omega, h);
     if (!sl)
         return -1;
@@ -333,76 +495,33 @@ int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_dri
     gsl_matrix_view hv = gsl_matrix_view_array(md->hm, (size_t)n, 2);
     gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &pt.matrix, &yv.matrix, 0.0, &hv.matrix);
 
-    double s = 0.0, r = 0.0, br = 0.0;
-    if (kind == EXACT_SINE) {
-        double th = d->omega * a + d->phi;
-        s = md->sk * d->amp * sin(th);
-        r = md->sk * d->amp * cos(th);
-        br = omega / md->sk;
-    } else if (kind == EXACT_LINE) {
-        s = md->sk * (d->u0 + d->du * (a - d->t0));
-        r = md->sk * d->du / md->wscale;
-        br = md->wscale / md->sk;
-    }
-    /* A step a little longer or shorter than the cached one: the difference first, to
-     * first order (error (delta ||A||)^2 / 2 <= 5e-17), as exact.c does. */
-    double dd = 0.0, ww = 0.0, delta = h - sl->key.h;
+    /* A step a little longer or shorter than the cached one: the difference first. */
+    double add[3] = {0.0, 0.0, 0.0}, delta = h - sl->key.h;
+    struct piece p;
+    piece_at(&p, kind, d, a);
+    p.on = on;
     if (delta != 0.0) {
-        for (int j = 0; j < n; j++) {
-            double q = md->w[j] * md->hm[2 * j], p = md->hm[2 * j + 1];
-            dd += delta * mode_gamma(md, j) * p * p;
-            ww += delta * md->ax[j] * q * br * r;
-            md->hm[2 * j] = (q + delta * md->w[j] * p) / md->w[j];
-            md->hm[2 * j + 1] = p + delta * (-md->w[j] * q - mode_gamma(md, j) * p + md->f[j] * s);
-        }
-        if (kind != EXACT_NONE) {
-            double s1 = s + delta * (kind == EXACT_SINE ? omega : md->wscale) * r;
-            r += kind == EXACT_SINE ? -delta * omega * s : 0.0;
-            s = s1;
-        }
+        nudge(md, &p, delta, add);
+        piece_at(&p, kind, d, a + delta);
+        p.on = on;
     }
-    for (int j = 0; j < n; j++) {
-        const double *k = sl->data + (size_t)PER_MODE * (size_t)j, *g = k + 8, *nw = k + 24;
-        double z[4] = {md->w[j] * md->hm[2 * j], md->hm[2 * j + 1], s, r};
-        double q1 = 0.0, p1 = 0.0;
-        for (int c = 0; c < 4; c++) {
-            q1 += k[c] * z[c];
-            p1 += k[4 + c] * z[c];
-        }
-        if (md->damped)
-            for (int c = 0; c < 4; c++) {
-                double gz = 0.0;
-                for (int e = 0; e < 4; e++)
-                    gz += g[4 * c + e] * z[e];
-                dd += z[c] * gz;
-            }
-        if (kind != EXACT_NONE) {
-            double ns = 0.0, nr = 0.0;
-            for (int c = 0; c < 4; c++) {
-                ns += nw[c] * z[c];
-                nr += nw[4 + c] * z[c];
-            }
-            ww += s * ns + r * nr;
-        }
-        md->hm[2 * j] = q1 / md->w[j];
-        md->hm[2 * j + 1] = p1;
-    }
-    if (kind != EXACT_NONE) {
-        double ua = drive_u(kind, d, a), ub = drive_u(kind, d, b);
-        ww += 0.5 * md->kn * (ub - ua) * (ub + ua);
-    }
+    for (int j = 0; j < n; j++)
+        mode_step(md, sl, &p, j, add);
+    drive_books(md, kind, d, a, b, add);
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &pt.matrix, &hv.matrix, 0.0, &yv.matrix);
     for (int i = 0; i < 2 * n; i++)
         if (!isfinite(md->yin[i]))
             return -1;
-    if (!isfinite(dd) || !isfinite(ww))
-        return -1;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(add[i]))
+            return -1;
     for (int i = 0; i < n; i++) {
         x[i] = md->yin[2 * i] / md->sqm[i];
         v[i] = md->yin[2 * i + 1] / md->sqm[i];
     }
-    *diss += dd;
-    *work += ww;
+    *diss += add[0];
+    *work += add[1];
+    *fwork += add[2];
     return 0;
 }
 

@@ -1,10 +1,11 @@
-/* exact_modal.h: exact.c's propagator for chains whose dampers are proportional to their
- * masses (c_i / m_i the same for every mass, undamped included): the undamped modes
- * (LAPACK's dstevr on M^(-1/2) K M^(-1/2) for the shapes, the frequencies as the singular
- * values of its bidiagonal factor) stay uncoupled under such damping, so each
- * step is the modes' own 4 x 4 exponentials (a mode and the drive's two states) between
- * two products with the modes' matrix: O(N^2) a step, O(N) a new step length. Internal to
- * exact.c; also home of the small matrix exponential both use. */
+/* exact_modal.h: exact.c's propagator for chains with Rayleigh's damping, C = alpha M +
+ * beta K (c_i / m_i all alpha, cs_j / k_j all beta: undamped chains included): the
+ * undamped modes (LAPACK's dstevr on M^(-1/2) K M^(-1/2) for the shapes, the frequencies
+ * as the singular values of its bidiagonal factor) stay uncoupled under such damping, so
+ * each step is the modes' own 4 x 4 exponentials (a mode and its two drive states: the
+ * motor's end, its damper and the force input together) between two products with the
+ * modes' matrix: O(N^2) a step, O(N) a new step length. Internal to exact.c; also home of
+ * the small matrix exponential both use. */
 #ifndef SPRINGSIM_EXACT_MODAL_H
 #define SPRINGSIM_EXACT_MODAL_H
 
@@ -28,8 +29,8 @@ void modal_free(struct modal *md);
 void modal_copy(struct modal *dst, const struct modal *src);
 
 /* Takes in model m (its values checked by the caller: m, k > 0, c >= 0, finite) whose
- * damping is alpha M + beta K (c_i / m_i all alpha, cs_j / k_j all beta), and C, the lower bidiagonal factor of M^(-1/2) K M^(-1/2) =
- * C C^T (diagonal ld, n; subdiagonal ls, n - 1; exact.c's, accurate entry by entry): its
+ * damping is alpha M + beta K (c_i / m_i all alpha, cs_j / k_j all beta; cs_N read as the
+ * end damper's input), and C, the lower bidiagonal factor of M^(-1/2) K M^(-1/2) = C C^T (diagonal ld, n; subdiagonal ls, n - 1; exact.c's, accurate entry by entry): its
  * modes, and a new generation (cached steps are stale). The frequencies are C's singular
  * values (dqds, to a few ulp each however small: a soft-mounted chain's slowest mode
  * keeps its phase), the shapes dstevr's eigenvectors. 0, or -1 when LAPACK fails or a
@@ -37,12 +38,20 @@ void modal_copy(struct modal *dst, const struct modal *src);
 int modal_take(struct modal *md, const struct model *m, double alpha, double beta,
                const double *ld, const double *ls);
 
+/* The drive's form over a piece: a sine or a line when it moves the end or drives the
+ * force (the caller zeroes the end's part where no motor moves it), else EXACT_NONE. */
+enum exact_kind exact_drive_kind(const struct exact_drive *d);
+
 /* Advances x, v (n each) from a to b > a on the drive's form kind (d read for EXACT_SINE
- * and EXACT_LINE) and adds the piece's dissipation and motor work to *diss and *work, as
- * exact_advance does. 0, or -1 (an exponential failed or a result is not finite: nothing
- * is changed). */
-int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_drive *d, double a,
-                  double b, double *x, double *v, double *diss, double *work);
+ * and EXACT_LINE: the end's u from amp, omega, phi or u0, du, the force d->force times the
+ * unit waveform, sin of the same angle or w0 + dw (t - t0), on mass on, 0-based) and adds
+ * the piece's dissipation, motor work and force work to *diss, *work and *fwork, as
+ * exact_advance_all does. The end's u is the caller's to zero when no motor moves it.
+ * 0, or -1 (an exponential failed, a force on no mass, or a result is not finite:
+ * nothing is changed). */
+int modal_advance(struct modal *md, enum exact_kind kind, const struct exact_drive *d, int on,
+                  double a, double b, double *x, double *v, double *diss, double *work,
+                  double *fwork);
 
 /* Which step a cached propagator holds (exact.c's and exact_general.c's caches): the
  * model's generation (0: empty), the drive's form, the sine's angular frequency (sine

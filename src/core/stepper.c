@@ -447,24 +447,30 @@ static void verlet(struct stepper *st, const struct drive *d, double a, double b
     y[2 * n + 2] += 0.5 * h * (d0[2 * n + 2] + d1[2 * n + 2]);
 }
 
+void drive_exact(const struct drive *d, double a, struct exact_drive *ed)
+{
+    *ed = (struct exact_drive){0};
+    ed->force = d->force;
+    if (d->kind == DRIVE_SINE) {
+        ed->sine = 1;
+        ed->amp = d->amp;
+        ed->omega = 2.0 * M_PI * d->motor->frequency;
+        ed->phi = 2.0 * M_PI * d->motor->phase;
+    } else if (d->kind == DRIVE_PIECE) {
+        ed->t0 = a;
+        drive_eval(d, a, &ed->u0, &ed->du);
+        drive_unit(d, a, &ed->w0, &ed->dw);
+    }
+}
+
 /* The exact stepper: the piece's drive in exact.c's terms. */
 static int exact_step(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
     int n = st->n;
     if (!st->exact && !(st->exact = exact_new(n)))
         return -1;
-    struct exact_drive ed = {0};
-    ed.force = d->force;
-    if (d->kind == DRIVE_SINE) {
-        ed.sine = 1;
-        ed.amp = d->amp;
-        ed.omega = 2.0 * M_PI * d->motor->frequency;
-        ed.phi = 2.0 * M_PI * d->motor->phase;
-    } else if (d->kind == DRIVE_PIECE) {
-        ed.t0 = a;
-        drive_eval(d, a, &ed.u0, &ed.du);
-        drive_unit(d, a, &ed.w0, &ed.dw);
-    }
+    struct exact_drive ed;
+    drive_exact(d, a, &ed);
     return exact_advance_all(st->exact, st->model, &ed, a, b, y, y + n, &y[2 * n],
                              &y[2 * n + 1], &y[2 * n + 2]);
 }

@@ -38,6 +38,10 @@ void drive_unit(const struct drive *d, double t, double *w, double *dw);
 /* The force F w(t) on the piece (0 without a force). */
 double drive_force(const struct drive *d, double t);
 
+/* The piece's drive in exact.c's terms (exact.h), its line referred to time a. */
+struct exact_drive;
+void drive_exact(const struct drive *d, double a, struct exact_drive *ed);
+
 struct stepper;
 
 /* Scratch and caches for chains of model's size, or NULL on no memory. */
