@@ -317,6 +317,12 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	    'plain RK4 loop (anchor_plain.c)' -- $(BUILD)/bench/anchor_plain 5 0.001 3000000 -- \
 	    'GSL rk4, fixed-step driver (anchor_gsl.c)' -- $(BUILD)/bench/anchor_gsl 5 0.001 3000000
 	@echo
+	@echo "the damped modes of 300 masses, the left half damped (goal: under 2 s of CPU)"
+	@echo
+	@$(BUILD)/bench/bench_procs '--modes -n 300, half damped' -- ./$(BIN) --modes -n 300 \
+	    --spring 10 --boundary wall --damping \
+	    $$(awk 'BEGIN { for (i = 1; i <= 300; i++) printf "%s%s", (i > 1 ? "," : ""), (i <= 150 ? 2 : 0) }')
+	@echo
 	@$(BUILD)/bench/bench_core
 	@echo
 	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"

