@@ -79,6 +79,9 @@ refused "--figure-size: '10x100' is out of range" --headless --figure "$tmp/x.sv
 refused "--figure-size: 'ax5' is not WxH" --modes --figure "$tmp/x.svg" --figure-size ax5
 refused "--figure-title: shapes --figure's file, but no --figure was given" --headless \
     --figure-title T
+refused "--figure-title: 'a\\xffb' is not UTF-8 text" --headless --figure "$tmp/u.svg" \
+    --figure-title "$(printf 'a\377b')"
+[ -e "$tmp/u.svg" ] && fail "a refused --figure-title left its figure" || pass
 refused "--figure-size: shapes --figure's file, but no --figure was given" --plain \
     --figure-size 100x100
 refused "--figure: applies to the output of --headless, --modes or --sweep" --plain \

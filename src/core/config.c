@@ -13,6 +13,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include <unistr.h>
+
 static const char *integrator_choice(int i) { return integrator_name((enum integrator)i); }
 static const char *boundary_choice(int i) { return model_boundary_name((enum boundary)i); }
 static const char *wave_choice(int i) { return motor_wave_name((enum wave)i); }
@@ -520,6 +522,9 @@ int config_set(struct config *c, int key, const char *value, char *err, size_t e
             return fail(key, value, "is empty", err, errlen);
         if (key == CFG_FIGURE && !figure_extension(value))
             return fail(key, value, "has no extension that names a figure format", err, errlen);
+        if (key == CFG_FIGURE_TITLE && u8_check((const uint8_t *)value, strlen(value)))
+            return fail(key, value, "is not UTF-8 text (a figure's fonts draw only that)", err,
+                        errlen);
         memcpy(at, &value, sizeof value);
         return 0;
     case CONFIG_FLAG:
