@@ -137,6 +137,12 @@ int exact_proportional(const struct model *m)
     return 1;
 }
 
+int exact_in_modes(const struct model *m)
+{
+    return !exact_needs_general(m) &&
+           (m->spring_damped || model_forced(m) ? model_rayleigh(m) : exact_proportional(m));
+}
+
 /* The dense exponential's matrices and vectors, made the first time a model needs them
  * (160 MB at n = 1000). 0, or -1 on no memory. */
 static int dense_alloc(struct exact *e)

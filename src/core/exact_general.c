@@ -468,10 +468,3 @@ int exact_needs_general(const struct model *m)
             return 1;
     return 0;
 }
-
-/* Declared in exact.h. */
-int exact_in_modes(const struct model *m)
-{
-    return !exact_needs_general(m) &&
-           (m->spring_damped || model_forced(m) ? model_rayleigh(m) : exact_proportional(m));
-}
