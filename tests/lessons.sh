@@ -431,6 +431,8 @@ bad 'title T\npreset resonance\nsay \033[31mred\n' 3 'a control character (\x1b)
 bad 'title T\nsetup\n[system]\nmasses = 99\nend\n' 4 "masses: '99' is out of range for the interactive program"
 bad 'title T\nsetup\n[system]\nmass = heavy\nend\n' 4 "mass"
 bad 'title T\nsetup\n[system]\nmasses = 2\n' 2 "setup without its 'end' line"
+bad 'title T\npreset resonance\nrun 1\nexpect t=zz\n' 4 "expect: 't=zz' is not a state"
+bad 'title T\npreset resonance\nrun 1\nexpect t=1 x1=0 v1=0 x2=0\n' 4 "expect: 't=1 x1=0 v1=0 x2=0' is not a state"
 # settings wrong together: said at the line of the one named
 bad 'title T\nsetup\n[system]\nmasses = 10\n[motor]\namplitude = 10\nend\nrun 1\n' 6 "amplitude: '10' leaves the 10 blocks no room"
 bad 'title T\nsetup\n[system]\nmasses = 2\nspring_cubic = 5\nintegrator = exact\nend\nrun 1\n' 6 "integrator: 'exact'"

@@ -6,6 +6,7 @@
 
 #include <ctype.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -150,10 +151,35 @@ static int word_ask(struct reader *r, char *rest)
     return 0;
 }
 
+/* Whether text is a state as lesson_state writes it: t=T, then xI=X vI=V for I = 1, 2, ...,
+ * each value a whole number (strtod's, %a's hexadecimal included). */
+static bool state_line(const char *text)
+{
+    const char *p = text;
+    for (int k = 0;; k++) {
+        char name[16];
+        if (k == 0)
+            snprintf(name, sizeof name, "t=");
+        else
+            snprintf(name, sizeof name, "%c%d=", k % 2 ? 'x' : 'v', (k + 1) / 2);
+        size_t len = strlen(name);
+        if (strncmp(p, name, len) != 0)
+            return false;
+        char *end;
+        strtod(p + len, &end);
+        if (end == p + len || (*end != ' ' && *end != '\0'))
+            return false;
+        if (*end == '\0')
+            return k > 0 && k % 2 == 0; /* every mass with its x and v */
+        p = end + 1;
+    }
+}
+
 static int word_expect(struct reader *r, char *rest)
 {
-    if (strncmp(rest, "t=", 2) != 0)
-        return bad(r, "expect needs the state, 't=... x1=... v1=...' as --record writes it");
+    if (!state_line(rest))
+        return bad(r, "expect: '%.40s' is not a state (expected 't=T x1=X v1=V ...' as --record "
+                   "writes it)", rest);
     return add(r, LESSON_EXPECT, rest) ? 0 : 1;
 }
 
