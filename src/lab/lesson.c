@@ -152,7 +152,8 @@ static int word_ask(struct reader *r, char *rest)
 }
 
 /* Whether text is a state as lesson_state writes it: t=T, then xI=X vI=V for I = 1, 2, ...,
- * each value a whole number (strtod's, %a's hexadecimal included). */
+ * each value a number (strtod's, %a's hexadecimal included). A state of other masses than
+ * the chain's is well formed, only not the one reached: the replay says so. */
 static bool state_line(const char *text)
 {
     const char *p = text;
@@ -170,7 +171,7 @@ static bool state_line(const char *text)
         if (end == p + len || (*end != ' ' && *end != '\0'))
             return false;
         if (*end == '\0')
-            return k > 0 && k % 2 == 0; /* every mass with its x and v */
+            return k % 2 == 0; /* each mass named with its x and v */
         p = end + 1;
     }
 }
