@@ -33,6 +33,14 @@ saved() {
     poll 5 new_name || return 1
     [ -f "$1/$base.svg" ] && [ -f "$1/$base.png" ]
 }
+# save_as NAME: X, the name typed, Enter; true when X says it saved NAME.
+save_as() {
+    keys X
+    wait_for 'figure name'
+    text "$1"
+    keys Enter
+    wait_for "saved the figure as ./$1"
+}
 new_name() {
     base=$(sed -n 's/.*saved the figure as \.\/\(springsim-[0-9]\{8\}-[0-9]\{6\}\(-[0-9]*\)\{0,1\}\)\.svg and \.png.*/\1/p' "$scr" | head -n 1)
     [ -n "$base" ] && [ "$base" != "$prev" ]
@@ -129,11 +137,7 @@ if up cosine; then
     # right margin: 160 mm less 12 pt).
     keys '|'
     sleep 0.3
-    keys X
-    wait_for 'figure name'
-    text x2.pdf
-    keys Enter
-    if wait_for 'saved the figure as ./x2.pdf'; then
+    if save_as x2.pdf; then
         $fc overlaps "$tmp/fig/x2.pdf" >"$tmp/x2-overlaps" 2>&1
         [ -s "$tmp/x2-overlaps" ] && fail "X, two cursors: texts on each other: $(tr '\n' '|' <"$tmp/x2-overlaps")" ||
             pass
@@ -190,11 +194,7 @@ if up driven; then
     # The energy view in --energy --figure's words.
     keys e
     wait_for 'kinetic'
-    keys X
-    wait_for 'figure name'
-    text e.pdf
-    keys Enter
-    if wait_for 'saved the figure as ./e.pdf'; then
+    if save_as e.pdf; then
         $fc text "$tmp/drv/e.pdf" >"$tmp/e-text" 2>&1
         grep -q 'dissipated' "$tmp/e-text" && ! grep -q 'damped' "$tmp/e-text" &&
             grep -q '^time t (s)$' "$tmp/e-text" && pass ||
@@ -227,11 +227,7 @@ if up sweeping; then
     *'(w stops)'*) pass ;;
     *) fail "sweep: the state should be whole on the border at 80 columns: '$border'" ;;
     esac
-    keys X
-    wait_for 'figure name'
-    text sweep.svg
-    keys Enter
-    if wait_for 'saved the figure as ./sweep.svg'; then pass; else
+    if save_as sweep.svg; then pass; else
         fail "X, sweep.svg: not saved; screen: $(brief)"
     fi
     set -- $($fc markers "$tmp/sweep/sweep.svg" $M1)

@@ -292,6 +292,12 @@ static void corner(struct sim *s, double u, double du)
     events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
 }
 
+/* Whether m's drive is smooth across every step (a sine, or nothing): one piece a step. */
+static bool one_piece(const struct model *m)
+{
+    return m->motor.wave == WAVE_SINE || !model_driven(m);
+}
+
 /* Integrates from t0 to t1 in pieces split at the drive's breakpoints. */
 static int advance(struct sim *s, double t0, double t1)
 {
@@ -299,7 +305,7 @@ static int advance(struct sim *s, double t0, double t1)
     const struct motor *mot = &m->motor;
     struct drive d;
     double cuts[MAX_SPLIT];
-    if (mot->wave == WAVE_SINE || !model_driven(m)) {
+    if (one_piece(m)) {
         drive_at(&d, m, 0.5 * (t0 + t1));
         return piece(s, &d, t0, t1, true);
     }
@@ -390,9 +396,8 @@ enum sim_status sim_step(struct sim *s)
     double contact0 = s->contact;
     memcpy(s->y0, s->y, (size_t)len * sizeof *s->y);
     s->last_contacts = s->last_capped = 0;
-    const struct model *m = sim_model(s);
     bool bare_fits = s->integrator == INTEGRATOR_RK4 && !s->rest->active &&
-                     (m->motor.wave == WAVE_SINE || !model_driven(m));
+                     one_piece(sim_model(s));
     if ((bare_fits ? bare(s, t0, t1) : advance(s, t0, t1)) != 0 || !all_finite(s->y, len)) {
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
         s->contact = contact0;

@@ -35,7 +35,7 @@ struct stepper {
     double *tri;           /* 3N: Verlet's tridiagonal solve with spring dampers */
     struct exact *exact;   /* the exact stepper's workspace, made when first needed */
     struct rotation rot;   /* the sine drive's rotations */
-    struct rotation rot_before; /* as they were before the last rk4 step */
+    struct rotation rot_before; /* as they were before the last stepper_rk4 */
     double end_u, end_du;  /* the drive at the end of the last step taken */
     double start_u, start_du; /* and at its start */
     const struct rest *rest;  /* resting contacts held as constraints, or NULL */
@@ -308,7 +308,6 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     double *restrict x = y, *restrict v = y + n;
     double *restrict acc = st->k1, *restrict kv = st->k2;
     double *restrict tx = st->tmp, *restrict tv = st->tmp + n;
-    st->rot_before = st->rot;
     drive3(st, d, a, b, u, du, f);
     st->start_u = u[0], st->start_du = du[0];
     st->end_u = u[2], st->end_du = du[2];
@@ -351,6 +350,7 @@ void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, 
 {
     st->ddu_factor = drive_ddu_factor(d);
     st->constrained = st->rest && st->rest->active;
+    st->rot_before = st->rot; /* for stepper_undo_rk4 */
     rk4(st, d, a, b, y);
 }
 

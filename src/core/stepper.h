@@ -74,7 +74,7 @@ void stepper_set_rest(struct stepper *st, const struct rest *r);
  * together, no copies: the common step as cheap as a hand-written loop). */
 void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y);
 
-/* Puts the sine drive's carried angle back as it was before the last RK4 step, so that
+/* Puts the sine drive's carried angle back as it was before the last stepper_rk4, so that
  * the step can be taken again another way with the same bits. */
 void stepper_undo_rk4(struct stepper *st);
 

@@ -116,25 +116,29 @@ static void scale_fit(const struct chart *c, struct scale *s, double lo, double 
         s->quiet = quiet;
 }
 
-void chart_fit_y(struct chart *c, double lo, double hi)
+/* Fits the y scale and axis to [lo, hi]; inside: the scale rounded out to half the ticks'
+ * step or finer and the ticks laid inside it, so a plot a few rows high shows its data,
+ * not a step's rounding (a 0.5 m decay on 6 rows: -0.875 .. 0.625, not -1.25 .. 1.75). */
+static void fit_y(struct chart *c, double lo, double hi, bool inside)
 {
     int h = c->area.h > 1 ? c->area.h : 1;
     int ticks = max_ticks(h, 2);
-    scale_fit(c, &c->ys, lo, hi, ticks);
-    axis_fit(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
+    scale_fit(c, &c->ys, lo, hi, inside ? 2 * ticks : ticks);
+    if (inside)
+        axis_fit_inside(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
+    else
+        axis_fit(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
     chart_ticks_from_axis(&c->yt, &c->ya);
+}
+
+void chart_fit_y(struct chart *c, double lo, double hi)
+{
+    fit_y(c, lo, hi, false);
 }
 
 void chart_fit_y_inside(struct chart *c, double lo, double hi)
 {
-    int h = c->area.h > 1 ? c->area.h : 1;
-    int ticks = max_ticks(h, 2);
-    /* The scale rounds out to half the ticks' step or finer, and the ticks go inside it:
-     * a plot a few rows high shows its data, not a step's rounding (a 0.5 m decay on
-     * 6 rows: -0.875 .. 0.625, not -1.25 .. 1.75). */
-    scale_fit(c, &c->ys, lo, hi, 2 * ticks);
-    axis_fit_inside(&c->ya, c->ys.lo, c->ys.hi, ticks, h, 4, MIN_ROW_GAP);
-    chart_ticks_from_axis(&c->yt, &c->ya);
+    fit_y(c, lo, hi, true);
 }
 
 /* Fits axis a on the x cells, its ticks far enough apart for their labels; rolling: a
