@@ -216,6 +216,7 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
         char settings[400];
         report_settings(c, m, settings, sizeof settings);
         struct report_look look = report_look_of(c, settings);
+        look.xfreq = report_frequency_label(m);
         int draw = status == EXIT_SUCCESS
                        ? fig_lib_loaded()->sweep(fo.fp, fig_format_of(c->figure), fig, n, &look)
                        : 0;

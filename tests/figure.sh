@@ -273,4 +273,27 @@ run --headless --duration 1 --figure "$tmp/w/f.svg" -o /dev/null
 expect "$cmd: replaced" "$(head -c 5 "$tmp/w/f.svg")" "<?xml"
 expect "$cmd: files beside it" "$(ls "$tmp/w")" "f.svg"
 
+# A course's examples say what drives them and every damper: the tuned-mass damper's
+# subtitle names the spring damper between the masses and the force on mass 1, its sweep's
+# axis is the force's frequency (no motor moves); duffing's names its cubic spring; a
+# motor and a force together are the drive's frequency.
+run --sweep 0.2:2:20 -p tuned-mass-damper --figure "$tmp/tmd.pdf" -o /dev/null
+expect "$cmd: exit status" "$rc" 0
+$fc text "$tmp/tmd.pdf" >"$tmp/tmd.txt"
+grep -q 'spring dampers 0–0.038329 N·s/m' "$tmp/tmd.txt" && pass ||
+    fail "$cmd: the subtitle does not name the spring damper: $(head -3 "$tmp/tmd.txt" | tr '\n' '|')"
+grep -q 'force: sine, 0.5 N at 0.503292 Hz on mass 1' "$tmp/tmd.txt" && pass ||
+    fail "$cmd: the subtitle does not name the force: $(head -3 "$tmp/tmd.txt" | tr '\n' '|')"
+expect "$cmd: frequency axes" "$(grep -c '^force frequency f (Hz)$' "$tmp/tmd.txt")" 2
+run --headless -p duffing --duration 1 --figure "$tmp/duf.pdf" -o /dev/null
+$fc text "$tmp/duf.pdf" >"$tmp/duf.txt"
+grep -q 'k3 0–4 N/m³' "$tmp/duf.txt" && pass ||
+    fail "$cmd: the subtitle does not name the cubic spring: $(head -3 "$tmp/duf.txt" | tr '\n' '|')"
+run --sweep 0.2:2:20 --force 1 --figure "$tmp/both.pdf" -o /dev/null
+$fc text "$tmp/both.pdf" >"$tmp/both.txt"
+expect "$cmd: frequency axes" "$(grep -c '^drive frequency f (Hz)$' "$tmp/both.txt")" 2
+run --sweep 0.2:2:20 --figure "$tmp/motor.pdf" -o /dev/null
+$fc text "$tmp/motor.pdf" >"$tmp/motor.txt"
+expect "$cmd: frequency axes" "$(grep -c '^motor frequency f (Hz)$' "$tmp/motor.txt")" 2
+
 summary

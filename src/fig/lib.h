@@ -13,7 +13,7 @@
 #include "report.h"
 
 /* Changes whenever the table below does: a library of another build is refused. */
-#define FIG_LIB_ABI "springsim-fig 3 " VERSION
+#define FIG_LIB_ABI "springsim-fig 4 " VERSION
 
 /* The library's file name, in the program's directory or FIGLIBDIR. */
 #define FIG_LIB_FILE "springsim-fig.so"

@@ -162,10 +162,11 @@ int report_sweep(FILE *fp, enum fig_format f, struct report_data *d, int n,
         s[i] = line_of(d, i, FIG_MASS + i % n % 10, false);
         s[i].max_jump = i >= n ? 90.0 : 0.0;
     }
+    const char *xfreq = look->xfreq ? look->xfreq : "motor frequency f (Hz)";
     struct fig_panel p[2] = {
-        {.xlabel = "motor frequency f (Hz)", .ylabel = "amplitude (m)", .xlog = true,
+        {.xlabel = xfreq, .ylabel = "amplitude (m)", .xlog = true,
          .ylog = true, .series = s, .nseries = n},
-        {.xlabel = "motor frequency f (Hz)", .ylabel = "phase (°; a lag is negative)",
+        {.xlabel = xfreq, .ylabel = "phase (°; a lag is negative)",
          .xlog = true, .ylo = -180.0, .yhi = 180.0, .ystep = 90.0, .series = s + n,
          .nseries = n},
     };

@@ -49,13 +49,20 @@ struct report_look {
     const char *title;
     const char *subtitle;
     double w_mm, h_mm;
+    const char *xfreq; /* a sweep's frequency axis title (NULL: the drive's) */
 };
 
 /* The look --figure, --figure-title and --figure-size ask for, with subtitle. */
 struct report_look report_look_of(const struct config *c, const char *subtitle);
 
-/* The settings of a run in one line, for a figure's second title line. */
+/* The settings of a run in one line, for a figure's second title line: the masses,
+ * springs (cubic terms too), dampers to the ground and beside the springs, the right
+ * end, the force and where it acts, the integrator. */
 void report_settings(const struct config *c, const struct model *m, char *buf, size_t len);
+
+/* The title of a frequency axis for m: what the frequency drives ("motor frequency f
+ * (Hz)", "force frequency ...", or "drive frequency ..." for both). */
+const char *report_frequency_label(const struct model *m);
 
 /* Series a --headless figure's rows hold for n masses, with energy or not. */
 int report_headless_series(int n, bool energy);

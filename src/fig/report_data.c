@@ -148,23 +148,45 @@ static void list_text(const double *v, int n, char *buf, size_t len)
 
 void report_settings(const struct config *c, const struct model *m, char *buf, size_t len)
 {
-    char ms[48], ks[48], cs[48], drive[96];
+    char ms[48], ks[48], k3s[64] = "", cs[48], css[80] = "", drive[96], force[96] = "";
     list_text(m->m, m->n, ms, sizeof ms);
     list_text(m->k, m->n + 1, ks, sizeof ks);
     list_text(m->c, m->n, cs, sizeof cs);
+    if (m->cubic) {
+        char v[48];
+        list_text(m->k3, m->n + 1, v, sizeof v);
+        snprintf(k3s, sizeof k3s, ", k3 %s N/m³", v);
+    }
+    if (m->spring_damped) {
+        char v[48];
+        list_text(m->cs, m->n + 1, v, sizeof v);
+        snprintf(css, sizeof css, ", spring dampers %s N·s/m", v);
+    }
     if (m->boundary == BOUNDARY_MOTOR)
         snprintf(drive, sizeof drive, "motor: %s, %g m at %g Hz",
                  motor_wave_name(m->motor.wave), m->motor.amplitude, m->motor.frequency);
     else
         snprintf(drive, sizeof drive, "right end: %s", model_boundary_name(m->boundary));
-    snprintf(buf, len, "%s%s%d mass%s, m %s kg, k %s N/m, c %s N·s/m; %s; %s, dt %g s",
+    if (model_forced(m))
+        snprintf(force, sizeof force, "; force: %s, %g N at %g Hz on mass %d",
+                 motor_wave_name(m->motor.wave), m->force, m->motor.frequency, m->force_on + 1);
+    snprintf(buf, len, "%s%s%d mass%s, m %s kg, k %s N/m%s, c %s N·s/m%s; %s%s; %s, dt %g s",
              c->name[0] ? c->name : "", c->name[0] ? ": " : "", m->n, m->n == 1 ? "" : "es",
-             ms, ks, cs, drive, integrator_name(c->integrator), c->dt);
+             ms, ks, k3s, cs, css, drive, force, integrator_name(c->integrator), c->dt);
+}
+
+const char *report_frequency_label(const struct model *m)
+{
+    bool motor = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0;
+    bool force = model_forced(m);
+    if (force && !motor)
+        return "force frequency f (Hz)";
+    return motor && !force ? "motor frequency f (Hz)" : "drive frequency f (Hz)";
 }
 
 struct report_look report_look_of(const struct config *c, const char *subtitle)
 {
-    return (struct report_look){c->figure_title, subtitle, c->figure_w, c->figure_h};
+    return (struct report_look){c->figure_title, subtitle, c->figure_w, c->figure_h, NULL};
 }
 
 int report_headless_series(int n, bool energy)

@@ -28,7 +28,7 @@ static int draw_one(struct app *app, const struct fig_chart *c, int n, struct ou
     cfg.dt = sim_dt(app->sim);
     cfg.integrator = sim_integrator(app->sim);
     report_settings(&cfg, app->model, settings, sizeof settings);
-    struct report_look look = {NULL, settings, 0.0, 0.0};
+    struct report_look look = {NULL, settings, 0.0, 0.0, NULL};
     if (n > 0)
         return fig_view_report(o->fp, f, c, n, &look);
     return app->modes_ok ? report_modes(o->fp, f, app->model, app->modes, app->shapes, &look)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "../app/sweeping.h"
+#include "../fig/report.h"
 #include "../chart/strokes.h"
 #include "draw.h"
 #include "term.h"
@@ -335,7 +336,7 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
     chart_draw(c, m->n == 1 ? "Harmonic balance: amplitude (m), stable ━ unstable ┅ backbone ┄"
                             : "Harmonic balance: amplitude (m), stable ━ unstable ┅",
                "Harmonic balance (m)", "Hz", legend, k);
-    chart_report(c, "Harmonic balance and the sweeps up and down", "motor frequency f (Hz)",
+    chart_report(c, "Harmonic balance and the sweeps up and down", report_frequency_label(m),
                  "amplitude (m)");
     for (int i = 0; i < m->n && i < 10; i++)
         snprintf(c->report.name[FIG_MASS + i], sizeof c->report.name[0],
@@ -348,7 +349,7 @@ void branches_draw(struct response_view *rv, const struct app *app, bool fresh)
     if (rv->phase.frame.h > 0) {
         chart_draw(&rv->phase, "Phase to the drive (degrees; a lag is negative), harmonic "
                    "balance", "Phase (deg)", "Hz", NULL, 0);
-        chart_report(&rv->phase, "Phase", "motor frequency f (Hz)",
+        chart_report(&rv->phase, "Phase", report_frequency_label(m),
                      "phase to the drive (°; a lag is negative)");
         rv->phase.report.branches = true;
         draw_glyphs(&rv->phase, up, down, true);

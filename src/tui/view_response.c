@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "../app/sweeping.h"
+#include "../fig/report.h"
 #include "../chart/strokes.h"
 #include "../core/modes.h"
 #include "draw.h"
@@ -292,7 +293,7 @@ static int phase_legend(const struct response_view *rv, const struct app *app,
 static void report_words(struct chart *c, const struct app *app, const char *title,
                          const char *ylabel, bool ylog)
 {
-    chart_report(c, title, "motor frequency f (Hz)", ylabel);
+    chart_report(c, title, report_frequency_label(app->model), ylabel);
     struct fig_report *r = &c->report;
     r->xfreq = true, r->fmin = APP_FMIN, r->fmax = APP_FMAX, r->ylog = ylog;
     for (int i = 0; i < app->model->n && i < 10; i++)
