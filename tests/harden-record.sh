@@ -56,6 +56,22 @@ replays three.lesson "-n 3, a control adjusted, the modes view"
 record_keys res -p resonance -- Space wait Up Left wait Space
 replays res.lesson "-p resonance, controls adjusted while running"
 
+# A chain whose first step blows up at t = 0 pauses itself with no time run: the
+# recording must still leave the replay paused there, so that the mass placed next is
+# placed (it answered "ok pause first" and the replay ended elsewhere).
+record_keys blowup -- Tab Enter 1e-9 Enter R Space Tab Tab l
+replays blowup.lesson "a mass of 1e-9 kg, random, space (blows up at t = 0), a mass moved"
+# and Space twice before a frame ran: started and paused with no time between.
+record_keys quick -- Tab '  ' l
+replays quick.lesson "space twice at once, then a mass moved"
+printf 'set mass 1e-9\nrandom 7\nstart\nrun 1\nplace 1 0.3\nquit\n' |
+    "$SPRINGSIM" --plain --record plainblow.lesson >/dev/null 2>&1
+replays plainblow.lesson "plain: start, a run that blows up at once, place"
+# and place refused (the chain running) is an error, not "ok"
+printf 'start\nplace 1 0.3\nquit\n' | "$SPRINGSIM" --plain >"$out" 2>&1
+grep -q '^error pause first to move a mass' "$out" && pass ||
+    fail "place while running should be refused as an error: $(grep '^[oe]' "$out" | tr '\n' '|')"
+
 # 2. Run lines in their shortest form, and what they replay.
 printf 'run 2.34\nset frequency 0.5\nrun 1.34\nset frequency 0.6\nrun 0.07\nstart\nquit\n' |
     "$SPRINGSIM" --plain --record short.lesson >/dev/null 2>&1

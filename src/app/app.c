@@ -488,7 +488,7 @@ unsigned app_back(struct app *app)
 {
     if (app->running) {
         char hint[32];
-        app_say(app, SAID_NOTE, "pause first%s to step back",
+        app_say(app, SAID_ERROR, "pause first%s to step back",
                 app_key_hint(app, ACT_RUN, NULL, hint, sizeof hint));
         return 0;
     }
@@ -556,7 +556,7 @@ unsigned app_place_start(struct app *app, int i, double x0)
         return 0;
     if (app->running) {
         char hint[32];
-        app_say(app, SAID_NOTE, "pause first%s to move a mass",
+        app_say(app, SAID_ERROR, "pause first%s to move a mass",
                 app_key_hint(app, ACT_RUN, NULL, hint, sizeof hint));
         return 0;
     }

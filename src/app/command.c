@@ -466,10 +466,10 @@ static enum command_reply do_export(struct command_call *c)
 static enum command_reply do_run(struct command_call *c)
 {
     const char *why = config_parse_number(c->rest, c->value);
-    if (why || !(*c->value > 0.0 && *c->value <= RUN_MAX)) {
+    if (why || !(*c->value >= 0.0 && *c->value <= RUN_MAX)) {
         char q[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(c->rest, strlen(c->rest), q, sizeof q);
-        snprintf(c->answer, c->len, "run: %s %s (expected 0 < SECONDS <= %g)", q,
+        snprintf(c->answer, c->len, "run: %s %s (expected 0 <= SECONDS <= %g)", q,
                  why ? why : "is out of range", RUN_MAX);
         return REPLY_ERROR;
     }
@@ -551,8 +551,8 @@ const struct command commands[] = {
      "time T", say_cursor, .flags = 0},
     {"measure", "[MASS]", "period, frequency, peak-to-peak, rms, log decrement and zeta of a "
      "mass over the time window", say_measure, .flags = 0},
-    {"run", "SECONDS", "run SECONDS of simulated time at once (not in real time), then pause",
-     do_run, .flags = P | COMMAND_RUNS},
+    {"run", "SECONDS", "run SECONDS of simulated time at once (not in real time), then "
+     "pause (run 0: pause, nothing run)", do_run, .flags = P | COMMAND_RUNS},
     {"view", "NAME", "what the interactive program shows (lessons set the scene with it): "
      "plots, x, v, a, x-v, x-a, v-a (that plot enlarged), modes, response, energy or "
      "spectrum; nothing changes here", do_view, .flags = R},

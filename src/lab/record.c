@@ -88,6 +88,7 @@ static void run_to(struct record *r, double t, double dt, double pace)
     char num[32];
     format_run(t - r->t, dt, num, sizeof num);
     fprintf(r->mem, "run %s\n", num);
+    r->replay_runs = false;
     r->seconds += strtod(num, NULL);
     r->run_wall += (t - r->t) / (pace > 0.0 ? pace : 1.0);
     r->t = t;
@@ -105,9 +106,21 @@ static void wait_now(struct record *r)
     r->run_wall = 0.0;
 }
 
+/* The chain paused with no time run since the replay's last start (a blow-up at the
+ * first step, a pause before a frame ran): `run 0` pauses the replay there too, nothing
+ * stepped, as the blown-up step was undone. (A lesson's `pause` waits for the user.) */
+static void pause_to(struct record *r, bool running)
+{
+    if (!r->mem || !r->replay_runs || running)
+        return;
+    fputs("run 0\n", r->mem);
+    r->replay_runs = false;
+}
+
 void record_time(struct record *r, const struct app *app)
 {
     run_to(r, sim_time(app->sim), app->cfg.dt, app_clock_pace(app));
+    pause_to(r, app->running);
 }
 
 void record_line(struct record *r, const struct app *app, const char *line)
@@ -117,6 +130,7 @@ void record_line(struct record *r, const struct app *app, const char *line)
     wait_now(r);
     fprintf(r->mem, "%s\n", line);
     r->t = sim_time(app->sim);
+    r->replay_runs = app->running;
     r->lines++;
 }
 
@@ -169,6 +183,7 @@ void record_mark(struct record *r, const struct app *app)
     k->frequency = m->motor.frequency;
     k->speed = app->speed;
     k->pace = app_clock_pace(app);
+    k->running = app->running;
     k->force = app->cfg.force;
     k->force_on = app->cfg.force_on;
     k->integrator = (int)app->cfg.integrator;
@@ -199,6 +214,7 @@ static void put(struct record *r, const char *fmt, ...)
 {
     va_list ap;
     run_to(r, r->mark.t, r->mark.dt, r->mark.pace);
+    pause_to(r, r->mark.running);
     wait_now(r);
     va_start(ap, fmt);
     vfprintf(r->mem, fmt, ap);
@@ -252,6 +268,7 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
     const struct record_mark *k = &r->mark;
     const struct model *m = app->model;
     char num[32];
+    int lines = r->lines;
     if (!r->mem)
         return;
     if (cmd) {
@@ -319,6 +336,8 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
     }
     if (r->t == k->t)
         r->t = sim_time(app->sim);
+    if (r->lines != lines) /* the replay's chain runs as this key left it */
+        r->replay_runs = app->running;
 }
 
 void record_abandon(struct record *r)

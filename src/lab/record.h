@@ -30,6 +30,7 @@ struct record_mark {
     int n;                               /* masses */
     double dt, amplitude, frequency, speed;
     double pace;                         /* simulated seconds per wall second then */
+    bool running;                        /* whether the chain ran then */
     double force;                        /* the force input's amplitude (N) */
     int force_on;                        /* and its mass, 1-based as the settings hold it */
     int integrator, boundary, wave;
@@ -56,6 +57,8 @@ struct record {
     double wall;      /* the wall clock (app_clock_now) at the last command written */
     double run_wall;  /* the wall seconds the runs written since took at their speed */
     double seconds;   /* the simulated seconds of the run lines written, all added */
+    bool replay_runs; /* whether a replay's chain runs after the lines written (a start,
+                       * a mode; a run line ends paused) */
     struct record_mark mark; /* before the key being handled (record_mark) */
 };
 
