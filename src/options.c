@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/preset.h"
 #include "core/search.h"
@@ -194,11 +195,37 @@ static const char *written(char **argv, int index, char *buf, size_t len)
     return buf;
 }
 
+/* The file path names once its symbolic links are followed by name (to a file not made
+ * yet, too), into out: a link's relative target is taken from the link's directory. */
+static void link_target(const char *path, char *out, size_t len)
+{
+    snprintf(out, len, "%s", path);
+    struct stat st;
+    for (int hops = 0; hops < 40 && lstat(out, &st) == 0 && S_ISLNK(st.st_mode); hops++) {
+        char to[4096], next[4096];
+        ssize_t n = readlink(out, to, sizeof to - 1);
+        if (n <= 0)
+            return;
+        to[n] = '\0';
+        const char *slash = strrchr(out, '/');
+        int dir = to[0] == '/' || !slash ? 0 : (int)(slash - out) + 1;
+        int k = snprintf(next, sizeof next, "%.*s%s", dir, out, to);
+        if (k < 0 || (size_t)k >= sizeof next || (size_t)k >= len)
+            return; /* too long to follow: the name as far as it went */
+        memcpy(out, next, (size_t)k + 1);
+    }
+}
+
 /* Whether paths a and b name one file: the same device and inode where both exist, else
- * the same name in the same directory (its real path), so "out.csv" and "./out.csv" are
- * one file before either is written. */
+ * the same name in the same directory (its real path), their symbolic links followed, so
+ * "out.csv", "./out.csv" and a link to it are one file before any is written. */
 static bool same_file(const char *a, const char *b)
 {
+    char fa[4096], fb[4096];
+    link_target(a, fa, sizeof fa);
+    link_target(b, fb, sizeof fb);
+    a = fa;
+    b = fb;
     struct stat sa, sb;
     if (stat(a, &sa) == 0 && stat(b, &sb) == 0)
         return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;

@@ -252,6 +252,25 @@ for pair in "$tmp/same/a.svg $tmp/same/a.svg" "$tmp/same/b.png $tmp/same/../same
     usage_error "$cmd" "--figure: '$2' is also -o's file (expected a different file for each output)"
 done
 refused "is also -o's file" --modes -o "$tmp/same/m.pdf" --figure "$tmp/same/m.pdf"
+# and through symbolic links to a file not yet made (the CSV was lost): a link beside it,
+# a relative link from a directory below, a link to the directory, in either order.
+mkdir "$tmp/same/sub"
+ln -s new.svg "$tmp/same/dangling.svg"
+ln -s ../new.svg "$tmp/same/sub/up.svg"
+ln -s . "$tmp/same/here"
+for pair in "$tmp/same/new.svg $tmp/same/dangling.svg" "$tmp/same/dangling.svg $tmp/same/new.svg" \
+    "$tmp/same/sub/up.svg $tmp/same/dangling.svg" "$tmp/same/new.svg $tmp/same/sub/up.svg" \
+    "$tmp/same/d.svg $tmp/same/here/d.svg"; do
+    set -- $pair
+    run --headless --duration 1 -o "$1" --figure "$2"
+    usage_error "$cmd" "--figure: '$2' is also -o's file (expected a different file for each output)"
+    expect "$cmd: nothing written" "$(ls "$tmp/same" | grep -cx -e new.svg -e d.svg)" 0
+    rm -f "$tmp/same/new.svg" "$tmp/same/d.svg"
+done
+(cd "$tmp/same" && "$SPRINGSIM" --headless --duration 1 -o ./e.svg --figure e.svg >/dev/null 2>&1)
+expect "-o ./e.svg --figure e.svg: exit status" "$?" 2
+rm "$tmp/same/dangling.svg" "$tmp/same/here"
+rm -r "$tmp/same/sub"
 refused "--output: applies to" --plain --record "$tmp/same/r.svg" -o "$tmp/same/r.svg"
 refused "--figure: applies to" --plain --record "$tmp/same/r.svg" --figure "$tmp/same/r.svg"
 expect "the same file: nothing written" "$(ls "$tmp/same" | tr '\n' ' ')" "link.svg old.svg "
