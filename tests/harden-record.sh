@@ -4,10 +4,10 @@
 # the default chain with no preset (it wrote "element m 1 nan" lines), more masses and a
 # preset, keys that change elements and views; its run lines are the shortest decimals
 # (run 1.34, not 1.3400000000000003); a preset file whose name has two blanks in a row
-# replays. --record writes as -o does (core/output.c): a FIFO is written in place and stays
-# a FIFO, a character device stays one (as root), a symbolic link stays and its target is
-# written, a new file gets the umask's mode and an old one keeps its own, names of 249 to
-# 255 bytes are written, kill -9 leaves no file behind. --plain --replay that ends in
+# replays, from any directory (the recording holds its settings). --record writes as -o
+# does (core/output.c): a FIFO is written in place and stays a FIFO, a character device
+# stays one (as root), a symbolic link stays and its target is written, a new file gets
+# the umask's mode and an old one keeps its own, names of 249 to 255 bytes are written, kill -9 leaves no file behind. --plain --replay that ends in
 # another state says so and exits 1. A session past a lesson's 1800 s of runs ends its
 # recording there, said, and the file replays. Run from the repository root as
 # `sh tests/harden-record.sh`, SPRINGSIM naming the binary. Ends with
@@ -80,12 +80,27 @@ runs=$(grep '^run ' short.lesson | tr '\n' ' ')
     fail "run lines: expected 'run 2.34 run 1.34 run 0.07', got '$runs'"
 replays short.lesson "runs of 2.34, 1.34 and 0.07 s"
 
-# 3. A preset file with two blanks in its name.
+# 3. A preset file with two blanks in its name, named by a relative path: the recording
+# holds its settings, so that it replays from another directory (it replayed only from
+# the one it was made in), in plain mode and in the program (the Preset control typed).
 cp "$root/presets/beating.ini" "$tmp/a  b.ini"
 printf 'preset ./a  b.ini\nrun 1\nstart\nquit\n' | "$SPRINGSIM" --plain --record blanks.lesson >/dev/null 2>&1
-grep -qx 'preset ./a  b.ini' blanks.lesson && pass ||
-    fail "preset path with two blanks: $(grep '^preset' blanks.lesson)"
+grep -c '^setup$' blanks.lesson | grep -qx 2 && ! grep -q '^preset' blanks.lesson && pass ||
+    fail "a preset loaded should be recorded as its settings: $(grep -E '^(preset|setup)' blanks.lesson)"
 replays blanks.lesson "a preset path with two blanks"
+mkdir elsewhere
+cd elsewhere && replays ../blanks.lesson "a relative preset path, replayed from another directory"; cd "$tmp" || exit 1
+# and in the program, a preset chosen from the menu whose directory is relative
+mkdir mine
+cp "$root/presets/beating.ini" mine/aaa.ini
+start_in "$tmp" menu 80 24 SPRINGSIM_PRESETS=./mine -- --record menu.lesson
+S=menu
+wait_for 'Paused' 5
+for k in Enter Down Enter Space; do keys "$k"; sleep 0.4; done
+sleep 0.6
+keys q
+wait_for 'EXITED' 5
+cd elsewhere && replays ../menu.lesson "a preset from SPRINGSIM_PRESETS=./mine, replayed from elsewhere"; cd "$tmp" || exit 1
 
 # 4. A replay that ends elsewhere: said, exit 1.
 sed 's/^expect t=[^ ]* x1=[^ ]*/expect t=0x1p+0 x1=0x1p-1/' short.lesson >other.lesson

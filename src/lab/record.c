@@ -28,6 +28,15 @@ static void say_failed(char *err, size_t errlen, const char *path, const char *w
     snprintf(err, errlen, "%s: %s", safe, why);
 }
 
+/* The settings in force, after a setup line: the chain at the start, or a preset
+ * loaded (so that the recording replays from any directory, whatever became of the
+ * file since). */
+static void put_settings(struct record *r, const struct app *app)
+{
+    preset_write(r->mem, &app->cfg, app->model);
+    fputs("end\n", r->mem);
+}
+
 int record_start(struct record *r, const char *path, const struct app *app, char *err,
                  size_t errlen)
 {
@@ -51,8 +60,7 @@ int record_start(struct record *r, const char *path, const struct app *app, char
             "# springsim --replay FILE plays it back to the state on its last line.\n"
             "title Recorded %s\nsay A session recorded with --record: played back, it "
             "ends where the recording ended.\nsetup\n", VERSION, when);
-    preset_write(r->mem, &app->cfg, app->model);
-    fputs("end\n", r->mem);
+    put_settings(r, app);
     r->t = sim_time(app->sim);
     r->wall = app_clock_now();
     return 0;
@@ -142,17 +150,14 @@ void record_command(struct record *r, const struct app *app, const char *line)
     if (!r->mem || !cmd || !(cmd->flags & COMMAND_RECORDED))
         return;
     char text[2100];
+    if (cmd->flags & COMMAND_LOADS) {
+        record_line(r, app, "setup");
+        put_settings(r, app);
+        return;
+    }
     if (cmd->flags & COMMAND_SEEDED) {
         /* the seed it drew, so that the replay draws the same positions */
         snprintf(text, sizeof text, "%s %llu", cmd->name, (unsigned long long)app->cfg.seed);
-    } else if (cmd->flags & COMMAND_WHOLE) {
-        /* a file's name as typed, its blanks kept (the command takes the rest of the
-         * line, trimmed) */
-        const char *rest = w + n + strspn(w + n, " \t");
-        size_t len = strlen(rest);
-        while (len > 0 && (rest[len - 1] == ' ' || rest[len - 1] == '\t'))
-            len--;
-        snprintf(text, sizeof text, "%s %.*s", cmd->name, (int)len, rest);
     } else {
         /* the words as typed, their blanks made one */
         size_t o = 0;
@@ -277,7 +282,8 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         else
             put(r, "%s", cmd);
     } else if (app->loads != k->loads) {
-        put(r, "preset %s", app->preset_file);
+        put(r, "setup");
+        put_settings(r, app);
     } else if (m->n != k->n) {
         put(r, "set masses %d", m->n);
     } else {

@@ -1,7 +1,8 @@
 /* record.h: --record FILE: what the user does, written as a lesson file that --replay
  * plays back to the same state bit for bit. It opens with the chain as it was (a setup
  * block: the settings in force, every number exact), then one line per command done (a
- * key of the interactive program in its plain-mode words, or a command typed), each
+ * key of the interactive program in its plain-mode words, or a command typed; a preset
+ * loaded as a setup block of the settings it put in force), each
  * preceded by `run SECONDS` for the simulated time that passed since the line before
  * and by `wait SECONDS` for the wall-clock time those runs do not account for (the chain
  * paused while the user looked), so that a replay in the program keeps the pace, and
