@@ -288,6 +288,43 @@ static void captions_in_columns(void **state)
     assert_int_equal(caption_width("共振 ζ"), 6);
 }
 
+/* Whether every escape the program wrote (\xNN, \uXXXX, \UXXXXXXXX) in the lines is
+ * whole: a backslash not followed, on its own line, by the rest of its escape is one cut. */
+static bool escapes_whole(char (*lines)[CAPTION_LINE], int n)
+{
+    for (int i = 0; i < n; i++)
+        for (const char *s = strchr(lines[i], '\\'); s; s = strchr(s + 1, '\\')) {
+            size_t want = s[1] == 'x' ? 4 : s[1] == 'u' ? 6 : s[1] == 'U' ? 10 : 2;
+            if (strlen(s) < want)
+                return false;
+        }
+    return true;
+}
+
+/* A word of escaped characters (a joiner, an escape byte, a plane-1 format character)
+ * and CJK is cut between characters, never inside an escape, a UTF-8 sequence or a wide
+ * character, at every width. */
+static void captions_keep_escapes(void **state)
+{
+    (void)state;
+    static char lines[96][CAPTION_LINE];
+    char safe[4096];
+    caption_text("a\xe2\x80\x8d" "b\x1b" "c\xf3\xa0\x80\x81" "d共\xe2\x80\x8d" "振e word "
+                 "x\xe2\x80\x8dx\xe2\x80\x8dx\xe2\x80\x8dx\xe2\x80\x8dx", true, safe, sizeof safe);
+    assert_non_null(strstr(safe, "\\u200d"));
+    assert_non_null(strstr(safe, "\\x1b"));
+    assert_non_null(strstr(safe, "\\U000e0001"));
+    for (int cols = 1; cols <= 40; cols++) {
+        int n = caption_wrap(safe, cols, lines, 0, 96);
+        assert_true(escapes_whole(lines, n));
+        for (int i = 0; i < n; i++) {
+            assert_null(u8_check((const uint8_t *)lines[i], strlen(lines[i])));
+            /* wider than the panel only when one unit (an escape, a wide character) is */
+            assert_true(columns(lines[i]) <= (cols > 10 ? cols : 10));
+        }
+    }
+}
+
 /* Every step's caption of every built-in lesson, as the panel shows it (one paragraph,
  * the question and its choices), fits its rows at 80x24 and 60x20 or scrolls: the lines
  * are all there and every word of every say line is among them. */
@@ -363,6 +400,7 @@ int main(void)
         cmocka_unit_test(speed_and_wait),
         cmocka_unit_test(caption_bounded),
         cmocka_unit_test(captions_in_columns),
+        cmocka_unit_test(captions_keep_escapes),
         cmocka_unit_test(builtin_captions_whole),
     };
     int failed = cmocka_run_group_tests(tests, NULL, cleanup);

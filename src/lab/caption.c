@@ -37,8 +37,28 @@ void caption_text(const char *text, bool utf8, char *out, size_t len)
         out[o < len ? o : len - 1] = '\0';
 }
 
+/* The length of the escape at s that caption_text's escaping writes for a control or
+ * format character (\n, \xNN, \uXXXX, \UXXXXXXXX), or 0. */
+static size_t escape_length(const char *s)
+{
+    if (s[0] != '\\' || !s[1])
+        return 0;
+    if (strchr("abtnvfr", s[1]))
+        return 2;
+    size_t digits = s[1] == 'x' ? 2 : s[1] == 'u' ? 4 : s[1] == 'U' ? 8 : 0;
+    for (size_t i = 0; i < digits; i++)
+        if (!strchr("0123456789abcdef", s[2 + i]) || !s[2 + i])
+            return 0;
+    return digits ? digits + 2 : 0;
+}
+
 int caption_glyph(const char *s, size_t *len)
 {
+    size_t escape = escape_length(s);
+    if (escape) { /* shown as written, one column a byte, never cut */
+        *len = escape;
+        return (int)escape;
+    }
     if ((unsigned char)*s < 0x80) {
         *len = 1;
         return 1;

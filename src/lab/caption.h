@@ -2,7 +2,8 @@
  * echo of user text is (control bytes, and Unicode's format characters such as U+202E,
  * which would turn the terminal's line around), spelled in ASCII where the terminal has
  * no UTF-8, and wrapped to the panel's width in screen columns (a CJK character takes
- * two, a combining one none), never cut inside a UTF-8 sequence. No curses here. */
+ * two, a combining one none), never cut inside a UTF-8 sequence or an escape. No curses
+ * here. */
 #ifndef SPRINGSIM_CAPTION_H
 #define SPRINGSIM_CAPTION_H
 
@@ -16,7 +17,8 @@
 void caption_text(const char *text, bool utf8, char *out, size_t len);
 
 /* The character at s (NUL-terminated): its bytes into *len, its screen columns
- * returned (0 for a combining mark, 2 for a wide one, 1 for a byte that is not UTF-8). */
+ * returned (0 for a combining mark, 2 for a wide one, 1 for a byte that is not UTF-8);
+ * an escape written for a control or format character (\x1b, \u200d) is one whole. */
 int caption_glyph(const char *s, size_t *len);
 
 /* The screen columns of text (safe text, as caption_text makes it). */
