@@ -6,7 +6,8 @@
 # stopped waiting for them, are never taken as keys (their [, ?, g and digits would slow
 # the chain, open the help, show the ghost, enlarge a plot), and a key typed before they
 # came (space) is kept: the chain runs at 1x, no ghost, no help; the images they allow
-# come then, and the status line says so.
+# come then, and the status line says so. Answers parted by a slow link (the rest 1.5 s
+# later, or a byte every 30 ms) are never keys either.
 # A terminal that says its cells are 200 x 400 pixels (CSI 6;400;200 t) gets images of at
 # most 64 x 128 pixels a cell and 2048 x 2048 in all (kitty's placed over the whole area,
 # which kitty scales them to), and the program's peak memory stays under 64 MB: sixel at
@@ -59,6 +60,29 @@ for late in 150 400; do
     [ "$n" -ge 1 ] && pass || fail "$cmd: the late answers said sixel, but no image came"
     grep -q "answers came late" "$tmp/screen" && pass ||
         fail "$cmd: the status line should say the answers came late: $(brief 'late|sixel')"
+done
+
+# 1b. The same answers parted by a slow link: the last one (device attributes) 4 bytes in
+# and its rest 1.5 s later, or all of them a byte every 30 ms while the program switches
+# to sixel. None of their bytes act as keys (its rest selected, slowed, showed the ghost,
+# and q'd the program at once); the space typed before them is kept, and sixel comes.
+# (The byte-by-byte answers, the palette's with them, take longer than GRAPHICS_LATE_S:
+# braille stays, said.)
+for parted in PIXTERM_PART=1500 PIXTERM_DRIP=30; do
+    export "$parted"
+    term "sixel+150" 100 30 10 20 '^ ~~~~q' -p resonance
+    unset PIXTERM_PART PIXTERM_DRIP
+    cmd="$parted $cmd"
+    [ "$rc" -eq 0 ] && pass || fail "$cmd: exit $rc"
+    if grep -q 'Running' "$tmp/screen" && grep -qE 'Speed +1x' "$tmp/screen" &&
+        ! grep -qE 'ghost|┌ Keys|select a mass' "$tmp/screen"; then pass; else
+        fail "$cmd: the answers' bytes acted as keys: $(brief 'Running|Paused|Speed|ghost|select')"
+    fi
+    [ "$parted" = PIXTERM_DRIP=30 ] && continue
+    n=$("$SIXELCHECK" "$tmp/out" 005fff | grep -c '^sixel ')
+    if [ "$n" -ge 1 ] && grep -q "answers came late" "$tmp/screen"; then pass; else
+        fail "$cmd: the parted answers said sixel: $n images; $(brief 'late|sixel|Graphics')"
+    fi
 done
 
 # 2. Cells of 200 x 400 pixels.

@@ -11,7 +11,10 @@
  * slow link. The palette (OSC 4) and the foreground (OSC 10) are answered as xterm's
  * defaults (black on the background given), but for the entries PIXTERM_PALETTE gives
  * ("N=RRGGBB,...,fg=RRGGBB"); PIXTERM_PALETTE=none answers neither. PIXTERM_TERM is the
- * program's TERM (default xterm-256color). KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is
+ * program's TERM (default xterm-256color). PIXTERM_DRIP=MS sends the answers a byte every
+ * MS milliseconds; PIXTERM_PART=MS parts them 4 bytes into the last one (device
+ * attributes), its rest MS milliseconds later, as a slow link may.
+ * KEYS is typed one character every 0.3 s; '~' waits a second instead; "\e" is
  * Esc; a first character '^' types the one after it as soon as the queries are seen,
  * before any answer. The
  * program gets TERM=xterm-256color, no TMUX or STY. Exits when it does, or after 30 s;
@@ -38,8 +41,10 @@ static double now_s(void)
 
 static int delay_ms;          /* the answers' lateness */
 static char late[8192];       /* answers on their way */
-static size_t nlate;
-static double late_at;        /* when they go */
+static size_t nlate, sent;    /* their bytes, and those sent so far */
+static double late_at;        /* when the next of them go */
+static size_t last_answer;    /* where the last answer begins in late */
+static int drip_ms, part_ms;  /* PIXTERM_DRIP, PIXTERM_PART */
 
 static void say(int fd, const char *s)
 {
@@ -48,7 +53,7 @@ static void say(int fd, const char *s)
         if (nlate == 0)
             late_at = now_s() + delay_ms / 1e3;
         if (nlate + n <= sizeof late)
-            memcpy(late + nlate, s, n), nlate += n;
+            last_answer = nlate, memcpy(late + nlate, s, n), nlate += n;
         return;
     }
     if (write(fd, s, strlen(s)) < 0)
@@ -159,6 +164,8 @@ int main(int argc, char **argv)
     int cols = atoi(argv[2]), rows = atoi(argv[3]), cw = atoi(argv[4]), ch = atoi(argv[5]);
     if (strchr(kind, '+'))
         delay_ms = atoi(strchr(kind, '+') + 1);
+    drip_ms = getenv("PIXTERM_DRIP") ? atoi(getenv("PIXTERM_DRIP")) : 0;
+    part_ms = getenv("PIXTERM_PART") ? atoi(getenv("PIXTERM_PART")) : 0;
     char early = 0;
     if (keys[0] == '^' && keys[1])
         early = keys[1], keys += 2;
@@ -205,10 +212,18 @@ int main(int argc, char **argv)
             }
             k++;
         }
-        if (nlate && t >= late_at) {
-            if (write(fd, late, nlate) < 0)
+        if (nlate > sent && t >= late_at) {
+            /* all at once, a byte at a time (PIXTERM_DRIP), or in two parts (PIXTERM_PART) */
+            size_t n = nlate - sent;
+            if (drip_ms > 0)
+                n = 1, late_at = t + drip_ms / 1e3;
+            else if (part_ms > 0 && sent < last_answer + 4)
+                n = last_answer + 4 - sent, late_at = t + part_ms / 1e3;
+            if (write(fd, late + sent, n) < 0)
                 perror("pixterm: write");
-            nlate = 0;
+            sent += n;
+            if (sent == nlate)
+                nlate = sent = 0;
         }
         struct pollfd p = {fd, POLLIN, 0};
         if (poll(&p, 1, 5) <= 0)

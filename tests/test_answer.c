@@ -127,8 +127,8 @@ static void not_answers(void **state)
     assert_int_equal(answer_key(&scan), -1);
 }
 
-/* A part-answer waits ANSWER_GAP for its next byte, then is keys; a lone Esc is a key at
- * once when nothing follows it. */
+/* A part-answer quiet past ANSWER_GAP goes on only with what an answer holds there, else
+ * is dropped (or keys: Alt+]); a lone Esc is a key after ANSWER_ESC_WAIT. */
 static void gaps(void **state)
 {
     (void)state;
@@ -158,9 +158,12 @@ static void gaps(void **state)
     assert_int_equal(answer_key(&scan), 0x1b);
     assert_int_equal(answer_key(&scan), ']');
     assert_int_equal(answer_key(&scan), 'z');
-    /* A lone Esc. */
+    /* A lone Esc: a key once ANSWER_ESC_WAIT passed with nothing after it (a link may
+     * part what a terminal sends by a few tens of milliseconds). */
     answer_feed(&scan, 0x1b, 6.0);
-    answer_idle(&scan, 6.0);
+    answer_idle(&scan, 6.0 + ANSWER_ESC_WAIT * 0.5);
+    assert_int_equal(answer_key(&scan), -1);
+    answer_idle(&scan, 6.0 + ANSWER_ESC_WAIT);
     assert_int_equal(answer_key(&scan), 0x1b);
     assert_false(answer_holding(&scan));
     /* While answers are due, a lone Esc waits ANSWER_ESC_HOLD for the rest of one (a slow
@@ -174,6 +177,65 @@ static void gaps(void **state)
     answer_feed(&scan, 0x1b, 8.0);
     answer_idle_awaiting(&scan, 8.0 + ANSWER_ESC_HOLD * 1.1);
     assert_int_equal(answer_key(&scan), 0x1b);
+}
+
+/* Feeds text from `at`, byte k at at + k * step, telling the scanner nothing more came
+ * (answer_idle, as the loop does when nothing is there) every `idle` seconds between two
+ * bytes; a gap of `gap` seconds before byte `cut` (0: none). The keys that came out. */
+static const char *parted(const char *text, size_t cut, double gap, double step, double idle)
+{
+    static char keys[4096];
+    size_t n = 0;
+    double t = 100.0;
+    int k;
+    setup_scan();
+    for (size_t i = 0; text[i]; i++) {
+        double next = t + (i == cut && cut ? gap : step);
+        for (double q = t + idle; i && q < next; q += idle)
+            answer_idle(&scan, q);
+        t = i ? next : t;
+        answer_feed(&scan, (unsigned char)text[i], t);
+        while ((k = answer_key(&scan)) >= 0 && n < sizeof keys - 1)
+            keys[n++] = (char)k;
+    }
+    answer_idle(&scan, t + 2 * ANSWER_GAP);
+    while ((k = answer_key(&scan)) >= 0 && n < sizeof keys - 1)
+        keys[n++] = (char)k;
+    keys[n] = '\0';
+    return keys;
+}
+
+/* Each start-up answer parted anywhere by a slow link (1.5 s between its parts, longer
+ * than ANSWER_GAP), or coming a byte every 30 ms, between two keys: the keys, and none
+ * of its bytes (but an Esc parted from the rest, which no program can tell from the
+ * user's). A lone Esc is still a key within ANSWER_ESC_WAIT. */
+static void parted_answers(void **state)
+{
+    (void)state;
+    static const char *const answers[] = {
+        "\033[?62;1;2;6;9;15;22c", "\033[6;20;10t", "\033[4;600;1000t", "\033[?1;0;256S",
+        "\033]11;rgb:ffff/ffff/ffff\033\\", "\033]4;1;rgb:cd00/0000/0000\007",
+        "\033_Gi=31;OK\033\\", "\033P1$r0m\033\\"};
+    for (size_t a = 0; a < sizeof answers / sizeof *answers; a++) {
+        char text[128];
+        snprintf(text, sizeof text, "x%sy", answers[a]);
+        for (size_t cut = 2; cut + 1 < strlen(text); cut++) {
+            /* Parted right after its Esc: the Esc alone is a key by then (a user's Esc
+             * is never kept waiting more than ANSWER_ESC_WAIT), the rest is not. */
+            const char *want = cut == 2 ? "x\033y" : "xy";
+            const char *keys = parted(text, cut, 1.5, 0.0, 0.05);
+            if (strcmp(keys, want) != 0)
+                fail_msg("answer %zu parted before byte %zu: keys '%s'", a, cut, keys);
+        }
+        const char *keys = parted(text, 0, 0.0, 0.03, 0.01);
+        if (strcmp(keys, "xy") != 0)
+            fail_msg("answer %zu a byte every 30 ms: keys '%s'", a, keys);
+    }
+    setup_scan();
+    answer_feed(&scan, 0x1b, 1.0);
+    answer_idle(&scan, 1.0 + ANSWER_ESC_WAIT);
+    assert_int_equal(answer_key(&scan), 0x1b);
+    assert_true(ANSWER_ESC_WAIT <= 0.1);
 }
 
 /* A string longer than ANSWER_MAX is swallowed to its end, not read; the keys after it
@@ -202,7 +264,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(answers_between_keys), cmocka_unit_test(byte_by_byte_late),
         cmocka_unit_test(not_answers),          cmocka_unit_test(gaps),
-        cmocka_unit_test(too_long),
+        cmocka_unit_test(too_long),             cmocka_unit_test(parted_answers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

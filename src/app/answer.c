@@ -18,13 +18,14 @@ static void push_key(struct answer_scan *s, int ch)
         s->keys[s->nkeys++] = ch;
 }
 
-/* What is held was keys after all. */
+/* What is held was keys after all (but an Esc already given as a key: s->tail). */
 static void give_back(struct answer_scan *s)
 {
-    for (int i = 0; i < s->nheld; i++)
+    for (int i = s->tail ? 1 : 0; i < s->nheld; i++)
         push_key(s, s->held[i]);
     s->nheld = 0;
     s->truncated = false;
+    s->tail = false;
 }
 
 /* What is held stopped short of an answer's end: keys if it is only an Esc and an
@@ -38,6 +39,7 @@ static void cut_off(struct answer_scan *s)
     }
     s->nheld = 0;
     s->truncated = false;
+    s->tail = false;
     s->dropped++;
 }
 
@@ -48,6 +50,7 @@ static bool finish(struct answer_scan *s)
     s->answer_len = (size_t)s->nheld;
     s->answer[s->answer_len] = '\0';
     s->nheld = 0;
+    s->tail = false;
     if (s->truncated) {
         s->truncated = false;
         s->dropped++;
@@ -110,12 +113,36 @@ static int string_byte(struct answer_scan *s, int ch)
     return -1;
 }
 
+/* Whether ch goes on with what is held after ANSWER_GAP seconds without a byte. A
+ * terminal's bytes come in order with no key between them, so the rest of an answer a
+ * slow link parted is what comes next; but only what an answer holds there goes on with
+ * it (Alt+[ then a letter typed later is keys): a CSI answer's digits, ';', '?' first and
+ * its final c, t or S; a string answer's text (OSC and DCS begin with a digit, DCS
+ * perhaps with '>', kitty's APC with G). */
+static bool goes_on(const struct answer_scan *s, int ch)
+{
+    int intro = s->held[1];
+    bool digit = ch >= '0' && ch <= '9';
+    if (intro == '[')
+        return digit || ch == ';' || (s->nheld == 2 ? ch == '?' : ch == 'c' || ch == 't' ||
+                                                              ch == 'S');
+    if (s->nheld > 2)
+        return ch == ESC || ch == 0x07 || (ch > 0x20 && ch < 0x7f);
+    return intro == '_' ? ch == 'G' : digit || (intro == 'P' && ch == '>');
+}
+
 bool answer_feed(struct answer_scan *s, int ch, double now)
 {
-    if (s->nheld > 0 && now - s->last > ANSWER_GAP)
+    bool late = now - s->last > ANSWER_GAP;
+    if (s->nheld > 1 && (late || s->tail) && !goes_on(s, ch))
         cut_off(s);
-    if (s->skipping && now - s->last > ANSWER_GAP)
-        s->skipping = false;
+    /* The byte after an Esc that went as a key (answer_idle): an answer's introducer
+     * begins its rest, held as if the Esc were there (nothing of it is a key). */
+    if (s->nheld == 0 && s->esc_out && (ch == '[' || ch == ']' || ch == '_' || ch == 'P')) {
+        s->held[s->nheld++] = ESC;
+        s->tail = true;
+    }
+    s->esc_out = false;
     s->last = now;
     if (s->skipping) {
         if (ch >= 0x20 && ch <= 0x3f)
@@ -171,19 +198,27 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
     }
 }
 
+/* A lone Esc held `hold` seconds is a key (remembered: an answer's rest may follow it);
+ * an introducer alone after it, ANSWER_GAP seconds (Esc then [ typed). A longer part
+ * stays held: what comes next says (answer_feed). */
+static void idle(struct answer_scan *s, double now, double hold)
+{
+    if (s->nheld == 1 && now - s->last >= hold - 1e-9) {
+        give_back(s);
+        s->esc_out = true;
+    } else if (s->nheld == 2 && s->tail && now - s->last > ANSWER_GAP) {
+        give_back(s);
+    }
+}
+
 void answer_idle(struct answer_scan *s, double now)
 {
-    if (s->nheld == 1)
-        give_back(s);
-    else if (s->nheld > 1 && now - s->last > ANSWER_GAP)
-        cut_off(s);
+    idle(s, now, ANSWER_ESC_WAIT);
 }
 
 void answer_idle_awaiting(struct answer_scan *s, double now)
 {
-    if (s->nheld == 1 && now - s->last < ANSWER_ESC_HOLD)
-        return;
-    answer_idle(s, now);
+    idle(s, now, ANSWER_ESC_HOLD);
 }
 
 int answer_key(struct answer_scan *s)

@@ -9,16 +9,18 @@
  *   DCS ... ST      (DECRQSS, XTGETTCAP)
  * (each also with its 8-bit introducer, 0x9b for CSI, where no UTF-8 character typed is
  * under way). No key starts like these but Alt with [, ], _ or P. A sequence cut short
- * (by a byte no answer holds: a control character, an Esc, a curses key code; or by
- * ANSWER_GAP seconds without its next byte) is given back as keys when it is only Esc
- * and the introducer,
- * and dropped otherwise (a terminal's garbage or an answer cut off: its bytes as keys
- * would act at random). A complete CSI sequence that is no answer (a key curses did not
+ * (by a byte no answer holds: a control character, an Esc, a curses key code; or, after
+ * ANSWER_GAP seconds without its next byte, by one that no answer holds there) is given
+ * back as keys when it is only Esc and the introducer, and dropped otherwise (a
+ * terminal's garbage or an answer cut off: its bytes as keys would act at random). A
+ * terminal's bytes come in order with no key between them, so a part held goes on with
+ * the rest of its answer however late that comes (a slow link parts answers). A complete CSI sequence that is no answer (a key curses did not
  * know, a focus event, a paste bracket, a terminal's garbage) is dropped too: as keys its
  * [ and digits would change the speed and the views. A string longer than ANSWER_MAX is
- * swallowed to its end, and so is a CSI that long. A lone Esc is given back as soon as
- * nothing follows it (answer_idle), or after ANSWER_ESC_HOLD seconds while answers are
- * awaited (a slow link may part an answer right after its Esc). */
+ * swallowed to its end, and so is a CSI that long. A lone Esc is given back once nothing
+ * followed it for ANSWER_ESC_WAIT seconds (answer_idle), or ANSWER_ESC_HOLD while answers
+ * are awaited; an answer's rest that comes after it went (parted right after its Esc) is
+ * still held and swallowed, the Esc alone having acted. */
 #ifndef SPRINGSIM_ANSWER_H
 #define SPRINGSIM_ANSWER_H
 
@@ -29,6 +31,7 @@
 #define ANSWER_KEYS 1024 /* keys waiting, at most (older ones are kept, newer dropped) */
 #define ANSWER_GAP 1.0   /* seconds a part-answer waits for its next byte */
 #define ANSWER_ESC_HOLD 0.3 /* seconds a lone Esc waits for more while answers are due */
+#define ANSWER_ESC_WAIT 0.1 /* and otherwise (a link that parts what a terminal sends) */
 
 struct answer_scan {
     int held[ANSWER_MAX]; /* what may be an answer, so far */
@@ -45,6 +48,8 @@ struct answer_scan {
     int utf8_left;       /* continuation bytes the last UTF-8 character typed still has
                           * (so a 0x9b inside one is no 8-bit CSI) */
     bool truncated;      /* the string held lost its text (longer than ANSWER_MAX) */
+    bool esc_out;        /* the last input was a lone Esc given as a key */
+    bool tail;           /* what is held follows that Esc: held[0] stands for it */
 };
 
 /* Feeds one input: a byte (0..255), or a curses key code above 255, that came at `now`
@@ -52,8 +57,8 @@ struct answer_scan {
  * turns out to be keys waits for answer_key. */
 bool answer_feed(struct answer_scan *s, int ch, double now);
 
-/* Nothing more is waiting to be read at `now`: a lone Esc held is a key, and so is a
- * part-answer quiet for ANSWER_GAP seconds. */
+/* Nothing more is waiting to be read at `now`: a lone Esc held ANSWER_ESC_WAIT seconds
+ * is a key. */
 void answer_idle(struct answer_scan *s, double now);
 
 /* The same while answers are awaited: a lone Esc waits ANSWER_ESC_HOLD seconds first. */

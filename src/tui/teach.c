@@ -15,23 +15,37 @@
 #define RUN_WINDOW_MAX 60.0 /* a run longer than this is shown by its last 60 s */
 #define PANEL_LINES 96      /* caption lines kept, at most */
 
+/* Whether k stops what the program computes at once. */
+static bool stops(int k)
+{
+    return k == 27 || k == 'q' || k == 3;
+}
+
 /* Esc, q or Ctrl+C typed (or a signal that ends the program) while the program computes
- * at once: the lesson's check, a step back, a run finished. Other keys typed meanwhile
- * are put back, in their order, for when it is done (space pressed four times goes on
- * four times). */
+ * at once: the lesson's check, a step back, a run finished. What the terminal sent goes
+ * through the answers' scanner (answer.h), as every key does, so that an answer arriving
+ * now is no Esc; the keys typed meanwhile stay there, in their order, for when it is done
+ * (space pressed four times goes on four times), but the one that stopped it. */
 static bool key_stop(void *ctx)
 {
-    (void)ctx;
-    int ch, kept[64], n = 0;
+    struct teach *t = ctx;
+    struct answer_scan *s = &t->gfx->answers;
+    int ch;
     timeout(0);
-    while ((ch = getch()) != ERR) {
-        if (ch == 27 || ch == 'q' || ch == 3)
+    while ((ch = getch()) != ERR)
+        if (answer_feed(s, ch, app_clock_now()))
+            graphics_heard(t->gfx, s->answer);
+    if (graphics_awaiting(t->gfx))
+        answer_idle_awaiting(s, app_clock_now());
+    else
+        answer_idle(s, app_clock_now());
+    for (int i = s->key_at; i < s->nkeys; i++)
+        if (stops(s->keys[i])) {
+            memmove(s->keys + i, s->keys + i + 1,
+                    (size_t)(s->nkeys - i - 1) * sizeof *s->keys);
+            s->nkeys--;
             return true;
-        if (n < (int)(sizeof kept / sizeof *kept))
-            kept[n++] = ch;
-    }
-    while (n > 0)
-        ungetch(kept[--n]);
+        }
     return term_quit_signal() != 0;
 }
 
@@ -130,7 +144,7 @@ static void leave(struct teach *t, struct app *app, bool said)
  * Esc, q or Ctrl+C left the lesson meanwhile (a long run of a heavy chain). */
 static bool finish_run(struct teach *t, struct app *app)
 {
-    struct lesson_stop stop = {.fn = key_stop};
+    struct lesson_stop stop = {.fn = key_stop, .ctx = t};
     if (t->playing)
         lesson_run_to(app, t->run_end, &stop);
     t->playing = false;
@@ -164,7 +178,7 @@ void teach_open(struct teach *t, const char *path, struct app *app)
     lesson_free(&t->own);
     int st = lesson_read(path, &t->own, err, sizeof err);
     if (st == 0) {
-        struct lesson_stop stop = {.fn = key_stop};
+        struct lesson_stop stop = {.fn = key_stop, .ctx = t};
         config_init(&base);
         base.color = app->cfg.color;
         base.glyphs = app->cfg.glyphs;
@@ -232,7 +246,7 @@ static void back(struct teach *t, struct app *app)
     }
     int end = lesson_step_end(t->lesson, target);
     const struct lesson_item *it;
-    struct lesson_stop stop = {.fn = key_stop};
+    struct lesson_stop stop = {.fn = key_stop, .ctx = t};
     double next = 0.0;
     t->playing = false;
     t->wait_end = 0.0;
@@ -240,7 +254,7 @@ static void back(struct teach *t, struct app *app)
     while ((it = lesson_next(&t->play))) {
         if (it->kind == LESSON_COMMAND && app_clock_now() >= next) {
             next = app_clock_now() + LESSON_POLL;
-            if (key_stop(&stop)) {
+            if (key_stop(t)) {
                 leave(t, app, true);
                 return;
             }

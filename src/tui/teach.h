@@ -15,6 +15,7 @@
 #include "../app/app.h"
 #include "../chart/layout.h"
 #include "../lab/lesson.h"
+#include "graphics.h"
 
 struct teach {
     struct lesson own;           /* a lesson chosen from the menu (L), read here */
@@ -32,6 +33,8 @@ struct teach {
     int view;                    /* a view a `view` command asked for (enum command_view), or
                                   * -1: the caller shows it and sets -1 */
     char note[160];              /* the answer to the question, shown below it */
+    struct graphics *gfx;        /* the terminal's answers (set by the caller): what is
+                                  * typed while computing is read through its scanner */
 };
 
 /* Starts playing l (checked already) on app to its first pause, question, run or wait;

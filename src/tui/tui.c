@@ -169,13 +169,14 @@ static int next_key(struct tui *t, int ms)
         int k = answer_key(s);
         if (k >= 0)
             return k;
-        /* What follows an Esc curses hands over with it: waiting would only delay Esc;
-         * but while answers are due, a slow link may part one right after its Esc. */
+        /* A lone Esc waits the rest of its hold for what may follow it (a link can part
+         * an answer right after its Esc: longer while answers are due). */
         bool due = graphics_awaiting(&t->gfx);
         int wait = ms;
-        if (s->nheld == 1) { /* a lone Esc: the rest of its hold while answers are due */
-            int hold = (int)((ANSWER_ESC_HOLD - (app_clock_now() - s->last)) * 1000.0) + 1;
-            wait = !due || hold < 0 ? 0 : hold < ms ? hold : ms;
+        if (s->nheld == 1) {
+            double hold = due ? ANSWER_ESC_HOLD : ANSWER_ESC_WAIT;
+            int left = (int)((hold - (app_clock_now() - s->last)) * 1000.0) + 1;
+            wait = left < 0 ? 0 : left < ms ? left : ms;
         }
         timeout(wait);
         int ch = getch();
@@ -244,6 +245,7 @@ static bool tui_start(struct tui *t, const struct config *cfg, const char *exe_d
     t->gfx_start = t->gfx.waiting;
     t->app.graphics_now = graphics_now(&t->gfx);
     t->teach.view = -1;
+    t->teach.gfx = &t->gfx;
     screen_relayout(t);
     if (lesson) {
         teach_start(&t->teach, lesson, &t->app, cfg->replay != NULL);
