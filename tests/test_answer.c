@@ -91,9 +91,9 @@ static void not_answers(void **state)
     /* A lone Esc, Esc then a letter (Alt+x), Esc Esc. */
     assert_string_equal(run("\033", 0, ans, sizeof ans), "\033");
     assert_string_equal(run("\033x\033\033y", 0, ans, sizeof ans), "\033x\033\033y");
-    /* Keys curses did not translate, focus events, paste brackets, a wrong final byte:
+    /* Keys curses did not translate, focus events, a paste's end alone, a wrong final byte:
      * CSI sequences that are no answer, dropped (their [ and digits would act). */
-    assert_string_equal(run("\033[A\033[1;5Cx\033[15~\033[I\033[O\033[200~\033[6;16;8T", 0,
+    assert_string_equal(run("\033[A\033[1;5Cx\033[15~\033[I\033[O\033[201~\033[6;16;8T", 0,
                             ans, sizeof ans),
                         "x");
     /* 8-bit CSI: an answer; the same byte inside a UTF-8 character (ě is C4 9B): keys. */
@@ -238,6 +238,45 @@ static void parted_answers(void **state)
     assert_true(ANSWER_ESC_WAIT <= 0.1);
 }
 
+/* Text pasted (bracketed paste) is no keys, whatever it holds: the keys around it are,
+ * its text is kept to its first new line; a paste whose end never comes ends after
+ * ANSWER_GAP. Without brackets, ANSWER_BURST printable keys read at once are a paste,
+ * dropped; fewer are typing. */
+static void pastes(void **state)
+{
+    (void)state;
+    char ans[64];
+    setup_scan();
+    assert_string_equal(run("a\033[200~q?[]1 gG\r\033[201~b\033[200~x\033[201~", 0, ans,
+                            sizeof ans), "ab");
+    assert_int_equal(scan.pastes, 2);
+    assert_string_equal(scan.paste, "x");
+    setup_scan();
+    answer_feed(&scan, 0x1b, 1.0);
+    for (const char *p = "[200~12.5\rq"; *p; p++)
+        answer_feed(&scan, (unsigned char)*p, 1.0);
+    assert_int_equal(answer_key(&scan), -1);
+    assert_string_equal(scan.paste, "12.5");
+    answer_idle(&scan, 1.0 + ANSWER_GAP * 0.5);
+    assert_true(scan.pasting);
+    answer_feed(&scan, 'q', 1.0 + ANSWER_GAP * 2);
+    assert_false(scan.pasting);
+    assert_int_equal(answer_key(&scan), 'q');
+    answer_paste_keys(&scan);
+    assert_int_equal(answer_key(&scan), '1');
+    setup_scan();
+    for (int i = 0; i < ANSWER_BURST - 1; i++)
+        answer_feed(&scan, ' ', 1.0);
+    assert_int_equal(answer_burst(&scan), 0);
+    assert_int_equal(answer_key(&scan), ' ');
+    setup_scan();
+    for (const char *p = "set frequency 0.7\rq"; *p; p++)
+        answer_feed(&scan, (unsigned char)*p, 1.0);
+    assert_int_equal(answer_burst(&scan), 19);
+    assert_int_equal(answer_key(&scan), -1);
+    assert_string_equal(scan.paste, "set frequency 0.7");
+}
+
 /* A string longer than ANSWER_MAX is swallowed to its end, not read; the keys after it
  * come through. A CSI that long is swallowed to its final byte too. */
 static void too_long(void **state)
@@ -265,6 +304,7 @@ int main(void)
         cmocka_unit_test(answers_between_keys), cmocka_unit_test(byte_by_byte_late),
         cmocka_unit_test(not_answers),          cmocka_unit_test(gaps),
         cmocka_unit_test(too_long),             cmocka_unit_test(parted_answers),
+        cmocka_unit_test(pastes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

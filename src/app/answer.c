@@ -69,6 +69,38 @@ static bool csi_answer(const struct answer_scan *s)
     return s->held[2] == '?' || final == 't' || final == 'c';
 }
 
+/* Whether the CSI held is the start of a bracketed paste, CSI 200 ~. */
+static bool paste_start(const struct answer_scan *s)
+{
+    static const int start[] = {ESC, '[', '2', '0', '0', '~'};
+    if (s->nheld != 6)
+        return false;
+    for (int i = 0; i < 6; i++)
+        if (s->held[i] != start[i])
+            return false;
+    return true;
+}
+
+/* ch inside a bracketed paste: its text kept to the first control byte, the paste ended
+ * by CSI 201 ~. */
+static void paste_byte(struct answer_scan *s, int ch)
+{
+    static const char end[] = "\033[201~";
+    if (ch == end[s->paste_end]) {
+        if (++s->paste_end == (int)sizeof end - 1) {
+            s->pasting = false;
+            s->pastes++;
+        }
+        return;
+    }
+    s->paste_end = ch == ESC;
+    if (ch < 0x20 || ch == 0x7f || ch > 0xff)
+        s->paste_cut = true;
+    else if (!s->paste_cut && s->paste_len < ANSWER_PASTE)
+        s->paste[s->paste_len++] = (char)ch;
+    s->paste[s->paste_len] = '\0';
+}
+
 /* ch after ESC [ ...: 0 held, 1 an answer completed, -1 not an answer (ch not taken). */
 static int csi_byte(struct answer_scan *s, int ch)
 {
@@ -80,6 +112,13 @@ static int csi_byte(struct answer_scan *s, int ch)
         s->held[s->nheld++] = ch;
         if (csi_answer(s))
             return finish(s);
+        if (paste_start(s)) { /* the text that follows is pasted, not typed */
+            s->pasting = true;
+            s->paste_end = 0;
+            s->paste_cut = false;
+            s->paste_len = 0;
+            s->paste[0] = '\0';
+        }
         s->nheld = 0; /* no answer, and no key curses knew: nothing to act on */
         s->dropped++;
         return 0;
@@ -134,6 +173,15 @@ static bool goes_on(const struct answer_scan *s, int ch)
 bool answer_feed(struct answer_scan *s, int ch, double now)
 {
     bool late = now - s->last > ANSWER_GAP;
+    if (s->pasting && late) { /* its end never came: what comes now is typed */
+        s->pasting = false;
+        s->pastes++;
+    }
+    if (s->pasting) {
+        s->last = now;
+        paste_byte(s, ch);
+        return false;
+    }
     if (s->nheld > 1 && (late || s->tail) && !goes_on(s, ch))
         cut_off(s);
     /* The byte after an Esc that went as a key (answer_idle): an answer's introducer
@@ -213,12 +261,43 @@ static void idle(struct answer_scan *s, double now, double hold)
 
 void answer_idle(struct answer_scan *s, double now)
 {
+    if (s->pasting && now - s->last > ANSWER_GAP) {
+        s->pasting = false;
+        s->pastes++;
+    }
     idle(s, now, ANSWER_ESC_WAIT);
 }
 
 void answer_idle_awaiting(struct answer_scan *s, double now)
 {
     idle(s, now, ANSWER_ESC_HOLD);
+}
+
+int answer_burst(struct answer_scan *s)
+{
+    int printable = 0, n = s->nkeys - s->key_at;
+    for (int i = s->key_at; i < s->nkeys; i++)
+        printable += s->keys[i] >= 0x20 && s->keys[i] < 0x7f;
+    if (printable < ANSWER_BURST)
+        return 0;
+    s->paste_len = 0;
+    for (int i = s->key_at; i < s->nkeys; i++) {
+        int k = s->keys[i];
+        if (k < 0x20 || k == 0x7f || k > 0xff)
+            break;
+        if (s->paste_len < ANSWER_PASTE)
+            s->paste[s->paste_len++] = (char)k;
+    }
+    s->paste[s->paste_len] = '\0';
+    s->key_at = s->nkeys = 0;
+    s->pastes++;
+    return n;
+}
+
+void answer_paste_keys(struct answer_scan *s)
+{
+    for (size_t i = 0; i < s->paste_len; i++)
+        push_key(s, (unsigned char)s->paste[i]);
 }
 
 int answer_key(struct answer_scan *s)

@@ -20,7 +20,10 @@
  * swallowed to its end, and so is a CSI that long. A lone Esc is given back once nothing
  * followed it for ANSWER_ESC_WAIT seconds (answer_idle), or ANSWER_ESC_HOLD while answers
  * are awaited; an answer's rest that comes after it went (parted right after its Esc) is
- * still held and swallowed, the Esc alone having acted. */
+ * still held and swallowed, the Esc alone having acted.
+ * Text pasted between CSI 200 ~ and CSI 201 ~ (bracketed paste) is no keys either: it is
+ * kept in paste (to its first control byte) for the caller to route or drop; a paste
+ * whose end does not come within ANSWER_GAP seconds ends there. */
 #ifndef SPRINGSIM_ANSWER_H
 #define SPRINGSIM_ANSWER_H
 
@@ -32,6 +35,8 @@
 #define ANSWER_GAP 1.0   /* seconds a part-answer waits for its next byte */
 #define ANSWER_ESC_HOLD 0.3 /* seconds a lone Esc waits for more while answers are due */
 #define ANSWER_ESC_WAIT 0.1 /* and otherwise (a link that parts what a terminal sends) */
+#define ANSWER_PASTE 255    /* bytes of a paste's text kept, at most */
+#define ANSWER_BURST 16     /* printable keys read at once that are a paste, at least */
 
 struct answer_scan {
     int held[ANSWER_MAX]; /* what may be an answer, so far */
@@ -49,6 +54,12 @@ struct answer_scan {
                           * (so a 0x9b inside one is no 8-bit CSI) */
     bool truncated;      /* the string held lost its text (longer than ANSWER_MAX) */
     bool esc_out;        /* the last input was a lone Esc given as a key */
+    bool pasting;        /* inside a bracketed paste: CSI 200 ~ came, CSI 201 ~ not yet */
+    int paste_end;       /* bytes of CSI 201 ~ matched so far */
+    bool paste_cut;      /* its text stopped at a control byte (a new line) */
+    char paste[ANSWER_PASTE + 1]; /* the last paste's text to its first control byte */
+    size_t paste_len;
+    int pastes;          /* pastes ended (bracketed, or a burst: answer_burst) not taken */
     bool tail;           /* what is held follows that Esc: held[0] stands for it */
 };
 
@@ -63,6 +74,14 @@ void answer_idle(struct answer_scan *s, double now);
 
 /* The same while answers are awaited: a lone Esc waits ANSWER_ESC_HOLD seconds first. */
 void answer_idle_awaiting(struct answer_scan *s, double now);
+
+/* Keys read at once that are a paste, not typing (ANSWER_BURST printable ones or more,
+ * from a terminal without bracketed paste): dropped, their text kept as a paste's. The
+ * keys dropped. */
+int answer_burst(struct answer_scan *s);
+
+/* The last paste's text given back as keys (into a value being typed). */
+void answer_paste_keys(struct answer_scan *s);
 
 /* The next key, oldest first, or -1 when none waits. */
 int answer_key(struct answer_scan *s);

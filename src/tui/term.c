@@ -46,10 +46,18 @@ int term_quit_signal(void)
     return quit_signal;
 }
 
+/* Bracketed paste on (xterm's mode 2004: pasted text comes between CSI 200 ~ and CSI
+ * 201 ~, app/answer.h), where the terminal reports the mouse as xterm does. */
+static bool paste_mode;
+
 void term_stop(void)
 {
     if (curses_on) {
         curses_on = false;
+        if (paste_mode) {
+            fputs("\033[?2004l", stdout);
+            fflush(stdout);
+        }
         endwin();
     }
 }
@@ -90,17 +98,19 @@ static void restore_add(const char *cap)
 }
 
 /* The bytes endwin() would send, gathered while curses is up: CAN first (it ends an
- * escape sequence a discarded frame may have left half sent), mouse reporting off where
- * the terminal reports the mouse as xterm does (kmous \E[M or \E[<), then the
- * attributes, cursor, keypad and screen as they were. */
+ * escape sequence a discarded frame may have left half sent), mouse reporting and
+ * bracketed paste off where the terminal reports the mouse as xterm does (kmous \E[M or
+ * \E[<), then the attributes, cursor, keypad and screen as they were. */
 static void restore_prepare(void)
 {
     static const char can[] = "\030";
-    static const char mouse_off[] = "\033[?1006l\033[?1003l\033[?1002l\033[?1000l";
+    static const char mouse_off[] = "\033[?1006l\033[?1003l\033[?1002l\033[?1000l"
+                                    "\033[?2004l";
     memcpy(restore_seq, can, sizeof can - 1);
     restore_len = sizeof can - 1;
     const char *kmous = tigetstr("kmous");
-    if (kmous != NULL && kmous != (char *)-1 && strncmp(kmous, "\033[", 2) == 0) {
+    paste_mode = kmous != NULL && kmous != (char *)-1 && strncmp(kmous, "\033[", 2) == 0;
+    if (paste_mode) {
         memcpy(restore_seq + restore_len, mouse_off, sizeof mouse_off - 1);
         restore_len += sizeof mouse_off - 1;
     }
@@ -411,6 +421,10 @@ bool term_start(enum config_color want_color, enum config_glyphs glyphs)
               ,
               NULL);
     mouseinterval(0);
+    if (paste_mode) {
+        fputs("\033[?2004h", stdout);
+        fflush(stdout);
+    }
     init_colors(want_color);
     return true;
 }

@@ -159,13 +159,30 @@ static bool lesson_step(void *ctx)
     return teach_step(&t->teach, &t->app);
 }
 
+/* A paste that ended (answer.h): its text into the value being typed, else dropped and
+ * said, so that pasted text never acts as a flood of keys. */
+static void take_paste(struct tui *t, struct answer_scan *s)
+{
+    if (!s->pastes)
+        return;
+    s->pastes = 0;
+    if (t->overlay.kind == OVERLAY_EDIT)
+        answer_paste_keys(s);
+    else
+        app_say(&t->app, SAID_NOTE, "pasted text ignored (Enter on a control takes a value "
+                "pasted)");
+}
+
 /* The next key within ms milliseconds, or ERR: what the terminal sends goes through the
  * answers' scanner first (answer.h), so an answer to the start-up queries arriving late is
- * never taken for keys, and keys typed while the queries were out come first. */
+ * never taken for keys, and keys typed while the queries were out come first. All that
+ * has come is read before a key is taken: a paste (bracketed, or a burst of text from a
+ * terminal without) is told whole. */
 static int next_key(struct tui *t, int ms)
 {
     struct answer_scan *s = &t->gfx.answers;
     for (;;) {
+        take_paste(t, s);
         int k = answer_key(s);
         if (k >= 0)
             return k;
@@ -189,8 +206,13 @@ static int next_key(struct tui *t, int ms)
             k = answer_key(s);
             return k >= 0 ? k : ERR;
         }
-        if (answer_feed(s, ch, now))
-            graphics_heard(&t->gfx, s->answer);
+        do { /* no key was waiting: the keys now are those read at once */
+            if (answer_feed(s, ch, now))
+                graphics_heard(&t->gfx, s->answer);
+            timeout(0);
+        } while ((ch = getch()) != ERR);
+        if (t->overlay.kind != OVERLAY_EDIT) /* there every character is the value's */
+            answer_burst(s);
     }
 }
 
