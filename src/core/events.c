@@ -289,15 +289,16 @@ static double weakest_at(const struct events_piece *p, double th, double *work, 
                          int *which)
 {
     int n = p->m->n;
-    double u, du;
-    drive_eval(p->d, p->a + th * p->h, &u, &du);
+    double u, du, t = p->a + th * p->h;
+    drive_eval(p->d, t, &u, &du);
     const double *y = th == 0.0 ? p->ya : th == 1.0 ? p->y : work; /* the ends as they are */
     if (y == work)
         for (int i = 0; i < n; i++) {
             work[i] = hermite(p, i, th);
             work[n + i] = hermite_v(p, i, th);
         }
-    *which = rest_forces(p->rest, p->m, y, y + n, u, du, p->ddu_factor * u, force);
+    *which = rest_forces(p->rest, p->m, y, y + n, u, du, p->ddu_factor * u, drive_force(p->d, t),
+                         force);
     return *which < 0 ? INFINITY : force[*which];
 }
 
@@ -480,7 +481,8 @@ int events_hit(const struct collision_limits *l, const struct model *m, struct r
 }
 
 void events_settle_rest(const struct collision_limits *l, const struct model *m, struct rest *r,
-                        double *x, double *v, double u, double du, double ddu, double *force)
+                        double *x, double *v, double u, double du, double ddu, double f,
+                        double *force)
 {
     for (int k = 0; k < l->count; k++) {
         if (!r->on[k] && !r->soft[k])
@@ -494,7 +496,7 @@ void events_settle_rest(const struct collision_limits *l, const struct model *m,
         r->soft[k] = false;
     }
     while (r->active) {
-        int k = rest_forces(r, m, x, v, u, du, ddu, force);
+        int k = rest_forces(r, m, x, v, u, du, ddu, f, force);
         if (k < 0 || force[k] >= -REST_PULL)
             break;
         rest_set(r, k, false);

@@ -52,9 +52,10 @@ int events_hit(const struct collision_limits *l, const struct model *m, struct r
 
 /* After an instant of contact or a release: a contact just hit slower than
  * COLLISION_V_REST (so no longer moving apart) rests while its force pushes; resting ones
- * moving apart or pulling part; the clusters are put exactly on their constraints.
- * force: count doubles of scratch. */
+ * moving apart or pulling part; the clusters are put exactly on their constraints. u, du,
+ * ddu: the end then; f: the force input then. force: count doubles of scratch. */
 void events_settle_rest(const struct collision_limits *l, const struct model *m, struct rest *r,
-                        double *x, double *v, double u, double du, double ddu, double *force);
+                        double *x, double *v, double u, double du, double ddu, double f,
+                        double *force);
 
 #endif

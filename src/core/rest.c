@@ -139,13 +139,15 @@ double rest_project(const struct rest *r, const struct model *m, double *a, doub
 }
 
 int rest_forces(const struct rest *r, const struct model *m, const double *x, const double *v,
-                double u, double du, double ddu, double *force)
+                double u, double du, double ddu, double fin, double *force)
 {
     int n = m->n, weakest = -1;
     if (!r->active)
         return -1;
     double *a = r->acc;
     model_rates(m, NULL, x, v, u, du, a, NULL, NULL);
+    if (fin != 0.0) /* the force input presses or pulls as the springs do */
+        a[m->force_on] += fin / m->m[m->force_on];
     for (int c = 0; c < r->clusters; c++) {
         int f = r->first[c], l = r->last[c], held = r->held[c];
         double acc = cluster_accel(m, a, f, l, held, ddu);

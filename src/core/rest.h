@@ -53,10 +53,11 @@ void rest_copy(struct rest *dst, const struct rest *src);
 double rest_project(const struct rest *r, const struct model *m, double *a, double ddu);
 
 /* The contact force of every resting constraint, at state x, v with the end at u, du,
- * ddu: force[k] >= 0 pushes, < 0 would pull (force has count values; only the resting
- * ones are written). Returns the index of the weakest, or -1 when none rests. */
+ * ddu and the force input at fin (N, on mass force_on): force[k] >= 0 pushes, < 0 would
+ * pull (force has count values; only the resting ones are written). Returns the index of
+ * the weakest, or -1 when none rests. */
 int rest_forces(const struct rest *r, const struct model *m, const double *x, const double *v,
-                double u, double du, double ddu, double *force);
+                double u, double du, double ddu, double fin, double *force);
 
 /* Puts each cluster exactly on its constraints: a wall's cluster at its limits and at
  * rest, the piston's on its face moving at du, a free one about its centre of mass with

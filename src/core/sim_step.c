@@ -43,8 +43,8 @@ static void book(struct sim *s, const struct collision_books *b)
 }
 
 /* At an instant of contact on constraint k (or of a release, k < 0): the contact rule,
- * then resting contacts made or parted. u, du: the drive then. */
-static void at_event(struct sim *s, int k, double u, double du, double ddu)
+ * then resting contacts made or parted. u, du, ddu: the end then; f: the force input. */
+static void at_event(struct sim *s, int k, double u, double du, double ddu, double f)
 {
     int n = s->n;
     const struct model *m = sim_model(s);
@@ -57,6 +57,7 @@ static void at_event(struct sim *s, int k, double u, double du, double ddu)
              * contact is at rest already. */
             double *a = s->work;
             model_rates(m, NULL, s->y, s->y + n, u, du, a, NULL, NULL);
+            a[m->force_on] += f / m->m[m->force_on];
             rest_project(s->rest, m, a, ddu);
             double arel = k == 0 ? a[0] : k < n ? a[k] - a[k - 1] : ddu - a[n - 1];
             s->rest->v_rest = fmax(COLLISION_V_REST, fmin(FIRST_ORDER_REST, s->dt * fabs(arel)));
@@ -64,18 +65,21 @@ static void at_event(struct sim *s, int k, double u, double du, double ddu)
         s->last_contacts += events_hit(&s->lim, m, s->rest, k, s->y, s->y + n, u, du, &b);
         book(s, &b);
     }
-    events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, ddu, s->force);
+    events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, ddu, f, s->force);
 }
 
 /* Moves the state by a short time delta along its Taylor series to second order, the
  * energy books to first (an event's instant refined; delta is at most SHIFT_MAX of the
- * piece, so what is left out is far below the step's own error). u, du, ddu: the drive. */
-static void shift(struct sim *s, double delta, double u, double du, double ddu)
+ * piece, so what is left out is far below the step's own error). u, du, ddu: the end;
+ * f: the force input. */
+static void shift(struct sim *s, double delta, double u, double du, double ddu, double f)
 {
     int n = s->n;
     const struct model *m = sim_model(s);
     double *x = s->y, *v = s->y + n, *acc = s->work, diss, power;
     model_rates(m, NULL, x, v, u, du, acc, &diss, &power);
+    acc[m->force_on] += f / m->m[m->force_on];
+    s->y[2 * n + 2] += delta * f * v[m->force_on]; /* the force's work */
     power -= rest_project(s->rest, m, acc, ddu) * du;
     for (int i = 0; i < n; i++) {
         x[i] += delta * (v[i] + 0.5 * delta * acc[i]);
@@ -120,7 +124,7 @@ static int refine(struct sim *s, const struct drive *d, double ddu_factor, doubl
             break;
         double next = fmin(b, fmax(a, *tc - g / r));
         if (fabs(next - *tc) <= SHIFT_MAX * (b - a)) {
-            shift(s, next - *tc, *uc, *duc, ddu_factor * *uc);
+            shift(s, next - *tc, *uc, *duc, ddu_factor * *uc, drive_force(d, *tc));
         } else {
             memcpy(s->y, s->ya, (size_t)len * sizeof *s->y);
             if (next > a && stepper_apply(s->st, s->integrator, d, a, next, s->y) != 0)
@@ -183,7 +187,7 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
             return -1;
         if (released >= 0)
             rest_set(s->rest, released, false);
-        at_event(s, which, uc, duc, p.ddu_factor * uc);
+        at_event(s, which, uc, duc, p.ddu_factor * uc, drive_force(d, tc));
         if (b - tc <= 1e-12 * s->dt)
             break;
         if (tc <= a && ++stalls > 2) {
@@ -201,7 +205,7 @@ static int piece(struct sim *s, const struct drive *d, double a, double b, bool 
         struct collision_books bk = {0.0, 0.0};
         s->last_contacts += collision_settle(&s->lim, m, s->y, s->y + n, p.ub, p.dub, &bk);
         book(s, &bk);
-        at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub);
+        at_event(s, -1, p.ub, p.dub, p.ddu_factor * p.ub, drive_force(d, b));
     }
     return 0;
 }
@@ -248,9 +252,9 @@ static int plow(struct sim *s, double u, double du)
     return hits > 0 ? hits : 1;
 }
 
-/* A jump of the end to u (moving at du after it): the motor's work on the spring, and a
- * contact if the piston jumped into the last mass. */
-static void jump(struct sim *s, double u_from, double u, double du)
+/* A jump of the end to u (moving at du after it, the force input f): the motor's work on
+ * the spring, and a contact if the piston jumped into the last mass. */
+static void jump(struct sim *s, double u_from, double u, double du, double f)
 {
     int n = s->n;
     const struct model *m = sim_model(s);
@@ -271,12 +275,13 @@ static void jump(struct sim *s, double u_from, double u, double du)
         s->last_contacts += hits;
     }
     if (s->rest->active || gap < -TOUCH)
-        events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
+        events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, f, s->force);
 }
 
 /* A corner of the drive (its speed changes, as at a triangle's turn) under a cluster the
- * piston carries: turning away it leaves it, turning into it that is a contact. */
-static void corner(struct sim *s, double u, double du)
+ * piston carries: turning away it leaves it, turning into it that is a contact. f: the
+ * force input then. */
+static void corner(struct sim *s, double u, double du, double f)
 {
     int n = s->n;
     double v = s->y[2 * n - 1];
@@ -289,7 +294,7 @@ static void corner(struct sim *s, double u, double du)
         s->last_contacts += events_hit(&s->lim, m, s->rest, n, s->y, s->y + n, u, du, &b);
         book(s, &b);
     }
-    events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, s->force);
+    events_settle_rest(&s->lim, m, s->rest, s->y, s->y + n, u, du, 0.0, f, s->force);
 }
 
 /* Whether m's drive is smooth across every step (a sine, or nothing): one piece a step. */
@@ -325,11 +330,11 @@ static int advance(struct sim *s, double t0, double t1)
             drive_at(&d, m, 0.5 * (a + b));
             drive_eval(&d, a, &ua, &du);
             if (jumps && ua != u_now) {
-                jump(s, u_now, ua, du);
+                jump(s, u_now, ua, du, drive_force(&d, a));
                 fresh = false;
             }
             if (s->rest->active) {
-                corner(s, ua, du);
+                corner(s, ua, du, drive_force(&d, a));
                 fresh = false;
             }
             if (piece(s, &d, a, b, fresh) != 0)
@@ -346,7 +351,7 @@ static int advance(struct sim *s, double t0, double t1)
         double u, du;
         motor_piece_at(mot, t1 + 1e-6 * s->dt, &p);
         motor_piece_eval(&p, t1, &u, &du);
-        jump(s, u_now, u1, du);
+        jump(s, u_now, u1, du, model_force(m, t1 + 1e-6 * s->dt));
     }
     return 0;
 }
