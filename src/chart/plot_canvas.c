@@ -68,15 +68,27 @@ static double dot_clamp(double d)
 
 /* The dot column of x and the dot row of y (from the top) in dot coordinates. A value
  * half way between two dots goes to the right and up, as it would rounding half up on
- * the axes (which count y from the bottom). */
+ * the axes (which count y from the bottom). floor(x + 0.5) and ceil(y - 0.5), by a
+ * conversion and a compare rather than libm's calls (a third of a dot's cost): every
+ * coordinate here is held within DOT_FAR, far inside an int. */
 static int dot_x(double x)
 {
-    return (int)floor(x + 0.5);
+    double s = x + 0.5;
+    int i = (int)s;
+    return i - (s < (double)i);
 }
 
 static int dot_y(double y)
 {
-    return (int)ceil(y - 0.5);
+    double s = y - 0.5;
+    int i = (int)s;
+    return i + (s > (double)i);
+}
+
+/* fmin(fmax(v, lo), hi) for a finite v and lo < hi, without libm's calls. */
+static double held(double v, double lo, double hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
 }
 
 /* Clips the segment to [xmin, xmax] x [ymin, ymax] (Liang-Barsky); false when nothing of
@@ -112,20 +124,42 @@ static bool clip(double *x0, double *y0, double *x1, double *y1, double xmin, do
     return true;
 }
 
+/* The dot the last segment of a path ended on, drawn as its walk left it: a segment of
+ * that one dot again would change nothing. */
+struct pen {
+    int x, y;
+    bool at; /* false: no segment has ended on a known dot */
+};
+
 /* The segment between two points in dot coordinates (y from the top), clipped to the
  * canvas and drawn with Bresenham; dash leaves out columns as plot_trace does, run (if
- * not NULL) makes it a stroke of canvas_stroke's dashes. */
+ * not NULL) makes it a stroke of canvas_stroke's dashes. pen (if not NULL) is the dot
+ * the path's last segment ended on: a segment of that dot alone is left out, since the
+ * same dot in the same colour (on or off by the same run) was just set. */
 static void segment(struct canvas *c, double fx0, double fy0, double fx1, double fy1, bool dash,
-                    int *run, unsigned char color)
+                    int *run, unsigned char color, struct pen *pen)
 {
     /* Just inside the outer dots, so that rounding keeps the ends on the canvas. */
-    if (!clip(&fx0, &fy0, &fx1, &fy1, -0.5, 2 * c->cols - 0.5 - 1e-6, -0.5 + 1e-6,
-              4 * c->rows - 0.5))
+    double xmin = -0.5, xmax = 2 * c->cols - 0.5 - 1e-6, ymin = -0.5 + 1e-6,
+           ymax = 4 * c->rows - 0.5;
+    if (fx0 >= xmin && fx0 <= xmax && fx1 >= xmin && fx1 <= xmax && fy0 >= ymin &&
+        fy0 <= ymax && fy1 >= ymin && fy1 <= ymax) {
+        /* Both ends inside: clip would keep t0 = 0 and t1 = 1, its ends these. */
+        fx1 = fx0 + (fx1 - fx0);
+        fy1 = fy0 + (fy1 - fy0);
+    } else if (!clip(&fx0, &fy0, &fx1, &fy1, xmin, xmax, ymin, ymax)) {
         return;
+    }
+    int x0 = dot_x(fx0), y0 = dot_y(fy0), x1 = dot_x(fx1), y1 = dot_y(fy1);
+    if (pen) {
+        if (pen->at && x0 == pen->x && y0 == pen->y && x1 == x0 && y1 == y0)
+            return;
+        *pen = (struct pen){x1, y1, true};
+    }
     if (run)
-        canvas_stroke(c, dot_x(fx0), dot_y(fy0), dot_x(fx1), dot_y(fy1), color, run);
+        canvas_stroke(c, x0, y0, x1, y1, color, run);
     else
-        canvas_dashed_line(c, dot_x(fx0), dot_y(fy0), dot_x(fx1), dot_y(fy1), color, dash);
+        canvas_dashed_line(c, x0, y0, x1, y1, color, dash);
 }
 
 /* One dot column of a trace: the span of its samples, its first and last sample. */
@@ -149,13 +183,13 @@ static void column_draw(struct canvas *c, struct column *k, const struct column 
     if (have_p && p->x == k->x - 1) {
         /* Neighbours: this column's span reaches to the row next to the last one before,
          * so a line is continuous and a shallow one stays one dot thick. */
-        int join = dot_y(fmin(fmax(p->ly, -1.0), (double)h));
+        int join = dot_y(held(p->ly, -1.0, (double)h));
         if (join < k->lo - 1)
             k->lo = join + 1;
         if (join > k->hi + 1)
             k->hi = join - 1;
     } else if (have_p) {
-        segment(c, p->lx, p->ly, k->fx, k->fy, dash, NULL, color);
+        segment(c, p->lx, p->ly, k->fx, k->fy, dash, NULL, color, NULL);
     }
     if (k->x < 0 || k->x >= 2 * c->cols)
         return;
@@ -197,8 +231,8 @@ void plot_trace(struct canvas *c, const double *t, const double *y, int count, s
         if (keep)
             strokes_point(keep, fx, fy);
         /* Columns off the canvas are never drawn: all of them on a side share one. */
-        int x = dot_x(fmin(fmax(fx, -2.0), w + 1.0));
-        int r = dot_y(fmin(fmax(fy, -1.0), (double)h));
+        int x = dot_x(held(fx, -2.0, w + 1.0));
+        int r = dot_y(held(fy, -1.0, (double)h));
         if (!have_cur || x != cur.x) {
             if (have_cur) {
                 column_draw(c, &cur, &prev, have_prev, dash, &run, color);
@@ -225,6 +259,7 @@ static void path(struct canvas *c, const double *x, const double *y, int count, 
     int h = 4 * c->rows;
     double px = 0.0, py = 0.0;
     bool have = false;
+    struct pen pen = {0, 0, false};
     struct strokes *keep = c->mute ? NULL : c->strokes;
     if (keep)
         strokes_begin(keep, color, run ? STROKE_DASHED : STROKE_LINE);
@@ -240,7 +275,7 @@ static void path(struct canvas *c, const double *x, const double *y, int count, 
         double fx = dot_clamp(axis_dot(xa, xk)), fy = dot_clamp(h - 1 - axis_dot(ya, yk));
         if (keep)
             strokes_point(keep, fx, fy);
-        segment(c, have ? px : fx, have ? py : fy, fx, fy, false, run, color);
+        segment(c, have ? px : fx, have ? py : fy, fx, fy, false, run, color, &pen);
         px = fx, py = fy, have = true;
     }
     c->mute--;
