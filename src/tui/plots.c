@@ -55,6 +55,10 @@ void plots_free(struct plots *p)
 {
     for (int i = 0; i < PLOT_COUNT; i++)
         chart_free(&p->chart[i]);
+    if (p->kept)
+        delwin(p->kept);
+    p->kept = NULL;
+    p->kept_ok = false;
 }
 
 /* Offset of quantity q (1 x, 2 v, 3 a) of mass i in a trail record. */
@@ -63,18 +67,33 @@ static int field(const struct trail *tr, int q, int i)
     return q == 1 ? TRAIL_X(tr, i) : q == 2 ? TRAIL_V(tr, i) : TRAIL_A(tr, i);
 }
 
+/* fmin(lo, v) and fmax(hi, v) for a lo and hi that are never NaN, as glibc answers them
+ * (a NaN v leaves them), without a call to libm for each sample. */
+static double least(double lo, double v)
+{
+    return lo < v || v != v ? lo : v;
+}
+
+static double most(double hi, double v)
+{
+    return hi > v || v != v ? hi : v;
+}
+
 /* The range of quantity q (0: none) over k records of tr from rec, into [*lo, *hi]. */
 static void scan(const struct trail *tr, const double *rec, int k, int q, unsigned hidden,
                  double *lo, double *hi)
 {
     if (!q)
         return;
+    double l = *lo, h = *hi;
+    int off = field(tr, q, 0); /* a quantity's masses are side by side in a record */
     for (int s = 0; s < k; s++) {
-        const double *r = rec + (size_t)s * (size_t)tr->width;
+        const double *r = rec + (size_t)s * (size_t)tr->width + off;
         for (int i = 0; i < tr->n; i++)
             if (!(hidden >> i & 1u))
-                *lo = fmin(*lo, r[field(tr, q, i)]), *hi = fmax(*hi, r[field(tr, q, i)]);
+                l = least(l, r[i]), h = most(h, r[i]);
     }
+    *lo = l, *hi = h;
 }
 
 /* Each mass's trace from k records of tr from rec, in its colour: solid, or dashed (the
@@ -166,7 +185,7 @@ static void take_samples(struct chart *c, enum plot_id id, const struct app *app
         scan(gt, grec, gk, xq, hidden, &xlo, &xhi);
     }
     for (int s = 0; motor && s < k; s++)
-        ylo = fmin(ylo, rec[s * w + TRAIL_U]), yhi = fmax(yhi, rec[s * w + TRAIL_U]);
+        ylo = least(ylo, rec[s * w + TRAIL_U]), yhi = most(yhi, rec[s * w + TRAIL_U]);
     c->still = !app->running;
     if (k > 0) {
         if (xq)
@@ -309,8 +328,60 @@ static void report_words(struct chart *c, enum plot_id id, const struct app *app
     }
 }
 
+/* Whether the frames kept are the plots l lays out, where it lays them. */
+static bool kept_fits(const struct plots *p, const struct layout *l)
+{
+    if (!p->kept_ok || p->kept_n != l->nplots)
+        return false;
+    for (int k = 0; k < l->nplots; k++) {
+        struct rect a = p->kept_plot[k], b = l->plot[k];
+        if (p->kept_id[k] != l->plot_id[k] || a.x != b.x || a.y != b.y || a.w != b.w ||
+            a.h != b.h)
+            return false;
+    }
+    return true;
+}
+
+/* Copies each plot's frame between the screen and the kept copy (in the same place);
+ * false when a copy fails. */
+static bool copy_frames(const struct plots *p, const struct layout *l, bool keep)
+{
+    for (int k = 0; k < l->nplots; k++) {
+        struct rect r = l->plot[k];
+        if (r.w <= 0 || r.h <= 0)
+            continue;
+        int y1 = r.y + r.h - 1, x1 = r.x + r.w - 1;
+        int ok = keep ? copywin(stdscr, p->kept, r.y, r.x, r.y, r.x, y1, x1, FALSE)
+                      : copywin(p->kept, stdscr, r.y, r.x, r.y, r.x, y1, x1, FALSE);
+        if (ok == ERR)
+            return false;
+    }
+    return true;
+}
+
+/* Keeps the frames just drawn, for the frames before the next refresh. */
+static void keep_frames(struct plots *p, const struct layout *l)
+{
+    int rows, cols, kr = 0, kc = 0;
+    getmaxyx(stdscr, rows, cols);
+    if (p->kept)
+        getmaxyx(p->kept, kr, kc);
+    if (p->kept && (kr != rows || kc != cols)) {
+        delwin(p->kept);
+        p->kept = NULL;
+    }
+    if (!p->kept)
+        p->kept = newpad(rows, cols);
+    p->kept_ok = p->kept && l->nplots <= PLOT_COUNT && copy_frames(p, l, true);
+    p->kept_n = l->nplots;
+    for (int k = 0; k < l->nplots && k < PLOT_COUNT; k++)
+        p->kept_plot[k] = l->plot[k], p->kept_id[k] = l->plot_id[k];
+}
+
 void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool fresh)
 {
+    if (!fresh && kept_fits(p, l) && copy_frames(p, l, false))
+        return;
     const struct model *m = app->model;
     struct legend_item legend[12];
     int n = 0;
@@ -337,10 +408,12 @@ void plots_draw(struct plots *p, const struct layout *l, const struct app *app, 
         chart_draw(c, kinds[id].title, kinds[id].short_title, kinds[id].xq ? NULL : "s", legend,
                    items);
         end_marks(c, p->end_row[id], p->end_col[id], m->n, p->hidden);
-        report_words(c, id, app, p->hidden);
+        if (fresh)
+            report_words(c, id, app, p->hidden);
         if (kinds[id].xq)
             cursor_points(c, id, app);
     }
+    keep_frames(p, l);
 }
 
 void plots_toggle_mass(struct plots *p, struct app *app, int i)

@@ -5,6 +5,8 @@
 
 #include <stdbool.h>
 
+#include <curses.h>
+
 #include "../app/app.h"
 #include "../chart/layout.h"
 #include "chart.h"
@@ -17,6 +19,13 @@ struct plots {
     int end_row[PLOT_COUNT][10], end_col[PLOT_COUNT][10];
     unsigned hidden; /* bit i: mass i's curves left out of the plots (v) */
     int top;         /* the mass drawn last, over the others (the chain's selected), or -1 */
+    /* The plots' frames as the last refresh drew them, copied back by the frames in
+     * between (which would draw the same again): where, and laid out how. */
+    WINDOW *kept;
+    bool kept_ok;                 /* kept holds the kept_n plots below */
+    struct rect kept_plot[PLOT_COUNT];
+    enum plot_id kept_id[PLOT_COUNT];
+    int kept_n;
 };
 
 /* Shows or hides mass i's curves (key v on a mass of the chain); what the message says. */
@@ -28,10 +37,12 @@ bool plots_place(struct plots *p, const struct layout *l);
 /* Forgets the scales: the next refresh fits every axis to its data alone. */
 void plots_refit(struct plots *p);
 
-/* Frees the canvases. */
+/* Frees the canvases and the copy of the frames. */
 void plots_free(struct plots *p);
 
-/* Draws the plots shown; with refresh, they first take the newest samples. */
+/* Draws the plots shown; with refresh, they first take the newest samples. Without,
+ * the plots are as the last refresh drew them (every key makes one) and are copied back
+ * as they were. */
 void plots_draw(struct plots *p, const struct layout *l, const struct app *app, bool refresh);
 
 /* The title of plot id (its key first), long or short, UTF-8. */
