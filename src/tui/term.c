@@ -120,6 +120,18 @@ static void restore_prepare(void)
     restore_add("rmcup");
 }
 
+/* ncurses 6.4 sends what it has at every cursor move until the program has once left
+ * curses and come back (after newterm its screen counts as not yet started: a flush
+ * meant for low-level terminfo programs), so a frame went out in a dozen writes, each
+ * waking the terminal. Leaving and coming back once, before anything is drawn, makes a
+ * frame one write; the terminal sees the alternate screen left and entered again at
+ * once, with nothing on it yet. */
+static void leave_and_return(void)
+{
+    endwin();
+    doupdate();
+}
+
 /* The way out when a quit signal finds output blocked: only async-signal-safe calls.
  * Frames the terminal has not read are dropped and output stopped by Ctrl-S restarted
  * (turning IXON off does that: Linux's n_tty_set_termios; TCOON undoes only TCOOFF), so
@@ -405,6 +417,7 @@ bool term_start(enum config_color want_color, enum config_glyphs glyphs)
         return false;
     }
     curses_on = true;
+    leave_and_return();
     atexit(term_stop);
     restore_prepare();
     install_signals();
