@@ -26,9 +26,10 @@ enum fig_encoding { FIG_SIXEL, FIG_KITTY_PNG };
  * whole sixel sequence (DCS ... ST), or the PNG file; scratch holds the pixels on their
  * way (kept for the next image). With marks (the terminal's colours not known), the
  * legend is drawn in the image too, its last row of cells: each entry's mark (a bar) and
- * text in its colour, so marks and curves are matched within it. Sixel
- * on xterm's 256 colours, or, for a terminal with 2 to 255 colour registers, drawn
- * without anti-aliasing on a palette of that many that libsixel chooses for the image.
+ * text in its colour, so marks and curves are matched within it. Sixel is drawn without
+ * anti-aliasing, on xterm's 256 colours (only those drawn defined in the image), or, for a
+ * terminal with 2 to 255 colour registers, on a palette of that many that libsixel
+ * chooses for the image. PNG is anti-aliased.
  * Returns 0 or an errno value. */
 int fig_pixels(const struct fig_chart *c, int cw, int ch, const struct fig_palette *pal,
                const double bg[3], bool marks, enum fig_encoding e, int registers,
