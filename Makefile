@@ -323,6 +323,15 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	    --spring 10 --boundary wall --damping \
 	    $$(awk 'BEGIN { for (i = 1; i <= 300; i++) printf "%s%s", (i > 1 ? "," : ""), (i <= 150 ? 2 : 0) }')
 	@echo
+	@echo "start-up, --headless --duration 0 (goals: N = 10 under 15 ms of CPU, N = 1000 under"
+	@echo "100 ms)"
+	@echo
+	@echo "| process | CPU | time / N = 10's |"
+	@echo "| --- | --- | --- |"
+	@$(BUILD)/bench/bench_procs 'springsim --headless --duration 0 -n 10' -- \
+	    ./$(BIN) --headless --duration 0 -n 10 -- \
+	    'springsim --headless --duration 0 -n 1000' -- ./$(BIN) --headless --duration 0 -n 1000
+	@echo
 	@$(BUILD)/bench/bench_core
 	@echo
 	@echo "interactive program, running $(BENCH_SECONDS) s after space (goals at 120x40:"
