@@ -141,6 +141,23 @@ static void paint(cairo_t *cr, const struct fig_chart *c, int cw, int ch,
         fig_paint_strokes(cr, c->strokes, cw, ch, pal);
 }
 
+/* The sixel sequence of pixels (w x h, depth bytes each) on dither (NULL, or st a failure:
+ * nothing), appended to out; dither is let go. 0 or ENOMEM. */
+static int encode_on(SIXELSTATUS st, sixel_dither_t *dither, unsigned char *pixels, int w,
+                     int h, int depth, struct fig_bytes *out)
+{
+    sixel_output_t *output = NULL;
+    if (SIXEL_SUCCEEDED(st))
+        st = dither ? sixel_output_new(&output, sixel_write, out, NULL) : SIXEL_BAD_ALLOCATION;
+    if (SIXEL_SUCCEEDED(st))
+        st = sixel_encode(pixels, w, h, depth, dither, output);
+    if (output)
+        sixel_output_unref(output);
+    if (dither)
+        sixel_dither_unref(dither);
+    return SIXEL_SUCCEEDED(st) && !out->failed ? 0 : ENOMEM;
+}
+
 /* Sixel of the w x h pixels at src (cairo's RGB24 rows, stride bytes apart) on a palette
  * of a terminal's `registers` colours (2 to 255) that libsixel chooses for the image
  * (median cut); rgb holds the pixels as libsixel takes them. */
@@ -161,23 +178,15 @@ static int encode_chosen(const unsigned char *src, int stride, int w, int h, int
         }
     }
     sixel_dither_t *dither = NULL;
-    sixel_output_t *output = NULL;
     SIXELSTATUS st = sixel_dither_new(&dither, registers, NULL);
     if (SIXEL_SUCCEEDED(st))
         st = sixel_dither_initialize(dither, rgb->data, w, h, SIXEL_PIXELFORMAT_RGB888,
                                      SIXEL_LARGE_AUTO, SIXEL_REP_AUTO, SIXEL_QUALITY_AUTO);
-    if (SIXEL_SUCCEEDED(st))
-        st = sixel_output_new(&output, sixel_write, out, NULL);
     if (SIXEL_SUCCEEDED(st)) {
         sixel_dither_set_diffusion_type(dither, SIXEL_DIFFUSE_NONE);
         sixel_dither_set_pixelformat(dither, SIXEL_PIXELFORMAT_RGB888);
-        st = sixel_encode(rgb->data, w, h, 3, dither, output);
     }
-    if (output)
-        sixel_output_unref(output);
-    if (dither)
-        sixel_dither_unref(dither);
-    return SIXEL_SUCCEEDED(st) && !out->failed ? 0 : ENOMEM;
+    return encode_on(st, dither, rgb->data, w, h, 3, out);
 }
 
 /* Colours met so far and the nearest of xterm's 256 to each, direct-mapped by a hash of
@@ -253,20 +262,12 @@ static int encode_xterm(const unsigned char *src, int stride, int w, int h,
         }
     }
     sixel_dither_t *dither = NULL;
-    sixel_output_t *output = NULL;
     SIXELSTATUS st = sixel_dither_new(&dither, used, NULL);
     if (SIXEL_SUCCEEDED(st)) {
         sixel_dither_set_palette(dither, palette);
         sixel_dither_set_pixelformat(dither, SIXEL_PIXELFORMAT_PAL8);
-        st = sixel_output_new(&output, sixel_write, out, NULL);
     }
-    if (SIXEL_SUCCEEDED(st))
-        st = sixel_encode(idx->data, w, h, 1, dither, output);
-    if (output)
-        sixel_output_unref(output);
-    if (dither)
-        sixel_dither_unref(dither);
-    return SIXEL_SUCCEEDED(st) && !out->failed ? 0 : ENOMEM;
+    return encode_on(st, dither, idx->data, w, h, 1, out);
 }
 
 int fig_pixels(const struct fig_chart *c, int cw, int ch, const struct fig_palette *pal,
