@@ -304,6 +304,14 @@ grep -q 'spring dampers 0–0.038329 N·s/m' "$tmp/tmd.txt" && pass ||
 grep -q 'force: sine, 0.5 N at 0.503292 Hz on mass 1' "$tmp/tmd.txt" && pass ||
     fail "$cmd: the subtitle does not name the force: $(head -3 "$tmp/tmd.txt" | tr '\n' '|')"
 expect "$cmd: frequency axes" "$(grep -c '^force frequency f (Hz)$' "$tmp/tmd.txt")" 2
+# The energy panel of a chain a force drives has the force's work, which the balance
+# holds (without it the dampers take energy from nothing); a chain without has none.
+run --headless -p tuned-mass-damper --energy --duration 30 --figure "$tmp/tmde.pdf" -o /dev/null
+$fc text "$tmp/tmde.pdf" >"$tmp/tmde.txt"
+expect "$cmd: the force's work in the legend" "$(grep -c 'force work' "$tmp/tmde.txt")" 1
+run --headless --energy --duration 3 --figure "$tmp/nof.pdf" -o /dev/null
+$fc text "$tmp/nof.pdf" >"$tmp/nof.txt"
+expect "$cmd: no force work without a force" "$(grep -c 'force work' "$tmp/nof.txt")" 0
 run --headless -p duffing --duration 1 --figure "$tmp/duf.pdf" -o /dev/null
 $fc text "$tmp/duf.pdf" >"$tmp/duf.txt"
 grep -q 'k3 0–4 N/m³' "$tmp/duf.txt" && pass ||

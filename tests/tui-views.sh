@@ -14,6 +14,7 @@ NAME=tui-views
 start energy 120 40 -- -p 3-mass-chain
 start energy80 80 24 -- -p 3-mass-chain
 start nodamp 120 40 -- -p no-damping
+start forced 120 40 -- -p tuned-mass-damper
 start modes 120 40 -- -p 3-mass-chain
 start modes80 80 24 -- -p 3-mass-chain
 start near 120 40 -- -p 3-mass-chain --frequency 0.9
@@ -24,10 +25,10 @@ start sweep 120 40 -- -p 3-mass-chain
 start sweep-arrow 120 40 -- -p 3-mass-chain
 start sweep-n 120 40 -- -p 3-mass-chain
 start sweep-typed 120 40 -- -p 3-mass-chain
-sessions="energy energy80 nodamp modes modes80 near resp wall to-wall sweep sweep-arrow sweep-n sweep-typed"
+sessions="energy energy80 nodamp forced modes modes80 near resp wall to-wall sweep sweep-arrow sweep-n sweep-typed"
 
 # the long runs first
-for s in energy energy80 nodamp; do
+for s in energy energy80 nodamp forced; do
     if up $s; then keys e Space; fi
 done
 # The sweeps that a change of frequency ends play at 0.1x (the sweep's pace 5x): their
@@ -287,6 +288,21 @@ for s in energy energy80; do
         fail "energy ($size): expected it to run to t = 2 s; screen: $(brief)"
     fi
 done
+# A force's work is a term of the balance: named in the legend, and the balance holds.
+S=forced
+if wait_t 3; then
+    keys Space
+    t=$(settled_t)
+    fw=$(sed -n 's/.*━ force \([-0-9][-0-9.e+]*\).*/\1/p' "$scr" | head -n 1)
+    bal=$(sed -n 's/.*balance \([-0-9][-0-9.e+]*\) J.*/\1/p' "$scr" | head -n 1)
+    if awk -v f="$fw" -v b="$bal" 'BEGIN { exit !(f != "" && f + 0 > 0.1 && b != "" && b < 1e-6 && b > -1e-6) }'; then
+        pass
+    else
+        fail "energy, -p tuned-mass-damper: after $t s expected '━ force W' (W > 0.1 J) and a balance within 1e-6 J: force '$fw', balance '$bal'; screen: $(brief "$scr" 'kinetic|force|balance')"
+    fi
+else
+    fail "energy, -p tuned-mass-damper: expected it to run to t = 3 s; screen: $(brief)"
+fi
 S=nodamp
 if wait_t 3; then
     keys Space

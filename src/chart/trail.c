@@ -69,6 +69,7 @@ void trail_push(struct trail *tr, const struct sim *s)
         a[TRAIL_E(tr, TRAIL_DISS)] = e.dissipated;
         a[TRAIL_E(tr, TRAIL_WORK)] = e.motor_work;
         a[TRAIL_E(tr, TRAIL_CONTACT)] = e.contact;
+        a[TRAIL_E(tr, TRAIL_FORCE)] = e.force_work;
     }
     memcpy(b, a, (size_t)tr->width * sizeof *a);
     tr->count++;

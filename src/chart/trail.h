@@ -32,7 +32,7 @@ struct trail {
 #define TRAIL_V(tr, i) (2 + (tr)->n + (i))
 #define TRAIL_A(tr, i) (2 + 2 * (tr)->n + (i))
 /* Energies: kinetic, potential, dissipated, motor work, taken by contacts. */
-enum { TRAIL_KE, TRAIL_PE, TRAIL_DISS, TRAIL_WORK, TRAIL_CONTACT, TRAIL_ENERGIES };
+enum { TRAIL_KE, TRAIL_PE, TRAIL_DISS, TRAIL_WORK, TRAIL_CONTACT, TRAIL_FORCE, TRAIL_ENERGIES };
 #define TRAIL_E(tr, k) (2 + 3 * (tr)->n + (k))
 
 /* A trail of capacity records for n masses, or NULL on no memory. */

@@ -58,7 +58,7 @@ void fig_palette_default(struct fig_palette *p, bool dark)
 
 int fig_energy_color(int i)
 {
-    static const int c[6] = {FIG_MASS + 0, FIG_MASS + 1, FIG_MASS + 2, FIG_MOTOR, FIG_MASS + 4,
-                             FIG_WALL};
-    return i >= 0 && i < 6 ? c[i] : FIG_WALL;
+    static const int c[7] = {FIG_MASS + 0, FIG_MASS + 1, FIG_MASS + 2, FIG_MOTOR, FIG_MASS + 3,
+                             FIG_MASS + 4, FIG_WALL};
+    return i >= 0 && i < 7 ? c[i] : FIG_WALL;
 }

@@ -55,20 +55,27 @@ static double largest(const struct report_data *d, int s)
     return most;
 }
 
-/* The energy panel's series (from series first of d) and its own legend. */
-static void energy_panel(const struct report_data *d, int first, struct fig_series *s,
-                         struct fig_legend *lg, char *error_text, size_t len)
+/* The energy panel's series (from series first of d) and its own legend; the force's
+ * work only where a force did some. How many series and legend items. */
+static int energy_panel(const struct report_data *d, int first, struct fig_series *s,
+                        struct fig_legend *lg, char *error_text, size_t len)
 {
     static const char *const name[REPORT_E_TERMS - 1] = {"kinetic", "potential", "dissipated",
-                                                  "motor work", "contact"};
-    for (int i = 0; i < REPORT_E_TERMS; i++)
-        s[i] = line_of(d, first + i, fig_energy_color(i), i == REPORT_E_TERMS - 1);
-    for (int i = 0; i < REPORT_E_TERMS - 1; i++)
-        lg[i] = (struct fig_legend){.text = name[i], .color = fig_energy_color(i)};
-    int last = REPORT_E_TERMS - 1; /* the balance's error */
+                                                  "motor work", "force work", "contact"};
+    enum { FORCE = 4 };
+    int last = REPORT_E_TERMS - 1, k = 0; /* last: the balance's error */
+    for (int i = 0; i < REPORT_E_TERMS; i++) {
+        if (i == FORCE && largest(d, first + i) == 0.0)
+            continue;
+        s[k] = line_of(d, first + i, fig_energy_color(i), i == last);
+        if (i < last)
+            lg[k] = (struct fig_legend){.text = name[i], .color = fig_energy_color(i)};
+        k++;
+    }
     snprintf(error_text, len, "balance error (largest %.2g J)", largest(d, first + last));
-    lg[last] = (struct fig_legend){.text = error_text, .color = fig_energy_color(last),
-                                   .dashed = true};
+    lg[k - 1] = (struct fig_legend){.text = error_text, .color = fig_energy_color(last),
+                                    .dashed = true};
+    return k;
 }
 
 int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, bool motor,
@@ -98,11 +105,10 @@ int report_headless(FILE *fp, enum fig_format f, struct report_data *d, int n, b
     if (motor)
         lg[nl++] = (struct fig_legend){.text = "motor u(t)", .color = FIG_MOTOR, .dashed = true};
     if (energy) {
-        energy_panel(d, 3 * n + 1, s + k, elg, error_text, sizeof error_text);
+        int ne = energy_panel(d, 3 * n + 1, s + k, elg, error_text, sizeof error_text);
         p[3] = (struct fig_panel){.xlabel = "time t (s)", .ylabel = ylabel[3], .xfixed = true,
-                                  .xlo = t0, .xhi = t_end, .series = s + k,
-                                  .nseries = REPORT_E_TERMS, .legend = elg,
-                                  .nlegend = REPORT_E_TERMS};
+                                  .xlo = t0, .xhi = t_end, .series = s + k, .nseries = ne,
+                                  .legend = elg, .nlegend = ne};
     }
     struct fig_page pg = page_of(look, energy ? "Displacement, velocity, acceleration and "
                                                 "energy"

@@ -14,8 +14,8 @@
 #include "figure.h"
 
 /* The energy terms a --headless --energy figure keeps: kinetic, potential, dissipated,
- * motor work, contact, and the balance's error. */
-#define REPORT_E_TERMS 6
+ * motor work, the force's work, contact, and the balance's error. */
+#define REPORT_E_TERMS 7
 #define REPORT_POINTS 2000000 /* (x, y) pairs a run's figure keeps in all, at most */
 
 /* Series of rows kept for a figure: every row while they are few, else per bucket of

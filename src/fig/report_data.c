@@ -207,6 +207,6 @@ void report_headless_row(const struct sim *s, const double *a, bool energy,
         sim_energy(s, &e);
         double *t = row + 3 * n + 1;
         t[0] = e.kinetic, t[1] = e.potential, t[2] = e.dissipated, t[3] = e.motor_work;
-        t[4] = e.contact, t[5] = e.balance - start_balance;
+        t[4] = e.force_work, t[5] = e.contact, t[6] = e.balance - start_balance;
     }
 }

@@ -40,18 +40,27 @@ void views_toggle(struct views *v, enum view w)
 /* ---- energy ---- */
 
 static const char *const names[TRAIL_ENERGIES] = {"kinetic", "potential", "damped", "motor",
-                                                  "contact"};
+                                                  "contact", "force"};
 static const int colors[TRAIL_ENERGIES] = {PAIR_MASS + 0, PAIR_MASS + 1, PAIR_MASS + 2,
-                                           PAIR_MOTOR, PAIR_MASS + 4};
+                                           PAIR_MOTOR, PAIR_MASS + 4, PAIR_MASS + 3};
 
-/* The energies now, in their colours, in the rows above the data of frame f: named in
- * full (form 0) or briefly (1). Whether they all fit; drawn (those that fit, then "…")
- * if draw. */
-static bool energy_items(struct rect f, const double *vals, int form, bool draw)
+/* The energies the view shows for app's chain: the force's work (the last) only where a
+ * force acts or has worked. */
+static int energies_shown(const struct app *app, const struct energy *e)
 {
-    static const char *const brief[TRAIL_ENERGIES] = {"kin", "pot", "damp", "motor", "cont"};
+    return model_forced(app->model) || e->force_work != 0.0 ? TRAIL_ENERGIES
+                                                            : TRAIL_ENERGIES - 1;
+}
+
+/* The first nq energies now, in their colours, in the rows above the data of frame f:
+ * named in full (form 0) or briefly (1). Whether they all fit; drawn (those that fit,
+ * then "…") if draw. */
+static bool energy_items(struct rect f, const double *vals, int nq, int form, bool draw)
+{
+    static const char *const brief[TRAIL_ENERGIES] = {"kin", "pot", "damp", "motor", "cont",
+                                                      "force"};
     int x = f.x + 2, y = f.y + 1, right = f.x + f.w - 2;
-    for (int q = 0; q < TRAIL_ENERGIES; q++) {
+    for (int q = 0; q < nq; q++) {
         char item[48];
         if (form)
             snprintf(item, sizeof item, "━%s %.2g", brief[q], vals[q]);
@@ -78,6 +87,7 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
     const struct trail *tr = app_trail(app);
     struct energy e;
     sim_energy(app->sim, &e);
+    int nq = energies_shown(app, &e);
     double now = sim_time(app->sim), window = app_window(app);
     if (fresh) {
         chart_fit_time(c, now, window);
@@ -86,7 +96,7 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
         double lo = 0.0, hi = 0.0;
         ev->peak = 0.0;
         for (int s = 0; s < k; s++)
-            for (int q = 0; q < TRAIL_ENERGIES; q++) {
+            for (int q = 0; q < nq; q++) {
                 double val = rec[(size_t)s * tr->width + TRAIL_E(tr, q)];
                 lo = fmin(lo, val), hi = fmax(hi, val);
                 if (q < 2)
@@ -95,28 +105,31 @@ static void draw_energy(struct energy_view *ev, const struct app *app, bool fres
         chart_fit_y(c, lo, hi);
         if (c->canvas) {
             canvas_clear(c->canvas);
-            for (int q = TRAIL_ENERGIES - 1; q >= 0; q--)
+            for (int q = nq - 1; q >= 0; q--)
                 plot_trace(c->canvas, rec + TRAIL_T, rec + TRAIL_E(tr, q), k, (size_t)tr->width,
                            0.0, &c->xa, &c->ya, q == TRAIL_WORK, (unsigned char)colors[q]);
         }
     }
-    chart_draw(c, "Energy (J): balance = kinetic + potential + damped + contact − motor",
+    chart_draw(c, nq == TRAIL_ENERGIES
+                      ? "Energy (J): balance = kinetic + potential + damped + contact − motor − "
+                        "force"
+                      : "Energy (J): balance = kinetic + potential + damped + contact − motor",
                "Energy (J)", "s", NULL, 0);
     chart_report(c, "Energy balance", "time t (s)", "energy (J)");
     c->report.time = true;
     /* The report's words are --energy --figure's (the screen's "damped" is short). */
     static const char *const report_names[TRAIL_ENERGIES] = {"kinetic", "potential",
                                                              "dissipated", "motor work",
-                                                             "contact"};
-    for (int q = 0; q < TRAIL_ENERGIES; q++)
+                                                             "contact", "force work"};
+    for (int q = 0; q < nq; q++)
         snprintf(c->report.name[colors[q]], sizeof c->report.name[0], "%s", report_names[q]);
     /* Above the data: each energy now, in its colour, then how good the balance is. */
     struct rect f = c->frame;
     const double vals[TRAIL_ENERGIES] = {e.kinetic, e.potential, e.dissipated, e.motor_work,
-                                         e.contact};
+                                         e.contact, e.force_work};
     /* Each with its name, or where they do not all fit in the rows, shorter ("━kin
      * 0.047"); if even that does not fit, the ones that do and "…". */
-    energy_items(f, vals, energy_items(f, vals, 0, false) ? 0 : 1, true);
+    energy_items(f, vals, nq, energy_items(f, vals, nq, 0, false) ? 0 : 1, true);
     if (c->area.y <= f.y + ENERGY_HEADER)
         return; /* no room above the data */
     double drift = app_energy_drift(app), rel = ev->peak > 0 ? fabs(drift) / ev->peak : 0.0;
