@@ -7,10 +7,19 @@
 #include <stdio.h>
 
 #include "core/config.h"
+#include "core/limits.h"
 #include "core/model.h"
 
 /* --headless: the run's CSV rows, or its --summary row (run_headless.c). */
 int run_headless(const struct config *c, const struct model *m);
+
+/* What dt is worth for a run of c on m: the stability and accuracy limits into *l
+ * (core/limits.c). False when the modes cannot be computed (no memory, numbers that
+ * overflow): the run goes on unjudged (run_headless.c). */
+bool run_judge(const struct config *c, const struct model *m, struct limits *l);
+
+/* The warnings about dt that l holds, one line each, before anything runs. */
+void run_warn_limits(const struct limits *l, const struct model *m);
 
 /* --summary's row for one run of c on m, written to fp after its header if header;
  * nothing written if the run fails (said on standard error). Returns the exit status. */

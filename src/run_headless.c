@@ -16,10 +16,7 @@
 #include "run.h"
 #include "run_files.h"
 
-/* What dt is worth for this run: the stability and accuracy limits (core/limits.c).
- * False when the modes cannot be computed (no memory, numbers that overflow): the run
- * goes on unjudged. */
-static bool judge(const struct config *c, const struct model *m, struct limits *l)
+bool run_judge(const struct config *c, const struct model *m, struct limits *l)
 {
     struct limits_mode *mode = malloc((size_t)m->n * sizeof *mode);
     bool ok = mode && limits_modes(m, mode) == 0;
@@ -29,9 +26,8 @@ static bool judge(const struct config *c, const struct model *m, struct limits *
     return ok;
 }
 
-/* The warnings about dt, one line each, before anything runs (a chain with hardening
- * springs told that they are its linearised chain's). */
-static void warn_limits(const struct limits *l, const struct model *m)
+/* (A chain with cubic springs told that they are its linearised chain's.) */
+void run_warn_limits(const struct limits *l, const struct model *m)
 {
     char line[400];
     const char *note = limits_linearised_note(m);
@@ -125,10 +121,10 @@ static int run_begin(struct run *r, const struct config *c, const struct model *
         options_say("out of memory");
         return EXIT_FAILURE;
     }
-    r->judged = judge(c, m, &r->l);
+    r->judged = run_judge(c, m, &r->l);
     r->unstable = r->judged && limits_unstable(&r->l);
     if (r->judged)
-        warn_limits(&r->l, m);
+        run_warn_limits(&r->l, m);
     sim_set_integrator(r->s, c->integrator);
     if (config_initial(c, m, r->x, r->x + n) != 0) {
         options_say("--start-mode: mode %d's shape cannot be computed for these values "

@@ -61,6 +61,28 @@ int run_sweep_run(const struct config *c, const struct model *m, bool up, double
                   double fmax, long count, const char *arg)
 {
     int n = m->n, status = EXIT_SUCCESS, capped = 0;
+    double top = fmin > fmax ? fmin : fmax;
+    if (top * c->dt > 0.5) {
+        /* Fewer than two steps a period: no first harmonic to measure. */
+        options_say("--sweep-run: %g Hz is %.3g steps a period at dt = %g s, too few to measure "
+                    "(expected frequencies up to %.6g Hz, or a smaller --dt)", top,
+                    1.0 / (top * c->dt), c->dt, 0.5 / c->dt);
+        return EXIT_USAGE;
+    }
+    /* The dt warnings --headless gives, for the highest frequency (the fewest steps a
+     * period). */
+    struct model *hi = model_new(n);
+    bool unstable = false;
+    if (hi) {
+        struct limits l;
+        model_copy(hi, m);
+        hi->motor.frequency = top;
+        if (run_judge(c, hi, &l)) {
+            run_warn_limits(&l, hi);
+            unstable = limits_unstable(&l);
+        }
+        model_free(hi);
+    }
     struct output o;
     double *amp = malloc((size_t)(2 * n) * sizeof *amp);
     double *x = calloc((size_t)(2 * n), sizeof *x);
@@ -78,12 +100,31 @@ int run_sweep_run(const struct config *c, const struct model *m, bool up, double
                     "amplitude is steady to %g %% (at most %d periods or %g s)\n",
                     100.0 * SWEEPRUN_STEADY, SWEEPRUN_MAX_PERIODS, SWEEPRUN_MAX_SECONDS);
         header(o.fp, n);
+        struct limits_runaway watch;
+        struct energy e;
+        sim_energy(s, &e);
+        limits_runaway_start(&watch, m, &e);
         for (long r = 0; r < count && !ferror(o.fp); r++) {
             double f = grid(fmin, fmax, count, up ? r : count - 1 - r);
             struct sweeprun_point p = sweeprun_point(s, f, amp, amp + n);
+            sim_energy(s, &e);
+            /* Past the stability limit, energy made from nothing (the velocity cap keeps
+             * the numbers finite) is the run blowing up, as --headless says it. */
+            if (unstable && !p.diverged && limits_runaway_check(&watch, &e)) {
+                options_say("--sweep-run: the simulation blew up at %.6g Hz (dt = %g s is past "
+                            "the stability limit said above)", f, c->dt);
+                status = EXIT_FAILURE;
+                break;
+            }
             if (p.diverged) {
-                options_say("--sweep-run: the motion ran away at %.6g Hz (a smaller --dt, or "
-                            "less drive)", f);
+                int spring;
+                if (isfinite(model_turnover(m, &spring)))
+                    options_say("--sweep-run: the motion ran away at %.6g Hz (spring %d softens: "
+                                "past its turnover it pulls no more; less drive, or a smaller "
+                                "--dt)", f, spring + 1);
+                else
+                    options_say("--sweep-run: the motion ran away at %.6g Hz (a smaller --dt, "
+                                "or less drive)", f);
                 status = EXIT_FAILURE;
                 break;
             }

@@ -128,4 +128,26 @@ if grep -q 'linearised at rest: large swings stiffen' "$out"; then pass; else
     fail "plain set dt past the limit with a hardening spring: no linearised note: $(grep -i 'warn\|limit' "$out" | head -c 300)"
 fi
 
+# --sweep-run never calls a runaway steady: a softening spring pulled past its turnover
+# (the state once froze at 9e69 m, every row stable), a dt past the stability limit (the
+# velocity cap kept it finite: 0.0517 m "steady"), a drive too fast for the step (0.05
+# steps a period measured 1.2e-13 m at -90 degrees). No row is written for them.
+one_error 2 "sweep-run: 2000 Hz is 0.05 steps a period.*up to 50 Hz" -p duffing \
+    --sweep-run up 1000:2000:2
+run -n 1 --spring-cubic -10 --amplitude 1 --sweep-run up 0.2:1:5 --no-collisions
+if [ "$rc" -eq 1 ] && [ "$(wc -l <"$out")" -eq 1 ] &&
+    grep -q "^springsim: --sweep-run: the motion ran away at 0.2 Hz (spring 1 softens" "$err"; then
+    pass
+else
+    fail "$cmd: exit $rc, rows $(tr '\n' '|' <"$out" | head -c 200), stderr: $(head -c 300 "$err")"
+fi
+run -n 1 --spring 2000 --damping 0.1 --dt 0.05 --no-collisions --sweep-run up 0.5:1:2
+if [ "$rc" -eq 1 ] && [ "$(wc -l <"$out")" -eq 1 ] &&
+    grep -q "^springsim: warning: dt = 0.05 s is unstable with rk4" "$err" &&
+    grep -q "^springsim: --sweep-run: the simulation blew up at 0.5 Hz" "$err"; then
+    pass
+else
+    fail "$cmd: exit $rc, rows $(tr '\n' '|' <"$out" | head -c 200), stderr: $(head -c 300 "$err")"
+fi
+
 summary

@@ -44,8 +44,10 @@ struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, doubl
     while (r.periods < SWEEPRUN_MAX_PERIODS && r.periods * steps * dt < SWEEPRUN_MAX_SECONDS) {
         memset(in, 0, (size_t)(2 * n) * sizeof *in);
         double ss = 0.0, sc = 0.0, cc = 0.0; /* the normal equations' matrix */
-        for (long k = 0; k < steps; k++) {
-            sim_step(s);
+        for (long k = 0; k < steps && !r.diverged; k++) {
+            /* A step that cannot be taken (non-finite numbers) leaves the state as it
+             * was: a runaway, not a steady motion. */
+            r.diverged = sim_step(s) != SIM_OK;
             double th = w * sim_time(s) + 2.0 * M_PI * m->motor.phase, sn = sin(th),
                    cs = cos(th);
             const double *x = sim_x(s);
@@ -56,6 +58,8 @@ struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, doubl
         /* Solved: [ss sc; sc cc] (in, quad) = (sum x sin, sum x cos). Two or more samples
          * of a period's angles make it regular; one (a drive of one step a period) falls
          * back on the lock-in's scale. */
+        if (r.diverged)
+            break;
         double det = ss * cc - sc * sc;
         for (int i = 0; i < n; i++) {
             double p = in[i], q = quad[i];
