@@ -197,6 +197,7 @@ int modes_response_phase(const struct model *m, double freq_hz, double *amp, dou
         scale = 1.0;
     }
     lapack_int info = LAPACKE_zgtsv(LAPACK_COL_MAJOR, n, 1, dl, d, du, b, n);
+    scale *= motor_fundamental(m->motor.wave); /* the drive's first harmonic */
     for (int i = 0; info == 0 && i < n; i++) {
         amp[i] = cabs(b[i]) * scale;
         if (phase_deg) {

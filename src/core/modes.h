@@ -23,8 +23,10 @@ int modes_nearest(const double *f, int n, double freq);
 
 /* Steady-state amplitudes |X_i| (m) of every mass under the sine drive at freq_hz, the
  * motor's amplitude A and the force's F together: X = (K - w^2 M + i w C)^-1 G,
- * G = (k_N + i w cs_N) A e_N (a motor end) + F e_K. Zero for a wall or free end without a
- * force, which nothing drives. Returns 0, -1 on no memory, or LAPACK's info. */
+ * G = (k_N + i w cs_N) A e_N (a motor end) + F e_K. Another waveform: the response to its
+ * fundamental (motor_fundamental times A and F), the first harmonic of the motion. Zero
+ * for a wall or free end without a force, which nothing drives. Returns 0, -1 on no
+ * memory, or LAPACK's info. */
 int modes_response(const struct model *m, double freq_hz, double *amp);
 
 /* As modes_response, with the phase of each mass's displacement relative to the drive's

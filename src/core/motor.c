@@ -69,6 +69,20 @@ double motor_wave(enum wave wave, double cycles)
     return 0.0;
 }
 
+double motor_fundamental(enum wave wave)
+{
+    switch (wave) {
+    case WAVE_SQUARE:
+        return 4.0 / M_PI;
+    case WAVE_TRIANGLE:
+        return 8.0 / (M_PI * M_PI);
+    case WAVE_SAWTOOTH:
+        return 2.0 / M_PI;
+    default:
+        return 1.0;
+    }
+}
+
 double motor_position(const struct motor *m, double t)
 {
     return m->amplitude * motor_wave(m->wave, m->frequency * t + m->phase);

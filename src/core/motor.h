@@ -28,6 +28,11 @@ struct motor_piece {
  * the jumps themselves (square 0, sawtooth -1). */
 double motor_wave(enum wave wave, double cycles);
 
+/* The waveform's fundamental, b sin(2 pi cycles): every waveform here is odd and in phase
+ * with the sine, its first Fourier coefficient b 1 (sine), 4/pi (square), 8/pi^2
+ * (triangle) or 2/pi (sawtooth). */
+double motor_fundamental(enum wave wave);
+
 /* The motor position u(t) = A w(2 pi (f t + phase)) in metres. */
 double motor_position(const struct motor *m, double t);
 
