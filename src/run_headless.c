@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/app.h"
 #include "core/config.h"
 #include "core/limits.h"
 #include "core/output.h"
@@ -52,7 +53,17 @@ static void report_blowup(const struct sim *s, const struct limits *l, bool judg
     snprintf(how, sizeof how, sim_last_capped(s) ? "a velocity reached the cap"
                               : runaway ? "the energy passed %g times what it could be"
                                         : "numbers became non-finite", LIMITS_RUNAWAY);
-    char why[300];
+    char why[300], spring[48];
+    int j;
+    double turn = model_turnover(sim_model(s), &j);
+    if (judged && !limits_unstable(l) && isfinite(turn)) {
+        /* A stable step, a softening spring: the motion ran away, not the method. */
+        app_spring_name(sim_model(s), j, spring, sizeof spring);
+        options_say("the simulation blew up at t = %.4g s (%s): %s softens, and past a "
+                    "stretch of %.3g m its force turns over and the chain runs away (less "
+                    "drive, or a smaller start)", sim_time(s), how, spring, turn);
+        return;
+    }
     if (judged)
         limits_say_stability(l, false, why, sizeof why);
     if (judged && why[0])
@@ -125,6 +136,14 @@ static int run_begin(struct run *r, const struct config *c, const struct model *
     r->unstable = r->judged && limits_unstable(&r->l);
     if (r->judged)
         run_warn_limits(&r->l, m);
+    int j;
+    double turn = model_turnover(m, &j);
+    if (isfinite(turn)) {
+        char name[48];
+        app_spring_name(m, j, name, sizeof name);
+        options_say("warning: %s softens: its force turns over at a stretch of %.3g m, and "
+                    "past it the chain runs away", name, turn);
+    }
     sim_set_integrator(r->s, c->integrator);
     if (config_initial(c, m, r->x, r->x + n) != 0) {
         options_say("--start-mode: mode %d's shape cannot be computed for these values "
