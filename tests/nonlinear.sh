@@ -180,4 +180,14 @@ else
     fail "$cmd: exit $rc, stderr: $(head -c 400 "$err")"
 fi
 
+# Undamped, a steady motion is a centre (neutrally stable): stable 1, not a rounding's
+# sign (every row of an undamped duffing was 0, the nearly linear 0.5 Hz one too).
+run -p duffing --damping 0 --sweep 0.5:1.5:11
+if [ "$rc" -eq 0 ] && [ "$(awk -F, 'NR > 1 && $3 != 1' "$out" | wc -l)" -eq 0 ] &&
+    [ "$(wc -l <"$out")" -eq 12 ]; then
+    pass
+else
+    fail "$cmd: expected 11 rows, each stable 1: $(tr '\n' '|' <"$out" | head -c 400)"
+fi
+
 summary

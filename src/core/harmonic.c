@@ -441,7 +441,9 @@ void harmonic_curve_free(struct harmonic_curve *c)
  * 2 m_i w b_i' and its sin row (C b')_i - 2 m_i w a_i'. The motion is stable when every
  * eigenvalue of -B^-1 dR/dz (dgesv, then dgeev) has a negative real part: the largest
  * real part (1/s) is returned (NAN when LAPACK fails). It crosses 0 exactly at the folds
- * of the same balance. */
+ * of the same balance. Undamped, the slow flow conserves energy: its eigenvalues come in
+ * pairs +-l, on the imaginary axis (a centre, neutrally stable) or on the real one (a
+ * saddle); a real part within rounding of the largest |l| is a centre's, returned as 0. */
 static double slow_rate(struct hb *h, const double *z, double w)
 {
     const struct model *m = h->m;
@@ -480,8 +482,11 @@ static double slow_rate(struct hb *h, const double *z, double w)
     if (LAPACKE_dgesv(LAPACK_COL_MAJOR, n2, n2, b, n2, piv, a, n2) == 0 &&
         LAPACKE_dgeev(LAPACK_COL_MAJOR, 'N', 'N', n2, a, n2, wr, wi, NULL, 1, NULL, 1) == 0) {
         top = -INFINITY;
+        double size = 0.0;
         for (int i = 0; i < n2; i++)
-            top = fmax(top, wr[i]);
+            top = fmax(top, wr[i]), size = fmax(size, hypot(wr[i], wi[i]));
+        if (fabs(top) <= 1e-9 * size)
+            top = 0.0;
     }
     free(a);
     free(piv);
@@ -519,7 +524,7 @@ int harmonic_at(const struct model *m, const struct harmonic_curve *c, double f,
                 o->phase[i] += 360.0;
         }
         o->rate = slow_rate(&h, z, w);
-        o->stable = o->rate < 0.0;
+        o->stable = o->rate <= 0.0; /* 0: a centre, neutrally stable */
     }
     hb_free(&h);
     return found;

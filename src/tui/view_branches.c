@@ -45,7 +45,7 @@ static void draw_theory(struct chart *c, const struct jump_theory *t, bool phase
             double fy0 = chart_dot_yf(c, v0), fy1 = chart_dot_yf(c, v1);
             int x0 = (int)lround(fx0), x1 = (int)lround(fx1), y0 = (int)lround(fy0),
                 y1 = (int)lround(fy1);
-            bool stable = t->rate[k] < 0.0 && t->rate[k + 1] < 0.0;
+            bool stable = t->rate[k] <= 0.0 && t->rate[k + 1] <= 0.0;
             if (stable)
                 canvas_line(cv, x0, y0, x1, y1, color);
             else
