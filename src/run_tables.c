@@ -242,10 +242,11 @@ int run_sweep_run_cli(const struct config *c, const struct model *m, const char 
     }
     if (parse_sweep("--sweep-run", spec, &fmin, &fmax, &count) != 0)
         return EXIT_USAGE;
-    if (m->boundary != BOUNDARY_MOTOR || m->motor.wave != WAVE_SINE) {
-        options_say("--sweep-run: the chain is driven by %s, not the motor's sine (expected "
-                    "--boundary motor --wave sine)", m->boundary != BOUNDARY_MOTOR
-                    ? "no motor" : motor_wave_name(m->motor.wave));
+    if (!model_driven(m)) {
+        options_say("--sweep-run: nothing drives the chain: the right end is '%s'%s and there "
+                    "is no force (expected --boundary motor with an amplitude, or --force F "
+                    "on a mass)", model_boundary_name(m->boundary),
+                    m->boundary == BOUNDARY_MOTOR ? " at amplitude 0" : "");
         return EXIT_USAGE;
     }
     char arg[200];

@@ -190,4 +190,27 @@ else
     fail "$cmd: expected 11 rows, each stable 1: $(tr '\n' '|' <"$out" | head -c 400)"
 fi
 
+# --sweep-run takes any drive --sweep takes: a square motor (which --sweep of a cubic
+# chain sweeps by simulation), a force with the end free (the tuned-mass damper: the
+# linear --sweep's values within 0.1 %); nothing driving is refused.
+run -p duffing --wave square --sweep-run up 0.7:0.9:3
+expect_rows() {
+    if [ "$rc" -eq 0 ] && [ "$(wc -l <"$out")" -eq "$1" ]; then pass; else
+        fail "$cmd: exit $rc, $(wc -l <"$out") lines (expected $1): $(head -c 300 "$err")"
+    fi
+}
+expect_rows 4
+run -p tuned-mass-damper --sweep 0.3:0.7:5
+cp "$out" "$tmp/tmd-lin.csv"
+run -p tuned-mass-damper --sweep-run up 0.3:0.7:5
+expect_rows 6
+worst=$(awk -F, 'NR == FNR { if (FNR > 1) { a[FNR] = $2; b[FNR] = $3 } next }
+    FNR > 1 { for (k = 0; k < 2; k++) { d = $(4 + k) / (k ? b[FNR] : a[FNR]) - 1
+        if (d < 0) d = -d; if (d > m) m = d } }
+    END { printf "%.2e", m + 0 }' "$tmp/tmd-lin.csv" "$out")
+if awk -v w="$worst" 'BEGIN { exit !(w < 1e-3) }'; then pass; else
+    fail "--sweep-run of the tuned-mass damper: off the linear sweep by $worst (at most 1e-3)"
+fi
+one_error 2 "sweep-run: nothing drives the chain" --amplitude 0 --sweep-run up 0.3:0.7:5
+
 summary
