@@ -108,9 +108,10 @@ int run_sweep_run(const struct config *c, const struct model *m, bool up, double
             double f = grid(fmin, fmax, count, up ? r : count - 1 - r);
             struct sweeprun_point p = sweeprun_point(s, f, amp, amp + n);
             sim_energy(s, &e);
-            /* Past the stability limit, energy made from nothing (the velocity cap keeps
-             * the numbers finite) is the run blowing up, as --headless says it. */
-            if (unstable && !p.diverged && limits_runaway_check(&watch, &e)) {
+            /* Past the stability limit, a velocity at the cap or energy made from nothing
+             * (the cap keeps the numbers finite) is the run blowing up, as --headless
+             * says it. */
+            if (unstable && !p.diverged && (p.capped || limits_runaway_check(&watch, &e))) {
                 options_say("--sweep-run: the simulation blew up at %.6g Hz (dt = %g s is past "
                             "the stability limit said above)", f, c->dt);
                 status = EXIT_FAILURE;

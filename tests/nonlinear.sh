@@ -213,4 +213,13 @@ if awk -v w="$worst" 'BEGIN { exit !(w < 1e-3) }'; then pass; else
 fi
 one_error 2 "sweep-run: nothing drives the chain" --amplitude 0 --sweep-run up 0.3:0.7:5
 
+# Just past the upper fold (0.8365 Hz) nothing stays high: the motion lingers near the
+# fold's ghost before it falls, and the point once took that slow drift for steady
+# (1.577 m at 0.84 Hz; the run from there falls to 0.3246 m, as the jump lesson says).
+run -p duffing --sweep-run up 0.5:0.84:35
+last=$(tail -n 1 "$out" | cut -d, -f4)
+if [ "$rc" -eq 0 ] && awk -v a="$last" 'BEGIN { exit !(a > 0.3 && a < 0.35) }'; then pass; else
+    fail "$cmd: at 0.84 Hz expected the low branch (about 0.3245 m), got '$last'"
+fi
+
 summary

@@ -9,18 +9,37 @@
  * times the steadiness asked for. The point is steady when, for
  * every mass, the amplitude changed by at most SWEEPRUN_STEADY of itself over the last
  * period and the change still to come (the geometric tail d r / (1 - r), r the ratio of
- * the last two changes) is as small, two periods running. */
+ * the last two changes) is as small, for as many periods running as the slowest mode's
+ * decay time holds (calm_periods). */
 #include "sweeprun.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "modes.h"
 #include "sweep.h"
+
+/* Periods at frequency f in the slowest decay time of m's modes (1 / the least modal decay
+ * rate, rigid modes left out), at least 2: a transient still moves by 63 % of what is
+ * left of it in that time, so an amplitude steady for so long is not a slow drift (as
+ * past a fold, where the motion lingers before it falls). */
+static long calm_periods(const struct model *m, double f)
+{
+    int n = m->n;
+    double *w2 = malloc((size_t)(2 * n) * sizeof *w2), least = INFINITY;
+    if (w2 && modes_modal(m, w2, w2 + n) == 0)
+        for (int j = 0; j < n; j++)
+            if (w2[j] > 0.0 && w2[n + j] > 0.0)
+                least = fmin(least, w2[n + j]);
+    free(w2);
+    double p = ceil(f / least);
+    return isfinite(p) && p > 2.0 ? (long)fmin(p, SWEEPRUN_MAX_PERIODS / 4) : 2;
+}
 
 struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, double *phase)
 {
-    struct sweeprun_point r = {false, 0, false};
+    struct sweeprun_point r = {false, 0, false, 0};
     const struct model *m0 = sim_model(s);
     int n = m0->n;
     struct model *m = model_new(n);
@@ -38,7 +57,7 @@ struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, doubl
     double dt = sim_dt(s), w = 2.0 * M_PI * f;
     long steps = lround(1.0 / (f * dt));
     steps = steps < 1 ? 1 : steps;
-    int calm = 0;
+    long calm = 0, need = calm_periods(m, f);
     for (int i = 0; i < n; i++)
         last[i] = change[i] = NAN;
     while (r.periods < SWEEPRUN_MAX_PERIODS && r.periods * steps * dt < SWEEPRUN_MAX_SECONDS) {
@@ -48,6 +67,7 @@ struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, doubl
             /* A step that cannot be taken (non-finite numbers) leaves the state as it
              * was: a runaway, not a steady motion. */
             r.diverged = sim_step(s) != SIM_OK;
+            r.capped += sim_last_capped(s) > 0;
             double th = w * sim_time(s) + 2.0 * M_PI * m->motor.phase, sn = sin(th),
                    cs = cos(th);
             const double *x = sim_x(s);
@@ -88,7 +108,7 @@ struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, doubl
         if (r.diverged)
             break;
         calm = steady ? calm + 1 : 0;
-        if (calm >= 2) {
+        if (calm >= need) {
             r.settled = true;
             break;
         }

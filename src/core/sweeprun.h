@@ -18,10 +18,12 @@ struct sweeprun_point {
     bool settled;  /* steady to SWEEPRUN_STEADY; false: the cap was reached */
     int periods;   /* drive periods run */
     bool diverged; /* the state stopped being finite */
+    long capped;   /* steps whose velocities the cap held (sim_last_capped) */
 };
 
-/* Retunes s's sine drive to f (its phase kept, so the motor does not jump), runs it until
- * every mass's first-harmonic amplitude is steady, then writes each mass's amplitude (m)
+/* Retunes s's drive to f (its phase kept, so the motor does not jump), runs it until
+ * every mass's first-harmonic amplitude is steady over the slowest mode's decay time (a
+ * step that fails ends it as diverged), then writes each mass's amplitude (m)
  * and phase to the motor's displacement (degrees, (-180, 180]) over the last whole period
  * into amp and phase. The drive's phase and the state carry on to the next call. */
 struct sweeprun_point sweeprun_point(struct sim *s, double f, double *amp, double *phase);
