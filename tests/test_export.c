@@ -135,6 +135,36 @@ static void sweep_points_beside_the_theory(void **state)
     rmdir(dir);
 }
 
+/* A force is a drive: a chain with a free right end and a force on a mass has its theory
+ * (modes_response_phase with the force), and its sweep is exported beside it; with the
+ * force taken off nothing drives, and that is said. */
+static void force_is_a_drive_for_the_sweep(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/springsim-exp-XXXXXX", path[512];
+    assert_non_null(mkdtemp(dir));
+    assert_true(app_set_text(&app, CTL_DAMPING, "5"));
+    start_sweep();
+    int steps = 0;
+    while (app.sweep->active && steps++ < 200000)
+        app_step(&app);
+    assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
+    assert_true(app_set_text(&app, CTL_BOUNDARY, "free"));
+    assert_true(app_set_text(&app, CTL_FORCE, "0.5"));
+    assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
+    assert_int_equal(app_export_sweep(&app, dir, path, sizeof path), APP_CHANGED_MESSAGE);
+    assert_int_equal(app.said, SAID_NOTE);
+    assert_non_null(strstr(app.message, "exported the sweep's 40 points beside the theory to "));
+    int n = read_lines(path, lines, 5200);
+    assert_int_equal(n, 3 + 1 + APP_SWEEP_POINTS);
+    unlink(path);
+    assert_true(app_set_text(&app, CTL_FORCE, "0"));
+    assert_int_equal(app_export_sweep(&app, dir, path, sizeof path), APP_CHANGED_MESSAGE);
+    assert_int_equal(app.said, SAID_ERROR);
+    assert_non_null(strstr(app.message, "no drive"));
+    rmdir(dir);
+}
+
 int main(void)
 {
 #define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
@@ -142,6 +172,7 @@ int main(void)
         T(samples_have_meta_lines),
         T(samples_say_what_is_kept),
         T(sweep_points_beside_the_theory),
+        T(force_is_a_drive_for_the_sweep),
     };
 #undef T
     return cmocka_run_group_tests_name("export", tests, NULL, NULL);

@@ -526,7 +526,8 @@ unsigned app_start_mode(struct app *app, int j)
                           sweeping ? "sweep stopped; " : "", j + 1,
                           app_fixed(app->modes[j], 3, hz, sizeof hz), amp,
                           driven ? "; the motor still drives (Amplitude 0 leaves it alone)"
-                                 : amp < APP_MODE_AMPLITUDE ? ", so no two masses touch" : "");
+                          : model_forced(m) ? "; the force still drives (Force 0 leaves it alone)"
+                          : amp < APP_MODE_AMPLITUDE ? ", so no two masses touch" : "");
 }
 
 void app_control_value(const struct app *app, enum control ctl, char *buf, size_t len)

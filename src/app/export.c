@@ -120,9 +120,10 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
     int measured = sweep_measured(s);
     if (measured == 0)
         return app_say(app, SAID_ERROR, "export: no sweep measured yet (w runs one)");
-    if (app->model->boundary != BOUNDARY_MOTOR)
-        return app_say(app, SAID_ERROR, "export: the right end is '%s' now: no drive, no theory to "
-                       "set beside the sweep", model_boundary_name(app->model->boundary));
+    if (app->model->boundary != BOUNDARY_MOTOR && !model_forced(app->model))
+        return app_say(app, SAID_ERROR, "export: the right end is '%s' now and no force is on: "
+                       "no drive, no theory to set beside the sweep",
+                       model_boundary_name(app->model->boundary));
     double *amp = malloc((size_t)(2 * s->n) * sizeof *amp);
     if (!amp)
         return app_say(app, SAID_ERROR, "export: out of memory");

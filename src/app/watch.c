@@ -12,7 +12,7 @@
 int watch_on_mode(const struct app *app)
 {
     const struct model *m = app->model;
-    if (!app->modes_ok || m->boundary != BOUNDARY_MOTOR || !(m->motor.amplitude > 0.0))
+    if (!app->modes_ok || !model_driven(m))
         return -1;
     int j = modes_nearest(app->modes, m->n, m->motor.frequency);
     return fabs(m->motor.frequency - app->modes[j]) <= WATCH_ON_MODE * app->modes[j] ? j : -1;
