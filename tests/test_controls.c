@@ -193,6 +193,18 @@ static void spring_dampers(void **state)
     assert_int_equal(app_set_spring_damping(&app, 2, "-1"), 0);
     assert_int_equal(app.said, SAID_ERROR);
     assert_true(app.model->cs[2] == 0.0);
+    /* A refused value says why, as --spring-damping does, with every spring spelled out. */
+    assert_string_equal(app.message, "spring 3 (2–3): '-1' is out of range (expected spring "
+                                     "dampers >= 0 N·s/m: one value, or N+1)");
+    assert_int_equal(app_set_spring_damping(&app, 2, "1e999"), 0);
+    assert_non_null(strstr(app.message, "'1e999' is not a finite number (expected spring dampers"));
+    assert_int_equal(app_set_spring_damping(&app, 2, "abc"), 0);
+    assert_non_null(strstr(app.message, "'abc' is not a number (expected spring dampers"));
+    assert_true(app_set_cubic(&app, 1, "2"));
+    assert_int_equal(app_set_cubic(&app, 1, "abc"), 0);
+    assert_non_null(strstr(app.message, "'abc' is not a number"));
+    assert_true(app.model->k3[1] == 2.0);
+    assert_true(app_set_cubic(&app, 1, "0"));
     assert_int_equal(command_do(&app, "element cs 0 0.4", &res), REPLY_OK);
     assert_true(app.model->cs[0] == 0.4 && app.model->cs[1] == 0.3);
     assert_int_equal(command_do(&app, "element cs 4 1", &res), REPLY_ERROR);

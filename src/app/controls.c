@@ -370,12 +370,16 @@ static unsigned set_spring_list(struct app *app, enum config_key key, int spring
     snprintf(noun, sizeof noun, "%s", o->name);
     if (spring >= 0)
         app_spring_name(m, spring, noun, sizeof noun);
-    if (config_set(&next, key, text, err, sizeof err) != 0 || (spring >= 0 && l->count != 1)) {
-        if (spring >= 0 && l->count > 1) {
-            char q[4 * CONFIG_QUOTE_MAX + 48];
-            config_quote(text, strlen(text), q, sizeof q);
-            snprintf(err, sizeof err, "%s is more than one value", q);
-        }
+    /* The list's count is the old one when the text is refused: only a list read whole
+     * can be more than one value. */
+    bool bad = config_set(&next, key, text, err, sizeof err) != 0;
+    if (!bad && spring >= 0 && l->count != 1) {
+        char q[4 * CONFIG_QUOTE_MAX + 48];
+        config_quote(text, strlen(text), q, sizeof q);
+        snprintf(err, sizeof err, "%s is more than one value", q);
+        bad = true;
+    }
+    if (bad) {
         app_say(app, SAID_ERROR, "%s: %s", noun, err);
         return 0;
     }
