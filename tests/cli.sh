@@ -49,6 +49,11 @@ expect_usage_error --spring-damping "'nan'" -- --headless --spring-damping nan
 expect_usage_error --spring-damping "'inf'" -- --headless --spring-damping inf
 expect_usage_error --spring-damping "2 values for 3 springs" -- --headless --spring-damping 1,2
 expect_usage_error --spring-damping "square" -- --headless --spring-damping 0.5 --wave square
+# the motor's spring is the list's last, N+1, named as elsewhere
+expect_usage_error --spring-damping "expected 0 for spring 3 (2–motor)" -- --headless \
+    --spring-damping 0,0,1 --wave square
+expect_usage_error --spring-damping "expected 0 for spring 201 (200–motor)" -- --headless \
+    -n 200 --spring-damping 1 --wave sawtooth
 expect_usage_error --force "'-1'" -- --headless --force -1
 expect_usage_error --force "'nan'" -- --headless --force nan
 expect_usage_error --force-on "'0'" -- --headless --force-on 0 --force 1

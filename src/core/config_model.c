@@ -99,8 +99,8 @@ struct model *config_model(const struct config *c, int *bad_key, char *err, size
         /* u jumps, so the damper's rate cs_N (u' - v_N) is a Dirac pulse: no finite force */
         *bad_key = CFG_SPRING_DAMPING;
         snprintf(err, errlen, "'%g' on the motor's spring with a %s wave makes an infinite "
-                 "force at each jump (expected 0 for spring %d, a sine or triangle wave, or "
-                 "another right end)", m->cs[n], motor_wave_name(c->wave), n);
+                 "force at each jump (expected 0 for spring %d (%d–motor), a sine or triangle "
+                 "wave, or another right end)", m->cs[n], motor_wave_name(c->wave), n + 1, n);
     }
     if (*bad_key < 0 && c->force_on > n) {
         *bad_key = CFG_FORCE_ON;
