@@ -213,6 +213,10 @@ expect_usage_error --seed "'-1'" "out of range" -- --headless --seed -1
 printf '[system]\nmass = 1\n[system]\nmass = 2\n' >"$tmp/twice.ini"
 expect_one_line_error 2 "twice.ini:4:
 'mass' is given twice" -p "$tmp/twice.ini" --modes
+# the same key through its other spelling ('_' for '-') is given twice too
+printf '[system]\nmasses = 2\nspring-cubic = 1\nspring_cubic = 2\n' >"$tmp/alias.ini"
+expect_one_line_error 2 "alias.ini:4:
+'spring_cubic' is given twice (first on line 3, as 'spring-cubic')" -p "$tmp/alias.ini" --modes
 printf 'old\n' >"$tmp/target.csv"
 ln -s target.csv "$tmp/link.csv"
 if expect_ok --headless --duration 0.1 -o "$tmp/link.csv"; then

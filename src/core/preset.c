@@ -6,6 +6,7 @@
 #include "preset.h"
 
 #include <errno.h>
+#include <stdbool.h>
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
@@ -97,6 +98,15 @@ static void too_long(struct parse *p, const char *start, const char *eol, const 
              "one value must fit on one line)", PRESET_MAX_LINE, what, name);
 }
 
+/* Whether two keys name one setting: the same but for '_' in place of '-' (find_key). */
+static bool same_key(const char *a, const char *b)
+{
+    for (; *a && *b; a++, b++)
+        if (*a != *b && !((*a == '_' || *a == '-') && (*b == '_' || *b == '-')))
+            return false;
+    return *a == *b;
+}
+
 /* The first pass: mirrors how inih classifies lines (comment, section, continuation,
  * key) and checks what it cannot. Returns the bad line, or 0 with p->lines filled. */
 static int prescan(struct parse *p, const char *text, size_t size)
@@ -161,9 +171,13 @@ static int prescan(struct parse *p, const char *text, size_t size)
             }
             copy_name(start, sep, key, sizeof key);
             for (int i = 0; i < nseen; i++) {
-                if (strcmp(seen[i], key) == 0) {
-                    snprintf(p->msg, sizeof p->msg, "'%s' is given twice (first on line %d)",
-                             key, seen_line[i]);
+                if (same_key(seen[i], key)) {
+                    if (strcmp(seen[i], key) == 0)
+                        snprintf(p->msg, sizeof p->msg, "'%s' is given twice (first on "
+                                 "line %d)", key, seen_line[i]);
+                    else
+                        snprintf(p->msg, sizeof p->msg, "'%s' is given twice (first on "
+                                 "line %d, as '%.63s')", key, seen_line[i], seen[i]);
                     return line;
                 }
             }
