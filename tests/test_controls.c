@@ -175,6 +175,19 @@ static void force_controls(void **state)
     assert_int_equal(app.model->force_on, 0);
     assert_int_equal(command_do(&app, "set force -1", &res), REPLY_ERROR);
     assert_true(app.model->force == 2.5);
+    /* Fewer masses than the force's carry it down to the last mass, and say so; a force-on
+     * past the masses is still refused. */
+    assert_int_equal(command_do(&app, "set force-on 3", &res), REPLY_OK);
+    assert_int_equal(command_do(&app, "set force 0", &res), REPLY_OK);
+    assert_int_equal(command_do(&app, "set masses 2", &res), REPLY_OK);
+    assert_int_equal(app.model->n, 2);
+    assert_int_equal(app.model->force_on, 1);
+    assert_int_equal(app.cfg.force_on, 2);
+    assert_non_null(strstr(app.message, "force-on 2 now, the last mass"));
+    assert_int_equal(command_do(&app, "set masses 3", &res), REPLY_OK);
+    assert_null(strstr(app.message, "force-on"));
+    assert_int_equal(app.model->force_on, 1);
+    assert_int_equal(command_do(&app, "set force-on 4", &res), REPLY_ERROR);
 }
 
 /* A damper beside one spring (the c key on a selected spring, or element cs), or beside

@@ -189,11 +189,18 @@ static int new_masses(struct app *app, int n, unsigned *what)
     next.masses = n;
     next.x0.count = next.v0.count = 0;
     next.random = false;
+    /* Fewer masses than the force's: it goes with the chain's end, to the last mass. */
+    bool moved = next.force_on > n;
+    if (moved)
+        next.force_on = n;
     bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
     if (app_change(app, &next, CHANGE_REBUILD, rows[CTL_MASSES].why, what) != 0)
         return -1;
+    char on[64] = "";
+    if (moved)
+        snprintf(on, sizeof on, "; force-on %d now, the last mass", n);
     *what |= APP_CHANGED_PENDING |
-             app_say(app, SAID_NOTE, "%d mass%s, at rest%s", n, n == 1 ? "" : "es",
+             app_say(app, SAID_NOTE, "%d mass%s, at rest%s%s", n, n == 1 ? "" : "es", on,
                      ghost ? "; ghost dropped with the old chain" : "");
     return 0;
 }
