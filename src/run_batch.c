@@ -173,8 +173,16 @@ static int run_row(struct batch *b, const struct config *base, FILE *fp, int *he
         m = NULL;
     }
     if (!m) {
+        /* A setting the row gave is named as its column (as a refused field is); one the
+         * command line or a preset gave, as there. */
+        int col = b->columns;
+        for (int i = 0; bad_key >= 0 && i < n; i++)
+            if (b->key[i] == bad_key && b->field[i][0] != '\0')
+                col = i;
         if (bad_key < 0)
             options_say("%s", err);
+        else if (col < b->columns)
+            options_say("%s: %s", config_options[bad_key].name, err);
         else
             options_report_key(&c, bad_key, err);
         return EXIT_FAILURE;

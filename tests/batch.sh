@@ -98,7 +98,7 @@ cmp -s "$out" "$tmp/want" && pass || fail "$cmd: the good rows' output differs f
 [ "$rc" -eq 1 ] && pass || fail "$cmd: exit $rc (expected 1)"
 for want in "bad.csv:3: damping: 'abc' is not a number" "bad.csv:4: has 5 fields" \
     "bad.csv:5: has a quote that is not closed" "bad.csv:6: the simulation blew up" \
-    "bad.csv:8: --damping: '1,2,3' has 3 values for 2 masses"; do
+    "bad.csv:8: damping: '1,2,3' has 3 values for 2 masses"; do
     grep -qF "$want" "$err" && pass || fail "$cmd: no line '$want': $(show "$err")"
 done
 # One line a bad row, besides the warning that dt is past euler's stability limit.
@@ -187,5 +187,20 @@ else
             fail "the README's study: rows differ from the runs alone"
     fi
 fi
+
+# A row's setting refused beside the others is named as its column, as a refused field is
+# (no '--': the row gave it); one the command line gave keeps its '--'.
+printf '%s\n' 'masses,force-on,force,spring-damping,wave' '2,3,1,,' '2,1,1,"0,0,1",square' \
+    >"$tmp/cross.csv"
+run --batch "$tmp/cross.csv" --no-collisions
+for want in "cross.csv:2: force-on: '3' is out of range for 2 masses" \
+    "cross.csv:3: spring-damping: '1' on the motor's spring"; do
+    grep -qF "$want" "$err" && pass || fail "$cmd: no line '$want': $(show "$err")"
+done
+! grep -q -- ': --' "$err" && pass || fail "$cmd: a row's setting named as an option: $(show "$err")"
+printf 'masses\n2\n' >"$tmp/cmdline.csv"
+run --batch "$tmp/cmdline.csv" --no-collisions --force-on 3 --force 1
+grep -qF "cmdline.csv:2: --force-on: '3' is out of range" "$err" && pass ||
+    fail "$cmd: the command line's --force-on not named as given: $(show "$err")"
 
 summary
