@@ -219,6 +219,10 @@ static void spring_dampers(void **state)
     assert_true(app.model->k3[1] == 2.0);
     assert_true(app_set_cubic(&app, 1, "0"));
     assert_int_equal(command_do(&app, "element cs 0 0.4", &res), REPLY_OK);
+    /* element numbers springs from 0, their labels from 1: the reply names both */
+    assert_string_equal(res.answer, "element cs 0 is spring 1 (wall–1): c = 0.4 N·s/m");
+    assert_int_equal(command_do(&app, "element k 3 12", &res), REPLY_OK);
+    assert_string_equal(res.answer, "element k 3 is spring 4 (3–motor): k = 12 N/m");
     assert_true(app.model->cs[0] == 0.4 && app.model->cs[1] == 0.3);
     assert_int_equal(command_do(&app, "element cs 4 1", &res), REPLY_ERROR);
     assert_non_null(strstr(res.answer, "cs its damper"));

@@ -392,11 +392,21 @@ static enum command_reply do_element(struct command_call *c)
                  "its damper)", n, n);
         return REPLY_ERROR;
     }
+    enum command_reply r;
     if (kind == 's')
-        return verb(c->app, ACT_SPRING_DAMPING, &(struct verb_arg){.index = (int)idx, .text = v},
-                    c->answer, c->len);
-    return verb(c->app, ACT_ELEMENT, &(struct verb_arg){.what = kind,
-                .index = (int)idx - !spring, .text = v}, c->answer, c->len);
+        r = verb(c->app, ACT_SPRING_DAMPING, &(struct verb_arg){.index = (int)idx, .text = v},
+                 c->answer, c->len);
+    else
+        r = verb(c->app, ACT_ELEMENT, &(struct verb_arg){.what = kind,
+                 .index = (int)idx - !spring, .text = v}, c->answer, c->len);
+    /* Springs are numbered from 0 here, from 1 in their labels (spring 1 (wall–1)): the
+     * reply names both, so neither is mistaken for the other. */
+    if (spring && strncmp(c->answer, "spring ", 7) == 0) {
+        char said[sizeof c->app->message];
+        snprintf(said, sizeof said, "%s", c->answer);
+        snprintf(c->answer, c->len, "element %s %d is %s", what, (int)idx, said);
+    }
+    return r;
 }
 
 static enum command_reply do_nearest(struct command_call *c)
