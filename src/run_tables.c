@@ -161,6 +161,11 @@ int run_sweep(const struct config *c, const struct model *m, const char *spec)
             model_boundary_name(m->boundary));
         return EXIT_USAGE;
     }
+    if (!model_driven(m)) { /* the motor standing still drives no more than a wall */
+        options_say("--sweep: the motor's amplitude is 0, which does not drive the chain, and "
+            "there is no force (expected --amplitude A > 0, or --force F on a mass)");
+        return EXIT_USAGE;
+    }
     if (m->cubic)
         return run_sweep_hb(c, m, fmin, fmax, count, spec);
     int n = m->n, status = EXIT_SUCCESS;

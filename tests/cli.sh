@@ -82,6 +82,9 @@ expect_usage_error --sweep "'1:0.5:10'" -- --sweep 1:0.5:10
 expect_usage_error --sweep "'0:1:10'" -- --sweep 0:1:10
 expect_usage_error --sweep "'0.1:1:1'" -- --sweep 0.1:1:1
 expect_usage_error --sweep "'a:b:c'" -- --sweep a:b:c
+# a motor standing still drives nothing, as a wall does not: refused without a force
+expect_usage_error --sweep "amplitude is 0, which does not drive" -- --amplitude 0 --sweep 0.5:1:2
+expect_usage_error --sweep "does not drive" -- --amplitude 0 --spring-cubic 1 --sweep 0.5:1:2
 expect_usage_error --sweep "'0.1:1'" -- --sweep 0.1:1
 expect_usage_error --sweep "'0.1:1:10:3'" -- --sweep 0.1:1:10:3
 expect_usage_error --sweep "'wall'" -- --sweep 0.1:1:10 --boundary wall
