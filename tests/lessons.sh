@@ -262,7 +262,7 @@ if awk -v c="$c0" -v said="$said" '
     function T(r, z) { return sqrt((1 + (2 * z * r) ^ 2) / ((1 - r * r) ^ 2 + (2 * z * r) ^ 2)) }
     function quotes(fmt, v) { return index(said, sprintf(fmt, v)) > 0 }
     BEGIN { pi = atan2(0, -1); k = 10; m = 1; fn = sqrt(k / m) / (2 * pi) }
-    /^ok spring 2 \(1-motor\): c = / { c = $7 + 0 }
+    /^ok element cs 1 is spring 2 \(1-motor\): c = / { c = $11 + 0 }
     /^ok measure: mass 1/ && /driven steady state/ {
         for (i = 1; i <= NF; i++) {
             if ($i == "ratio" && !got) { got = $(i + 1) + 0 }
