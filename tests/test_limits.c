@@ -427,6 +427,40 @@ static void drive_motion(void **state)
     model_free(md);
 }
 
+/* Springs of k = 0 (a cubic term or not) and no dampers: at rest every lambda is 0, each
+ * step x += h v, and every dt is stable: no warning that the limit "cannot be computed".
+ * One stiff spring or one damper gives a finite limit again. */
+static void no_stiffness_is_stable(void **state)
+{
+    (void)state;
+    struct model *md = uniform(2, 0.0, 1.0, 0.0, BOUNDARY_WALL);
+    md->k3[1] = 10.0;
+    model_set_cubic(md);
+    struct limits_mode mode[2];
+    struct limits l;
+    char msg[400];
+    assert_int_equal(limits_modes(md, mode), 0);
+    const enum integrator in[] = {INTEGRATOR_EULER, INTEGRATOR_SEMI_IMPLICIT,
+                                  INTEGRATOR_VERLET, INTEGRATOR_RK4};
+    for (size_t c = 0; c < sizeof in / sizeof *in; c++) {
+        limits_judge(mode, 2, md, in[c], 0.01, &l);
+        assert_true(l.stable_dt == INFINITY);
+        assert_false(limits_unstable(&l));
+        limits_say_stability(&l, true, msg, sizeof msg);
+        assert_string_equal(msg, "");
+    }
+    md->k[1] = 10.0;
+    assert_int_equal(limits_modes(md, mode), 0);
+    limits_judge(mode, 2, md, INTEGRATOR_RK4, 0.01, &l);
+    assert_true(isfinite(l.stable_dt) && l.stable_dt > 0.01);
+    md->k[1] = 0.0;
+    md->c[0] = 0.5;
+    assert_int_equal(limits_modes(md, mode), 0);
+    limits_judge(mode, 2, md, INTEGRATOR_RK4, 0.01, &l);
+    assert_true(isfinite(l.stable_dt) && l.stable_dt > 0.01);
+    model_free(md);
+}
+
 /* With damping proportional to mass on a uniform chain the damped modes are the undamped
  * ones with s = c / 2m, overdamped or not: dgeev's eigenvalues, paired, give exactly
  * those, and so does the modal route used above LIMITS_DGEEV_MAX masses. */
@@ -466,6 +500,7 @@ int main(void)
         cmocka_unit_test(accuracy_of_the_top_mode),
         cmocka_unit_test(accuracy_of_semi_implicit),
         cmocka_unit_test(drive_motion),
+        cmocka_unit_test(no_stiffness_is_stable),
         cmocka_unit_test(pairing_and_the_modal_route),
     };
     return cmocka_run_group_tests_name("limits", tests, NULL, NULL);

@@ -361,6 +361,14 @@ double limits_stable_dt(const struct model *m, const struct limits_mode *mode, i
 static double known_stable_dt(const struct model *m, const struct limits_mode *mode, int n,
                               enum integrator i)
 {
+    /* Every lambda 0 (no stiffness and no damper at rest: springs of k = 0, cubic or not):
+     * each step is x += h v, v kept, growing with no step length faster than t, so every
+     * dt is stable; the search's unit of time, 1/|lambda|, is infinite. */
+    double scale = 0.0;
+    for (int j = 0; j < n; j++)
+        scale = fmax(scale, mode_scale(&mode[j]));
+    if (scale == 0.0)
+        return INFINITY;
     double dt = limits_stable_dt(m, mode, n, i);
     return i != INTEGRATOR_EXACT && !isfinite(dt) ? NAN : dt;
 }
