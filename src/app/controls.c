@@ -189,10 +189,8 @@ static int new_masses(struct app *app, int n, unsigned *what)
     next.masses = n;
     next.x0.count = next.v0.count = 0;
     next.random = false;
-    /* Fewer masses than the force's: it goes with the chain's end, to the last mass. */
-    bool moved = next.force_on > n;
-    if (moved)
-        next.force_on = n;
+    bool moved = next.force_on > n; /* the force goes with the chain's end, to its last mass */
+    next.force_on = moved ? n : next.force_on;
     bool ghost = app->ghost != NULL; /* a new chain drops it: said, or it vanishes unseen */
     if (app_change(app, &next, CHANGE_REBUILD, rows[CTL_MASSES].why, what) != 0)
         return -1;
@@ -377,9 +375,7 @@ static unsigned set_spring_list(struct app *app, enum config_key key, int spring
     snprintf(noun, sizeof noun, "%s", o->name);
     if (spring >= 0)
         app_spring_name(m, spring, noun, sizeof noun);
-    /* The list's count is the old one when the text is refused: only a list read whole
-     * can be more than one value. */
-    bool bad = config_set(&next, key, text, err, sizeof err) != 0;
+    bool bad = config_set(&next, key, text, err, sizeof err) != 0; /* count: the old list's */
     if (!bad && spring >= 0 && l->count != 1) {
         char q[4 * CONFIG_QUOTE_MAX + 48];
         config_quote(text, strlen(text), q, sizeof q);
