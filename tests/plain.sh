@@ -334,6 +334,13 @@ if [ "$rc" -eq 0 ] && grep -q '^event t=0.00 ready: preset Resonance' "$out" &&
     fail "TERM=dumb: expected the plain mode (ready ... ok quit), exit 0; exit $rc: $(show "$out") $(show "$tmp/err")"
 fi
 
+# ---- a force is a drive: the first line says it beside a free end ----
+printf 'quit\n' | "$SPRINGSIM" --plain -p tuned-mass-damper >"$out" 2>"$tmp/err"
+if grep -q '^event t=0.00 ready: .*right end free, sine force 0.5 N on mass 1 at 0.5033 Hz,' \
+    "$out"; then pass; else
+    fail "tuned-mass-damper: expected the ready line to name the force: $(show "$out")"
+fi
+
 # ---- a closed standard output ends it at once, running or paused ----
 for input in '' start; do
     rm -f "$tmp/closed"

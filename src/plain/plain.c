@@ -463,6 +463,10 @@ static void put_ready(struct plain *p)
                  m->motor.amplitude, m->motor.frequency);
     else
         snprintf(drive, sizeof drive, "right end %s", model_boundary_name(m->boundary));
+    if (model_forced(m)) /* a drive too, the motor's waveform and frequency */
+        snprintf(drive + strlen(drive), sizeof drive - strlen(drive), ", %s force %.4g N on "
+                 "mass %d at %.4g Hz", motor_wave_name(m->motor.wave), m->force,
+                 m->force_on + 1, m->motor.frequency);
     int j = watch_on_mode(app);
     char on[64] = "";
     if (j >= 0)
