@@ -260,7 +260,7 @@ static void refused_commands_change_nothing(void **state)
     one_mass(&app, opts);
     const char *const bad[] = {"bogus", "set", "set nosuch 1", "set frequency abc",
                                "set frequency 0", "set dt 0.2", "set masses 11", "mode 3",
-                               "run 0", "run 1001", "start now", "help bogus", "preset nosuch",
+                               "run -1", "run 1001", "start now", "help bogus", "preset nosuch",
                                "back", "save"};
     static struct command_result res;
     const char *answer = res.answer;
