@@ -417,4 +417,15 @@ if grep -q '0.5 / (2 sqrt(20))' "$tmp/root.out" && grep -q 'at sqrt(2) f_n' "$tm
     fail "plain roots: $(grep -o '.\{20\}sqrt.\{12\}' "$tmp/root.out" | head -n 4 | tr '\n' '|')"
 fi
 
+# A force drives the tuned-mass damper: a sweep whose steady swings would reach a wall
+# says so in newtons and asks for less force (it once said nothing for a force).
+printf 'set force 5\nsweep\nquit\n' | "$SPRINGSIM" --plain -p tuned-mass-damper >"$tmp/fsw.out" 2>&1
+if grep -q '^ok contacts expected above 1.3 N: lower the force' "$tmp/fsw.out"; then pass; else
+    fail "a forced sweep into the walls: $(grep -i 'sweep\|contact' "$tmp/fsw.out" | head -n 3 | tr '\n' '|')"
+fi
+printf 'sweep\nquit\n' | "$SPRINGSIM" --plain -p tuned-mass-damper >"$tmp/fsw2.out" 2>&1
+if grep -q '^ok sweeping ' "$tmp/fsw2.out" && ! grep -q 'contacts expected' "$tmp/fsw2.out"; then pass; else
+    fail "the tuned-mass damper's own sweep: $(grep -i 'sweep\|contact' "$tmp/fsw2.out" | head -n 3 | tr '\n' '|')"
+fi
+
 summary

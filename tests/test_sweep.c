@@ -242,6 +242,31 @@ static void contact_amplitude_one_mass(void **state)
     model_free(md);
 }
 
+/* A force drives one mass, the right end a wall (the tuned-mass damper's kind of drive,
+ * once never warned of): |X| = F / |k1 + k2 - m w^2 + i c w|, and a gap of either wall
+ * closes when |X| reaches it, so the force's scale is gap / |X|; the motor-amplitude form
+ * says nothing for it. */
+static void contact_scale_of_a_force(void **state)
+{
+    (void)state;
+    struct model *md = model_new(1);
+    md->k[0] = 8.0, md->k[1] = 12.0, md->c[0] = 0.3, md->m[0] = 1.5;
+    md->boundary = BOUNDARY_WALL;
+    md->force = 2.0;
+    double gap = 0.5 * MODEL_LENGTH - 0.5 * model_block_width(md);
+    const double fs[] = {0.2, 0.58, 2.0};
+    for (size_t k = 0; k < sizeof fs / sizeof *fs; k++) {
+        double w = 2.0 * M_PI * fs[k];
+        double x = md->force / hypot(md->k[0] + md->k[1] - md->m[0] * w * w, md->c[0] * w);
+        double want = gap / x;
+        assert_close(sweep_contact_scale(md, &fs[k], 1), want, 1e-12 * want);
+    }
+    assert_true(isinf(sweep_contact_amplitude(md, fs, 3)));
+    md->force = 0.0;
+    assert_true(isinf(sweep_contact_scale(md, fs, 3)));
+    model_free(md);
+}
+
 /* The default chain at its second natural frequency, where the masses swing against
  * each other: driven (collisions off) at the amplitude said to make contacts, its
  * steady swing closes the smallest gap to within 0.5 % of that gap, and not before. */
@@ -370,6 +395,7 @@ int main(void)
         cmocka_unit_test(phase_one_mass),
         cmocka_unit_test(contacts_while_sweeping),
         cmocka_unit_test(nearest_mode),
+        cmocka_unit_test(contact_scale_of_a_force),
     };
     return cmocka_run_group_tests_name("sweep", tests, NULL, NULL);
 }

@@ -48,8 +48,32 @@ int sweeping_plan(const struct app *app, struct sweep_plan *plan, char *why, siz
     double freq[APP_SWEEP_POINTS];
     for (int p = 0; p < APP_SWEEP_POINTS; p++)
         freq[p] = sweep_point(plan->lo, plan->hi, APP_SWEEP_POINTS, p);
-    plan->contact = sweep_contact_amplitude(m, freq, APP_SWEEP_POINTS);
+    plan->scale = sweep_contact_scale(m, freq, APP_SWEEP_POINTS);
+    bool motor_only = m->boundary == BOUNDARY_MOTOR && !model_forced(m);
+    plan->contact = motor_only ? plan->scale * m->motor.amplitude : INFINITY;
     return 0;
+}
+
+void sweeping_contact_words(const struct app *app, const struct sweep_plan *plan, int form,
+                            char *buf, size_t len)
+{
+    const struct model *m = app->model;
+    bool motor = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0;
+    bool force = model_forced(m);
+    buf[0] = '\0';
+    if (!(plan->scale <= 1.0))
+        return;
+    static const char *const lead[4] = {"contacts expected above ", "contacts expected above ",
+                                        "contacts above ", "> "};
+    if (motor != force) {
+        snprintf(buf, len, "%s%.2g %s", lead[form < 0 || form > 3 ? 0 : form],
+                 plan->scale * (motor ? m->motor.amplitude : fabs(m->force)), motor ? "m" : "N");
+        return;
+    }
+    static const char *const both[4] = {"contacts expected at this drive",
+                                        "contacts expected at this drive", "contacts expected",
+                                        "contacts"};
+    snprintf(buf, len, "%s", both[form < 0 || form > 3 ? 0 : form]);
 }
 
 unsigned app_toggle_sweep(struct app *app)
@@ -69,10 +93,17 @@ unsigned app_toggle_sweep(struct app *app)
     unsigned what = app_retune(app, sweep_frequency(app->sweep)) | app_set_running(app, true);
     char a[32], b[32], pace[32];
     snprintf(pace, sizeof pace, "%gx", app->speed * APP_SWEEP_PACE);
-    if (app->model->motor.amplitude >= plan.contact)
-        return what | app_say(app, SAID_WARNING, "contacts expected above %.2g m: lower the "
-                              "amplitude; sweeping, %s stops it", plan.contact,
+    if (plan.scale <= 1.0) {
+        char words[80];
+        bool force = model_forced(app->model), motor = app->model->boundary == BOUNDARY_MOTOR &&
+                                                      app->model->motor.amplitude != 0.0;
+        sweeping_contact_words(app, &plan, 0, words, sizeof words);
+        return what | app_say(app, SAID_WARNING, "%s: lower the %s; sweeping, %s stops it",
+                              words, force && motor ? "amplitude or the force"
+                                     : force        ? "force"
+                                                    : "amplitude",
                               app_key(app, ACT_SWEEP));
+    }
     if (jump_two_way(app->model))
         return what | app_say(app, SAID_NOTE, "sweeping up %s..%s Hz at %s, then down, each "
                               "point from the last one's state; %s stops it",

@@ -15,8 +15,17 @@ struct sweep_plan {
                      * SWEEPING_HOLD_MAX (s) */
     double most;    /* a point not steady after this long is measured anyway (s) */
     double contact; /* the least motor amplitude (m) at which the linear steady state at
-                     * one of the points closes a gap; INFINITY when none does */
+                     * one of the points closes a gap; INFINITY when none does, or when
+                     * a force drives too */
+    double scale;   /* the least factor of the whole drive (motor and force) that does:
+                     * at most 1, contacts are expected; INFINITY when none does */
 };
+
+/* What plan's contacts say in a few words (form 0 the longest, up to 3), empty when none
+ * are expected at app's drive: "contacts expected above 0.12 m", "... above 2.5 N", "...
+ * at this drive". */
+void sweeping_contact_words(const struct app *app, const struct sweep_plan *plan, int form,
+                            char *buf, size_t len);
 
 #define SWEEPING_HOLD_MAX 30.0 /* s: a point's hold, whatever the damping */
 #define SWEEPING_MOST 10.0     /* a point settles at most this many holds */

@@ -261,18 +261,18 @@ enum sweep_event sweep_update(struct sweep *s, double t, const double *x, double
     return SWEEP_RETUNE;
 }
 
-double sweep_contact_amplitude(const struct model *m, const double *freq, int count)
+double sweep_contact_scale(const struct model *m, const double *freq, int count)
 {
     struct collision_limits l;
     collision_limits(&l, m);
     int n = m->n;
-    if (!l.on || m->boundary != BOUNDARY_MOTOR || !(m->motor.amplitude > 0.0))
+    if (!l.on || !model_driven(m))
         return INFINITY;
     double *amp = calloc(5 * (size_t)n, sizeof *amp);
     if (!amp)
         return INFINITY;
     double *phase = amp + n, *re = phase + n, *im = re + n, *rest = im + n;
-    double least = INFINITY, a = m->motor.amplitude;
+    double least = INFINITY, a = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
     for (int f = 0; f < count; f++) {
         if (modes_response_phase(m, freq[f], amp, phase) != 0)
             continue;
@@ -287,11 +287,18 @@ double sweep_contact_amplitude(const struct model *m, const double *freq, int co
             double sr = collision_gap(&l, k, re, a) - g0, si = collision_gap(&l, k, im, 0.0) - g0;
             double swing = hypot(sr, si);
             if (swing > 0.0)
-                least = fmin(least, g0 / swing * a);
+                least = fmin(least, g0 / swing);
         }
     }
     free(amp);
     return least;
+}
+
+double sweep_contact_amplitude(const struct model *m, const double *freq, int count)
+{
+    if (m->boundary != BOUNDARY_MOTOR || !(m->motor.amplitude > 0.0) || model_forced(m))
+        return INFINITY;
+    return sweep_contact_scale(m, freq, count) * m->motor.amplitude;
 }
 
 void sweep_count_contacts(struct sweep *s, int contacts)

@@ -74,9 +74,15 @@ void sweep_start(struct sweep *s, double fmin, double fmax, double settle, doubl
  * the least it can take if that is longer (counted in unsteady). */
 void sweep_until_steady(struct sweep *s, double hold, double most);
 
-/* The least motor amplitude (m) at which the linear steady state at one of the count
- * frequencies (Hz) would close a gap of model m (a mass on a wall, its neighbour or the
- * piston); INFINITY when none would (no collisions, no motor, a response unknown). */
+/* The least factor of model m's whole drive (the motor's amplitude and the force
+ * together) at which the linear steady state at one of the count frequencies (Hz) would
+ * close a gap (a mass on a wall, its neighbour or the piston): at most 1, the drive as it
+ * is makes contacts. INFINITY when none would (no collisions, no drive, a response
+ * unknown). */
+double sweep_contact_scale(const struct model *m, const double *freq, int count);
+
+/* sweep_contact_scale as a motor amplitude (m), for a chain the motor alone drives;
+ * INFINITY otherwise. */
 double sweep_contact_amplitude(const struct model *m, const double *freq, int count);
 
 /* Stops a sweep; what was measured stays. */

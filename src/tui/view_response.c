@@ -78,7 +78,9 @@ static void solve_curves(struct response_view *rv, const struct app *app, int wi
     rv->drive_phase_ok = modes_response_phase(m, m->motor.frequency, amp, rv->drive_phase) == 0;
     struct sweep_plan plan;
     char why[200];
-    rv->contact = sweeping_plan(app, &plan, why, sizeof why) == 0 ? plan.contact : INFINITY;
+    if (sweeping_plan(app, &plan, why, sizeof why) != 0)
+        plan.scale = INFINITY;
+    rv->plan = plan;
     rv->version = app->version;
     rv->width = width;
 }
@@ -303,8 +305,8 @@ static void report_words(struct chart *c, const struct app *app, const char *tit
 
 /* What the sweep is doing, in the longest of its forms that fits in room columns (the
  * shortest if none does): the legend is never cut. */
-static void sweep_state(const struct app *app, double contact, int room, char *buf,
-                        size_t len)
+static void sweep_state(const struct app *app, const struct sweep_plan *plan, int room,
+                        char *buf, size_t len)
 {
     const struct sweep *sw = app->sweep;
     int at = sw->index + 1, of = sw->points, got = sweep_measured(sw), bad = sw->unsteady;
@@ -342,12 +344,11 @@ static void sweep_state(const struct app *app, double contact, int room, char *b
                                : form == 2 ? "● %d point%s"
                                            : "● %d%s",
                      got, form == 3 ? "" : ps);
-        else if (app->model->motor.amplitude >= contact)
-            snprintf(buf, len, form == 0   ? "w: sweep; contacts expected above %.2g m"
-                               : form == 1 ? "contacts expected above %.2g m"
-                               : form == 2 ? "contacts above %.2g m"
-                                           : "> %.2g m",
-                     contact);
+        else if (plan->scale <= 1.0) {
+            char words[80];
+            sweeping_contact_words(app, plan, form, words, sizeof words);
+            snprintf(buf, len, "%s%s", form == 0 ? "w: sweep; " : "", words);
+        }
         else
             snprintf(buf, len, form == 0   ? "┃ drive %.3f Hz  ┊ modes  w: sweep"
                                : form == 1 ? "┃ drive %.3f Hz  ┊ modes"
@@ -410,7 +411,7 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
     }
     char state[120];
     int room = c->frame.w - 4; /* the masses' keys give way to the state where it needs */
-    sweep_state(app, rv->contact, room - (keys < room / 2 ? keys : room / 2), state, sizeof state);
+    sweep_state(app, &rv->plan, room - (keys < room / 2 ? keys : room / 2), state, sizeof state);
     legend[k++] = (struct legend_item){state, PAIR_MOTOR};
     chart_draw(c, title, "Response (m) against Hz", "Hz", legend, k);
     report_words(c, app, "Frequency response", "steady-state amplitude (m)", true);

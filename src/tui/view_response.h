@@ -10,6 +10,7 @@
 
 #include "../app/app.h"
 #include "../app/jump.h"
+#include "../app/sweeping.h"
 #include "chart.h"
 
 #define RESPONSE_PHASE_MIN_ROWS 17 /* the view's height from which the phase panel shows */
@@ -26,8 +27,8 @@ struct response_view {
     double *phase_curve; /* width x N phases (degrees, (-180, 180]) */
     double drive_phase[APP_MAX_MASSES]; /* each mass's phase at the drive's frequency */
     bool drive_phase_ok; /* drive_phase[] was solved */
-    double contact;      /* the motor amplitude from which a sweep's steady swings make
-                          * contacts (m; INFINITY: none, or no sweep) */
+    struct sweep_plan plan; /* a sweep's plan, its contacts expected (scale INFINITY:
+                             * none, or no sweep) */
     /* A chain with cubic springs (view_branches.c): */
     struct jump_theory hb; /* the harmonic-balance curve over the sweep's range */
     uint64_t hb_key;     /* the chain and drive it belongs to (jump_theory_key) */
