@@ -172,4 +172,12 @@ replays long.lesson "a recording ended at 1800 s"
 [ "$(awk '$1 == "run" { s += $2 } END { print s }' long.lesson)" = 1800 ] && pass ||
     fail "the ended recording's runs should add up to 1800 s: $(grep '^run' long.lesson | tr '\n' ' ')"
 
+# and a session whose steps cost much (ten masses under a square drive of 1 MHz: 2000
+# sub-steps a step) ends its recording at a lesson's bound in mass-steps, and replays.
+printf 'set masses 10\nset dt 0.001\nset wave square\nset frequency 1000000\nrun 30\nquit\n' |
+    "$SPRINGSIM" --plain --record heavy.lesson >heavy.out 2>&1
+grep -q 'recording ended at .* mass-steps.*written to heavy.lesson' heavy.out && pass ||
+    fail "a recording of costly steps should end at a lesson's mass-steps: $(grep -i record heavy.out | head -c 300)"
+replays heavy.lesson "a recording ended at the bound in mass-steps"
+
 summary

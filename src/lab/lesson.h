@@ -19,12 +19,16 @@
 #define LESSON_MAX_LINE 1024          /* longest line */
 #define LESSON_MAX_CHOICES 6          /* choices of one question, at most */
 #define LESSON_CAPTION 2048           /* bytes of one step's caption */
-#define LESSON_MAX_SECONDS 1800.0     /* simulated seconds of all a lesson's runs, at most:
-                                       * at the smallest dt (0.001 s) and ten linear
-                                       * masses its check takes about 1.5 s (stiff cubic
-                                       * springs under a fast drive, far longer: the
-                                       * check and every run done at once stop on Esc,
-                                       * q or Ctrl+C) */
+#define LESSON_MAX_SECONDS 1800.0     /* simulated seconds of all a lesson's runs, at most
+                                       * (and LESSON_MAX_WORK below: the check and every
+                                       * run done at once stop on Esc, q or Ctrl+C) */
+#define LESSON_MAX_WORK 3.6e7         /* mass-steps of all its runs, at most (app.h's
+                                       * work: each step's masses, again for each of a
+                                       * drive's sub-steps and each contact, and the
+                                       * drive's half-cycles): twice ten linear masses'
+                                       * 1800 s at dt 0.001 (a check of about 1.5 s), so
+                                       * that no lesson's check or step back takes more
+                                       * than a few seconds, whatever its chain */
 #define LESSON_MAX_WAIT 600.0         /* wall seconds of one wait line, at most */
 
 struct app;

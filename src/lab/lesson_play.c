@@ -42,7 +42,8 @@ bool lesson_run_to(struct app *app, double end, struct lesson_stop *stop)
     double next = 0.0;
     app->running = true;
     for (long k = 0; !lesson_run_over(app, end); k++)
-        if (!app_step(app) || ((k & 255) == 255 && stopped(stop, &next))) {
+        if (!app_step(app) || ((k & 255) == 255 && stopped(stop, &next)) ||
+            (app->work_limit > 0.0 && app->work > app->work_limit)) {
             ok = false;
             break;
         }
@@ -107,6 +108,7 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
     }
     int st = 0;
     double next = 0.0;
+    app.work_limit = LESSON_MAX_WORK;
     for (int i = 0; i < l->count && !st; i++) {
         const struct lesson_item *it = &l->items[i];
         if (stopped(stop, &next))
@@ -129,6 +131,13 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
             st = 2;
         } else if (r == REPLY_RUN) {
             lesson_run_to(&app, sim_time(app.sim) + res.seconds, stop);
+            if (app.work > LESSON_MAX_WORK) {
+                snprintf(err, errlen, "%s:%d: %s: the lesson's runs pass here the %.3g "
+                         "mass-steps a lesson may compute (steps times masses, more for a "
+                         "drive's sub-steps and for contacts)", l->path, it->line, it->text,
+                         LESSON_MAX_WORK);
+                st = 2;
+            }
         }
     }
     if (!st && stop && stop->said) {

@@ -62,6 +62,7 @@ int record_start(struct record *r, const char *path, const struct app *app, char
             "ends where the recording ended.\nsetup\n", VERSION, when);
     put_settings(r, app);
     r->t = sim_time(app->sim);
+    r->work0 = app->work;
     r->wall = app_clock_now();
     return 0;
 }
@@ -358,7 +359,9 @@ void record_abandon(struct record *r)
 
 bool record_full(const struct record *r, const struct app *app, double ahead)
 {
-    return r->mem && r->seconds + (sim_time(app->sim) - r->t) + ahead > LESSON_MAX_SECONDS;
+    double steps = ahead / sim_dt(app->sim) + 1.0; /* ahead, at the last step's cost */
+    return r->mem && (r->seconds + (sim_time(app->sim) - r->t) + ahead > LESSON_MAX_SECONDS ||
+                      app->work - r->work0 + steps * app->step_work > LESSON_MAX_WORK);
 }
 
 void record_full_finish(struct record *r, struct app *app)
@@ -369,8 +372,9 @@ void record_full_finish(struct record *r, struct app *app)
         return;
     }
     config_escape(r->path, strlen(r->path), 256, safe, sizeof safe);
-    app_say(app, SAID_NOTE, "recording ended at %.0f s of runs (a lesson's %.0f minutes, so "
-            "that it replays): written to %s", r->seconds, LESSON_MAX_SECONDS / 60.0, safe);
+    app_say(app, SAID_NOTE, "recording ended at %.0f s of runs (what a lesson may run: %.0f "
+            "minutes, %.3g mass-steps; so that it replays): written to %s", r->seconds,
+            LESSON_MAX_SECONDS / 60.0, LESSON_MAX_WORK, safe);
 }
 
 int record_finish(struct record *r, const struct app *app, char *err, size_t errlen)

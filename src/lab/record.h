@@ -58,6 +58,7 @@ struct record {
     double wall;      /* the wall clock (app_clock_now) at the last command written */
     double run_wall;  /* the wall seconds the runs written since took at their speed */
     double seconds;   /* the simulated seconds of the run lines written, all added */
+    double work0;     /* the app's work (mass-steps) when the recording began */
     bool replay_runs; /* whether a replay's chain runs after the lines written (a start,
                        * a mode; a run line ends paused) */
     struct record_mark mark; /* before the key being handled (record_mark) */
@@ -65,7 +66,8 @@ struct record {
 
 /* Whether the recording is full: its runs and the time run since, with `ahead` more
  * simulated seconds, would pass the LESSON_MAX_SECONDS a lesson (and so a replay) may
- * run. The caller then finishes it (record_full_finish), so that it always replays. */
+ * run, or their steps the LESSON_MAX_WORK it may compute. The caller then finishes it
+ * (record_full_finish), so that it always replays. */
 bool record_full(const struct record *r, const struct app *app, double ahead);
 
 /* Finishes a full recording now (record_finish) and says so through the app's message:
