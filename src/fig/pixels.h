@@ -37,12 +37,14 @@ int fig_pixels(const struct fig_chart *c, int cw, int ch, const struct fig_palet
 
 /* What a terminal says of its cells is not trusted: a cell is drawn with at most
  * FIG_PIXELS_CELL_W x FIG_PIXELS_CELL_H pixels and an image has at most FIG_PIXELS_SIDE
- * pixels a side and FIG_PIXELS_MAX in all, so that an image's memory (the surface, the
- * pixels, the encoding) stays near 50 MB whatever the terminal says. */
+ * pixels a side and FIG_PIXELS_MAX in all (a plot enlarged on a full-HD screen, at its
+ * own size), so that the program's peak memory (an image's surface, pixels and encoding
+ * with the rest) stays near 40 MB whatever the terminal says: at 2048 x 2048 it reached
+ * 52 MB, and 66 MB once, too near the 64 MB meant. */
 #define FIG_PIXELS_CELL_W 64
 #define FIG_PIXELS_CELL_H 128
 #define FIG_PIXELS_SIDE 4096
-#define FIG_PIXELS_MAX (2048 * 2048)
+#define FIG_PIXELS_MAX (2048 * 1024)
 
 /* The cell size (*cw x *ch pixels, each at least 1) an area of aw x ah cells is drawn
  * with: as given, or scaled down by one factor (the cell's shape kept, to whole pixels)
