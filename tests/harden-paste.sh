@@ -6,7 +6,7 @@
 # stays as it was (paused, 1x, no ghost), no help, and the program says the paste was
 # ignored; pasted while a value is typed,
 # the text goes into the value. The mode is turned off again at the end: on q, and on
-# SIGTERM. Run from the repository root as `sh tests/harden-paste.sh`, SPRINGSIM naming
+# SIGTERM; and while the program is suspended (Ctrl+Z), on again after fg. Run from the repository root as `sh tests/harden-paste.sh`, SPRINGSIM naming
 # the binary. Ends with "harden-paste: N passed, M failed".
 NAME=harden-paste
 . "$(dirname "$0")/lib/check.sh"
@@ -52,12 +52,16 @@ has 'm (kg) = 0.25' && pass || fail "a value pasted while typing should go into 
 keys Enter
 wait_for 'm 0.25 kg' 3 && pass || fail "the pasted value should be set by Enter: $(brief)"
 
+# last_mode SESSION: h or l, the last of xterm's mode 2004 set or reset in its output
+last_mode() {
+    LC_ALL=C awk 'BEGIN { RS = "\033\\[\\?2004" } NR > 1 { last = substr($0, 1, 1) } END { print last }' "$tmp/$1.out"
+}
 # the mode on while the program runs, off once it ends: by q, then by SIGTERM
 S=term
 keys q
 wait_for EXITED 5
 on=$(grep -c "$(printf '\033')\[?2004h" "$tmp/term.out")
-off=$(LC_ALL=C awk 'BEGIN { RS = "\033\\[\\?2004" } NR > 1 { last = substr($0, 1, 1) } END { print last }' "$tmp/term.out")
+off=$(last_mode term)
 [ "$on" -ge 1 ] && [ "$off" = l ] && pass ||
     fail "q: bracketed paste should be turned on ($on times) and off at the end (last: '$off')"
 start term2 80 24
@@ -66,7 +70,28 @@ tm pipe-pane -t term2 -o "cat >>'$tmp/term2.out'"
 wait_for Paused 5
 kill -TERM "$(cat "$tmp/term2.pid")"
 wait_for EXITED 5
-off=$(LC_ALL=C awk 'BEGIN { RS = "\033\\[\\?2004" } NR > 1 { last = substr($0, 1, 1) } END { print last }' "$tmp/term2.out")
+off=$(last_mode term2)
 [ "$off" = l ] && pass || fail "SIGTERM: bracketed paste should be off at the end (last: '$off')"
+
+# and Ctrl+Z: off while the shell has the terminal, on again after fg
+start_shell sus 80 24
+tm pipe-pane -t sus -o "cat >>'$tmp/sus.out'"
+S=sus
+wait_for 'PROMPT$' 5
+text "$SPRINGSIM"
+keys Enter
+wait_for Paused 5
+modes=$(last_mode sus)
+keys C-z
+wait_for Stopped 5
+modes="$modes $(last_mode sus)"
+text fg
+keys Enter
+wait_for Paused 5
+modes="$modes $(last_mode sus)"
+keys q
+wait_for 'PROMPT$' 5
+[ "$modes" = "h l h" ] && pass ||
+    fail "Ctrl+Z: bracketed paste should be on, off while suspended, on after fg: got '$modes'"
 
 summary

@@ -192,6 +192,39 @@ static void on_fatal_signal(int sig)
     raise(sig);
 }
 
+/* Ctrl+Z: bracketed paste off while the shell has the terminal, on again once the
+ * program is back; curses' own handler (tstp_curses) gives the screen back between. */
+static void (*tstp_curses)(int);
+
+static void on_suspend(int sig)
+{
+    static const char off[] = "\033[?2004l", on[] = "\033[?2004h";
+    ssize_t sent = write(STDOUT_FILENO, off, sizeof off - 1);
+    if (tstp_curses) {
+        tstp_curses(sig);
+    } else {
+        signal(sig, SIG_DFL);
+        raise(sig);
+        signal(sig, on_suspend);
+    }
+    sent = write(STDOUT_FILENO, on, sizeof on - 1);
+    (void)sent;
+}
+
+/* Installed after curses, which has put its own SIGTSTP handler in place (or not). */
+static void install_suspend(void)
+{
+    struct sigaction sa, old;
+    if (!paste_mode || sigaction(SIGTSTP, NULL, &old) != 0 || old.sa_handler == SIG_IGN ||
+        (old.sa_flags & SA_SIGINFO))
+        return;
+    tstp_curses = old.sa_handler == SIG_DFL ? NULL : old.sa_handler;
+    memset(&sa, 0, sizeof sa);
+    sigemptyset(&sa.sa_mask);
+    sa.sa_handler = on_suspend;
+    sigaction(SIGTSTP, &sa, NULL);
+}
+
 static void install_signals(void)
 {
     static const int quit[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGQUIT, SIGPIPE,
@@ -438,6 +471,7 @@ bool term_start(enum config_color want_color, enum config_glyphs glyphs)
         fputs("\033[?2004h", stdout);
         fflush(stdout);
     }
+    install_suspend();
     init_colors(want_color);
     return true;
 }
