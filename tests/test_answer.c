@@ -236,6 +236,9 @@ static void parted_answers(void **state)
     answer_idle(&scan, 1.0 + ANSWER_ESC_WAIT);
     assert_int_equal(answer_key(&scan), 0x1b);
     assert_true(ANSWER_ESC_WAIT <= 0.1);
+    /* A [ typed long after an Esc is a key at once, not held for an answer's rest. */
+    answer_feed(&scan, '[', 1.0 + ANSWER_TAIL + 1.0);
+    assert_int_equal(answer_key(&scan), '[');
 }
 
 /* Text pasted (bracketed paste) is no keys, whatever it holds: the keys around it are,

@@ -186,7 +186,8 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
         cut_off(s);
     /* The byte after an Esc that went as a key (answer_idle): an answer's introducer
      * begins its rest, held as if the Esc were there (nothing of it is a key). */
-    if (s->nheld == 0 && s->esc_out && (ch == '[' || ch == ']' || ch == '_' || ch == 'P')) {
+    if (s->nheld == 0 && s->esc_out && now - s->esc_at <= ANSWER_TAIL &&
+        (ch == '[' || ch == ']' || ch == '_' || ch == 'P')) {
         s->held[s->nheld++] = ESC;
         s->tail = true;
     }
@@ -254,6 +255,7 @@ static void idle(struct answer_scan *s, double now, double hold)
     if (s->nheld == 1 && now - s->last >= hold - 1e-9) {
         give_back(s);
         s->esc_out = true;
+        s->esc_at = now;
     } else if (s->nheld == 2 && s->tail && now - s->last > ANSWER_GAP) {
         give_back(s);
     }

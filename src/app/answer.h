@@ -35,6 +35,8 @@
 #define ANSWER_GAP 1.0   /* seconds a part-answer waits for its next byte */
 #define ANSWER_ESC_HOLD 0.3 /* seconds a lone Esc waits for more while answers are due */
 #define ANSWER_ESC_WAIT 0.1 /* and otherwise (a link that parts what a terminal sends) */
+#define ANSWER_TAIL 5.0     /* seconds after an Esc went as a key that an answer's rest
+                             * may still follow it */
 #define ANSWER_PASTE 255    /* bytes of a paste's text kept, at most */
 #define ANSWER_BURST 16     /* printable keys read at once that are a paste, at least */
 
@@ -53,7 +55,8 @@ struct answer_scan {
     int utf8_left;       /* continuation bytes the last UTF-8 character typed still has
                           * (so a 0x9b inside one is no 8-bit CSI) */
     bool truncated;      /* the string held lost its text (longer than ANSWER_MAX) */
-    bool esc_out;        /* the last input was a lone Esc given as a key */
+    bool esc_out;        /* the last input was a lone Esc given as a key, */
+    double esc_at;       /* at that time */
     bool pasting;        /* inside a bracketed paste: CSI 200 ~ came, CSI 201 ~ not yet */
     int paste_end;       /* bytes of CSI 201 ~ matched so far */
     bool paste_cut;      /* its text stopped at a control byte (a new line) */
