@@ -4,10 +4,10 @@
 # bracketed paste (the program turns xterm's mode 2004 on; tmux's paste-buffer -p then
 # brackets the text) and as a burst of text from a terminal without it, the status line
 # stays as it was (paused, 1x, no ghost), no help, and the program says the paste was
-# ignored; pasted while a value is typed,
-# the text goes into the value. The mode is turned off again at the end: on q, and on
-# SIGTERM; and while the program is suspended (Ctrl+Z), on again after fg. Run from the repository root as `sh tests/harden-paste.sh`, SPRINGSIM naming
-# the binary. Ends with "harden-paste: N passed, M failed".
+# ignored; pasted while a value is typed, the text goes into the value. The mode is turned
+# off again at the end: on q, and on SIGTERM; and while the program is suspended (Ctrl+Z),
+# on again after fg. Run from the repository root as `sh tests/harden-paste.sh`, SPRINGSIM
+# naming the binary. Ends with "harden-paste: N passed, M failed".
 NAME=harden-paste
 . "$(dirname "$0")/lib/check.sh"
 . "$(dirname "$0")/lib/tmux.sh"

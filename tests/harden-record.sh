@@ -1,17 +1,17 @@
 #!/bin/sh
-# tests/harden-record.sh: --record and --replay (issue 33, items 1, 2 and 11; issue 27).
-# A recording made with keys in the program replays to the same state bit for bit, for
-# the default chain with no preset (it wrote "element m 1 nan" lines), more masses and a
+# tests/harden-record.sh: --record and --replay (issue 33, items 1, 2 and 11; issue 27). A
+# recording made with keys in the program replays to the same state bit for bit, for the
+# default chain with no preset (it wrote "element m 1 nan" lines), more masses and a
 # preset, keys that change elements and views; its run lines are the shortest decimals
 # (run 1.34, not 1.3400000000000003); a preset file whose name has two blanks in a row
 # replays, from any directory (the recording holds its settings). --record writes as -o
 # does (core/output.c): a FIFO is written in place and stays a FIFO, a character device
 # stays one (as root), a symbolic link stays and its target is written, a new file gets
-# the umask's mode and an old one keeps its own, names of 249 to 255 bytes are written, kill -9 leaves no file behind. --plain --replay that ends in
-# another state says so and exits 1. A session past a lesson's 1800 s of runs ends its
-# recording there, said, and the file replays. Run from the repository root as
-# `sh tests/harden-record.sh`, SPRINGSIM naming the binary. Ends with
-# "harden-record: N passed, M failed".
+# the umask's mode and an old one keeps its own, names of 249 to 255 bytes are written,
+# kill -9 leaves no file behind. --plain --replay that ends in another state says so and
+# exits 1. A session past a lesson's 1800 s of runs ends its recording there, said, and
+# the file replays. Run from the repository root as `sh tests/harden-record.sh`, SPRINGSIM
+# naming the binary. Ends with "harden-record: N passed, M failed".
 NAME=harden-record
 . "$(dirname "$0")/lib/check.sh"
 . "$(dirname "$0")/lib/tmux.sh"

@@ -14,9 +14,10 @@
  * back as keys when it is only Esc and the introducer, and dropped otherwise (a
  * terminal's garbage or an answer cut off: its bytes as keys would act at random). A
  * terminal's bytes come in order with no key between them, so a part held goes on with
- * the rest of its answer however late that comes (a slow link parts answers). A complete CSI sequence that is no answer (a key curses did not
- * know, a focus event, a paste bracket, a terminal's garbage) is dropped too: as keys its
- * [ and digits would change the speed and the views. A string longer than ANSWER_MAX is
+ * the rest of its answer however late that comes (a slow link parts answers). A complete
+ * CSI sequence that is no answer (a key curses did not know, a focus event, a paste's end
+ * alone, a terminal's garbage) is dropped too: as keys its [ and digits would change the
+ * speed and the views. A string longer than ANSWER_MAX is
  * swallowed to its end, and so is a CSI that long. A lone Esc is given back once nothing
  * followed it for ANSWER_ESC_WAIT seconds (answer_idle), or ANSWER_ESC_HOLD while answers
  * are awaited; an answer's rest that comes after it went (parted right after its Esc) is
