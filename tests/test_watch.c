@@ -260,7 +260,7 @@ static void refused_commands_change_nothing(void **state)
     one_mass(&app, opts);
     const char *const bad[] = {"bogus", "set", "set nosuch 1", "set frequency abc",
                                "set frequency 0", "set dt 0.2", "set masses 11", "mode 3",
-                               "run -1", "run 1001", "start now", "help bogus", "preset nosuch",
+                               "run -0.5", "run 1001", "start now", "help bogus", "preset nosuch",
                                "back", "save"};
     static struct command_result res;
     const char *answer = res.answer;
@@ -279,6 +279,8 @@ static void refused_commands_change_nothing(void **state)
     assert_int_equal(command_do(&app, "  ", &res), REPLY_NONE);
     assert_int_equal(command_do(&app, "run 2.5", &res), REPLY_RUN);
     assert_true(res.seconds == 2.5);
+    assert_int_equal(command_do(&app, "run 0", &res), REPLY_RUN); /* pauses, runs nothing */
+    assert_true(res.seconds == 0.0);
     assert_int_equal(command_do(&app, "quit", &res), REPLY_QUIT);
     app_free(&app);
 }
