@@ -504,15 +504,16 @@ fi
 
 # A lesson's compute is bounded in mass-steps, not only in simulated seconds: ten masses
 # at dt 0.001 under a square drive of 1 MHz (2000 sub-steps a step) for 10 s took 7 s to
-# check and as long again to play; refused at the run's line within a few seconds.
+# check and as long again to play; now refused at the run's line (its time is said, not
+# asserted: a timed check flakes on a busy machine, and the refusal alone fails before).
 printf 'title Heavy\npreset resonance\nset masses 10\nset dt 0.001\nset wave square\nset frequency 1000000\nrun 10\n' >"$tmp/heavy.lesson"
 t0=$(date +%s.%N)
 "$SPRINGSIM" --plain --lesson "$tmp/heavy.lesson" </dev/null >"$out" 2>"$err"
 rc=$?
 took=$(echo "$(date +%s.%N) - $t0" | bc)
 if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/heavy.lesson:7: run 10: the lesson's runs pass here the 3.6e+07 mass-steps" "$err" &&
-    [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ] && [ "$(echo "$took < 5" | bc)" = 1 ]; then pass; else
-    fail "a lesson past the mass-steps bound: expected exit 2 at FILE:7 within 5 s; exit $rc after $took s: $(show "$err")"
+    [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ]; then pass; else
+    fail "a lesson past the mass-steps bound: expected exit 2 at FILE:7; exit $rc after $took s: $(show "$err")"
 fi
 
 summary
