@@ -275,7 +275,7 @@ VALGRIND = valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds
            --quiet
 valgrind: $(BIN) $(TEST_BIN)
 	@command -v valgrind >/dev/null || sh mk/deps.sh valgrind
-	@set -e; for t in $(TEST_BIN); do echo "== valgrind $$t"; CAMPAIGN_CASES=8 $(VALGRIND) $$t >/dev/null; done
+	@set -e; for t in $(TEST_BIN); do echo "== valgrind $$t"; CAMPAIGN_CASES=8 CAMPAIGN_MAXN=10 $(VALGRIND) $$t >/dev/null; done
 	@echo "== valgrind --headless, collisions at resonance"
 	@$(VALGRIND) ./$(BIN) --headless -p resonance --amplitude 0.6 --duration 60 --energy >/dev/null
 	@$(VALGRIND) ./$(BIN) -p 3-mass-chain --modes >/dev/null

@@ -20,7 +20,8 @@
  * faster) are counted and left out. A case whose reference makes a call within the method's own error (a
  * contact within 1e-4 m/s of the rest speed, a graze within 1e-5 m of touching) may count
  * one contact more or less: its count is not compared, its motion is. CAMPAIGN_CASES sets
- * the number of cases (default 240; the memcheck run takes fewer), CAMPAIGN_FIRST the first.
+ * the number of cases (default 240; the memcheck run takes 8 of N 1 to 10), CAMPAIGN_FIRST
+ * the first.
  * A case with such a call whose order falls short is run again at dt = 0.00125 and
  * 0.000625, where the call is made as the reference makes it, and judged there. */
 #include "testutil.h"
