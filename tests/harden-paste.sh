@@ -56,14 +56,14 @@ wait_for 'm 0.25 kg' 3 && pass || fail "the pasted value should be set by Enter:
 last_mode() {
     LC_ALL=C awk 'BEGIN { RS = "\033\\[\\?2004" } NR > 1 { last = substr($0, 1, 1) } END { print last }' "$tmp/$1.out"
 }
-# the mode on while the program runs, off once it ends: by q, then by SIGTERM
+# the mode off once the program ends: by q, then by SIGTERM (that it is on while the
+# program runs is seen below, where the output is watched from before the program starts:
+# here the pipe is attached once the session runs, and may come after the mode is set)
 S=term
 keys q
 wait_for EXITED 5
-on=$(grep -c "$(printf '\033')\[?2004h" "$tmp/term.out")
 off=$(last_mode term)
-[ "$on" -ge 1 ] && [ "$off" = l ] && pass ||
-    fail "q: bracketed paste should be turned on ($on times) and off at the end (last: '$off')"
+[ "$off" = l ] && pass || fail "q: bracketed paste should be off at the end (last: '$off')"
 start term2 80 24
 S=term2
 tm pipe-pane -t term2 -o "cat >>'$tmp/term2.out'"
