@@ -137,16 +137,16 @@ step_of() { sed -n 's/.*Lesson \([0-9]*\)\/.*/\1/p' "$scr" | head -n 1; }
 # captions NAME COLS: plays the lesson in session cap-NAME-COLS, every step's panel (and
 # what ↓ shows of it) into $tmp/seen-NAME-COLS; run in the background, one per session
 captions() {
-    S=cap-$1-$2
+    S=${3:-cap}-$1-$2
     scr=$tmp/screen-$S
     seen=$tmp/seen-$1-$2
-    : >"$seen"
+    [ -n "$3" ] || : >"$seen" # a second walk adds to what the first saw
     wait_for Controls 5 || return 1
     # playback at 0.1x: no run ends on its own between a look at the panel and the key
     # that ends it (the lesson's own speed lines aside)
     keys [ [ [ [ [
     i=0
-    while [ $i -lt 40 ]; do
+    while [ $i -lt 80 ]; do
         i=$((i + 1))
         cap
         panel >>"$seen"
@@ -154,7 +154,7 @@ captions() {
         settle 2 has 'Lesson'
         panel >>"$seen"
         j=0
-        while has '↓ more' && [ $j -lt 20 ]; do
+        while has '↓ more' && [ $j -lt 40 ]; do
             keys Down
             j=$((j + 1))
             settle 2 has Lesson
@@ -178,13 +178,30 @@ for size in 80x24 60x20; do
     done
     wait
 done
+# missing FILE SEEN: the words of FILE's say lines not in SEEN
+missing() {
+    sed -n 's/^[[:space:]]*say[[:space:]]\{1,\}//p' "$1" | tr ' ' '\n' | grep . |
+        while IFS= read -r w; do grep -qF -- "$w" "$2" || printf '%s ' "$w"; done
+}
+# A walk can lose a caption to its own timing, not the program's: a lesson's own pace
+# (jump at 10x, a sweep at 50x) may end a run between the walk's look and its key, and
+# on an idle machine sometimes does. A lesson and size whose walk missed words is walked
+# once more, in a new session; a word must still be seen in one of the two walks.
+for size in 80x24 60x20; do
+    for f in "$root"/lessons/*.lesson; do
+        n=$(basename "$f" .lesson)
+        [ -n "$(missing "$f" "$tmp/seen-$n-${size%x*}")" ] || continue
+        start "again-$n-${size%x*}" "${size%x*}" "${size#*x}" -- --lesson "$n"
+        captions "$n" "${size%x*}" again &
+    done
+    wait
+done
 for f in "$root"/lessons/*.lesson; do
     n=$(basename "$f" .lesson)
     for size in 80x24 60x20; do
         seen=$tmp/seen-$n-${size%x*}
         # every word of every say line was seen in the panel
-        missing=$(sed -n 's/^[[:space:]]*say[[:space:]]\{1,\}//p' "$f" | tr ' ' '\n' | grep . |
-            while IFS= read -r w; do grep -qF -- "$w" "$seen" || printf '%s ' "$w"; done)
+        missing=$(missing "$f" "$seen")
         if [ -s "$seen" ] && [ -z "$missing" ]; then pass; else
             fail "$n at $size: every caption word should be on screen or behind ↓ more; missing: $missing"
         fi
