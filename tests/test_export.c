@@ -72,6 +72,16 @@ static void samples_say_what_is_kept(void **state)
     rmdir(dir);
 }
 
+/* Starts the app's sweep and steps it to its end: every point measured. */
+static void sweep_to_its_end(void)
+{
+    start_sweep();
+    int steps = 0;
+    while (app.sweep->active && steps++ < 200000)
+        app_step(&app);
+    assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
+}
+
 /* A sweep run to its end (stiff, well damped: points settle fast), written out: every
  * point measured, each beside the closed form's amplitude and phase. */
 static void sweep_points_beside_the_theory(void **state)
@@ -85,11 +95,7 @@ static void sweep_points_beside_the_theory(void **state)
     assert_non_null(strstr(app.message, "no sweep measured yet"));
     assert_true(app_set_text(&app, CTL_SPRING, "50"));
     assert_true(app_set_text(&app, CTL_DAMPING, "5"));
-    start_sweep();
-    int steps = 0;
-    while (app.sweep->active && steps++ < 200000)
-        app_step(&app);
-    assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
+    sweep_to_its_end();
     assert_int_equal(app_export_sweep(&app, dir, path, sizeof path), APP_CHANGED_MESSAGE);
     assert_int_equal(app.said, SAID_NOTE);
     assert_non_null(strstr(app.message, "exported the sweep's 40 points beside the theory to "));
@@ -144,11 +150,7 @@ static void force_is_a_drive_for_the_sweep(void **state)
     char dir[] = "/tmp/springsim-exp-XXXXXX", path[512];
     assert_non_null(mkdtemp(dir));
     assert_true(app_set_text(&app, CTL_DAMPING, "5"));
-    start_sweep();
-    int steps = 0;
-    while (app.sweep->active && steps++ < 200000)
-        app_step(&app);
-    assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
+    sweep_to_its_end();
     assert_true(app_set_text(&app, CTL_BOUNDARY, "free"));
     assert_true(app_set_text(&app, CTL_FORCE, "0.5"));
     assert_int_equal(sweep_measured(app.sweep), APP_SWEEP_POINTS);
