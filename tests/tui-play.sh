@@ -162,6 +162,13 @@ captions() {
         done
         has 'space or Esc closes' && break
         has 'Lesson' || break # closed: a run that ended as space came
+        # the key that goes on is chosen on a fresh look: the panel and its ↓ took
+        # seconds, and a run (at the lesson's own 10x or 50x) may have ended meanwhile,
+        # making space close the lesson before its last caption was read; a run still
+        # playing, or a lesson at its end, goes back to the top (space ends the run there
+        # on a look just taken; the end's panel is read there)
+        cap
+        if has 'space ends the run' || has 'space or Esc closes'; then continue; fi
         st=$(step_of)
         if has ' answers '; then keys 1; else keys Space; fi
         wait_all 3 "[ \"\$(step_of)\" != '$st' ] || has 'space or Esc closes' || has 'space ends the run'"
