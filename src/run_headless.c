@@ -308,7 +308,7 @@ int run_headless(const struct config *c, const struct model *m)
         char settings[400];
         report_settings(c, m, settings, sizeof settings);
         struct report_look look = report_look_of(c, settings);
-        bool moves = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+        bool moves = model_motor_moves(m);
         int draw = status == EXIT_SUCCESS
                        ? fig_lib_loaded()->headless(fo.fp, fig_format_of(c->figure), fig, n,
                                                     moves, c->energy, 0.0, sim_time(r.s), &look)

@@ -527,7 +527,7 @@ unsigned app_start_mode(struct app *app, int j)
     app->cfg.random = false;
     bool sweeping = app->sweep->active;
     unsigned what = app_reset(app) | app_set_running(app, true);
-    bool driven = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+    bool driven = model_motor_moves(m);
     char hz[32];
     return what | app_say(app, SAID_NOTE, "%sstarted in mode %d (%s Hz), largest |x| %.2f m%s",
                           sweeping ? "sweep stopped; " : "", j + 1,

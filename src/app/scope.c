@@ -234,7 +234,7 @@ void scope_motion(const struct app *app, const struct scope_view *v, int i,
     *out = (struct scope_motion){.mode = -1, .theory_zeta = NAN, .theory_ratio = NAN,
                                  .theory_phase = NAN};
     scope_measure(v, i, &out->m);
-    bool motor = model->boundary == BOUNDARY_MOTOR && model->motor.amplitude != 0.0;
+    bool motor = model_motor_moves(model);
     out->driven = model_driven(model);
     out->by_force = out->driven && !motor;
     out->linearised = model->cubic;

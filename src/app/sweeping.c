@@ -58,8 +58,7 @@ void sweeping_contact_words(const struct app *app, const struct sweep_plan *plan
                             char *buf, size_t len)
 {
     const struct model *m = app->model;
-    bool motor = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0;
-    bool force = model_forced(m);
+    bool motor = model_motor_moves(m), force = model_forced(m);
     buf[0] = '\0';
     if (!(plan->scale <= 1.0))
         return;
@@ -95,8 +94,7 @@ unsigned app_toggle_sweep(struct app *app)
     snprintf(pace, sizeof pace, "%gx", app->speed * APP_SWEEP_PACE);
     if (plan.scale <= 1.0) {
         char words[80];
-        bool force = model_forced(app->model), motor = app->model->boundary == BOUNDARY_MOTOR &&
-                                                      app->model->motor.amplitude != 0.0;
+        bool force = model_forced(app->model), motor = model_motor_moves(app->model);
         sweeping_contact_words(app, &plan, 0, words, sizeof words);
         return what | app_say(app, SAID_WARNING, "%s: lower the %s; sweeping, %s stops it",
                               words, force && motor ? "amplitude or the force"

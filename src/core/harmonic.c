@@ -381,7 +381,7 @@ struct harmonic_curve *harmonic_trace(const struct model *m, double fmin, double
                                       char *err, size_t errlen)
 {
     int n = m->n;
-    if (!((m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0) || m->force != 0.0)) {
+    if (!model_driven(m)) {
         snprintf(err, errlen, "harmonic balance needs a drive (--boundary motor with "
                  "--amplitude above 0, or --force above 0)");
         return NULL;

@@ -133,9 +133,14 @@ bool model_forced(const struct model *m)
     return m->force != 0.0;
 }
 
+bool model_motor_moves(const struct model *m)
+{
+    return m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0;
+}
+
 bool model_driven(const struct model *m)
 {
-    return (m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0) || model_forced(m);
+    return model_motor_moves(m) || model_forced(m);
 }
 
 double model_force(const struct model *m, double t)

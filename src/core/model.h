@@ -68,6 +68,9 @@ bool model_rayleigh(const struct model *m);
 /* Whether m has a force input (F != 0). */
 bool model_forced(const struct model *m);
 
+/* Whether m's right end is a motor that moves (A != 0). */
+bool model_motor_moves(const struct model *m);
+
 /* Whether m's right end or its force moves anything: a motor end with A != 0, or F != 0. */
 bool model_driven(const struct model *m);
 

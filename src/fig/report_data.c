@@ -177,8 +177,7 @@ void report_settings(const struct config *c, const struct model *m, char *buf, s
 
 const char *report_frequency_label(const struct model *m)
 {
-    bool motor = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude != 0.0;
-    bool force = model_forced(m);
+    bool motor = model_motor_moves(m), force = model_forced(m);
     if (force && !motor)
         return "force frequency f (Hz)";
     return motor && !force ? "motor frequency f (Hz)" : "drive frequency f (Hz)";

@@ -301,7 +301,7 @@ void modes_view_draw(struct modes_view *v, const struct app *app, int selected, 
      * shapes all take the same height, so one canvas serves them all. */
     int cw = in.w / cols, ch = in.h / rows;
     int driven = modes_nearest(app->modes, n, m->motor.frequency);
-    bool on_mode = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0 &&
+    bool on_mode = model_motor_moves(m) &&
                    fabs(m->motor.frequency - app->modes[driven]) <= 0.02 * app->modes[driven];
     for (int j = 0; j < n; j++) {
         int row = j / cols, extra = in.h - rows * ch;

@@ -369,7 +369,7 @@ void response_view_draw(struct response_view *rv, const struct app *app, bool fr
                                    "amplitude (m) against frequency, log-log"
                                  : "Frequency response: steady-state amplitude (m) against "
                                    "frequency, log-log";
-    bool motor = m->boundary == BOUNDARY_MOTOR && m->motor.amplitude > 0.0;
+    bool motor = model_motor_moves(m);
     if ((!motor && !model_forced(m)) || !c->canvas) {
         /* The frame and the reason alone: no axis, curve or tick of a chain driven before
          * is left standing, and the canvas is clean for the next drive. */
