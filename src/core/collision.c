@@ -27,6 +27,9 @@ void collision_limits(struct collision_limits *l, const struct model *m)
     l->on = m->collisions;
     l->w = model_block_width(m);
     l->spacing = MODEL_LENGTH / (m->n + 1);
+    l->wall = l->spacing - 0.5 * l->w;
+    l->pair = l->spacing - l->w;
+    l->face = MODEL_LENGTH - 0.5 * l->w - m->n * l->spacing;
 }
 
 double collision_gap(const struct collision_limits *l, int k, const double *x, double u)

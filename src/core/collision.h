@@ -23,6 +23,9 @@ struct collision_limits {
     bool on;        /* collisions on */
     double w;       /* block width */
     double spacing; /* equilibrium spacing L/(N+1) */
+    double wall;    /* spacing - w/2: the wall's gap is this + x_1 */
+    double pair;    /* spacing - w: a pair's gap is this + x_k+1 - x_k */
+    double face;    /* L - w/2 - N spacing: the piston's gap is this + u - x_N */
 };
 
 /* What contacts did to the energy: lost (restitution, the cap, resting contacts) and

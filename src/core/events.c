@@ -203,11 +203,19 @@ static void ends(const struct events_piece *p, int k, double g[2], double s[2], 
     }
 }
 
-/* Whether a gap with these ends may close inside the piece (the bound of the header). */
-__attribute__((always_inline)) static inline bool may_close(double g0, double g1, double s0, double s1, double err)
+/* The bound of the header, min(g0, g1) - max(|A|, |B|) / 4, for a gap with these ends. */
+__attribute__((always_inline)) static inline double bound(double g0, double g1, double s0,
+                                                          double s1)
 {
     double dg = g1 - g0, A = fabs(s0 - dg), B = fabs(s1 - dg);
-    return (g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B) - err <= -EVENTS_TOUCH;
+    return (g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B);
+}
+
+/* Whether a gap with these ends may close inside the piece (the bound of the header). */
+__attribute__((always_inline)) static inline bool may_close(double g0, double g1, double s0,
+                                                            double s1, double err)
+{
+    return bound(g0, g1, s0, s1) - err <= -EVENTS_TOUCH;
 }
 
 /* Constraint k, which may close: where it first does (theta), or -1. */
@@ -231,17 +239,12 @@ bound_may_close(const struct events_piece *p, int k)
     const double *ya = p->ya, *y = p->y;
     int n = l->n;
     double h = p->h;
-    if (k > 0 && k < n) {
-        double pair = l->spacing - l->w;
-        return may_close(pair + ya[k] - ya[k - 1], pair + y[k] - y[k - 1],
+    if (k > 0 && k < n)
+        return may_close(l->pair + ya[k] - ya[k - 1], l->pair + y[k] - y[k - 1],
                          h * (ya[n + k] - ya[n + k - 1]), h * (y[n + k] - y[n + k - 1]), 0.0);
-    }
-    if (k == 0) {
-        double wall = l->spacing - 0.5 * l->w;
-        return may_close(wall + ya[0], wall + y[0], h * ya[n], h * y[n], 0.0);
-    }
-    double face = MODEL_LENGTH - 0.5 * l->w - n * l->spacing;
-    return may_close(face + p->ua - ya[n - 1], face + p->ub - y[n - 1],
+    if (k == 0)
+        return may_close(l->wall + ya[0], l->wall + y[0], h * ya[n], h * y[n], 0.0);
+    return may_close(l->face + p->ua - ya[n - 1], l->face + p->ub - y[n - 1],
                      h * (p->dua - ya[2 * n - 1]), h * (p->dub - y[2 * n - 1]), p->drive_err);
 }
 
@@ -250,20 +253,23 @@ bool events_may_close(const struct events_piece *p)
     const struct collision_limits *l = p->lim;
     const double *ya = p->ya, *y = p->y;
     int n = l->n;
-    double h = p->h, pair = l->spacing - l->w;
-    if (bound_may_close(p, 0))
-        return true;
-    /* bound_may_close's pairs, with what is the same for each taken once: the least of
-     * may_close's left sides, with no branch in the loop (a NaN never counts, as there) */
-    double least = INFINITY;
+    double h = p->h, pair = l->pair;
+    /* bound_may_close's gaps, with no branch: the least of may_close's left sides (an err
+     * of 0 subtracts nothing; a NaN never counts, as there), the wall's first. */
+    double least = INFINITY, q = bound(l->wall + ya[0], l->wall + y[0], h * ya[n], h * y[n]);
+    least = q < least ? q : least;
     for (int k = 1; k < n; k++) {
-        double g0 = pair + ya[k] - ya[k - 1], g1 = pair + y[k] - y[k - 1], dg = g1 - g0;
-        double A = fabs(h * (ya[n + k] - ya[n + k - 1]) - dg);
-        double B = fabs(h * (y[n + k] - y[n + k - 1]) - dg);
-        double q = (g0 < g1 ? g0 : g1) - 0.25 * (A > B ? A : B);
+        q = bound(pair + ya[k] - ya[k - 1], pair + y[k] - y[k - 1], h * (ya[n + k] - ya[n + k - 1]),
+                  h * (y[n + k] - y[n + k - 1]));
         least = q < least ? q : least;
     }
-    return least <= -EVENTS_TOUCH || (l->count > n && bound_may_close(p, n));
+    if (l->count > n) {
+        q = bound(l->face + p->ua - ya[n - 1], l->face + p->ub - y[n - 1],
+                  h * (p->dua - ya[2 * n - 1]), h * (p->dub - y[2 * n - 1])) -
+            p->drive_err;
+        least = q < least ? q : least;
+    }
+    return least <= -EVENTS_TOUCH;
 }
 
 double events_contact(const struct events_piece *p, int *which, int *closing)

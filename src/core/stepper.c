@@ -43,22 +43,6 @@ struct stepper {
     double ddu_factor;        /* u'' = ddu_factor u on the piece being stepped */
 };
 
-void drive_at(struct drive *d, const struct model *m, double t)
-{
-    d->motor = &m->motor;
-    d->amp = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
-    d->force = m->force;
-    d->force_on = m->force_on;
-    if (d->amp == 0.0 && d->force == 0.0) {
-        d->kind = DRIVE_NONE;
-    } else if (m->motor.wave == WAVE_SINE) {
-        d->kind = DRIVE_SINE;
-    } else {
-        d->kind = DRIVE_PIECE;
-        motor_piece_at(&m->motor, t, &d->piece);
-    }
-}
-
 double drive_ddu_factor(const struct drive *d)
 {
     if (d->kind != DRIVE_SINE)
@@ -346,12 +330,16 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     y[2 * n + 2] += h6 * (sp + pk);
 }
 
-void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
+void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y,
+                 double ends[4])
 {
-    st->ddu_factor = drive_ddu_factor(d);
     st->constrained = st->rest && st->rest->active;
+    if (st->constrained) /* only constrain reads it */
+        st->ddu_factor = drive_ddu_factor(d);
     st->rot_before = st->rot; /* for stepper_undo_rk4 */
     rk4(st, d, a, b, y);
+    ends[0] = st->start_u, ends[1] = st->start_du;
+    ends[2] = st->end_u, ends[3] = st->end_du;
 }
 
 void stepper_undo_rk4(struct stepper *st)

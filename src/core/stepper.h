@@ -23,8 +23,22 @@ struct drive {
 #define STEPPER_LEN(n) (2 * (n) + 3)
 
 /* The drive for the piece of model m's right end that contains time t (pass a time
- * inside the piece, not on a breakpoint). */
-void drive_at(struct drive *d, const struct model *m, double t);
+ * inside the piece, not on a breakpoint). Inline: every step takes one. */
+static inline void drive_at(struct drive *d, const struct model *m, double t)
+{
+    d->motor = &m->motor;
+    d->amp = m->boundary == BOUNDARY_MOTOR ? m->motor.amplitude : 0.0;
+    d->force = m->force;
+    d->force_on = m->force_on;
+    if (d->amp == 0.0 && d->force == 0.0) {
+        d->kind = DRIVE_NONE;
+    } else if (m->motor.wave == WAVE_SINE) {
+        d->kind = DRIVE_SINE;
+    } else {
+        d->kind = DRIVE_PIECE;
+        motor_piece_at(&m->motor, t, &d->piece);
+    }
+}
 
 /* u'' on the piece is drive_ddu_factor(d) u: a sine's -w^2, 0 for constants and ramps. */
 double drive_ddu_factor(const struct drive *d);
@@ -71,8 +85,10 @@ struct rest;
 void stepper_set_rest(struct stepper *st, const struct rest *r);
 
 /* Classic RK4 over [a, b] on drive d, as stepper_apply takes it (the stages folded
- * together, no copies: the common step as cheap as a hand-written loop). */
-void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y);
+ * together, no copies: the common step as cheap as a hand-written loop); the drive's u
+ * and u' at a, then at b, into ends (stepper_start_drive's and stepper_end_drive's). */
+void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y,
+                 double ends[4]);
 
 /* Puts the sine drive's carried angle back as it was before the last stepper_rk4, so that
  * the step can be taken again another way with the same bits. */
