@@ -18,6 +18,7 @@
 
 #include "events.h"
 #include "sim_state.h"
+#include "vec2.h"
 
 /* Breakpoints of the drive inside one step, handled MAX_SPLIT at a time. */
 #define MAX_SPLIT 16
@@ -380,20 +381,17 @@ static int bare(struct sim *s, const struct model *m, double t0, double t1)
     return advance(s, t0, t1);
 }
 
-/* Two doubles' bits at a time (GCC's and Clang's vector extension: SSE2 on x86-64). */
-typedef uint64_t bits2 __attribute__((vector_size(16)));
-
 static bool all_finite(const double *y, int len)
 {
     /* An infinity or a NaN has every exponent bit set, and only then does adding the
      * exponent's lowest bit to its exponent field carry into the sign bit: tested on the
      * bits, two values at a time, with no branch and no chain of additions a value. */
-    const bits2 exponent = {EXPONENT_BITS, EXPONENT_BITS};
-    const bits2 low = {EXPONENT_LOW, EXPONENT_LOW};
-    bits2 bad = {0, 0};
+    const vec2_bits exponent = {EXPONENT_BITS, EXPONENT_BITS};
+    const vec2_bits low = {EXPONENT_LOW, EXPONENT_LOW};
+    vec2_bits bad = {0, 0};
     int i = 0;
     for (; i + 2 <= len; i += 2) {
-        bits2 b;
+        vec2_bits b;
         memcpy(&b, &y[i], sizeof b);
         bad |= (b & exponent) + low;
     }
