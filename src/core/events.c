@@ -19,6 +19,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "vec2.h"
+
 /* Rates below this (m/s) after a contact count as no motion: the two moved as one. */
 #define REST_RATE 1e-9
 /* A gap this small (m) may start to rest: the located instant's gap is the interpolant's
@@ -258,7 +260,22 @@ bool events_may_close(const struct events_piece *p)
      * of 0 subtracts nothing; a NaN never counts, as there), the wall's first. */
     double least = INFINITY, q = bound(l->wall + ya[0], l->wall + y[0], h * ya[n], h * y[n]);
     least = q < least ? q : least;
-    for (int k = 1; k < n; k++) {
+    /* The pairs two at a time (vec2.h: bound's operations a lane, the same bits; y, just
+     * stepped, loaded in halves), each lane's q <= -EVENTS_TOUCH kept in hit (false for a
+     * NaN, as there), the odd one alone. */
+    const vec2_mask none = {0, 0};
+    vec2_mask hit = none;
+    int k = 1;
+    for (; k + 1 < n; k += 2) {
+        vec2 g0 = pair + vec2_load(ya + k) - vec2_load(ya + k - 1);
+        vec2 g1 = pair + vec2_load_halves(y + k) - vec2_load_halves(y + k - 1);
+        vec2 s0 = h * (vec2_load(ya + n + k) - vec2_load(ya + n + k - 1));
+        vec2 s1 = h * (vec2_load_halves(y + n + k) - vec2_load_halves(y + n + k - 1));
+        vec2 dg = g1 - g0, A = vec2_abs(s0 - dg), B = vec2_abs(s1 - dg);
+        vec2 lq = vec2_select(g0 < g1, g0, g1) - 0.25 * vec2_select(A > B, A, B);
+        hit |= lq <= -EVENTS_TOUCH;
+    }
+    for (; k < n; k++) {
         q = bound(pair + ya[k] - ya[k - 1], pair + y[k] - y[k - 1], h * (ya[n + k] - ya[n + k - 1]),
                   h * (y[n + k] - y[n + k - 1]));
         least = q < least ? q : least;
@@ -269,7 +286,7 @@ bool events_may_close(const struct events_piece *p)
             p->drive_err;
         least = q < least ? q : least;
     }
-    return least <= -EVENTS_TOUCH;
+    return least <= -EVENTS_TOUCH || (hit[0] | hit[1]) != 0;
 }
 
 double events_contact(const struct events_piece *p, int *which, int *closing)

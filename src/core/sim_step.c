@@ -366,14 +366,14 @@ static int bare(struct sim *s, const struct model *m, double t0, double t1)
 {
     struct drive d;
     drive_at(&d, m, 0.5 * (t0 + t1));
-    double ends[4];
-    stepper_rk4(s->st, &d, t0, t1, s->y, ends);
+    stepper_rk4(s->st, &d, t0, t1, s->y);
     if (!s->lim.on)
         return 0;
     double h = t1 - t0, h2 = h * h;
-    struct events_piece p = {&s->lim, m, s->rest, &d, s->y0, s->y, t0, h,
-                             ends[0], ends[1], ends[2], ends[3], 0.0, 0.0};
+    struct events_piece p = {&s->lim, m, s->rest, &d, s->y0, s->y, t0, h, 0, 0, 0, 0, 0, 0};
     p.drive_err = d.kind == DRIVE_SINE ? s->sine_err * h2 * h2 : 0.0;
+    stepper_start_drive(s->st, &p.ua, &p.dua);
+    stepper_end_drive(s->st, &p.ub, &p.dub);
     if (!events_may_close(&p))
         return 0;
     memcpy(s->y, s->y0, (size_t)STEPPER_LEN(s->n) * sizeof *s->y);
@@ -391,8 +391,7 @@ static bool all_finite(const double *y, int len)
     vec2_bits bad = {0, 0};
     int i = 0;
     for (; i + 2 <= len; i += 2) {
-        vec2_bits b;
-        memcpy(&b, &y[i], sizeof b);
+        vec2_bits b = (vec2_bits)vec2_load_halves(y + i); /* just stored */
         bad |= (b & exponent) + low;
     }
     uint64_t last = 0;

@@ -298,12 +298,13 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     st->end_u = u[2], st->end_du = du[2];
     double d0, w0, p0, dk, wk, pk;
     stage(st, x, v, u[0], du[0], f[0], acc + n, &d0, &w0, &p0);
-    /* Each pass two values at a time (vec2.h: the same bits), the odd one alone. */
+    /* Each pass two values at a time (vec2.h: the same bits), the odd one alone; what a
+     * stage has just stored a value at a time (kv, acc's v) loaded in halves. */
     int i = 0;
     for (; i + 1 < n; i += 2) {
         vec2 vi = vec2_load(v + i);
         vec2_store(tx + i, vec2_load(x + i) + h2 * vi);
-        vec2_store(tv + i, vi + h2 * vec2_load(acc + n + i));
+        vec2_store(tv + i, vi + h2 * vec2_load_halves(acc + n + i));
     }
     for (; i < n; i++) {
         tx[i] = x[i] + h2 * v[i];
@@ -312,7 +313,7 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     stage(st, tx, tv, u[1], du[1], f[1], kv, &dk, &wk, &pk);
     double sd = d0 + 2.0 * dk, sw = w0 + 2.0 * wk, sp = p0 + 2.0 * pk;
     for (i = 0; i + 1 < n; i += 2) {
-        vec2 vi = vec2_load(tv + i), v0 = vec2_load(v + i), ki = vec2_load(kv + i);
+        vec2 vi = vec2_load(tv + i), v0 = vec2_load(v + i), ki = vec2_load_halves(kv + i);
         vec2_store(acc + i, v0 + 2.0 * vi);
         vec2_store(acc + n + i, vec2_load(acc + n + i) + 2.0 * ki);
         vec2_store(tx + i, vec2_load(x + i) + h2 * vi);
@@ -328,7 +329,7 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     stage(st, tx, tv, u[1], du[1], f[1], kv, &dk, &wk, &pk);
     sd += 2.0 * dk, sw += 2.0 * wk, sp += 2.0 * pk;
     for (i = 0; i + 1 < n; i += 2) {
-        vec2 vi = vec2_load(tv + i), ki = vec2_load(kv + i);
+        vec2 vi = vec2_load(tv + i), ki = vec2_load_halves(kv + i);
         vec2_store(acc + i, vec2_load(acc + i) + 2.0 * vi);
         vec2_store(acc + n + i, vec2_load(acc + n + i) + 2.0 * ki);
         vec2_store(tx + i, vec2_load(x + i) + h * vi);
@@ -346,7 +347,7 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     for (i = 0; i + 1 < n; i += 2) {
         vec2_store(x + i, vec2_load(x + i) + h6 * (vec2_load(acc + i) + vec2_load(tv + i)));
         vec2_store(v + i,
-                   vec2_load(v + i) + h6 * (vec2_load(acc + n + i) + vec2_load(kv + i)));
+                   vec2_load(v + i) + h6 * (vec2_load(acc + n + i) + vec2_load_halves(kv + i)));
     }
     for (; i < n; i++) {
         x[i] += h6 * (acc[i] + tv[i]);
@@ -357,16 +358,13 @@ static void rk4(struct stepper *st, const struct drive *d, double a, double b, d
     y[2 * n + 2] += h6 * (sp + pk);
 }
 
-void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y,
-                 double ends[4])
+void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
     st->constrained = st->rest && st->rest->active;
     if (st->constrained) /* only constrain reads it */
         st->ddu_factor = drive_ddu_factor(d);
     st->rot_before = st->rot; /* for stepper_undo_rk4 */
     rk4(st, d, a, b, y);
-    ends[0] = st->start_u, ends[1] = st->start_du;
-    ends[2] = st->end_u, ends[3] = st->end_du;
 }
 
 void stepper_undo_rk4(struct stepper *st)

@@ -85,10 +85,8 @@ struct rest;
 void stepper_set_rest(struct stepper *st, const struct rest *r);
 
 /* Classic RK4 over [a, b] on drive d, as stepper_apply takes it (the stages folded
- * together, no copies: the common step as cheap as a hand-written loop); the drive's u
- * and u' at a, then at b, into ends (stepper_start_drive's and stepper_end_drive's). */
-void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y,
-                 double ends[4]);
+ * together, no copies: the common step as cheap as a hand-written loop). */
+void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y);
 
 /* Puts the sine drive's carried angle back as it was before the last stepper_rk4, so that
  * the step can be taken again another way with the same bits. */

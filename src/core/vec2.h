@@ -10,6 +10,7 @@
 
 typedef double vec2 __attribute__((vector_size(16)));        /* two doubles */
 typedef uint64_t vec2_bits __attribute__((vector_size(16))); /* two doubles' bits */
+typedef int64_t vec2_mask __attribute__((vector_size(16)));  /* a comparison's lanes: -1 or 0 */
 
 /* p[0] and p[1], p aligned or not. */
 static inline vec2 vec2_load(const double *p)
@@ -19,10 +20,38 @@ static inline vec2 vec2_load(const double *p)
     return v;
 }
 
+/* p[0] and p[1] as two loads, for values just stored one at a time: a processor cannot
+ * forward two 8-byte stores still in its store buffer to one 16-byte load, which then
+ * waits for them to reach the cache (AMD's and Intel's alike); two loads take each its
+ * own store's value at once. An asm keeps the compiler from joining them into one. */
+static inline vec2 vec2_load_halves(const double *p)
+{
+#if defined(__x86_64__) && defined(__SSE2__)
+    vec2 v = {p[0], 0.0};
+    __asm__("movhpd %1, %0" : "+x"(v) : "m"(p[1]));
+    return v;
+#else
+    return (vec2){p[0], p[1]};
+#endif
+}
+
 /* Stores v into p[0] and p[1]. */
 static inline void vec2_store(double *p, vec2 v)
 {
     memcpy(p, &v, sizeof v);
+}
+
+/* Each lane of x taken where mask is set, else of y: `mask ? x : y` a lane. */
+static inline vec2 vec2_select(vec2_mask mask, vec2 x, vec2 y)
+{
+    return (vec2)(((vec2_mask)x & mask) | ((vec2_mask)y & ~mask));
+}
+
+/* |x| a lane (fabs: the sign bit cleared). */
+static inline vec2 vec2_abs(vec2 x)
+{
+    const vec2_mask magnitude = {INT64_MAX, INT64_MAX};
+    return (vec2)((vec2_mask)x & magnitude);
 }
 
 #endif
