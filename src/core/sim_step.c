@@ -361,12 +361,13 @@ static int advance(struct sim *s, double t0, double t1)
 
 /* The common step, taken bare: RK4 in one piece (a sine drive or none), no contact
  * resting. When the bound finds a gap that may close inside the step, the step is taken
- * again from its start by advance, which finds the same and locates it. */
-static int bare(struct sim *s, const struct model *m, double t0, double t1)
+ * again from its start by advance, which finds the same and locates it. *found: what
+ * stepper_rk4 found on the state the step ends at, or -1 when advance took it. */
+static int bare(struct sim *s, const struct model *m, double t0, double t1, int *found)
 {
     struct drive d;
     drive_at(&d, m, 0.5 * (t0 + t1));
-    stepper_rk4(s->st, &d, t0, t1, s->y);
+    *found = stepper_rk4(s->st, &d, t0, t1, s->y);
     if (!s->lim.on)
         return 0;
     double h = t1 - t0, h2 = h * h;
@@ -378,6 +379,7 @@ static int bare(struct sim *s, const struct model *m, double t0, double t1)
         return 0;
     memcpy(s->y, s->y0, (size_t)STEPPER_LEN(s->n) * sizeof *s->y);
     stepper_undo_rk4(s->st);
+    *found = -1;
     return advance(s, t0, t1);
 }
 
@@ -421,7 +423,9 @@ enum sim_status sim_step(struct sim *s)
     memcpy(s->y0, s->y, (size_t)len * sizeof *s->y);
     s->last_contacts = s->last_capped = 0;
     bool bare_fits = s->integrator == INTEGRATOR_RK4 && !s->rest->active && one_piece(m);
-    if ((bare_fits ? bare(s, m, t0, t1) : advance(s, t0, t1)) != 0 || !all_finite(s->y, len)) {
+    int found = -1; /* what the bare step found on the state, or -1: look */
+    int failed = bare_fits ? bare(s, m, t0, t1, &found) : advance(s, t0, t1);
+    if (failed || (found < 0 ? !all_finite(s->y, len) : found & STEPPER_NONFINITE)) {
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
         s->contact = contact0;
         s->last_contacts = 0;
@@ -429,7 +433,7 @@ enum sim_status sim_step(struct sim *s)
     }
     s->steps += 1.0;
     struct collision_books b = {0.0, 0.0};
-    if (over_cap(s->y + n, n))
+    if (found < 0 ? over_cap(s->y + n, n) : found & STEPPER_OVER_CAP)
         s->last_capped = collision_cap(m, s->y + n, &b);
     book(s, &b);
     if (s->last_capped && s->rest->active) {

@@ -85,8 +85,16 @@ struct rest;
 void stepper_set_rest(struct stepper *st, const struct rest *r);
 
 /* Classic RK4 over [a, b] on drive d, as stepper_apply takes it (the stages folded
- * together, no copies: the common step as cheap as a hand-written loop). */
-void stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y);
+ * together, no copies: the common step as cheap as a hand-written loop). Returns what
+ * it found on the state it made (STEPPER_NONFINITE, STEPPER_OVER_CAP), looked at as it
+ * was made. */
+int stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y);
+
+/* stepper_rk4's findings on the state it made, or'd together (0: neither). */
+enum {
+    STEPPER_NONFINITE = 1, /* some value of y is an infinity or a NaN */
+    STEPPER_OVER_CAP = 2   /* some |v_i| > MODEL_VMAX (meant when all are finite) */
+};
 
 /* Puts the sine drive's carried angle back as it was before the last stepper_rk4, so that
  * the step can be taken again another way with the same bits. */
