@@ -11,7 +11,7 @@
  *   -m w^2 a_i + c w b_i + Tc_i - Tc_{i+1} = 0,
  *   -m w^2 b_i - c w a_i + Ts_i - Ts_{i+1} - [i = K] F = 0,
  *
- * 2N equations in the 2N coefficients, solved by Newton (LAPACKE dgesv). The curve is
+ * 2N equations in the 2N coefficients, solved by Newton (a banded LU: bordered.h). The curve is
  * followed by pseudo-arclength continuation (Keller 1977; Seydel, Practical Bifurcation
  * and Stability Analysis, 4.5) in scaled unknowns (z / A, w / the span of w): a tangent
  * predictor, a corrector on R = 0 and t . (y - y_predicted) = 0, the tangent's w part
@@ -27,6 +27,7 @@
 
 #include <lapacke.h>
 
+#include "bordered.h"
 #include "modes.h"
 
 #define NEWTON_MAX 12     /* corrector iterations */
@@ -36,7 +37,7 @@
 #define POINTS_MAX 400000 /* points a curve may have */
 #define BISECTIONS 60     /* along the step holding a fold */
 
-/* The workspace of one chain: its parameters, the scales and the dense solve's room. */
+/* The workspace of one chain: its parameters, the scales and the solves' room. */
 struct hb {
     const struct model *m;
     int n, dim;       /* masses, 2N + 1 */
@@ -47,7 +48,7 @@ struct hb {
     double *rhs;      /* dim */
     double *res;      /* 2N residual */
     double *p, *q;    /* N+1 stretches' cos and sin parts */
-    lapack_int *piv;  /* dim */
+    struct bordered band; /* dR/dz is banded: each mass meets only its neighbours */
 };
 
 static int hb_init(struct hb *h, const struct model *m, double wspan)
@@ -65,10 +66,9 @@ static int hb_init(struct hb *h, const struct model *m, double wspan)
     h->zs = h->amp + (h->force != 0.0 ? fabs(h->force) / (springs > 0.0 ? springs : 1.0) : 0.0);
     h->ws = wspan;
     h->jac = malloc(((size_t)dim * dim + 2 * (size_t)dim + 2 * (size_t)(n + 1)) * sizeof *h->jac);
-    h->piv = malloc((size_t)dim * sizeof *h->piv);
-    if (!h->jac || !h->piv) {
+    /* Row 2i + u of dR/dz holds the columns of masses i - 1, i and i + 1: 3 each side. */
+    if (!h->jac || bordered_init(&h->band, 2 * n, 3, 3) != 0) {
         free(h->jac);
-        free(h->piv);
         return -1;
     }
     h->rhs = h->jac + (size_t)dim * dim;
@@ -81,7 +81,7 @@ static int hb_init(struct hb *h, const struct model *m, double wspan)
 static void hb_free(struct hb *h)
 {
     free(h->jac);
-    free(h->piv);
+    bordered_free(&h->band);
 }
 
 /* The springs' stretches' parts p, q from z = (a_0, b_0, a_1, b_1, ...) (m). */
@@ -173,7 +173,7 @@ static int solve_at(struct hb *h, double *z, double w)
         double step = 0.0, size = 0.0;
         for (int i = 0; i < n2; i++)
             h->rhs[i] = -h->res[i];
-        if (LAPACKE_dgesv(LAPACK_COL_MAJOR, n2, 1, h->jac, h->dim, h->piv, h->rhs, n2) != 0)
+        if (bordered_solve(&h->band, h->jac, h->dim, false, h->rhs) != 0)
             return -1;
         for (int i = 0; i < n2; i++) {
             z[i] += h->rhs[i];
@@ -199,8 +199,10 @@ static void scaled_system(struct hb *h, const double *y, const double *last)
         zz[i] = y[i] * h->zs;
     residual(h, zz, y[n2] * h->ws, h->jac);
     for (int col = 0; col < dim; col++) {
+        /* dR/dz is banded (3 each side: residual), its zeros left as they are */
         double s = col < n2 ? h->zs : h->ws;
-        for (int r = 0; r < n2; r++)
+        int lo = col < n2 && col > 3 ? col - 3 : 0, hi = col < n2 && col + 3 < n2 ? col + 3 : n2 - 1;
+        for (int r = lo; r <= hi; r++)
             h->jac[r + (size_t)col * dim] *= s;
         h->jac[n2 + (size_t)col * dim] = last ? last[col] : col == n2;
     }
@@ -214,7 +216,7 @@ static int tangent(struct hb *h, const double *y, const double *dir, double *t)
     scaled_system(h, y, dir);
     memset(h->rhs, 0, (size_t)dim * sizeof *h->rhs);
     h->rhs[n2] = 1.0;
-    if (LAPACKE_dgesv(LAPACK_COL_MAJOR, dim, 1, h->jac, dim, h->piv, h->rhs, dim) != 0)
+    if (bordered_solve(&h->band, h->jac, dim, true, h->rhs) != 0)
         return -1;
     double norm = 0.0;
     for (int i = 0; i < dim; i++)
@@ -242,7 +244,7 @@ static int correct(struct hb *h, const double *t, double *y, int *its)
         for (int i = 0; i < n2; i++)
             h->rhs[i] = -h->res[i];
         h->rhs[n2] = -along;
-        if (LAPACKE_dgesv(LAPACK_COL_MAJOR, dim, 1, h->jac, dim, h->piv, h->rhs, dim) != 0)
+        if (bordered_solve(&h->band, h->jac, dim, true, h->rhs) != 0)
             return -1;
         double step = 0.0, size = 1.0;
         for (int i = 0; i < dim; i++) {

@@ -12,7 +12,7 @@
 #include "model.h"
 
 #define HARMONIC_MAX_FOLDS 64 /* folds a curve keeps */
-#define HARMONIC_MAX_MASSES 200 /* the dense Newton solves: (2N+1)^3 a step */
+#define HARMONIC_MAX_MASSES 200 /* the stability's dense eigenvalues: (2N)^3 a point */
 
 /* The continuation's curve from below fmin to past fmax: its points in order along it,
  * and its folds (where the frequency turns back). The pieces between folds are the
