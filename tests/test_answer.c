@@ -236,6 +236,28 @@ static void parted_answers(void **state)
     answer_idle(&scan, 1.0 + ANSWER_ESC_WAIT);
     assert_int_equal(answer_key(&scan), 0x1b);
     assert_true(ANSWER_ESC_WAIT <= 0.1);
+    /* Parted twice while answers are due, after its Esc (past ANSWER_ESC_HOLD: the Esc
+     * went as a key) and after its introducer (past ANSWER_GAP, within ANSWER_TAIL): its
+     * rest is still no keys (its [, ?, 6 and c acted: slower, the help, a plot). */
+    static const char *const twice[] = {"[?62;4c", "[6;20;10t", "]11;rgb:ffff/ffff/ffff\033\\",
+                                        "_Gi=31;OK\033\\"};
+    for (size_t a = 0; a < sizeof twice / sizeof *twice; a++) {
+        setup_scan();
+        double t = 10.0;
+        answer_feed(&scan, 0x1b, t);
+        answer_idle_awaiting(&scan, t + ANSWER_ESC_HOLD + 0.1);
+        assert_int_equal(answer_key(&scan), 0x1b);
+        answer_feed(&scan, (unsigned char)twice[a][0], t += 0.5);
+        for (double q = t + 0.1; q < t + 1.5; q += 0.1)
+            answer_idle_awaiting(&scan, q);
+        t += 1.5;
+        for (const char *c = twice[a] + 1; *c; c++)
+            answer_feed(&scan, (unsigned char)*c, t);
+        answer_feed(&scan, 'y', t);
+        int k = answer_key(&scan);
+        if (k != 'y')
+            fail_msg("answer %zu parted twice: key '%c' came first", a, k);
+    }
     /* A [ typed long after an Esc is a key at once, not held for an answer's rest. */
     answer_feed(&scan, '[', 1.0 + ANSWER_TAIL + 1.0);
     assert_int_equal(answer_key(&scan), '[');

@@ -248,15 +248,15 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
 }
 
 /* A lone Esc held `hold` seconds is a key (remembered: an answer's rest may follow it);
- * an introducer alone after it, ANSWER_GAP seconds (Esc then [ typed). A longer part
+ * an introducer alone after it, `tail_hold` seconds (Esc then [ typed). A longer part
  * stays held: what comes next says (answer_feed). */
-static void idle(struct answer_scan *s, double now, double hold)
+static void idle(struct answer_scan *s, double now, double hold, double tail_hold)
 {
     if (s->nheld == 1 && now - s->last >= hold - 1e-9) {
         give_back(s);
         s->esc_out = true;
         s->esc_at = now;
-    } else if (s->nheld == 2 && s->tail && now - s->last > ANSWER_GAP) {
+    } else if (s->nheld == 2 && s->tail && now - s->last > tail_hold) {
         give_back(s);
     }
 }
@@ -267,12 +267,14 @@ void answer_idle(struct answer_scan *s, double now)
         s->pasting = false;
         s->pastes++;
     }
-    idle(s, now, ANSWER_ESC_WAIT);
+    idle(s, now, ANSWER_ESC_WAIT, ANSWER_GAP);
 }
 
 void answer_idle_awaiting(struct answer_scan *s, double now)
 {
-    idle(s, now, ANSWER_ESC_HOLD);
+    /* An introducer after an Esc that went waits longer too: a link that parted an
+     * answer after its Esc may part it again after its [ (its rest would be keys). */
+    idle(s, now, ANSWER_ESC_HOLD, ANSWER_TAIL);
 }
 
 int answer_burst(struct answer_scan *s)

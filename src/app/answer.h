@@ -76,7 +76,9 @@ bool answer_feed(struct answer_scan *s, int ch, double now);
  * is a key. */
 void answer_idle(struct answer_scan *s, double now);
 
-/* The same while answers are awaited: a lone Esc waits ANSWER_ESC_HOLD seconds first. */
+/* The same while answers are awaited: a lone Esc waits ANSWER_ESC_HOLD seconds first, and
+ * an introducer held after an Esc that went as a key ANSWER_TAIL (not ANSWER_GAP) for
+ * the rest of its answer. */
 void answer_idle_awaiting(struct answer_scan *s, double now);
 
 /* Keys read at once that are a paste, not typing (ANSWER_BURST printable ones or more,
