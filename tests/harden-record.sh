@@ -180,4 +180,13 @@ grep -q 'recording ended at .* mass-steps.*written to heavy.lesson' heavy.out &&
     fail "a recording of costly steps should end at a lesson's mass-steps: $(grep -i record heavy.out | head -c 300)"
 replays heavy.lesson "a recording ended at the bound in mass-steps"
 
+# and a session of many commands and no runs (a lesson file holds 256 KiB at most: a
+# recording of 15000 frequency changes was 304 KiB, refused by its own --replay) ends its
+# recording below that size, says so, and replays.
+awk 'BEGIN { for (i = 0; i < 15000; i++) printf "set frequency %.3f\n", 0.5 + i % 97 / 1000; print "quit" }' |
+    "$SPRINGSIM" --plain --record bytes.lesson >bytes.out 2>&1
+grep -q 'recording ended at .* KiB.*written to bytes.lesson' bytes.out && pass ||
+    fail "a recording of 15000 commands should end below a lesson's size: $(grep -i record bytes.out | head -c 300)"
+replays bytes.lesson "a recording ended at a lesson file's size"
+
 summary

@@ -357,21 +357,35 @@ void record_abandon(struct record *r)
     output_close(&r->out, false);
 }
 
+/* The bytes written so far (the memory stream's position). */
+static long record_bytes(const struct record *r)
+{
+    return r->mem ? ftell(r->mem) : 0;
+}
+
 bool record_full(const struct record *r, const struct app *app, double ahead)
 {
     double steps = ahead / sim_dt(app->sim) + 1.0; /* ahead, at the last step's cost */
-    return r->mem && (r->seconds + (sim_time(app->sim) - r->t) + ahead > LESSON_MAX_SECONDS ||
+    return r->mem && (record_bytes(r) > LESSON_MAX_BYTES - RECORD_ROOM ||
+                      r->seconds + (sim_time(app->sim) - r->t) + ahead > LESSON_MAX_SECONDS ||
                       app->work - r->work0 + steps * app->step_work > LESSON_MAX_WORK);
 }
 
 void record_full_finish(struct record *r, struct app *app)
 {
     char why[1400], safe[1200];
+    bool bytes = record_bytes(r) > LESSON_MAX_BYTES - RECORD_ROOM;
     if (record_finish(r, app, why, sizeof why) != 0) {
         app_say(app, SAID_ERROR, "--record: %s", why);
         return;
     }
     config_escape(r->path, strlen(r->path), 256, safe, sizeof safe);
+    if (bytes) {
+        app_say(app, SAID_NOTE, "recording ended at %d KiB of lines (a lesson file holds "
+                "%d KiB at most; so that it replays): written to %s",
+                (LESSON_MAX_BYTES - RECORD_ROOM) / 1024, LESSON_MAX_BYTES / 1024, safe);
+        return;
+    }
     app_say(app, SAID_NOTE, "recording ended at %.0f s of runs (what a lesson may run: %.0f "
             "minutes, %.3g mass-steps; so that it replays): written to %s", r->seconds,
             LESSON_MAX_SECONDS / 60.0, LESSON_MAX_WORK, safe);

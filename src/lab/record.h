@@ -24,6 +24,8 @@ struct app;
 
 #define RECORD_RUN_MAX 500.0 /* simulated seconds of one run line, at most */
 #define RECORD_WAIT_MIN 0.05 /* wall seconds of idleness written as a wait line, at least */
+#define RECORD_ROOM 16384    /* bytes kept free below a lesson's LESSON_MAX_BYTES: more than
+                              * one key's lines (a setup block) and the expect line need */
 
 /* The chain's settings just before a key, to tell what the key changed. */
 struct record_mark {
@@ -66,7 +68,8 @@ struct record {
 
 /* Whether the recording is full: its runs and the time run since, with `ahead` more
  * simulated seconds, would pass the LESSON_MAX_SECONDS a lesson (and so a replay) may
- * run, or their steps the LESSON_MAX_WORK it may compute. The caller then finishes it
+ * run, or their steps the LESSON_MAX_WORK it may compute, or its text comes within
+ * RECORD_ROOM of the LESSON_MAX_BYTES a lesson file may hold. The caller then finishes it
  * (record_full_finish), so that it always replays. */
 bool record_full(const struct record *r, const struct app *app, double ahead);
 

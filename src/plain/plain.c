@@ -216,8 +216,14 @@ static bool command(struct plain *p, const char *line)
     bool was_running = app->running;
     record_time(&p->rec, app);
     enum command_reply r = command_do(app, line, &res);
-    if (command_done(r))
+    if (command_done(r)) {
         record_command(&p->rec, app, line);
+        /* Commands alone fill a recording too (its bytes). */
+        if (record_full(&p->rec, app, 0.0)) {
+            record_full_finish(&p->rec, app);
+            tell_message(p);
+        }
+    }
     if (r == REPLY_NONE)
         return true;
     if (r == REPLY_RUN)

@@ -507,5 +507,8 @@ bool keys_on_key(struct tui *t, int ch)
     record_mark(&t->rec, &t->app);
     bool go = handle_key(t, ch);
     record_changes(&t->rec, &t->app, t->said[0] ? t->said : NULL);
+    /* Keys alone fill a recording too (its bytes: a long paste of ] and [). */
+    if (record_full(&t->rec, &t->app, 0.0))
+        record_full_finish(&t->rec, &t->app);
     return go;
 }
