@@ -132,6 +132,20 @@ if up cosine; then
     keys Escape
     wait_gone 'figure name'
     [ "$(ls "$tmp/fig" | wc -l)" -eq "$n" ] && pass || fail "X, Esc: files were written: $(ls "$tmp/fig" | tr '\n' ' ')"
+    # A directory's name (sub/, or sub that is one): the default pair inside it, not the
+    # hidden sub/.svg and sub/.png.
+    mkdir -p "$tmp/fig/sub"
+    for d in sub/ sub; do
+        keys X
+        wait_for 'figure name'
+        text "$d"
+        keys Enter
+        if wait_re "saved the figure as sub/springsim-[0-9-]*\\.svg and \\.png" &&
+            ! [ -e "$tmp/fig/sub/.svg" ] && ! [ -e "$tmp/fig/sub/.png" ]; then pass; else
+            fail "X, $d: expected the default pair inside sub; screen: $(brief); files: $(ls -A "$tmp/fig/sub" | tr '\n' ' ')"
+        fi
+        rm -f "$tmp/fig/sub/.svg" "$tmp/fig/sub/.png"
+    done
     # A second cursor a tenth of the window from the first: both cursors' values written,
     # no text on another, each inside the plot (right of the y labels, left of the page's
     # right margin: 160 mm less 12 pt).

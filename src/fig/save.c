@@ -6,6 +6,7 @@
 #include <libgen.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "core/output.h"
@@ -68,7 +69,13 @@ unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const 
     char base[4096], dir[4096], path[4096];
     enum fig_format fmt[2] = {FIG_SVG, FIG_PNG};
     int nf = 2;
-    if (name && name[0]) {
+    /* A directory (a name ending in '/', or one that is): the default name inside it, not
+     * the hidden DIR/.svg and DIR/.png. */
+    struct stat st;
+    size_t len = name ? strlen(name) : 0;
+    const char *in_dir = len && (name[len - 1] == '/' || (stat(name, &st) == 0 &&
+                                                          S_ISDIR(st.st_mode))) ? name : NULL;
+    if (name && name[0] && !in_dir) {
         /* A name with an extension of a figure's: that file alone; else the pair. */
         enum fig_format one = fig_format_of(name);
         size_t keep = strlen(name);
@@ -81,7 +88,10 @@ unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const 
         char stamp[32];
         localtime_r(&now, &tm);
         strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
-        snprintf(base, sizeof base, "./springsim-%s", stamp);
+        while (in_dir && len > 1 && in_dir[len - 1] == '/')
+            len--;
+        snprintf(base, sizeof base, "%.*s/springsim-%s", in_dir ? (int)len : 1,
+                 in_dir ? in_dir : ".", stamp);
     }
     snprintf(path, sizeof path, "%s", base);
     snprintf(dir, sizeof dir, "%s", dirname(path)); /* dirname may write into path */
