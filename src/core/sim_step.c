@@ -31,10 +31,6 @@
 /* A refinement of an event's instant shorter than this fraction of the piece moves the
  * state along its Taylor series rather than stepping again. */
 #define SHIFT_MAX 1e-3
-/* A double's exponent field. */
-#define EXPONENT_BITS UINT64_C(0x7ff0000000000000)
-/* Its lowest bit. */
-#define EXPONENT_LOW UINT64_C(0x0010000000000000)
 /* Gaps within this of zero count as touching. */
 #define TOUCH EVENTS_TOUCH
 
@@ -383,23 +379,15 @@ static int bare(struct sim *s, const struct model *m, double t0, double t1, int 
     return advance(s, t0, t1);
 }
 
+/* Whether every value of y is finite (vec2.h's bit test). */
 static bool all_finite(const double *y, int len)
 {
-    /* An infinity or a NaN has every exponent bit set, and only then does adding the
-     * exponent's lowest bit to its exponent field carry into the sign bit: tested on the
-     * bits, two values at a time, with no branch and no chain of additions a value. */
-    const vec2_bits exponent = {EXPONENT_BITS, EXPONENT_BITS};
-    const vec2_bits low = {EXPONENT_LOW, EXPONENT_LOW};
     vec2_bits bad = {0, 0};
     int i = 0;
-    for (; i + 2 <= len; i += 2) {
-        vec2_bits b = (vec2_bits)vec2_load_halves(y + i); /* just stored */
-        bad |= (b & exponent) + low;
-    }
-    uint64_t last = 0;
-    if (i < len)
-        memcpy(&last, &y[i], sizeof last);
-    return ((bad[0] | bad[1] | ((last & EXPONENT_BITS) + EXPONENT_LOW)) >> 63) == 0;
+    for (; i + 2 <= len; i += 2)
+        bad |= vec2_nonfinite_bits(vec2_load_halves(y + i)); /* just stored */
+    uint64_t last = i < len ? nonfinite_bit(y[i]) : 0;
+    return ((bad[0] | bad[1] | last) >> 63) == 0;
 }
 
 /* Whether some velocity, all finite, is past the cap (collision_cap has work to do). */

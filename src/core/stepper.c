@@ -284,18 +284,6 @@ static void drive3(struct stepper *st, const struct drive *d, double a, double b
  * needs no copy, and the books (D, W, P), which no rate reads, no stage arguments. The
  * sum builds up in acc as the stages come, each pass also making the next stage's
  * argument. */
-/* The sign bit set when the double whose bits are b is an infinity or a NaN (every
- * exponent bit set: adding the exponent's lowest bit carries into the sign). */
-#define NONFINITE_BIT(b) (((b) & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000))
-
-/* A double's bits. */
-static inline uint64_t bits_of(double x)
-{
-    uint64_t b;
-    memcpy(&b, &x, sizeof b);
-    return b;
-}
-
 static int rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
 {
     int n = st->n;
@@ -359,8 +347,6 @@ static int rk4(struct stepper *st, const struct drive *d, double a, double b, do
     double h6 = h / 6.0;
     /* The new state, and on it as it is made: some value not finite (bad's sign bits),
      * some |v_i| past the cap (over). */
-    const uint64_t exponent = UINT64_C(0x7ff0000000000000), low = UINT64_C(0x0010000000000000);
-    const vec2_bits exponents = {exponent, exponent}, lows = {low, low};
     const vec2 caps = {MODEL_VMAX, MODEL_VMAX};
     vec2_bits bad = {0, 0};
     vec2_mask over = {0, 0};
@@ -369,21 +355,20 @@ static int rk4(struct stepper *st, const struct drive *d, double a, double b, do
         vec2 vi = vec2_load(v + i) + h6 * (vec2_load(acc + n + i) + vec2_load_halves(kv + i));
         vec2_store(x + i, xi);
         vec2_store(v + i, vi);
-        bad |= (((vec2_bits)xi & exponents) + lows) | (((vec2_bits)vi & exponents) + lows);
+        bad |= vec2_nonfinite_bits(xi) | vec2_nonfinite_bits(vi);
         over |= vec2_abs(vi) > caps;
     }
     uint64_t bad1 = bad[0] | bad[1], over1 = (uint64_t)(over[0] | over[1]);
     for (; i < n; i++) {
         x[i] += h6 * (acc[i] + tv[i]);
         v[i] += h6 * (acc[n + i] + kv[i]);
-        bad1 |= NONFINITE_BIT(bits_of(x[i])) | NONFINITE_BIT(bits_of(v[i]));
+        bad1 |= nonfinite_bit(x[i]) | nonfinite_bit(v[i]);
         over1 |= fabs(v[i]) > MODEL_VMAX;
     }
     y[2 * n] += h6 * (sd + dk);
     y[2 * n + 1] += h6 * (sw + wk);
     y[2 * n + 2] += h6 * (sp + pk);
-    bad1 |= NONFINITE_BIT(bits_of(y[2 * n])) | NONFINITE_BIT(bits_of(y[2 * n + 1])) |
-            NONFINITE_BIT(bits_of(y[2 * n + 2]));
+    bad1 |= nonfinite_bit(y[2 * n]) | nonfinite_bit(y[2 * n + 1]) | nonfinite_bit(y[2 * n + 2]);
     return (bad1 >> 63 ? STEPPER_NONFINITE : 0) | (over1 ? STEPPER_OVER_CAP : 0);
 }
 

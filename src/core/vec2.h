@@ -54,4 +54,26 @@ static inline vec2 vec2_abs(vec2 x)
     return (vec2)((vec2_mask)x & magnitude);
 }
 
+/* An infinity or a NaN has every exponent bit set, and only then does adding the
+ * exponent's lowest bit to its exponent field carry into the sign bit: nonfinite_bit and
+ * vec2_nonfinite_bits set the sign bit (bit 63) of what they give for such a value, and
+ * for no other. Or-ed over a state, they test it with no branch and no chain of
+ * additions a value. */
+#define VEC2_EXPONENT UINT64_C(0x7ff0000000000000) /* a double's exponent field */
+#define VEC2_EXPONENT_LOW UINT64_C(0x0010000000000000) /* its lowest bit */
+
+static inline uint64_t nonfinite_bit(double x)
+{
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    return (b & VEC2_EXPONENT) + VEC2_EXPONENT_LOW;
+}
+
+static inline vec2_bits vec2_nonfinite_bits(vec2 x)
+{
+    const vec2_bits exponent = {VEC2_EXPONENT, VEC2_EXPONENT};
+    const vec2_bits low = {VEC2_EXPONENT_LOW, VEC2_EXPONENT_LOW};
+    return ((vec2_bits)x & exponent) + low;
+}
+
 #endif
