@@ -41,6 +41,7 @@ struct sim *sim_new(const struct model *model, double dt)
 
 int sim_copy(struct sim *dst, const struct sim *src)
 {
+    clearance_forget(&dst->clear);
     if (stepper_copy(dst->st, src->st) != 0)
         return -1;
     dst->lim = src->lim;
@@ -74,11 +75,13 @@ const struct model *sim_model(const struct sim *s)
 
 void sim_set_phase(struct sim *s, double phase)
 {
+    clearance_forget(&s->clear);
     stepper_set_phase(s->st, phase, s->dt);
 }
 
 void sim_set_model(struct sim *s, const struct model *model)
 {
+    clearance_forget(&s->clear);
     stepper_set_model(s->st, model, s->dt);
     collision_limits(&s->lim, model);
     /* The cubic Hermite interpolant's error bound, max |u''''| h^4 / 384. */
@@ -94,6 +97,7 @@ void sim_set_model(struct sim *s, const struct model *model)
 
 void sim_set_integrator(struct sim *s, enum integrator i)
 {
+    clearance_forget(&s->clear);
     s->integrator = i;
 }
 
@@ -109,6 +113,7 @@ double sim_time(const struct sim *s)
 
 void sim_set_dt(struct sim *s, double dt)
 {
+    clearance_forget(&s->clear);
     s->t_base = sim_time(s);
     s->steps = 0.0;
     s->dt = dt;
@@ -122,6 +127,7 @@ double sim_dt(const struct sim *s)
 
 void sim_reset(struct sim *s, const double *x, const double *v)
 {
+    clearance_forget(&s->clear);
     int n = s->n;
     memset(s->y, 0, (size_t)STEPPER_LEN(n) * sizeof *s->y);
     if (x)
@@ -237,6 +243,7 @@ void sim_save(const struct sim *s, double *buf)
 
 void sim_restore(struct sim *s, const double *buf)
 {
+    clearance_forget(&s->clear);
     struct snapshot_head h;
     memcpy(&h, buf, sizeof h);
     s->t_base = h.t_base;

@@ -3,6 +3,7 @@
 #ifndef SPRINGSIM_SIM_STATE_H
 #define SPRINGSIM_SIM_STATE_H
 
+#include "clearance.h"
 #include "collision.h"
 #include "rest.h"
 #include "sim.h"
@@ -27,6 +28,7 @@ struct sim {
     double *work;        /* 2N of scratch for the events */
     double *force;       /* N + 1: the resting contacts' forces */
     double sine_err;     /* a sine drive's straying from its cubic over h is this h^4 */
+    struct clearance clear; /* how far the gaps are from closing, while the steps are bare */
 };
 
 #endif

@@ -356,9 +356,10 @@ static int advance(struct sim *s, double t0, double t1)
 }
 
 /* The common step, taken bare: RK4 in one piece (a sine drive or none), no contact
- * resting. When the bound finds a gap that may close inside the step, the step is taken
- * again from its start by advance, which finds the same and locates it. *found: what
- * stepper_rk4 found on the state the step ends at, or -1 when advance took it. */
+ * resting. When s->clear shows every gap far from closing, that is all; else when the
+ * bound finds a gap that may close inside the step, the step is taken again from its
+ * start by advance, which finds the same and locates it. *found: what stepper_rk4 found
+ * on the state the step ends at, or -1 when advance took it. */
 static int bare(struct sim *s, const struct model *m, double t0, double t1, int *found)
 {
     struct drive d;
@@ -367,10 +368,13 @@ static int bare(struct sim *s, const struct model *m, double t0, double t1, int 
     if (!s->lim.on)
         return 0;
     double h = t1 - t0, h2 = h * h;
-    struct events_piece p = {&s->lim, m, s->rest, &d, s->y0, s->y, t0, h, 0, 0, 0, 0, 0, 0};
-    p.drive_err = d.kind == DRIVE_SINE ? s->sine_err * h2 * h2 : 0.0;
-    stepper_start_drive(s->st, &p.ua, &p.dua);
-    stepper_end_drive(s->st, &p.ub, &p.dub);
+    double err = d.kind == DRIVE_SINE ? s->sine_err * h2 * h2 : 0.0;
+    struct stepper_reach r;
+    stepper_rk4_reach(s->st, &r);
+    if (clearance_step(&s->clear, h, r.dx, r.v, r.ua, r.ub, r.dua, r.dub, err))
+        return 0;
+    struct events_piece p = {&s->lim, m, s->rest, &d, s->y0, s->y, t0, h, r.ua, r.dua, r.ub,
+                             r.dub, 0, err};
     if (!events_may_close(&p))
         return 0;
     memcpy(s->y, s->y0, (size_t)STEPPER_LEN(s->n) * sizeof *s->y);
@@ -414,6 +418,7 @@ enum sim_status sim_step(struct sim *s)
     int found = -1; /* what the bare step found on the state, or -1: look */
     int failed = bare_fits ? bare(s, m, t0, t1, &found) : advance(s, t0, t1);
     if (failed || (found < 0 ? !all_finite(s->y, len) : found & STEPPER_NONFINITE)) {
+        clearance_forget(&s->clear);
         memcpy(s->y, s->y0, (size_t)len * sizeof *s->y);
         s->contact = contact0;
         s->last_contacts = 0;
@@ -434,5 +439,9 @@ enum sim_status sim_step(struct sim *s)
             }
     }
     s->last_contacts += s->last_capped;
+    if (!bare_fits)
+        clearance_forget(&s->clear);
+    else if (!s->clear.valid && s->lim.on)
+        clearance_fill(&s->clear, &s->lim, s->y, model_end_position(m, t1));
     return SIM_OK;
 }

@@ -43,6 +43,7 @@ struct stepper {
     const struct rest *rest;  /* resting contacts held as constraints, or NULL */
     bool constrained;         /* some rest now: the step being taken projects its rates */
     double ddu_factor;        /* u'' = ddu_factor u on the piece being stepped */
+    double reach_x, reach_v;  /* the last stepper_rk4's largest |x_i| change and |v_i| */
 };
 
 double drive_ddu_factor(const struct drive *d)
@@ -346,30 +347,37 @@ static int rk4(struct stepper *st, const struct drive *d, double a, double b, do
     stage(st, tx, tv, u[2], du[2], f[2], kv, &dk, &wk, &pk);
     double h6 = h / 6.0;
     /* The new state, and on it as it is made: some value not finite (bad's sign bits),
-     * some |v_i| past the cap (over). */
-    const vec2 caps = {MODEL_VMAX, MODEL_VMAX};
+     * the largest |v_i| (vtop: past the cap?) and |x_i| change (xtop), for clearance.h. */
     vec2_bits bad = {0, 0};
-    vec2_mask over = {0, 0};
+    vec2 vtop = {0.0, 0.0}, xtop = {0.0, 0.0};
     for (i = 0; i + 1 < n; i += 2) {
-        vec2 xi = vec2_load(x + i) + h6 * (vec2_load(acc + i) + vec2_load(tv + i));
+        vec2 xo = vec2_load(x + i);
+        vec2 xi = xo + h6 * (vec2_load(acc + i) + vec2_load(tv + i));
         vec2 vi = vec2_load(v + i) + h6 * (vec2_load(acc + n + i) + vec2_load_halves(kv + i));
         vec2_store(x + i, xi);
         vec2_store(v + i, vi);
         bad |= vec2_nonfinite_bits(xi) | vec2_nonfinite_bits(vi);
-        over |= vec2_abs(vi) > caps;
+        vtop = vec2_max(vec2_abs(vi), vtop);
+        xtop = vec2_max(vec2_abs(xi - xo), xtop);
     }
-    uint64_t bad1 = bad[0] | bad[1], over1 = (uint64_t)(over[0] | over[1]);
+    uint64_t bad1 = bad[0] | bad[1];
+    double vmax = vtop[0] > vtop[1] ? vtop[0] : vtop[1];
+    double xmax = xtop[0] > xtop[1] ? xtop[0] : xtop[1];
     for (; i < n; i++) {
+        double xo = x[i];
         x[i] += h6 * (acc[i] + tv[i]);
         v[i] += h6 * (acc[n + i] + kv[i]);
         bad1 |= nonfinite_bit(x[i]) | nonfinite_bit(v[i]);
-        over1 |= fabs(v[i]) > MODEL_VMAX;
+        double av = fabs(v[i]), ax = fabs(x[i] - xo);
+        vmax = av > vmax ? av : vmax;
+        xmax = ax > xmax ? ax : xmax;
     }
+    st->reach_v = vmax, st->reach_x = xmax;
     y[2 * n] += h6 * (sd + dk);
     y[2 * n + 1] += h6 * (sw + wk);
     y[2 * n + 2] += h6 * (sp + pk);
     bad1 |= nonfinite_bit(y[2 * n]) | nonfinite_bit(y[2 * n + 1]) | nonfinite_bit(y[2 * n + 2]);
-    return (bad1 >> 63 ? STEPPER_NONFINITE : 0) | (over1 ? STEPPER_OVER_CAP : 0);
+    return (bad1 >> 63 ? STEPPER_NONFINITE : 0) | (vmax > MODEL_VMAX ? STEPPER_OVER_CAP : 0);
 }
 
 int stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, double *y)
@@ -379,6 +387,12 @@ int stepper_rk4(struct stepper *st, const struct drive *d, double a, double b, d
         st->ddu_factor = drive_ddu_factor(d);
     st->rot_before = st->rot; /* for stepper_undo_rk4 */
     return rk4(st, d, a, b, y);
+}
+
+void stepper_rk4_reach(const struct stepper *st, struct stepper_reach *r)
+{
+    *r = (struct stepper_reach){st->start_u, st->start_du, st->end_u, st->end_du, st->reach_x,
+                                st->reach_v};
 }
 
 void stepper_undo_rk4(struct stepper *st)

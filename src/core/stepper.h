@@ -96,6 +96,14 @@ enum {
     STEPPER_OVER_CAP = 2   /* some |v_i| > MODEL_VMAX (meant when all are finite) */
 };
 
+/* What the last stepper_rk4 did: the drive at its start and end, the largest change of an
+ * x_i and the largest |v_i| at its end (as stored; a NaN is passed by). */
+struct stepper_reach {
+    double ua, dua, ub, dub;
+    double dx, v;
+};
+void stepper_rk4_reach(const struct stepper *st, struct stepper_reach *r);
+
 /* Puts the sine drive's carried angle back as it was before the last stepper_rk4, so that
  * the step can be taken again another way with the same bits. */
 void stepper_undo_rk4(struct stepper *st);

@@ -54,6 +54,16 @@ static inline vec2 vec2_abs(vec2 x)
     return (vec2)((vec2_mask)x & magnitude);
 }
 
+/* a > b ? a : b a lane (b where either is a NaN), as MAXPD takes it. */
+static inline vec2 vec2_max(vec2 a, vec2 b)
+{
+#if defined(__x86_64__) && defined(__SSE2__)
+    return __builtin_ia32_maxpd(a, b);
+#else
+    return vec2_select(a > b, a, b);
+#endif
+}
+
 /* An infinity or a NaN has every exponent bit set, and only then does adding the
  * exponent's lowest bit to its exponent field carry into the sign bit: nonfinite_bit and
  * vec2_nonfinite_bits set the sign bit (bit 63) of what they give for such a value, and
