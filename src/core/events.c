@@ -250,6 +250,24 @@ bound_may_close(const struct events_piece *p, int k)
                      h * (p->dua - ya[2 * n - 1]), h * (p->dub - y[2 * n - 1]), p->drive_err);
 }
 
+/* bound_may_close for the pairs k and k + 1 at once (vec2.h: bound's operations a lane,
+ * the same bits): each lane all ones where its gap may close (never for a NaN, as
+ * there). (y loaded whole: in halves, as just stored, measured no faster.) */
+__attribute__((always_inline)) static inline vec2_mask pairs_may_close(const struct events_piece *p,
+                                                                        int k)
+{
+    const double *ya = p->ya, *y = p->y;
+    int n = p->lim->n;
+    double h = p->h, pair = p->lim->pair;
+    vec2 g0 = pair + vec2_load(ya + k) - vec2_load(ya + k - 1);
+    vec2 g1 = pair + vec2_load(y + k) - vec2_load(y + k - 1);
+    vec2 s0 = h * (vec2_load(ya + n + k) - vec2_load(ya + n + k - 1));
+    vec2 s1 = h * (vec2_load(y + n + k) - vec2_load(y + n + k - 1));
+    vec2 dg = g1 - g0, A = vec2_abs(s0 - dg), B = vec2_abs(s1 - dg);
+    vec2 lq = vec2_select(g0 < g1, g0, g1) - 0.25 * vec2_select(A > B, A, B);
+    return lq <= -EVENTS_TOUCH;
+}
+
 bool events_may_close(const struct events_piece *p)
 {
     const struct collision_limits *l = p->lim;
@@ -257,24 +275,15 @@ bool events_may_close(const struct events_piece *p)
     int n = l->n;
     double h = p->h, pair = l->pair;
     /* bound_may_close's gaps, with no branch: the least of may_close's left sides (an err
-     * of 0 subtracts nothing; a NaN never counts, as there), the wall's first. */
+     * of 0 subtracts nothing; a NaN never counts, as there), the wall's first; the pairs
+     * two at a time, the odd one alone. */
     double least = INFINITY, q = bound(l->wall + ya[0], l->wall + y[0], h * ya[n], h * y[n]);
     least = q < least ? q : least;
-    /* The pairs two at a time (vec2.h: bound's operations a lane, the same bits), each
-     * lane's q <= -EVENTS_TOUCH kept in hit (false for a NaN, as there), the odd one
-     * alone. (y loaded whole: in halves, as just stored, measured no faster.) */
     const vec2_mask none = {0, 0};
     vec2_mask hit = none;
     int k = 1;
-    for (; k + 1 < n; k += 2) {
-        vec2 g0 = pair + vec2_load(ya + k) - vec2_load(ya + k - 1);
-        vec2 g1 = pair + vec2_load(y + k) - vec2_load(y + k - 1);
-        vec2 s0 = h * (vec2_load(ya + n + k) - vec2_load(ya + n + k - 1));
-        vec2 s1 = h * (vec2_load(y + n + k) - vec2_load(y + n + k - 1));
-        vec2 dg = g1 - g0, A = vec2_abs(s0 - dg), B = vec2_abs(s1 - dg);
-        vec2 lq = vec2_select(g0 < g1, g0, g1) - 0.25 * vec2_select(A > B, A, B);
-        hit |= lq <= -EVENTS_TOUCH;
-    }
+    for (; k + 1 < n; k += 2)
+        hit |= pairs_may_close(p, k);
     for (; k < n; k++) {
         q = bound(pair + ya[k] - ya[k - 1], pair + y[k] - y[k - 1], h * (ya[n + k] - ya[n + k - 1]),
                   h * (y[n + k] - y[n + k - 1]));
@@ -289,21 +298,39 @@ bool events_may_close(const struct events_piece *p)
     return least <= -EVENTS_TOUCH || (hit[0] | hit[1]) != 0;
 }
 
+/* Constraint k of events_contact, whose bound says its gap may close: unless it rests,
+ * where along the piece it closes, kept in *first and *which when it is the earliest. */
+static void contact_at(const struct events_piece *p, int k, double *first, int *which,
+                       int *closing)
+{
+    if (p->rest->active && p->rest->on[k])
+        return;
+    double th = consider(p, k);
+    if (th < 0.0)
+        return;
+    ++*closing;
+    if (th < *first)
+        *first = th, *which = k;
+}
+
 double events_contact(const struct events_piece *p, int *which, int *closing)
 {
-    const bool *on = p->rest->active ? p->rest->on : NULL;
+    int n = p->lim->n, k = 1;
     double first = 2.0;
     *which = -1, *closing = 0;
-    for (int k = 0; k < p->lim->count; k++) {
-        if (!bound_may_close(p, k) || (on && on[k]))
-            continue;
-        double th = consider(p, k);
-        if (th < 0.0)
-            continue;
-        ++*closing;
-        if (th < first)
-            first = th, *which = k;
+    /* In order of k (the earliest's ties go to the first), the pairs two at a time. */
+    if (bound_may_close(p, 0))
+        contact_at(p, 0, &first, which, closing);
+    for (; k + 1 < n; k += 2) {
+        vec2_mask hit = pairs_may_close(p, k);
+        if (hit[0])
+            contact_at(p, k, &first, which, closing);
+        if (hit[1])
+            contact_at(p, k + 1, &first, which, closing);
     }
+    for (; k < p->lim->count; k++)
+        if (bound_may_close(p, k))
+            contact_at(p, k, &first, which, closing);
     return *which < 0 ? -1.0 : first;
 }
 
