@@ -304,7 +304,7 @@ bench: $(BIN) $(CORE_LIB) | $(BUILD)/.deps-build
 	@$(CC) -O2 -g -o $(BUILD)/bench/anchor_plain tests/bench/anchor_plain.c -lm
 	@$(CC) -O2 -g -o $(BUILD)/bench/anchor_gsl tests/bench/anchor_gsl.c \
 	    $$($(PKG_CONFIG) --cflags --libs gsl)
-	@echo "whole processes, N = 5, dt = 0.001, 3e6 steps, CPU time, medians of 5 alternated"
+	@echo "whole processes, N = 5, dt = 0.001, 3e6 steps, CPU time, medians of $${BENCH_ROUNDS:-5} alternated"
 	@echo "(goals: GSL's rk4 driver >= 4.5x springsim's time; the plain loop >= 1.0x with"
 	@echo "collisions on, >= 1.1x with them off)"
 	@echo

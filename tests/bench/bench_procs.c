@@ -2,7 +2,8 @@
  * ROUNDS times, the commands alternated, its output thrown away; the CPU time (user +
  * system, from wait4) of each is kept and the medians printed, each with its ratio to the
  * first command's (how many times longer it takes), alternated so that a busy machine
- * slows every side alike.
+ * slows every side alike. BENCH_ROUNDS in the environment takes more rounds (at most
+ * MAX_ROUNDS) where the machine's speed drifts.
  * Usage: bench_procs LABEL -- CMD ARGS... [-- LABEL -- CMD ARGS...]... */
 #include <fcntl.h>
 #include <stdio.h>
@@ -13,12 +14,13 @@
 #include <unistd.h>
 
 #define ROUNDS 5
+#define MAX_ROUNDS 51
 #define MAX_CMDS 8
 
 struct cmd {
     const char *label;
     char **argv;
-    double cpu[ROUNDS];
+    double cpu[MAX_ROUNDS];
 };
 
 static int compare(const void *a, const void *b)
@@ -66,7 +68,11 @@ int main(int argc, char **argv)
     }
     if (count == 0)
         return 2;
-    for (int r = 0; r < ROUNDS; r++)
+    const char *want = getenv("BENCH_ROUNDS");
+    int rounds = want ? atoi(want) : ROUNDS;
+    if (rounds < 1 || rounds > MAX_ROUNDS)
+        rounds = ROUNDS;
+    for (int r = 0; r < rounds; r++)
         for (int c = 0; c < count; c++)
             if ((cmds[c].cpu[r] = run(cmds[c].argv)) < 0.0) {
                 fprintf(stderr, "bench_procs: %s failed\n", cmds[c].label);
@@ -74,8 +80,8 @@ int main(int argc, char **argv)
             }
     double first = 0.0;
     for (int c = 0; c < count; c++) {
-        qsort(cmds[c].cpu, ROUNDS, sizeof *cmds[c].cpu, compare);
-        double med = cmds[c].cpu[ROUNDS / 2];
+        qsort(cmds[c].cpu, (size_t)rounds, sizeof *cmds[c].cpu, compare);
+        double med = cmds[c].cpu[rounds / 2];
         if (c == 0)
             first = med;
         printf("| %s | %.3f s | %.2fx |\n", cmds[c].label, med, first > 0.0 ? med / first : 0.0);
