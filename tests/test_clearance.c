@@ -46,6 +46,14 @@ static struct model *random_chain(uint64_t *rng, int most)
     return m;
 }
 
+/* How far a sine drive strays from its cubic Hermite over a step h, as sim_step takes it:
+ * the largest |u''''| h^4 / 384. */
+static double drive_straying(const struct model *m, double h)
+{
+    double w = 2.0 * M_PI * m->motor.frequency;
+    return m->motor.amplitude * w * w * w * w / 384.0 * h * h * h * h;
+}
+
 /* Displacements that leave every gap between about -0.02 m and a few tenths, and
  * velocities up to 4 m/s: many steps near a contact, many far from one. */
 static void random_state(uint64_t *rng, const struct model *m, double *x, double *v)
@@ -185,8 +193,7 @@ static void clear_means_no_contact(void **state)
         assert_non_null(r);
         double y[STEPPER_LEN(9)] = {0}, ya[STEPPER_LEN(9)];
         random_state(&rng, m, y, y + n);
-        double w = 2.0 * M_PI * m->motor.frequency, t = test_uniform(&rng, 0.0, 10.0);
-        double sine_err = m->motor.amplitude * w * w * w * w / 384.0;
+        double t = test_uniform(&rng, 0.0, 10.0);
         struct clearance cl;
         clearance_fill(&cl, &l, y, model_end_position(m, t));
         for (int k = 0; k < 400; k++, t += dt) {
@@ -197,7 +204,7 @@ static void clear_means_no_contact(void **state)
                 break;
             struct stepper_reach re;
             stepper_rk4_reach(st, &re);
-            double err = d.kind == DRIVE_SINE ? sine_err * dt * dt * dt * dt : 0.0;
+            double err = d.kind == DRIVE_SINE ? drive_straying(m, dt) : 0.0;
             bool ok = clearance_step(&cl, dt, re.dx, re.v, re.ua, re.ub, re.dua, re.dub, err);
             struct events_piece p = {&l, m, r, &d, ya, y, t, dt, re.ua, re.dua, re.ub, re.dub,
                                      0.0, err};
@@ -270,7 +277,6 @@ static void default_chain_looks_seldom(void **state)
     (void)state;
     struct model *m = model_new(5);
     assert_non_null(m);
-    int n = m->n, len = STEPPER_LEN(n);
     double dt = 0.001, y[STEPPER_LEN(5)] = {0};
     struct stepper *st = stepper_new(m);
     assert_non_null(st);
@@ -281,18 +287,17 @@ static void default_chain_looks_seldom(void **state)
     int looks = 0, steps = 20000;
     for (int k = 0; k < steps; k++) {
         struct drive d;
-        double t = k * dt, w = 2.0 * M_PI * m->motor.frequency;
+        double t = k * dt;
         drive_at(&d, m, t + 0.5 * dt);
         assert_int_equal(stepper_rk4(st, &d, t, t + dt, y) & STEPPER_NONFINITE, 0);
         struct stepper_reach re;
         stepper_rk4_reach(st, &re);
-        double err = m->motor.amplitude * w * w * w * w / 384.0 * dt * dt * dt * dt;
+        double err = drive_straying(m, dt);
         if (!clearance_step(&cl, dt, re.dx, re.v, re.ua, re.ub, re.dua, re.dub, err)) {
             looks++;
             clearance_fill(&cl, &l, y, re.ub);
         }
     }
-    (void)len;
     printf("  the default chain, %d steps of 1 ms: %d looks\n", steps, looks);
     assert_true(looks * 50 < steps);
     stepper_free(st);
