@@ -2,6 +2,8 @@
  * each right end, energies, geometry, and the parameter copy. */
 #include "testutil.h"
 
+#include <string.h>
+
 #include "core/model.h"
 
 static struct model *three(enum boundary b)
@@ -33,6 +35,48 @@ static void equation_of_motion(void **state)
                     (b == BOUNDARY_FREE ? 0.0 : 0.5 * 11.0 * 0.16);
         assert_close(model_potential(m, x, u), pe, 1e-15);
         assert_close(model_kinetic(m, v), 0.5 * (1.0 + 2.0 + 0.125), 1e-15);
+        model_free(m);
+    }
+}
+
+/* model_accel_span gives each mass of its span the same bits as model_rates, on random
+ * chains of every kind (cubic springs, spring dampers, each end, zeros whose sign a stray
+ * + 0.0 would change), and leaves the values outside it alone. */
+static void span_is_rates(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x5eedf00dULL;
+    for (int trial = 0; trial < 400; trial++) {
+        int n = 1 + (int)test_uniform(&seed, 0.0, 12.0);
+        struct model *m = model_new(n);
+        m->boundary = (enum boundary)(trial % BOUNDARY_COUNT);
+        bool cubic = trial % 3 == 1, damped = trial % 4 >= 2;
+        for (int j = 0; j <= n; j++) {
+            m->k[j] = test_uniform(&seed, 0.0, 60.0);
+            m->k3[j] = cubic ? test_uniform(&seed, -20.0, 200.0) : 0.0;
+            m->cs[j] = damped ? test_uniform(&seed, 0.0, 2.0) : 0.0;
+        }
+        model_sync(m);
+        double x[12], v[12], full[12], span[12];
+        for (int i = 0; i < n; i++) {
+            m->m[i] = test_uniform(&seed, 0.1, 3.0);
+            m->c[i] = trial % 5 == 0 ? 0.0 : test_uniform(&seed, 0.0, 1.5);
+            x[i] = trial % 7 == 0 ? (i % 2 ? -0.0 : 0.0) : test_uniform(&seed, -0.5, 0.5);
+            v[i] = trial % 7 == 0 ? (i % 3 ? -0.0 : 0.0) : test_uniform(&seed, -3.0, 3.0);
+        }
+        double u = trial % 7 == 0 ? -0.0 : test_uniform(&seed, -1.0, 1.0);
+        double du = test_uniform(&seed, -2.0, 2.0);
+        model_rates(m, NULL, x, v, u, du, full, NULL, NULL);
+        int lo = (int)test_uniform(&seed, 0.0, n), hi = lo + (int)test_uniform(&seed, 0.0, n - lo);
+        for (int i = 0; i < n; i++)
+            span[i] = 12345.0;
+        model_accel_span(m, x, v, u, du, lo, hi, span);
+        for (int i = 0; i < n; i++) {
+            double want = i >= lo && i <= hi ? full[i] : 12345.0;
+            if (memcmp(&span[i], &want, sizeof want) != 0)
+                fail_msg("trial %d, n %d, span %d..%d: a[%d] = %.17g, model_rates %.17g", trial,
+                         n, lo, hi, i, span[i], want);
+        }
         model_free(m);
     }
 }
@@ -80,6 +124,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(equation_of_motion),
+        cmocka_unit_test(span_is_rates),
         cmocka_unit_test(geometry),
         cmocka_unit_test(defaults_and_copy),
     };

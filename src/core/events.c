@@ -342,10 +342,13 @@ static double weakest_at(const struct events_piece *p, double th, double *work, 
     double u, du, t = p->a + th * p->h;
     drive_eval(p->d, t, &u, &du);
     const double *y = th == 0.0 ? p->ya : th == 1.0 ? p->y : work; /* the ends as they are */
-    if (y == work)
-        for (int i = 0; i < n; i++) {
-            work[i] = hermite(p, i, th);
-            work[n + i] = hermite_v(p, i, th);
+    if (y == work) /* the forces read the clusters' masses and their neighbours */
+        for (int c = 0; c < p->rest->clusters; c++) {
+            int hi = p->rest->last[c] + 1 < n ? p->rest->last[c] + 1 : n - 1;
+            for (int i = p->rest->first[c] > 0 ? p->rest->first[c] - 1 : 0; i <= hi; i++) {
+                work[i] = hermite(p, i, th);
+                work[n + i] = hermite_v(p, i, th);
+            }
         }
     *which = rest_forces(p->rest, p->m, y, y + n, u, du, p->ddu_factor * u, drive_force(p->d, t),
                          force);

@@ -245,6 +245,34 @@ void model_rates_cubic(const struct model *m, const double *inv_m, const double 
         *work = right * du;
 }
 
+void model_accel_span(const struct model *m, const double *x, const double *v, double u,
+                      double du, int lo, int hi, double *a)
+{
+    int n = m->n;
+    bool damped = m->spring_damped, free_end = m->boundary == BOUNDARY_FREE;
+    const double *cs = m->cs;
+    /* Each value as model_rates makes it: its two springs' tensions (a spring damper's
+     * term only where there is one, so no zero changes sign) less its own damper's. */
+    double left = lo == 0 ? model_spring_force(m, 0, x[0])
+                          : model_spring_force(m, lo, x[lo] - x[lo - 1]);
+    if (damped)
+        left += cs[lo] * (lo == 0 ? v[0] : v[lo] - v[lo - 1]);
+    for (int i = lo; i <= hi; i++) {
+        double right = 0.0;
+        if (i < n - 1) {
+            right = model_spring_force(m, i + 1, x[i + 1] - x[i]);
+            if (damped)
+                right += cs[i + 1] * (v[i + 1] - v[i]);
+        } else if (!free_end) {
+            right = model_spring_force(m, n, u - x[i]);
+            if (damped)
+                right += cs[n] * (du - v[i]);
+        }
+        a[i] = (right - left - m->c[i] * v[i]) / m->m[i];
+        left = right;
+    }
+}
+
 void model_accel(const struct model *m, const double *x, const double *v, double u, double *a)
 {
     model_rates(m, NULL, x, v, u, 0.0, a, NULL, NULL);

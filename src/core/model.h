@@ -148,6 +148,11 @@ model_rates(const struct model *m, const double *inv_m, const double *x, const d
         *work = right * du;
 }
 
+/* model_rates' accelerations of masses lo..hi only, each the same bits (inv_m NULL); the
+ * other values of a are left as they were. */
+void model_accel_span(const struct model *m, const double *x, const double *v, double u,
+                      double du, int lo, int hi, double *a);
+
 /* Accelerations a[i] from the equation of motion at displacements x, velocities v and
  * right-end position u (ignored for BOUNDARY_FREE). */
 void model_accel(const struct model *m, const double *x, const double *v, double u, double *a);

@@ -96,9 +96,11 @@ void rest_set(struct rest *r, int k, bool on)
     int n = r->n;
     r->clusters = 0;
     for (int f = 0, l; f < n && r->active; f = l + 1) {
-        if (f > 0)
-            while (f + 1 < n && !r->on[f + 1])
-                f++;
+        if (f > 0 && f + 1 < n) {
+            /* to the mass before the next resting contact between two masses, or the last */
+            const bool *next = memchr(r->on + f + 1, true, (size_t)(n - 1 - f));
+            f = next ? (int)(next - r->on) - 1 : n - 1;
+        }
         int held = rest_cluster(r, n, f, &f, &l);
         if (f == l && !held)
             continue;
@@ -144,8 +146,9 @@ int rest_forces(const struct rest *r, const struct model *m, const double *x, co
     int n = m->n, weakest = -1;
     if (!r->active)
         return -1;
-    double *a = r->acc;
-    model_rates(m, NULL, x, v, u, du, a, NULL, NULL);
+    double *a = r->acc; /* only the clusters' masses are read */
+    for (int c = 0; c < r->clusters; c++)
+        model_accel_span(m, x, v, u, du, r->first[c], r->last[c], a);
     if (fin != 0.0) /* the force input presses or pulls as the springs do */
         a[m->force_on] += fin / m->m[m->force_on];
     for (int c = 0; c < r->clusters; c++) {
