@@ -163,6 +163,7 @@ start beat80 80 24 -- -p beating
 start win80 80 24 -- --window 2
 start abs80 80 24
 start abs120 120 40
+start fit80 80 24
 sessions="res80 big huge small acc acc80 acc120 acc60 ten ten80 light light80"
 for s in res80 big huge small acc acc80 acc120 acc60; do
     if up $s; then keys Space; fi
@@ -400,6 +401,19 @@ S=win80
 keys 1
 if wait_for '0 all plots' 3 && poll 3 x_window 2; then pass; else
     fail "80x24 --window 2: the time axis should be a window of 2 s, reads '$(axis_says)'"
+fi
+
+# ---- the first motion fits the axis at once ----
+# The default chain starts paused at rest (x = 0 on a -1..1 placeholder axis); in its
+# first second under the 0.1 m drive the masses move less than 0.2 m, so the displacement
+# axis reads at most 0.5 then. It used to wait 30 refreshes (3 s or more) to shrink.
+ylabels() { plot_awk 'END { if (plot(title)) for (r = axtop; r < axr; r++) { s = label(r); if (s != "") print s } }' -v "title=$1"; }
+ytop_below() { top=$(ylabels "$t1" | head -n 1); [ -n "$top" ] && awk -v t="$top" 'BEGIN { exit !(t + 0 < 0.5) }'; }
+S=fit80
+t1=$(title 1)
+keys ' '
+if wait_t 0.3 && poll 0.5 ytop_below; then pass; else
+    fail "80x24 default, running: the displacement axis should fit the first motion (top label below 0.5) by t = 1 s, reads '$(ylabels "$t1" | tr '\n' ' ')'"
 fi
 
 summary
