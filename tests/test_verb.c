@@ -200,7 +200,8 @@ static void recorded_verbs_replay(void **state)
     } keys[] = {
         {ACT_RUN, {0}},    {ACT_STEP, {0}},  {ACT_STEP, {0}},   {ACT_BACK, {0}},
         {ACT_FASTER, {0}}, {ACT_SLOWER, {0}}, {ACT_NEAREST, {0}}, {ACT_MODE, {.index = 2}},
-        {ACT_RESET, {0}},  {ACT_SWEEP, {0}},  {ACT_SWEEP, {0}},
+        {ACT_RESET, {0}},  {ACT_SWEEP, {0}},  {ACT_SWEEP, {0}},   {ACT_GHOST, {0}},
+        {ACT_GHOST, {0}},
     };
     char line[64], k[16384], c[16384];
     for (size_t i = 0; i < sizeof keys / sizeof *keys; i++) {
@@ -261,7 +262,7 @@ static void every_command_row_is_whole(void **state)
         if (row->flags & COMMAND_BY_KEY)
             assert_true(row->name && row->action != ACT_NONE && (row->flags & COMMAND_RECORDED));
     }
-    assert_int_equal(named, 27);
+    assert_int_equal(named, 28);
     assert_null(command_find("bogus", 5));
     assert_false(command_find("pause", 5)->flags & COMMAND_RECORDED);
     assert_true(command_find("start", 5)->flags & COMMAND_RECORDED);

@@ -170,6 +170,8 @@ S=rec
 if up rec; then
     keys Space ]
     wait_t 1
+    keys g '<'
+    wait_for 'ghost made' 3
     keys m
     wait_for 'Modes' 3
     keys Down Enter
@@ -198,8 +200,8 @@ if up rec; then
     poll 5 ended
     f=$tmp/rec.lesson
     missing=
-    for want in '^start$' '^faster$' '^view modes$' '^mode 2$' '^step$' '^back$' \
-        '^random [0-9]+$' '^place 1 -?[0-9.e-]+$' '^element c 1 0.7$' '^set graphics braille$' \
+    for want in '^start$' '^faster$' '^ghost$' '^set window 5$' '^view modes$' '^mode 2$' \
+        '^step$' '^back$' '^random [0-9]+$' '^place 1 -?[0-9.e-]+$' '^element c 1 0.7$' '^set graphics braille$' \
         '^expect t=0x'; do
         grep -qE "$want" "$f" 2>/dev/null || missing="$missing $want"
     done

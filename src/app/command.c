@@ -419,6 +419,11 @@ static enum command_reply do_sweep(struct command_call *c)
     return verb(c->app, ACT_SWEEP, NULL, c->answer, c->len);
 }
 
+static enum command_reply do_ghost(struct command_call *c)
+{
+    return verb(c->app, ACT_GHOST, NULL, c->answer, c->len);
+}
+
 /* faster or slower: the speed now, and whether it is at its end. */
 static enum command_reply speed_to(struct command_call *c, bool faster)
 {
@@ -550,6 +555,8 @@ const struct command commands[] = {
      .action = ACT_NEAREST, .fn = nearest, .flags = R | K},
     {"sweep", "", "start / stop a sine-sweep experiment", do_sweep, .action = ACT_SWEEP,
      .act = app_toggle_sweep, .flags = R | K},
+    {"ghost", "", "a frozen copy of the chain run beside it, its settings kept (again: drop it)",
+     do_ghost, .action = ACT_GHOST, .act = app_toggle_ghost, .flags = R | K},
     {"faster", "", "playback faster", do_faster, .action = ACT_FASTER, .fn = faster,
      .flags = R | K},
     {"slower", "", "playback slower", do_slower, .action = ACT_SLOWER, .fn = slower,
@@ -574,7 +581,6 @@ const struct command commands[] = {
      * (Enter) or another command's words (set window, element cs). */
     {.action = ACT_NARROWER, .go = app_window_step, .way = -1},
     {.action = ACT_WIDER, .go = app_window_step, .way = 1},
-    {.action = ACT_GHOST, .act = app_toggle_ghost},
     {.action = ACT_CURSOR_STEP, .go = scope_move},
     {.action = ACT_CURSOR_JUMP, .go = scope_jump},
     {.action = ACT_CURSOR_PAGE, .go = scope_page},

@@ -73,13 +73,13 @@ unsigned ghost_drop(struct app *app, const char *why)
 unsigned app_toggle_ghost(struct app *app)
 {
     if (app->ghost)
-        return ghost_drop(app, "(g makes a new one)");
+        return ghost_drop(app, "(again makes a new one)");
     app->ghost = ghost_new(app);
     if (!app->ghost)
         return app_say(app, SAID_ERROR, "out of memory: no ghost");
     return APP_CHANGED_GHOST |
            app_say(app, SAID_NOTE, "ghost made at t = %.2f s: it keeps these settings; change the "
-                   "chain's and watch the two part (g drops it)", sim_time(app->sim));
+                   "chain's and watch the two part (again drops it)", sim_time(app->sim));
 }
 
 unsigned ghost_follow(struct app *app)

@@ -189,6 +189,7 @@ void record_mark(struct record *r, const struct app *app)
     k->frequency = m->motor.frequency;
     k->speed = app->speed;
     k->pace = app_clock_pace(app);
+    k->window = app_window(app);
     k->running = app->running;
     k->force = app->cfg.force;
     k->force_on = app->cfg.force_on;
@@ -321,6 +322,10 @@ void record_changes(struct record *r, const struct app *app, const char *cmd)
         if (app->speed != k->speed) {
             config_format_exact(app->speed, num, sizeof num);
             put(r, "set speed %s", num);
+        }
+        if (app_window(app) != k->window) {
+            config_format_exact(app_window(app), num, sizeof num);
+            put(r, "set window %s", num);
         }
         if (app->cfg.low_bandwidth != k->low_bandwidth)
             put(r, "set bandwidth %s", app->cfg.low_bandwidth ? "low" : "normal");

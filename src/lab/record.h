@@ -33,6 +33,7 @@ struct record_mark {
     int n;                               /* masses */
     double dt, amplitude, frequency, speed;
     double pace;                         /* simulated seconds per wall second then */
+    double window;                       /* the time plots' window (s) */
     bool running;                        /* whether the chain ran then */
     double force;                        /* the force input's amplitude (N) */
     int force_on;                        /* and its mass, 1-based as the settings hold it */
