@@ -515,5 +515,13 @@ if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/heavy.lesson:7: run 10: the less
     [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ]; then pass; else
     fail "a lesson past the mass-steps bound: expected exit 2 at FILE:7; exit $rc after $took s: $(show "$err")"
 fi
+# The ghost's steps count too: a ghost made on that heavy drive, the chain then driven
+# lightly (a sine at 1 Hz), passes the bound in the ghost alone (it was not counted).
+printf 'title Ghost\npreset resonance\nset masses 10\nset dt 0.001\nset wave square\nset frequency 1000000\nghost\nset wave sine\nset frequency 1\nrun 2\n' >"$tmp/ghost.lesson"
+run --plain --lesson "$tmp/ghost.lesson"
+if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/ghost.lesson:10: run 2: the lesson's runs pass here the 3.6e+07 mass-steps" "$err" &&
+    [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ]; then pass; else
+    fail "a ghost's steps past the mass-steps bound: expected exit 2 at FILE:10; exit $rc: $(show "$err")"
+fi
 
 summary

@@ -58,6 +58,15 @@ static void autoscale(void **state)
     assert_true(f.set && f.hi - f.lo >= 1.0);
     plot_scale_update(&f, 0.0, 0.08, 4, 5);
     assert_true(f.hi - f.lo < 0.2 && f.hi >= 0.08 && f.lo <= 0.0);
+    /* A scale forgotten (set cleared, as a chart placed anew does after fitting its axes
+     * to a placeholder -1..1) and then given flat data takes the first real data at once
+     * too: the placeholder was no data's range. */
+    struct scale p = {0};
+    plot_scale_update(&p, -1.0, 1.0, 4, 5);
+    p.set = false;
+    plot_scale_update(&p, 0.0, 0.0, 4, 5);
+    plot_scale_update(&p, -0.02, 0.05, 4, 5);
+    assert_true(p.hi - p.lo < 0.2 && p.hi >= 0.05 && p.lo <= -0.02);
     /* Flat data keeps the scale. */
     double keep = s.hi - s.lo;
     plot_scale_update(&s, 0.0, 0.0, 4, 5);

@@ -444,14 +444,7 @@ unsigned app_step(struct app *app)
                     sim_time(app->sim));
         return 0;
     }
-    /* What the step cost: its masses, again for each sub-step at the drive's breakpoints
-     * and each contact, and the drive's half-cycles in it (the contact events follow the
-     * motor's gap through each): the steppers' and the events' work grows with them. */
-    const struct model *done = sim_model(app->sim);
-    double t1 = sim_time(app->sim), t0 = t1 - sim_dt(app->sim);
-    app->step_work = done->n * (1.0 + motor_breakpoints(&done->motor, t0, t1, NULL, 0) +
-                                sim_last_contacts(app->sim)) +
-                     2.0 * done->motor.frequency * (t1 - t0);
+    app->step_work = sim_last_work(app->sim);
     app->work += app->step_work;
     trail_tick(app->trail, &app->since_sample, app->sample_every, app->sim);
     trail_tick(app->coarse, &app->since_coarse, app->coarse_every, app->sim);

@@ -555,7 +555,8 @@ const struct command commands[] = {
      .action = ACT_NEAREST, .fn = nearest, .flags = R | K},
     {"sweep", "", "start / stop a sine-sweep experiment", do_sweep, .action = ACT_SWEEP,
      .act = app_toggle_sweep, .flags = R | K},
-    {"ghost", "", "a frozen copy of the chain run beside it, its settings kept (again: drop it)",
+    {"ghost", "", "a frozen copy run beside the chain, its settings kept; the interactive "
+     "program shows it (again: drop it)",
      do_ghost, .action = ACT_GHOST, .act = app_toggle_ghost, .flags = R | K},
     {"faster", "", "playback faster", do_faster, .action = ACT_FASTER, .fn = faster,
      .flags = R | K},

@@ -98,6 +98,7 @@ unsigned ghost_follow(struct app *app)
                      g->cfg.dt);
             return ghost_drop(app, why);
         }
+        app->work += sim_last_work(g->sim); /* a lesson's compute counts the ghost's too */
         trail_tick(g->trail, &g->since_sample, g->sample_every, g->sim);
         trail_tick(g->coarse, &g->since_coarse, g->coarse_every, g->sim);
     }

@@ -39,6 +39,8 @@ void plot_scale_update(struct scale *s, double dmin, double dmax, int max_ticks,
     }
     if (!flat)
         s->fitted = true;
+    else if (!s->set)
+        s->fitted = false; /* a range anew (set cleared) from flat data: a placeholder */
     if (!s->set || dmin < s->lo || dmax > s->hi) {
         /* Grow at once, to the union so nothing shown before falls off. */
         if (s->set) {

@@ -251,8 +251,9 @@ void model_accel_span(const struct model *m, const double *x, const double *v, d
     int n = m->n;
     bool damped = m->spring_damped, free_end = m->boundary == BOUNDARY_FREE;
     const double *cs = m->cs;
-    /* Each value as model_rates makes it: its two springs' tensions (a spring damper's
-     * term only where there is one, so no zero changes sign) less its own damper's. */
+    /* Each value as model_rates makes it: its two springs' tensions (with the spring
+     * dampers' terms whenever the chain has any, as model_rates' general path does) less
+     * its own damper's. */
     double left = lo == 0 ? model_spring_force(m, 0, x[0])
                           : model_spring_force(m, lo, x[lo] - x[lo - 1]);
     if (damped)
@@ -268,7 +269,8 @@ void model_accel_span(const struct model *m, const double *x, const double *v, d
             if (damped)
                 right += cs[n] * (du - v[i]);
         }
-        a[i] = (right - left - m->c[i] * v[i]) / m->m[i];
+        double fd = m->c[i] * v[i]; /* rounded by itself, as there (no fused multiply-add) */
+        a[i] = (right - left - fd) / m->m[i];
         left = right;
     }
 }

@@ -60,12 +60,10 @@ bool chart_place(struct chart *c, struct rect frame, int header_rows)
             canvas_keep_strokes(c->canvas);
     }
     c->drawn = false;
-    /* Axes to draw before any data; that range is no data's, so the first real data fits
-     * at once rather than after the wait a shrink takes. */
     chart_fit_y(c, -1.0, 1.0);
-    c->ys.set = c->ys.fitted = false;
+    c->ys.set = false; /* the first real data fits at once */
     chart_fit_x(c, -1.0, 1.0);
-    c->xs.set = c->xs.fitted = false;
+    c->xs.set = false;
     return c->canvas != NULL;
 }
 
