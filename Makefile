@@ -24,8 +24,10 @@ BUILD ?= build
 BIN ?= springsim
 
 CFLAGS ?= -O2 -g
-WARN = -std=c11 -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 \
-       -Wwrite-strings -Wpointer-arith
+# No fused multiply-add with any compiler (gcc's -std=c11 already has none; clang fuses
+# by default where the machine has it): every result the same bits everywhere.
+WARN = -std=c11 -ffp-contract=off -Wall -Wextra -Wshadow -Wstrict-prototypes \
+       -Wmissing-prototypes -Wformat=2 -Wwrite-strings -Wpointer-arith
 # Make's text as one word of the shell (in single quotes, each ' as '\''), and as the
 # inside of a C string (\ and " escaped): a PREFIX or DATADIR with quotes or backslashes
 # is compiled in as it is.
