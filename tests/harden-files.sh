@@ -239,6 +239,26 @@ if [ -L "$tmp/o18/hop1" ] && [ -L "$tmp/o18/hop2" ] && grep -q '^mode,' "$tmp/o1
     fail "-o through two links to a missing file: expected end.csv written; found: $(ls -l "$tmp/o18" | tr '\n' '|')"
 fi
 
+# ---- A replaced file keeps its owner and group (root writing over a user's file) ----
+if [ "$(id -u)" = 0 ]; then
+    mkdir -p "$tmp/own"
+    echo old >"$tmp/own/theirs.csv"
+    chown 4242:4343 "$tmp/own/theirs.csv"
+    chmod 640 "$tmp/own/theirs.csv"
+    one_line_ok --headless --duration 0.1 -o "$tmp/own/theirs.csv"
+    got=$(stat -c '%u:%g %a' "$tmp/own/theirs.csv")
+    if [ "$got" = "4242:4343 640" ] && grep -q '^t,' "$tmp/own/theirs.csv"; then pass; else
+        fail "-o as root over a file of 4242:4343, mode 640: expected it kept, got $got"
+    fi
+    printf 'quit\n' >"$tmp/own/quit"
+    echo old >"$tmp/own/theirs.lesson"
+    chown 4242:4343 "$tmp/own/theirs.lesson"
+    "$SPRINGSIM" --plain --record "$tmp/own/theirs.lesson" <"$tmp/own/quit" >/dev/null 2>&1
+    got=$(stat -c '%u:%g' "$tmp/own/theirs.lesson")
+    [ "$got" = "4242:4343" ] && pass ||
+        fail "--record as root over a file of 4242:4343: the owner became $got"
+fi
+
 # ---- 15 and 18 in the interactive program: save as x.ini, two exports at once ----
 if [ -n "$have_tmux" ]; then
     S=save

@@ -83,6 +83,16 @@ static char *link_target(const char *path)
     return NULL;
 }
 
+/* Gives the file being written the owner and group of the one it replaces, where the
+ * user may (root always; others their own groups: EPERM leaves it theirs, as a plain
+ * creat() would), then its mode, which a change of owner may have cleared bits of. */
+static void keep_owner(int fd, const struct output *o, mode_t mode)
+{
+    if (o->owner != (uid_t)-1 && fchown(fd, o->owner, o->group) != 0)
+        (void)(fchown(fd, (uid_t)-1, o->group) == 0);
+    fchmod(fd, mode);
+}
+
 /* An unnamed file in path's directory (Linux O_TMPFILE), or -1. */
 static int open_unnamed(const char *path, mode_t mode)
 {
@@ -120,10 +130,13 @@ int output_open(struct output *o, const char *path)
         o->fp = fopen(path, "w");
         return o->fp ? 0 : errno;
     }
-    /* The new file gets the old one's mode, or what a plain creat() would give. */
+    /* The new file gets the old one's mode, owner and group (root writing over a user's
+     * file leaves it theirs), or what a plain creat() would give. */
     mode_t mask = umask(0);
     umask(mask);
     mode_t mode = exists ? st.st_mode & 07777 : 0666 & ~mask;
+    o->owner = exists ? st.st_uid : (uid_t)-1;
+    o->group = exists ? st.st_gid : (gid_t)-1;
     /* Through a symbolic link: replace (or create) the file it points to, not the link. */
     o->path = link_target(path);
     if (!o->path)
@@ -146,7 +159,7 @@ int output_open(struct output *o, const char *path)
     int fd = open_unnamed(path, mode);
     if (fd >= 0) {
         o->unnamed = true;
-        fchmod(fd, mode);
+        keep_owner(fd, o, mode);
     } else if (errno == ENOENT || errno == ENOTDIR || errno == EACCES || errno == EROFS) {
         int e = errno;
         forget(o);
@@ -166,7 +179,7 @@ int output_open(struct output *o, const char *path)
             forget(o);
             return e;
         }
-        fchmod(fd, mode);
+        keep_owner(fd, o, mode);
     }
     o->fp = fdopen(fd, "w");
     if (!o->fp) {

@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 #include <stdio.h>
+#include <sys/types.h>
 
 #include "sim.h"
 
@@ -13,6 +14,8 @@ struct output {
     char *tmp;     /* temporary name to rename from, or NULL when writing in place */
     char *path;    /* final path, or NULL for standard output */
     bool unnamed;  /* the file has no name until it is complete (O_TMPFILE) */
+    uid_t owner;   /* the replaced file's owner and group, or -1: a new file */
+    gid_t group;
 };
 
 /* Opens path for writing (NULL or "-": standard output). A regular file or a new one is
