@@ -13,6 +13,13 @@ mkdir -p "$tmp/exp"
 start_in "$tmp/exp" export 120 40
 start save 120 40 "XDG_CONFIG_HOME=$tmp/xdg-save" -- -p 3-mass-chain
 start edit 120 40 "XDG_CONFIG_HOME=$tmp/xdg-edit" -- -p 3-mass-chain
+# A path too long for the status line: the reason it failed is still said (the line cut
+# it off after the path). A user directory 300 bytes deep whose springsim is a file, and
+# X with a name of 252 bytes (253 with .svg: too long).
+longdir=$tmp/$(printf '%0200d' 0)/$(printf '%0100d' 0)
+mkdir -p "$longdir"
+: >"$longdir/springsim"
+start_in "$tmp/exp" long 120 40 "XDG_CONFIG_HOME=$longdir"
 if up export; then keys Space; fi
 "$SPRINGSIM" -p 3-mass-chain --modes >"$tmp/modes.orig" 2>&1
 
@@ -222,6 +229,24 @@ else
     fail "export: expected it to run to t = 1 s; screen: $(brief)"
 fi
 
-all_alive export save edit
+# ---- a long path in a message keeps the reason ----
+if up long; then
+    keys s
+    wait_for 'save preset as' 3
+    text longpath
+    keys Enter
+    if wait_for 'Not a directory' 3; then pass; else
+        fail "save under a 300-byte XDG_CONFIG_HOME whose springsim is a file: expected the reason 'Not a directory' said; screen: $(brief "$scr" 'save')"
+    fi
+    keys X
+    wait_for 'figure name' 3
+    text "$(printf '%0252d' 0)"
+    keys Enter
+    if wait_for 'File name too long' 5; then pass; else
+        fail "X with a name of 252 bytes: expected the reason 'File name too long' said; screen: $(brief "$scr" 'figure')"
+    fi
+fi
+
+all_alive export save edit long
 
 summary

@@ -315,6 +315,10 @@ void app_control_value(const struct app *app, enum control ctl, char *buf, size_
 unsigned app_say(struct app *app, enum app_said said, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
+/* path as a message names it: whole when short, else its start and its end around "..."
+ * (whole characters), so that the reason said after it fits the status line. */
+const char *app_path_shown(const char *path, char *buf, size_t len);
+
 /* What the front end calls action a (app->name_of), or "" for none. */
 const char *app_key(const struct app *app, int a);
 

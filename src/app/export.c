@@ -167,8 +167,10 @@ unsigned app_export_sweep(struct app *app, const char *dir, char *path, size_t l
         e = output_close(&o, true);
     }
     free(amp);
+    char shown[128];
     if (e)
-        return app_say(app, SAID_ERROR, "export: %s: %s", path, strerror(e));
+        return app_say(app, SAID_ERROR, "export: %s: %s",
+                       app_path_shown(path, shown, sizeof shown), strerror(e));
     return app_say(app, SAID_NOTE, "exported the sweep's %d point%s beside the theory to %s", rows,
                    rows == 1 ? "" : "s", path);
 }

@@ -145,7 +145,10 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
         return SAVE_EXISTS;
     }
     if (make_dirs(dir) != 0) {
-        app_say(app, SAID_ERROR, "save: %s: %s", dir, strerror(errno));
+        int e = errno;
+        char shown[128];
+        app_say(app, SAID_ERROR, "save: %s: %s", app_path_shown(dir, shown, sizeof shown),
+                strerror(e));
         return SAVE_FAILED;
     }
     /* The set-up as it stands: every element's values, the initial conditions, and the
@@ -176,7 +179,9 @@ enum app_save app_save(struct app *app, const char *name, bool overwrite)
         return SAVE_EXISTS;
     }
     if (e) {
-        app_say(app, SAID_ERROR, "save: %s: %s", path, strerror(e));
+        char shown[128];
+        app_say(app, SAID_ERROR, "save: %s: %s", app_path_shown(path, shown, sizeof shown),
+                strerror(e));
         return SAVE_FAILED;
     }
     snprintf(app->preset, sizeof app->preset, "%s", name);
@@ -215,7 +220,9 @@ unsigned app_export(struct app *app, const char *dir, char *path, size_t len)
         e = e ? e : closed;
     }
     if (e) {
-        app_say(app, SAID_ERROR, "export: %s: %s", path, strerror(e));
+        char shown[128];
+        app_say(app, SAID_ERROR, "export: %s: %s", app_path_shown(path, shown, sizeof shown),
+                strerror(e));
         return 0;
     }
     char what[120];

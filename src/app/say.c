@@ -22,6 +22,29 @@ unsigned app_say(struct app *app, enum app_said said, const char *fmt, ...)
     return APP_CHANGED_MESSAGE;
 }
 
+/* The bytes of a path a message shows at most: the status line holds the reason too. */
+#define PATH_SHOWN 80
+
+/* n, moved back to the start of the UTF-8 character byte n is in. */
+static size_t char_start(const char *s, size_t n)
+{
+    while (n > 0 && ((unsigned char)s[n] & 0xc0) == 0x80)
+        n--;
+    return n;
+}
+
+const char *app_path_shown(const char *path, char *buf, size_t len)
+{
+    size_t n = strlen(path);
+    if (n <= PATH_SHOWN) {
+        snprintf(buf, len, "%s", path);
+        return buf;
+    }
+    size_t head = char_start(path, 30), tail = char_start(path, n - (PATH_SHOWN - 36));
+    snprintf(buf, len, "%.*s...%s", (int)head, path, path + tail);
+    return buf;
+}
+
 const char *app_key(const struct app *app, int a)
 {
     const char *name = app->name_of ? app->name_of(a) : NULL;

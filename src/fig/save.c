@@ -110,8 +110,10 @@ unsigned fig_save_view(struct app *app, const struct fig_chart *c, int n, const 
         return app_say(app, SAID_ERROR, "figure: the modes cannot be computed for this chain");
     if (e == EDOM)
         return app_say(app, SAID_ERROR, "figure: this view has no figure to write");
+    char shown[128];
     if (e)
-        return app_say(app, SAID_ERROR, "figure: %s: %s", base, strerror(e));
+        return app_say(app, SAID_ERROR, "figure: %s: %s",
+                       app_path_shown(base, shown, sizeof shown), strerror(e));
     if (nf == 1)
         return app_say(app, SAID_NOTE, "saved the figure as %s%s", base, ext[fmt[0]]);
     return app_say(app, SAID_NOTE, "saved the figure as %s.svg and .png", base);
