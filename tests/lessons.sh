@@ -523,5 +523,20 @@ if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/ghost.lesson:10: run 2: the less
     [ "$(wc -l <"$err")" -eq 1 ] && [ ! -s "$out" ]; then pass; else
     fail "a ghost's steps past the mass-steps bound: expected exit 2 at FILE:10; exit $rc: $(show "$err")"
 fi
+# The exact integrator's split steps count as what they cost: a matrix exponential
+# for each sub-step at a breakpoint and each contact, some 500 times a step of rk4's a
+# mass. Ten masses under a square drive of 37.3 Hz for 1800 s took 27 s to check and as
+# long again to play (3.3e6 mass-steps counted); ten masses thrown into each other 17500
+# times in 300 s took 3.6 s (1800 s: 22 s).
+printf 'title Exact\npreset resonance\nset masses 10\nset integrator exact\nset wave square\nset frequency 37.3\nrun 1000\nrun 800\n' >"$tmp/exact.lesson"
+run --plain --lesson "$tmp/exact.lesson"
+if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/exact.lesson:7: run 1000: the lesson's runs pass here the 3.6e+07 mass-steps" "$err"; then pass; else
+    fail "exact, a square drive: expected exit 2 at FILE:7 (mass-steps); exit $rc: $(show "$err")"
+fi
+printf 'title Exact contacts\npreset resonance\nset masses 10\nset integrator exact\nset amplitude 3\nset frequency 0.8\nrun 1000\nrun 800\n' >"$tmp/exact2.lesson"
+run --plain --lesson "$tmp/exact2.lesson"
+if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/exact2.lesson:7: run 1000: the lesson's runs pass here the 3.6e+07 mass-steps" "$err"; then pass; else
+    fail "exact, contacts: expected exit 2 at FILE:7 (mass-steps); exit $rc: $(show "$err")"
+fi
 
 summary

@@ -15,6 +15,7 @@
 #include "ghost.h"
 #include "jump.h"
 #include "action.h"
+#include "cost.h"
 
 /* The chain-sized parts, made together and swapped in together. The parameters are the
  * sim's own: the app reads them through app->model, a pointer to them. */
@@ -444,7 +445,7 @@ unsigned app_step(struct app *app)
                     sim_time(app->sim));
         return 0;
     }
-    app->step_work = sim_last_work(app->sim);
+    app->step_work = cost_last_step(app->sim); /* what the step cost (cost.h) */
     app->work += app->step_work;
     trail_tick(app->trail, &app->since_sample, app->sample_every, app->sim);
     trail_tick(app->coarse, &app->since_coarse, app->coarse_every, app->sim);

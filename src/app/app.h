@@ -126,9 +126,9 @@ struct app {
     bool limits_ok;          /* limit_modes[] and limits are those of the model */
     struct limits_runaway runaway; /* past the stability limit: the watch for a blow-up */
     bool runaway_base_ok;    /* runaway is of this run since the last change */
-    double work;             /* mass-steps done so far: each step's masses, once more for
-                              * each of the drive's breakpoints in it and each contact,
-                              * and the drive's half-cycles in it */
+    double work;             /* mass-steps done so far (cost.h: each step's masses, again
+                              * for each of the drive's breakpoints in it and each contact,
+                              * and the drive's half-cycles in it) */
     double step_work;        /* the last step's */
     double work_limit;       /* lesson_run_to stops past it (a lesson's check), or 0 */
     long capped;             /* velocities the cap has acted on since t = 0 */

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cost.h"
+
 static void ghost_free(struct ghost *g)
 {
     if (!g)
@@ -98,7 +100,7 @@ unsigned ghost_follow(struct app *app)
                      g->cfg.dt);
             return ghost_drop(app, why);
         }
-        app->work += sim_last_work(g->sim); /* a lesson's compute counts the ghost's too */
+        app->work += cost_last_step(g->sim); /* a lesson's compute counts the ghost's too */
         trail_tick(g->trail, &g->since_sample, g->sample_every, g->sim);
         trail_tick(g->coarse, &g->since_coarse, g->coarse_every, g->sim);
     }

@@ -195,14 +195,6 @@ int sim_last_capped(const struct sim *s)
     return s->last_capped;
 }
 
-double sim_last_work(const struct sim *s)
-{
-    const struct model *m = sim_model(s);
-    double t1 = sim_time(s), t0 = t1 - s->dt;
-    return m->n * (1.0 + motor_breakpoints(&m->motor, t0, t1, NULL, 0) + s->last_contacts) +
-           2.0 * m->motor.frequency * (t1 - t0);
-}
-
 const struct collision_limits *sim_limits(const struct sim *s)
 {
     return &s->lim;

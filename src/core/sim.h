@@ -91,11 +91,6 @@ int sim_last_contacts(const struct sim *s);
 /* Velocities capped by the last step (the usual sign of a blow-up). */
 int sim_last_capped(const struct sim *s);
 
-/* What the last step cost, in mass-steps: its masses, again for each sub-step at the
- * drive's breakpoints and each contact, and the drive's half-cycles in it (the contact
- * events follow the motor's gap through each). What a lesson's compute is bounded in. */
-double sim_last_work(const struct sim *s);
-
 /* The contact limits the sim works with (walls, piston, gaps between masses;
  * collision.h). */
 struct collision_limits;

@@ -23,9 +23,9 @@
                                        * (and LESSON_MAX_WORK below: the check and every
                                        * run done at once stop on Esc, q or Ctrl+C) */
 #define LESSON_MAX_WORK 3.6e7         /* mass-steps of all its runs, at most (app.h's
-                                       * work: each step's masses, again for each of a
-                                       * drive's sub-steps and each contact, and the
-                                       * drive's half-cycles): twice ten linear masses'
+                                       * work, app/cost.h: each step's masses, again for
+                                       * each of a drive's sub-steps and each contact,
+                                       * and the drive's half-cycles): twice ten masses'
                                        * 1800 s at dt 0.001 (a check of about 1.5 s), so
                                        * that no lesson's check or step back takes more
                                        * than a few seconds, whatever its chain */
