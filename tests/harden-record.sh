@@ -182,11 +182,20 @@ replays heavy.lesson "a recording ended at the bound in mass-steps"
 
 # and a session of many commands and no runs (a lesson file holds 256 KiB at most: a
 # recording of 15000 frequency changes was 304 KiB, refused by its own --replay) ends its
-# recording below that size, says so, and replays.
-awk 'BEGIN { for (i = 0; i < 15000; i++) printf "set frequency %.3f\n", 0.5 + i % 97 / 1000; print "quit" }' |
+# recording below that size, says so, and replays: masses placed (changes of the chain
+# or the drive cost mass-steps, which end a recording first; below).
+awk 'BEGIN { for (i = 0; i < 20000; i++) printf "place 1 %.7f\n", i % 9973 / 100000 + 1e-7; print "quit" }' |
     "$SPRINGSIM" --plain --record bytes.lesson >bytes.out 2>&1
 grep -q 'recording ended at .* KiB.*written to bytes.lesson' bytes.out && pass ||
     fail "a recording of 15000 commands should end below a lesson's size: $(grep -i record bytes.out | head -c 300)"
 replays bytes.lesson "a recording ended at a lesson file's size"
+# 15000 changes of the frequency at ten masses: each works out the limits of dt anew, as
+# long as 4000 steps a mass, so the recording ends at a lesson's mass-steps (its replay
+# took 25 s to check), and replays.
+awk 'BEGIN { print "set masses 10"; for (i = 0; i < 15000; i++) printf "set frequency %.3f\n", 0.5 + i % 97 / 1000; print "quit" }' |
+    "$SPRINGSIM" --plain --record changes.lesson >changes.out 2>&1
+grep -q 'recording ended at .* mass-steps.*written to changes.lesson' changes.out && pass ||
+    fail "a recording of 15000 changes at ten masses should end at a lesson's mass-steps: $(grep -i record changes.out | head -c 300)"
+replays changes.lesson "a recording of changes ended at the bound in mass-steps"
 
 summary

@@ -538,5 +538,15 @@ run --plain --lesson "$tmp/exact2.lesson"
 if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/exact2.lesson:7: run 1000: the lesson's runs pass here the 3.6e+07 mass-steps" "$err"; then pass; else
     fail "exact, contacts: expected exit 2 at FILE:7 (mass-steps); exit $rc: $(show "$err")"
 fi
+# and so do changes of the chain or the drive (each works out its modes and the limits of
+# dt anew, as long as some 4000 steps a mass): 256 KiB of `set damping` lines at ten
+# masses took 25 s to check and as long again to play, no run in it.
+awk 'BEGIN { print "title Changes"; print "preset resonance"; print "set masses 10"
+             for (i = 0; i < 3000; i++) printf "set damping %.3f\n", 0.1 + i % 50 / 1000 }' >"$tmp/changes.lesson"
+run --plain --lesson "$tmp/changes.lesson"
+if [ "$rc" -eq 2 ] && grep -q "^springsim: $tmp/changes.lesson:[0-9]*: set damping [0-9.]*: the lesson's changes pass here the 3.6e+07 mass-steps" "$err" &&
+    [ "$(wc -l <"$err")" -eq 1 ]; then pass; else
+    fail "3000 changes of ten masses' damping: expected exit 2 at the line past the mass-steps; exit $rc: $(show "$err")"
+fi
 
 summary

@@ -96,6 +96,7 @@ static void judge(struct app *app)
                                       .drive_dt = INFINITY};
     app->stable_dt = app->limits.stable_dt;
     app->runaway_base_ok = false;
+    app->work += COST_CHANGE * app->model->n; /* what working it out cost (cost.h) */
 }
 
 /* Says what is wrong with dt after a change, if anything. A change of the chain, dt or

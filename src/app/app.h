@@ -128,7 +128,7 @@ struct app {
     bool runaway_base_ok;    /* runaway is of this run since the last change */
     double work;             /* mass-steps done so far (cost.h: each step's masses, again
                               * for each of the drive's breakpoints in it and each contact,
-                              * and the drive's half-cycles in it) */
+                              * and the drive's half-cycles in it; each change's judging) */
     double step_work;        /* the last step's */
     double work_limit;       /* lesson_run_to stops past it (a lesson's check), or 0 */
     long capped;             /* velocities the cap has acted on since t = 0 */

@@ -10,6 +10,11 @@
  * step of rk4 takes some 40 ns (measured at N = 1 to 10). */
 #define COST_EXACT_SUBSTEP 500.0
 
+/* A change of the chain, the drive, dt or the integrator: its modes and the limits of dt
+ * worked out anew (app.c's judge), some 150 us a mass where a step of rk4 takes some
+ * 40 ns, counted a mass (measured at N = 1 to 10). */
+#define COST_CHANGE 4000.0
+
 /* The mass-steps of the step s has just taken: its masses, again for each sub-step at
  * the drive's breakpoints and each contact (COST_EXACT_SUBSTEP times that with the exact
  * integrator), and the drive's half-cycles in it (the contact events follow the motor's

@@ -11,6 +11,7 @@
 
 #include "../core/model.h"
 #include "../core/preset.h"
+#include "../app/cost.h"
 #include "../app/app.h"
 #include "../app/clock.h"
 #include "../app/command.h"
@@ -97,6 +98,16 @@ static int setup_check(const struct lesson *l, const struct lesson_item *it, cha
     return -1;
 }
 
+/* "PATH:LINE: WHAT: the lesson's KIND pass here the mass-steps..." into err. */
+static void past_work(const struct lesson *l, const struct lesson_item *it, const char *what,
+                      const char *kind, char *err, size_t errlen)
+{
+    snprintf(err, errlen, "%s:%d: %s: the lesson's %s pass here the %.3g mass-steps a lesson "
+             "may compute (steps times masses, more for a drive's sub-steps and for contacts, "
+             "%.0f a mass for each change of the chain or the drive)", l->path, it->line, what,
+             kind, LESSON_MAX_WORK, COST_CHANGE);
+}
+
 int lesson_check(const struct lesson *l, const struct config *base, const char *exe_dir,
                  struct lesson_stop *stop, char *err, size_t errlen)
 {
@@ -120,6 +131,9 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
                 /* The preset's own message names the file and its line already. */
                 snprintf(err, errlen, "%s", app.message);
                 st = 2;
+            } else if (app.work > LESSON_MAX_WORK) {
+                past_work(l, it, "setup", "changes", err, errlen);
+                st = 2;
             }
             continue;
         }
@@ -132,12 +146,12 @@ int lesson_check(const struct lesson *l, const struct config *base, const char *
         } else if (r == REPLY_RUN) {
             lesson_run_to(&app, sim_time(app.sim) + res.seconds, stop);
             if (app.work > LESSON_MAX_WORK) {
-                snprintf(err, errlen, "%s:%d: %s: the lesson's runs pass here the %.3g "
-                         "mass-steps a lesson may compute (steps times masses, more for a "
-                         "drive's sub-steps and for contacts)", l->path, it->line, it->text,
-                         LESSON_MAX_WORK);
+                past_work(l, it, it->text, "runs", err, errlen);
                 st = 2;
             }
+        } else if (app.work > LESSON_MAX_WORK) {
+            past_work(l, it, it->text, "changes", err, errlen);
+            st = 2;
         }
     }
     if (!st && stop && stop->said) {

@@ -14,6 +14,7 @@
 #include "../app/app.h"
 #include "../app/clock.h"
 #include "../app/command.h"
+#include "../app/cost.h"
 #include "lesson.h"
 
 #ifndef VERSION
@@ -370,10 +371,14 @@ static long record_bytes(const struct record *r)
 
 bool record_full(const struct record *r, const struct app *app, double ahead)
 {
-    double steps = ahead / sim_dt(app->sim) + 1.0; /* ahead, at the last step's cost */
+    /* ahead, at the last step's cost, and room for three changes of the largest chain:
+     * the next command's (counted once it is done, and recorded) and the replay's two
+     * chains built before its first line (the program's and the setup's). */
+    double steps = ahead / sim_dt(app->sim) + 1.0;
+    double next = steps * app->step_work + 3.0 * COST_CHANGE * APP_MAX_MASSES;
     return r->mem && (record_bytes(r) > LESSON_MAX_BYTES - RECORD_ROOM ||
                       r->seconds + (sim_time(app->sim) - r->t) + ahead > LESSON_MAX_SECONDS ||
-                      app->work - r->work0 + steps * app->step_work > LESSON_MAX_WORK);
+                      app->work - r->work0 + next > LESSON_MAX_WORK);
 }
 
 void record_full_finish(struct record *r, struct app *app)
