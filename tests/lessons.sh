@@ -446,6 +446,19 @@ bad 'title T\nsetup\n[system]\nmass = heavy\nend\n' 4 "mass"
 bad 'title T\nsetup\n[system]\nmasses = 2\n' 2 "setup without its 'end' line"
 bad 'title T\npreset resonance\nrun 1\nexpect t=zz\n' 4 "expect: 't=zz' is not a state"
 bad 'title T\npreset resonance\nrun 1\nexpect t=1 x1=0 v1=0 x2=0\n' 4 "expect: 't=1 x1=0 v1=0 x2=0' is not a state"
+bad 'title T\npreset resonance\nrun 1\nexpect t=nan x1=0 v1=0\n' 4 "expect: 't=nan x1=0 v1=0' is not a state"
+bad 'title T\npreset resonance\nrun 1\nexpect t=1 x1=inf v1=0\n' 4 "expect: 't=1 x1=inf v1=0' is not a state"
+# an expect line's numbers are numbers: the state at rest written in decimals is the one
+# reached, bit for bit (it was compared as text: 't=0' is not 't=0x0p+0'), and -0 is not 0.
+printf 'title T\npreset resonance\nexpect t=0 x1=0 v1=0.0\n' >"$tmp/dec.lesson"
+run --plain --lesson "$tmp/dec.lesson"
+if [ "$rc" -eq 0 ] && grep -q '^ok replayed: the state at t = 0.00 s is the one recorded, bit for bit' "$out"; then pass; else
+    fail "expect t=0 x1=0 v1=0.0 at rest: expected bit for bit, exit 0; exit $rc: $(grep -E '^(ok|error) replayed' "$out") $(show "$err")"
+fi
+printf 'title T\npreset resonance\nexpect t=0 x1=-0 v1=0\n' >"$tmp/neg.lesson"
+run --plain --lesson "$tmp/neg.lesson"
+[ "$rc" -eq 1 ] && grep -q '^error replayed, but the state differs' "$out" && pass ||
+    fail "expect x1=-0 at rest (x1 = +0): expected 'differs', exit 1; exit $rc: $(grep -E 'replayed' "$out")"
 # settings wrong together: said at the line of the one named
 bad 'title T\nsetup\n[system]\nmasses = 10\n[motor]\namplitude = 10\nend\nrun 1\n' 6 "amplitude: '10' leaves the 10 blocks no room"
 bad 'title T\nsetup\n[system]\nmasses = 2\nspring_cubic = 5\nintegrator = exact\nend\nrun 1\n' 6 "integrator: 'exact'"

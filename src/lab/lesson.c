@@ -5,6 +5,7 @@
 #include "lesson.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -152,8 +153,8 @@ static int word_ask(struct reader *r, char *rest)
 }
 
 /* Whether text is a state as lesson_state writes it: t=T, then xI=X vI=V for I = 1, 2, ...,
- * each value a number (strtod's, %a's hexadecimal included). A state of other masses than
- * the chain's is well formed, only not the one reached: the replay says so. */
+ * each value a finite number (strtod's, %a's hexadecimal included). A state of other
+ * masses than the chain's is well formed, only not the one reached: the replay says so. */
 static bool state_line(const char *text)
 {
     const char *p = text;
@@ -167,8 +168,8 @@ static bool state_line(const char *text)
         if (strncmp(p, name, len) != 0)
             return false;
         char *end;
-        strtod(p + len, &end);
-        if (end == p + len || (*end != ' ' && *end != '\0'))
+        double value = strtod(p + len, &end);
+        if (end == p + len || (*end != ' ' && *end != '\0') || !isfinite(value))
             return false;
         if (*end == '\0')
             return k % 2 == 0; /* each mass named with its x and v */

@@ -117,6 +117,11 @@ bool lesson_run_over(const struct app *app, double end);
  * an expect line holds it. */
 void lesson_state(const struct app *app, char *buf, size_t len);
 
+/* Whether the chain's state is the one text (an expect line's, as lesson_state writes it)
+ * holds, bit for bit: the same masses, each number the same double, however it is
+ * written (0 and 0x0p+0 are one; -0 and 0 are not). */
+bool lesson_state_is(const struct app *app, const char *text);
+
 /* Puts a setup item's chain in force on app; 0, or -1 with the reason in app's message. */
 int lesson_setup(struct app *app, const struct lesson *l, const struct lesson_item *it);
 

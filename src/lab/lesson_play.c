@@ -67,6 +67,41 @@ void lesson_state(const struct app *app, char *buf, size_t len)
                                  v[i]);
 }
 
+/* Whether the number text starts with (up to its end, a blank or the end of text) is a,
+ * bit for bit; *text moves past it. */
+static bool same_number(const char **text, double a)
+{
+    char *end;
+    double b = strtod(*text, &end);
+    bool same = end != *text && (*end == ' ' || *end == '\0') &&
+                memcmp(&a, &b, sizeof a) == 0;
+    *text = end;
+    return same;
+}
+
+bool lesson_state_is(const struct app *app, const char *text)
+{
+    const struct sim *s = app->sim;
+    const double *x = sim_x(s), *v = sim_v(s);
+    const char *p = text;
+    if (strncmp(p, "t=", 2) != 0 || (p += 2, !same_number(&p, sim_time(s))))
+        return false;
+    for (int i = 0; i < sim_model(s)->n; i++) {
+        char name[2][16];
+        snprintf(name[0], sizeof name[0], " x%d=", i + 1);
+        snprintf(name[1], sizeof name[1], " v%d=", i + 1);
+        for (int k = 0; k < 2; k++) {
+            size_t len = strlen(name[k]);
+            if (strncmp(p, name[k], len) != 0)
+                return false;
+            p += len;
+            if (!same_number(&p, k ? v[i] : x[i]))
+                return false;
+        }
+    }
+    return *p == '\0';
+}
+
 int lesson_setup(struct app *app, const struct lesson *l, const struct lesson_item *it)
 {
     const char *name = l->title[0] ? l->name : "setup";

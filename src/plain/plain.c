@@ -281,7 +281,7 @@ static void lesson_item(struct plain *p, const struct lesson_item *it)
         break;
     case LESSON_EXPECT:
         lesson_state(app, now, sizeof now);
-        if (strcmp(now, it->text) == 0)
+        if (lesson_state_is(app, it->text))
             put(p, "ok", "replayed: the state at t = %.*f s is the one recorded, bit for bit",
                 app_time_decimals(sim_dt(app->sim)), sim_time(app->sim));
         else {

@@ -89,7 +89,6 @@ static void do_command(struct teach *t, struct app *app, const char *line,
 static void do_item(struct teach *t, struct app *app, const struct lesson_item *it,
                     struct lesson_stop *at_once)
 {
-    char now[4096];
     switch (it->kind) {
     case LESSON_COMMAND:
         do_command(t, app, it->text, at_once);
@@ -102,8 +101,7 @@ static void do_item(struct teach *t, struct app *app, const struct lesson_item *
             t->wait_end = app_clock_now() + it->value;
         break;
     case LESSON_EXPECT:
-        lesson_state(app, now, sizeof now);
-        if (strcmp(now, it->text) == 0)
+        if (lesson_state_is(app, it->text))
             app_say(app, SAID_NOTE, "replayed: the state at t = %.*f s is the one recorded, bit "
                     "for bit", app_time_decimals(sim_dt(app->sim)), sim_time(app->sim));
         else
