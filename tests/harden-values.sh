@@ -119,4 +119,16 @@ for args in "-n 2 --amplitude 9.2" "-n 20 --amplitude 6.5 --no-collisions" \
     fi
 done
 
+# --- a warning is true or not said: the drive's error measured where its numbers have no
+# digits left (dt = 1e-16 s: e^(i w dt) rounds to 1; a spring of 1e-320 N/m, subnormal,
+# the drive's force too) said 'accurate only roughly... dt < 0.116 s keeps it under 1 %'
+# of a dt far below that, and 'dt < 0 s' ---
+accepted --headless --duration 0 --dt 1e-16
+accepted --headless --duration 0 --dt 1e-100
+accepted --headless --duration 0 --spring 1e-320
+# and a real one is still said
+run --headless --duration 0 --dt 0.01 --frequency 37.3
+grep -q "accurate only roughly: the steady motion at the 37.3 Hz drive.*dt < 0.007" "$err" && pass ||
+    fail "--dt 0.01 --frequency 37.3: expected the drive's accuracy warning; got: $(show "$err")"
+
 summary

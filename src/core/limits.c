@@ -468,7 +468,12 @@ bool limits_rough_modes(const struct limits *l)
 
 bool limits_rough_drive(const struct limits *l)
 {
-    return !limits_unstable(l) && l->drive_error > LIMITS_LOSS; /* NAN: not known rough */
+    /* The search's largest accurate step must agree (NAN: not known rough): an error
+     * measured below it has no digits left (dt = 1e-16 s: e^(i w dt) rounds to 1), and
+     * no accurate step at all means none were there to measure with (a subnormal spring,
+     * so a subnormal drive). */
+    return !limits_unstable(l) && l->drive_error > LIMITS_LOSS && l->drive_dt > 0.0 &&
+           l->dt > l->drive_dt;
 }
 
 void limits_runaway_start(struct limits_runaway *r, const struct model *m,
