@@ -5,7 +5,8 @@
  * like the start of an answer (Esc, Alt+[ or Alt+]) comes back as the keys it was; an
  * answer cut off or broken (a hostile terminal's garbage), a CSI sequence that is no
  * answer (a key curses did not know, a focus event) and one too long to keep are dropped
- * whole, never keys; an 8-bit CSI (0x9b) is one, but not inside a UTF-8 character. */
+ * whole, never keys; an 8-bit introducer (CSI 0x9b, OSC 0x9d, APC 0x9f, DCS 0x90) begins
+ * one and 8-bit ST (0x9c) ends a string, but not inside a UTF-8 character. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -323,13 +324,84 @@ static void too_long(void **state)
     assert_int_equal(scan.dropped, 2);
 }
 
+/* Answers in 8-bit form (a terminal set to send C1 controls as single bytes): OSC 0x9d,
+ * APC 0x9f and DCS 0x90 begin one as CSI 0x9b does, and ST 0x9c ends a string (in 7-bit
+ * strings too), so none of their bytes act as keys (DCS's 1, r, 0 and m enlarged a plot,
+ * reset and opened the modes view; a 7-bit OSC ended by 0x9c swallowed every key after
+ * it, q too). Inside a UTF-8 character typed, or in a string's UTF-8 text, these bytes
+ * are continuation bytes. */
+static void eight_bit(void **state)
+{
+    (void)state;
+    char ans[256];
+    setup_scan();
+    assert_string_equal(run("a\x9d" "11;rgb:ffff/ffff/ffff\x9c" "b\x9f" "Gi=31;OK\x9c"
+                            "c\x90" "1$r0m\x9c" "d\033]10;rgb:0/0/0\x9cq", 0, ans, sizeof ans),
+                        "abcdq");
+    assert_string_equal(ans, "\033]11;rgb:ffff/ffff/ffff\033\\|\033_Gi=31;OK\033\\|"
+                             "\033P1$r0m\033\\|\033]10;rgb:0/0/0\033\\|");
+    /* ŝ (C5 9D), ✜ (E2 9C 9C), Đ (C4 90), ş (C5 9F) typed: keys. */
+    assert_string_equal(run("\xc5\x9d\xe2\x9c\x9c\xc4\x90\xc5\x9fq", 0, ans, sizeof ans),
+                        "\xc5\x9d\xe2\x9c\x9c\xc4\x90\xc5\x9fq");
+    /* ✜ inside a string's text: no ST, the string goes on to its own. */
+    assert_string_equal(run("\033]2;\xe2\x9c\x9c\033\\q", 0, ans, sizeof ans), "q");
+    assert_string_equal(ans, "\033]2;\xe2\x9c\x9c\033\\|");
+}
+
+/* A string answer cut off by a hostile terminal (no ST ever comes): a key typed after
+ * ANSWER_GAP that no such answer holds there (q) is a key, and so is any key once
+ * ANSWER_TAIL has passed since the answer began; keys typed sooner come back once the
+ * string has been quiet for ANSWER_GAP (they went on with it, for ever: q never quit). */
+static void cut_strings(void **state)
+{
+    (void)state;
+    static const char *const cut[] = {"\033]11;rgb:ffff/ff", "\033_Gi=31;OK", "\033P1+r",
+                                      "\033]4;1;rgb:cd"};
+    for (size_t i = 0; i < sizeof cut / sizeof *cut; i++) {
+        setup_scan();
+        for (const char *p = cut[i]; *p; p++)
+            answer_feed(&scan, (unsigned char)*p, 1.0);
+        answer_feed(&scan, 'q', 1.0 + ANSWER_GAP * 2);
+        int k = answer_key(&scan);
+        if (k != 'q')
+            fail_msg("'%s' then q after the gap: key %d", cut[i] + 1, k);
+        setup_scan();
+        for (const char *p = cut[i]; *p; p++)
+            answer_feed(&scan, (unsigned char)*p, 1.0);
+        answer_feed(&scan, 'A', 1.0 + ANSWER_TAIL * 0.5);
+        answer_feed(&scan, '1', 1.0 + ANSWER_TAIL + ANSWER_GAP * 1.5);
+        k = answer_key(&scan);
+        if (k != '1')
+            fail_msg("'%s' then 1 past ANSWER_TAIL: key %d", cut[i] + 1, k);
+    }
+    /* Keys typed soon after it (within the gap): once nothing came for ANSWER_GAP, those
+     * from the first that no such answer holds are given back, in order. */
+    setup_scan();
+    for (const char *p = "\033]11;rgb:ffff/ff gq"; *p; p++)
+        answer_feed(&scan, (unsigned char)*p, *p == 'q' ? 1.9 : 1.0);
+    answer_idle(&scan, 1.9 + ANSWER_GAP * 0.5);
+    assert_int_equal(answer_key(&scan), -1);
+    answer_idle(&scan, 1.9 + ANSWER_GAP * 1.5);
+    assert_int_equal(answer_key(&scan), ' ');
+    assert_int_equal(answer_key(&scan), 'g');
+    assert_int_equal(answer_key(&scan), 'q');
+    assert_false(answer_holding(&scan));
+    /* A CSI answer's digits long after it began: keys too. */
+    setup_scan();
+    for (const char *p = "\033[?63;1"; *p; p++)
+        answer_feed(&scan, (unsigned char)*p, 1.0);
+    answer_feed(&scan, '1', 1.0 + ANSWER_TAIL + ANSWER_GAP * 1.5);
+    assert_int_equal(answer_key(&scan), '1');
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(answers_between_keys), cmocka_unit_test(byte_by_byte_late),
         cmocka_unit_test(not_answers),          cmocka_unit_test(gaps),
         cmocka_unit_test(too_long),             cmocka_unit_test(parted_answers),
-        cmocka_unit_test(pastes),
+        cmocka_unit_test(pastes),               cmocka_unit_test(eight_bit),
+        cmocka_unit_test(cut_strings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

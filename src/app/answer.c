@@ -1,6 +1,7 @@
 /* answer.c: the terminal's answers told from keys (answer.h). */
 #include "answer.h"
 
+#include <ctype.h>
 #include <string.h>
 
 #define ESC 0x1b
@@ -126,11 +127,17 @@ static int csi_byte(struct answer_scan *s, int ch)
     return -1;
 }
 
-/* ch inside OSC, APC or DCS: ends at BEL or ST (ESC \); an ESC followed by anything
- * else ends what came before it as keys and begins again. */
+/* ch inside OSC, APC or DCS: ends at BEL or ST (ESC \, or 0x9c after a byte that is no
+ * part of a UTF-8 character: a continuation byte follows one that is); an ESC followed by
+ * anything else ends what came before it as keys and begins again. */
 static int string_byte(struct answer_scan *s, int ch)
 {
     bool after_esc = s->held[s->nheld - 1] == ESC;
+    if (ch == 0x9c && !after_esc && s->held[s->nheld - 1] < 0x80) {
+        s->held[s->nheld++] = ESC; /* held as ESC \, as 0x9b is as ESC [ */
+        s->held[s->nheld++] = '\\';
+        return finish(s);
+    }
     if (after_esc) {
         if (ch == '\\') {
             s->held[s->nheld++] = ch;
@@ -139,6 +146,7 @@ static int string_byte(struct answer_scan *s, int ch)
         s->nheld--;
         cut_off(s);
         s->held[s->nheld++] = ESC;
+        s->began = s->last; /* now: answer_feed set it */
         return -1;
     }
     if (ch == 0x07) {
@@ -152,22 +160,44 @@ static int string_byte(struct answer_scan *s, int ch)
     return -1;
 }
 
-/* Whether ch goes on with what is held after ANSWER_GAP seconds without a byte. A
- * terminal's bytes come in order with no key between them, so the rest of an answer a
- * slow link parted is what comes next; but only what an answer holds there goes on with
- * it (Alt+[ then a letter typed later is keys): a CSI answer's digits, ';', '?' first and
- * its final c, t or S; a string answer's text (OSC and DCS begin with a digit, DCS
- * perhaps with '>', kitty's APC with G). */
-static bool goes_on(const struct answer_scan *s, int ch)
+/* Whether the text of a string answer with introducer intro holds ch: the colours' (hex
+ * digits, "rgb:", '/'), kitty's ("Gi=31;OK", an error's upper-case name), DCS's hex. */
+static bool string_holds(int intro, int ch)
+{
+    const char *text = intro == ']' ? "/:;?#,.rgb" : intro == '_' ? "=,;:i" : "$+=;|rm";
+    return (ch < 0x80 && isxdigit(ch)) || (ch > 0x20 && ch < 0x7f && strchr(text, ch)) ||
+           (intro == '_' && ch >= 'A' && ch <= 'Z');
+}
+
+/* Whether ch goes on with what is held after ANSWER_GAP seconds without a byte (late) or
+ * after an Esc that went as a key. A terminal's bytes come in order with no key between
+ * them, so the rest of an answer a slow link parted is what comes next; but only what an
+ * answer holds there goes on with it (Alt+[ then a letter typed later is keys): a CSI
+ * answer's digits, ';', '?' first and its final c, t or S; a string answer's text (OSC
+ * and DCS begin with a digit, DCS perhaps with '>', kitty's APC with G). And nothing goes on with an answer begun ANSWER_TAIL before a late byte: a
+ * terminal's cut-off garbage would take every key typed after it (q too) for ever. */
+static bool goes_on(const struct answer_scan *s, int ch, bool late, double now)
 {
     int intro = s->held[1];
     bool digit = ch >= '0' && ch <= '9';
+    if (late && now - s->began > ANSWER_TAIL)
+        return false;
     if (intro == '[')
         return digit || ch == ';' || (s->nheld == 2 ? ch == '?' : ch == 'c' || ch == 't' ||
                                                               ch == 'S');
-    if (s->nheld > 2)
+    if (s->nheld > 2 && s->held[s->nheld - 1] == ESC)
+        return ch == '\\'; /* ST's second byte */
+    if (s->nheld > 2 && !late) /* the rest of an answer after an Esc that went */
         return ch == ESC || ch == 0x07 || (ch > 0x20 && ch < 0x7f);
+    if (s->nheld > 2)
+        return ch == ESC || ch == 0x07 || string_holds(intro, ch);
     return intro == '_' ? ch == 'G' : digit || (intro == 'P' && ch == '>');
+}
+
+/* The 7-bit introducer of an 8-bit one (CSI, OSC, APC, DCS), else 0. */
+static int introducer(int ch)
+{
+    return ch == 0x9b ? '[' : ch == 0x9d ? ']' : ch == 0x9f ? '_' : ch == 0x90 ? 'P' : 0;
 }
 
 bool answer_feed(struct answer_scan *s, int ch, double now)
@@ -182,7 +212,7 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
         paste_byte(s, ch);
         return false;
     }
-    if (s->nheld > 1 && (late || s->tail) && !goes_on(s, ch))
+    if (s->nheld > 1 && (late || s->tail) && !goes_on(s, ch, late, now))
         cut_off(s);
     /* The byte after an Esc that went as a key (answer_idle): an answer's introducer
      * begins its rest, held as if the Esc were there (nothing of it is a key). */
@@ -190,6 +220,7 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
         (ch == '[' || ch == ']' || ch == '_' || ch == 'P')) {
         s->held[s->nheld++] = ESC;
         s->tail = true;
+        s->began = s->esc_at;
     }
     s->esc_out = false;
     s->last = now;
@@ -202,13 +233,14 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
     }
     for (;;) {
         if (s->nheld == 0) {
-            if (ch == 0x9b && s->utf8_left == 0) { /* 8-bit CSI: held as ESC [ */
+            if (introducer(ch) && s->utf8_left == 0) { /* 8-bit: held as ESC [ and so on */
                 s->held[s->nheld++] = ESC;
-                s->held[s->nheld++] = '[';
+                s->held[s->nheld++] = introducer(ch);
+                s->began = now;
                 return false;
             }
             if (ch == ESC)
-                s->held[s->nheld++] = ch;
+                s->held[s->nheld++] = ch, s->began = now;
             else
                 push_key(s, ch);
             s->utf8_left = ch >= 0xc2 && ch <= 0xdf   ? 1
@@ -247,11 +279,33 @@ bool answer_feed(struct answer_scan *s, int ch, double now)
     }
 }
 
+/* A string held quiet for ANSWER_GAP whose text took bytes no answer holds (a terminal's
+ * garbage that never ended, keys typed after it): dropped to the first of them, which and
+ * what follows it are given back as the keys they were (q quits). */
+static void string_quiet(struct answer_scan *s)
+{
+    int k = 2;
+    while (k < s->nheld && (string_holds(s->held[1], s->held[k]) ||
+                            (k == s->nheld - 1 && s->held[k] == ESC))) /* ST's first byte */
+        k++;
+    if (k == s->nheld || s->truncated)
+        return;
+    int n = s->nheld - k;
+    memmove(s->held, s->held + k, (size_t)n * sizeof *s->held);
+    s->nheld = n;
+    s->tail = false;
+    s->dropped++;
+    give_back(s);
+}
+
 /* A lone Esc held `hold` seconds is a key (remembered: an answer's rest may follow it);
- * an introducer alone after it, `tail_hold` seconds (Esc then [ typed). A longer part
- * stays held: what comes next says (answer_feed). */
+ * an introducer alone after it, `tail_hold` seconds (Esc then [ typed); a string that
+ * took keys, ANSWER_GAP (string_quiet). A longer part stays held: what comes next says
+ * (answer_feed). */
 static void idle(struct answer_scan *s, double now, double hold, double tail_hold)
 {
+    if (s->nheld > 2 && s->held[1] != '[' && now - s->last > ANSWER_GAP)
+        string_quiet(s);
     if (s->nheld == 1 && now - s->last >= hold - 1e-9) {
         give_back(s);
         s->esc_out = true;

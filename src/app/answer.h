@@ -7,14 +7,17 @@
  *   OSC ... ST/BEL  (colours: the background, the palette)
  *   APC ... ST      (kitty's graphics answer "_G...")
  *   DCS ... ST      (DECRQSS, XTGETTCAP)
- * (each also with its 8-bit introducer, 0x9b for CSI, where no UTF-8 character typed is
- * under way). No key starts like these but Alt with [, ], _ or P. A sequence cut short
+ * (each also with its 8-bit introducer, 0x9b CSI, 0x9d OSC, 0x9f APC, 0x90 DCS, and a
+ * string with 8-bit ST 0x9c, where no UTF-8 character is under way). No key starts like
+ * these but Alt with [, ], _ or P. A sequence cut short
  * (by a byte no answer holds: a control character, an Esc, a curses key code; or, after
  * ANSWER_GAP seconds without its next byte, by one that no answer holds there) is given
  * back as keys when it is only Esc and the introducer, and dropped otherwise (a
  * terminal's garbage or an answer cut off: its bytes as keys would act at random). A
  * terminal's bytes come in order with no key between them, so a part held goes on with
- * the rest of its answer however late that comes (a slow link parts answers). A complete
+ * the rest of its answer however late that comes (a slow link parts answers), within
+ * ANSWER_TAIL of its first byte (a terminal's garbage that never ends takes no key typed
+ * after that: q quits). A complete
  * CSI sequence that is no answer (a key curses did not know, a focus event, a paste's end
  * alone, a terminal's garbage) is dropped too: as keys its [ and digits would change the
  * speed and the views. A string longer than ANSWER_MAX is
@@ -45,6 +48,7 @@ struct answer_scan {
     int held[ANSWER_MAX]; /* what may be an answer, so far */
     int nheld;
     double last;         /* when its last byte came (seconds, any clock) */
+    double began;        /* when its first came (or the Esc before it: tail) */
     int keys[ANSWER_KEYS]; /* keys given back, oldest first from key_at */
     int nkeys, key_at;
     char answer[ANSWER_MAX + 1]; /* the answer answer_feed last completed, NUL-ended */
