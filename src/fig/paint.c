@@ -25,7 +25,10 @@ void fig_paint_strokes(cairo_t *cr, const struct strokes *k, double cw, double c
                        const struct fig_palette *pal)
 {
     static const double dash[] = {6.0, 4.0};
-    double sx = cw / 2.0, sy = ch / 4.0, lw = fmax(1.0, ch / 12.0);
+    /* Lines a twelfth of a cell high, but no wider than a quarter of a cell: a terminal
+     * that says its cells are 3 x 65535 pixels (drawn 1 x 124) had cairo stroke 10-pixel
+     * lines in columns of one, 58 MB for one plot. */
+    double sx = cw / 2.0, sy = ch / 4.0, lw = fmax(1.0, fmin(ch / 12.0, cw / 4.0));
     cairo_save(cr);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
